@@ -1,0 +1,1 @@
+//! kinetics: kinetics of rigid bodies in three dimensions.

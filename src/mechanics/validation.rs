@@ -1,0 +1,190 @@
+//! Physical admissibility of masses and inertia tensors given as numbers.
+//!
+//! A tensor `[I]` (chapter convention, products of inertia positive integrals) belongs to a
+//! real body exactly when it is symmetric, its principal moments are non-negative, and they
+//! satisfy the triangle inequality `I_1 + I_2 >= I_3` (for every labelling). The triangle
+//! inequality is the statement that the second moments `∫x² dm = (I_y + I_z - I_x)/2` are
+//! non-negative in every frame.
+//!
+//! Every test allows a rounding slack of [`INERTIA_RELATIVE_TOLERANCE`] times the trace of
+//! the tensor, so a thin plate (`I_z = I_x + I_y` exactly in theory) passes after rounding.
+
+use nalgebra::{Matrix3, Vector3};
+use thiserror::Error;
+
+/// Relative tolerance of the inertia checks: a violation smaller than this times the trace
+/// of the tensor (the sum of the three moments) is taken as rounding and accepted.
+pub const INERTIA_RELATIVE_TOLERANCE: f64 = 1e-9;
+
+/// Why a mass or an inertia tensor cannot belong to a real body.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum PhysicsError {
+    #[error("{quantity} is {value}, but it must be a finite number")]
+    NotFinite { quantity: String, value: f64 },
+    #[error("mass {quantity} = {value} must be positive")]
+    NonPositiveMass { quantity: String, value: f64 },
+    #[error(
+        "moment of inertia {quantity} = {value} is negative; moments of inertia are integrals of squared distances and cannot be negative"
+    )]
+    NegativeMoment { quantity: String, value: f64 },
+    #[error(
+        "moments of inertia violate the triangle inequality: {larger} = {larger_value} exceeds {sum} = {sum_value} (a real body has I_x + I_y >= I_z for every labelling; tolerance {tolerance:e} of the trace)"
+    )]
+    TriangleInequality {
+        larger: String,
+        larger_value: f64,
+        sum: String,
+        sum_value: f64,
+        tolerance: f64,
+    },
+    #[error(
+        "inertia tensor is not positive semidefinite: it has the principal moment {eigenvalue} < 0 (a real body's principal moments are non-negative)"
+    )]
+    NotPositiveSemidefinite { eigenvalue: f64 },
+    #[error("inertia tensor is not symmetric: entry ({row},{col}) = {a} but ({col},{row}) = {b}")]
+    NotSymmetric {
+        row: usize,
+        col: usize,
+        a: f64,
+        b: f64,
+    },
+}
+
+const AXES: [&str; 3] = ["x", "y", "z"];
+
+/// Checks that a mass is finite and positive.
+pub fn validate_mass(quantity: &str, value: f64) -> Result<(), PhysicsError> {
+    ensure_finite(quantity, value)?;
+    if value <= 0.0 {
+        return Err(PhysicsError::NonPositiveMass {
+            quantity: quantity.to_string(),
+            value,
+        });
+    }
+    Ok(())
+}
+
+/// Checks three principal moments `(I_x', I_y', I_z')`: finite, non-negative, and
+/// `I_a + I_b >= I_c` for every labelling, each within the documented tolerance.
+pub fn validate_principal_moments(moments: &Vector3<f64>) -> Result<(), PhysicsError> {
+    for (axis, &value) in AXES.iter().zip(moments.iter()) {
+        ensure_finite(&format!("I_{axis}'"), value)?;
+    }
+    let names = AXES.map(|a| format!("I_{a}'"));
+    check_moments(moments, &names)
+}
+
+/// Checks a whole tensor in the chapter's convention
+/// `[[I_x, -I_xy, -I_xz], [-I_xy, I_y, -I_yz], [-I_xz, -I_yz, I_z]]`: finite entries,
+/// symmetry, non-negative diagonal moments obeying the triangle inequality, and principal
+/// moments that are non-negative and obey it too.
+pub fn validate_inertia_tensor(tensor: &Matrix3<f64>) -> Result<(), PhysicsError> {
+    for r in 0..3 {
+        for c in 0..3 {
+            let value = tensor[(r, c)];
+            let quantity = if r == c {
+                format!("I_{}", AXES[r])
+            } else {
+                let (a, b) = (r.min(c), r.max(c));
+                format!("I_{}{}", AXES[a], AXES[b])
+            };
+            ensure_finite(&quantity, value)?;
+        }
+    }
+    let scale = tensor.diagonal().iter().map(|v| v.abs()).sum::<f64>();
+    for (r, c) in [(0, 1), (0, 2), (1, 2)] {
+        let (a, b) = (tensor[(r, c)], tensor[(c, r)]);
+        if (a - b).abs() > INERTIA_RELATIVE_TOLERANCE * scale {
+            return Err(PhysicsError::NotSymmetric {
+                row: r,
+                col: c,
+                a,
+                b,
+            });
+        }
+    }
+    let names = AXES.map(|a| format!("I_{a}"));
+    check_moments(&tensor.diagonal(), &names)?;
+    let eigen = tensor.symmetric_eigenvalues();
+    let slack = INERTIA_RELATIVE_TOLERANCE * scale;
+    if let Some(&lowest) = eigen.iter().find(|&&e| e < -slack) {
+        return Err(PhysicsError::NotPositiveSemidefinite { eigenvalue: lowest });
+    }
+    let principal = AXES.map(|a| format!("principal moment I_{a}'"));
+    check_moments(&eigen, &principal)
+}
+
+fn ensure_finite(quantity: &str, value: f64) -> Result<(), PhysicsError> {
+    if value.is_finite() {
+        Ok(())
+    } else {
+        Err(PhysicsError::NotFinite {
+            quantity: quantity.to_string(),
+            value,
+        })
+    }
+}
+
+fn check_moments(moments: &Vector3<f64>, names: &[String; 3]) -> Result<(), PhysicsError> {
+    let trace: f64 = moments.iter().map(|v| v.abs()).sum();
+    let slack = INERTIA_RELATIVE_TOLERANCE * trace;
+    for (name, &value) in names.iter().zip(moments.iter()) {
+        if value < -slack {
+            return Err(PhysicsError::NegativeMoment {
+                quantity: name.clone(),
+                value,
+            });
+        }
+    }
+    for k in 0..3 {
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        let sum = moments[i] + moments[j];
+        if moments[k] - sum > slack {
+            return Err(PhysicsError::TriangleInequality {
+                larger: names[k].clone(),
+                larger_value: moments[k],
+                sum: format!("{} + {}", names[i], names[j]),
+                sum_value: sum,
+                tolerance: INERTIA_RELATIVE_TOLERANCE,
+            });
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn thin_plate_passes_and_triangle_violation_names_the_moments() {
+        assert!(validate_principal_moments(&Vector3::new(1.0, 2.0, 3.0)).is_ok());
+        let err = validate_principal_moments(&Vector3::new(1.0, 1.0, 3.0)).unwrap_err();
+        let text = err.to_string();
+        assert!(text.contains("I_z' = 3"), "{text}");
+        assert!(text.contains("I_x' + I_y' = 2"), "{text}");
+    }
+
+    #[test]
+    fn negative_nan_and_indefinite_are_rejected() {
+        assert!(matches!(
+            validate_principal_moments(&Vector3::new(-1.0, 2.0, 2.0)),
+            Err(PhysicsError::NegativeMoment { .. })
+        ));
+        assert!(matches!(
+            validate_principal_moments(&Vector3::new(f64::NAN, 2.0, 2.0)),
+            Err(PhysicsError::NotFinite { .. })
+        ));
+        assert!(matches!(
+            validate_mass("m", -2.0),
+            Err(PhysicsError::NonPositiveMass { .. })
+        ));
+        // Diagonal obeys the triangle inequality but the product of inertia makes an
+        // eigenvalue negative: 2 - 3 < 0.
+        let t = Matrix3::new(2.0, -3.0, 0.0, -3.0, 2.0, 0.0, 0.0, 0.0, 2.0);
+        assert!(matches!(
+            validate_inertia_tensor(&t),
+            Err(PhysicsError::NotPositiveSemidefinite { .. })
+        ));
+    }
+}

@@ -1,0 +1,27 @@
+//! Errors of the expression algebra.
+
+use thiserror::Error;
+
+/// Largest number of terms an expansion may produce before it is refused.
+pub const MAX_EXPANDED_TERMS: usize = 100_000;
+
+/// Why an algebraic operation could not give an exact result.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+pub enum AlgebraError {
+    #[error("division by zero")]
+    DivisionByZero,
+    #[error("{what} would have {size} terms, more than the limit of {limit}")]
+    TooLarge {
+        what: String,
+        size: String,
+        limit: usize,
+    },
+    #[error("no value for the symbol {0}")]
+    MissingValue(String),
+    #[error("{expression} evaluates to {value}, which is not a finite number")]
+    NotFinite { expression: String, value: String },
+    #[error("cannot differentiate {0} with respect to time: its exponent depends on time")]
+    TimeDependentExponent(String),
+    #[error("{0}")]
+    NotAVector(String),
+}

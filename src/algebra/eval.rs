@@ -1,0 +1,90 @@
+//! Numerical evaluation over any `num_traits::Float` scalar: `f32`, `f64`, dual numbers for
+//! exact partial derivatives, or a higher-precision type.
+
+use super::error::AlgebraError;
+use super::expr::{Expr, View};
+use super::rational::Q;
+use super::symbol::Symbol;
+use num_traits::Float;
+
+impl Expr {
+    /// The value of the expression with each symbol's value from `value`. Fails for a
+    /// symbol without a value, and for a result that is not finite (`1/x` at `x = 0`).
+    ///
+    /// ```
+    /// use kinetics::algebra::{Expr, Symbol};
+    /// let e = Expr::symbol("x").powi(2) / Expr::int(4);
+    /// let v: f32 = e.eval(&|_| Some(3.0f32)).unwrap();
+    /// assert_eq!(v, 2.25);
+    /// ```
+    pub fn eval<T: Float>(&self, value: &dyn Fn(Symbol) -> Option<T>) -> Result<T, AlgebraError> {
+        let v = eval_unchecked(self, value)?;
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(AlgebraError::NotFinite {
+                expression: self.to_string(),
+                value: if v.is_nan() {
+                    "NaN".into()
+                } else {
+                    "infinity".into()
+                },
+            })
+        }
+    }
+}
+
+/// Converts an exact rational to the scalar type, as exactly as the type allows.
+pub fn rational_to<T: Float>(q: &Q) -> T {
+    match q {
+        Q::Small(n, d) if n.unsigned_abs() < (1 << 53) && *d < (1 << 53) => {
+            let n = T::from(*n).unwrap_or_else(T::nan);
+            let d = T::from(*d).unwrap_or_else(T::nan);
+            n / d
+        }
+        _ => T::from(q.to_f64()).unwrap_or_else(T::nan),
+    }
+}
+
+fn eval_unchecked<T: Float>(
+    e: &Expr,
+    value: &dyn Fn(Symbol) -> Option<T>,
+) -> Result<T, AlgebraError> {
+    Ok(match e.view() {
+        View::Num(q) => rational_to(q),
+        View::Sym(s) => value(s).ok_or_else(|| AlgebraError::MissingValue(s.name().to_string()))?,
+        View::Add(terms) => {
+            let mut sum = T::zero();
+            for t in terms {
+                sum = sum + eval_unchecked(t, value)?;
+            }
+            sum
+        }
+        View::Mul(factors) => {
+            let mut product = T::one();
+            for f in factors {
+                product = product * eval_unchecked(f, value)?;
+            }
+            product
+        }
+        View::Pow(b, x) => {
+            let base = eval_unchecked(b, value)?;
+            match x
+                .as_num()
+                .and_then(Q::to_i64)
+                .and_then(|n| i32::try_from(n).ok())
+            {
+                Some(n) => base.powi(n),
+                None => {
+                    let half = x.as_num().is_some_and(|q| *q == Q::Small(1, 2));
+                    if half {
+                        base.sqrt()
+                    } else {
+                        base.powf(eval_unchecked(x, value)?)
+                    }
+                }
+            }
+        }
+        View::Func(f, a) => f.eval(eval_unchecked(a, value)?),
+    })
+}

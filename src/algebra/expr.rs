@@ -1,0 +1,573 @@
+//! `Expr`: an immutable expression, cheap to clone, always in canonical form.
+//!
+//! Every constructor returns the canonical form:
+//!
+//! - sums and products are n-ary and flat (no sum directly inside a sum, no product directly
+//!   inside a product), their operands sorted by a fixed total order;
+//! - like terms are combined (`2x + 3x = 5x`, `x - x = 0`) and so are powers of a common
+//!   base (`x·x² = x³`, `x^0 = 1`, `x^1 = x`);
+//! - numbers are exact rationals and are folded (`0·x = 0`), a product holds at most one, first;
+//! - a number times a sum is distributed (`2(x + y) = 2x + 2y`), so `(a+b) - (a+b) = 0`.
+//!
+//! Products of sums are not multiplied out on construction; [`Expr::expand`] does that, and
+//! the expanded form decides equality of polynomials (and of expressions whose denominators
+//! are monomials): two such expressions are equal exactly when their expansions are
+//! identical.
+//!
+//! ```
+//! use kinetics::algebra::Expr;
+//! let x = Expr::symbol("x");
+//! let y = Expr::symbol("y");
+//! assert_eq!(&x + &y - &x, y);
+//! assert_eq!(&x * &x * &x, x.powi(3));
+//! assert!((&(&x + &y) * &(&x - &y)).expand().unwrap() == x.powi(2) - y.powi(2));
+//! ```
+
+use super::error::AlgebraError;
+use super::function::Func;
+use super::rational::Q;
+use super::symbol::Symbol;
+use std::cmp::Ordering;
+use std::hash::{Hash, Hasher};
+use std::sync::Arc;
+
+/// An expression in canonical form. See the module documentation.
+#[derive(Clone)]
+pub struct Expr(Repr);
+
+#[derive(Clone)]
+enum Repr {
+    Num(Q),
+    Sym(Symbol),
+    Add(Arc<[Expr]>),
+    Mul(Arc<[Expr]>),
+    Pow(Arc<(Expr, Expr)>),
+    Func(Func, Arc<Expr>),
+}
+
+/// A borrowed look at the top node of an expression.
+#[derive(Clone, Copy, Debug)]
+pub enum View<'a> {
+    Num(&'a Q),
+    Sym(Symbol),
+    /// At least two terms; at most one number, first.
+    Add(&'a [Expr]),
+    /// At least two factors; at most one number (never 0 or 1), first.
+    Mul(&'a [Expr]),
+    Pow(&'a Expr, &'a Expr),
+    Func(Func, &'a Expr),
+}
+
+impl Expr {
+    pub fn num(q: Q) -> Expr {
+        Expr(Repr::Num(q))
+    }
+
+    pub fn int(n: i64) -> Expr {
+        Expr::num(Q::int(n))
+    }
+
+    /// The rational `num/den`. Panics when `den` is zero (a programming error; parsed input
+    /// goes through [`Expr::checked_div`]).
+    pub fn rational(num: i64, den: i64) -> Expr {
+        Expr::num(Q::new(num, den).expect("rational with zero denominator"))
+    }
+
+    pub fn sym(s: Symbol) -> Expr {
+        Expr(Repr::Sym(s))
+    }
+
+    /// The symbol with this ASCII name, as an expression.
+    pub fn symbol(name: &str) -> Expr {
+        Expr::sym(Symbol::new(name))
+    }
+
+    pub fn zero() -> Expr {
+        Expr::num(Q::ZERO)
+    }
+
+    pub fn one() -> Expr {
+        Expr::num(Q::ONE)
+    }
+
+    pub fn view(&self) -> View<'_> {
+        match &self.0 {
+            Repr::Num(q) => View::Num(q),
+            Repr::Sym(s) => View::Sym(*s),
+            Repr::Add(t) => View::Add(t),
+            Repr::Mul(f) => View::Mul(f),
+            Repr::Pow(p) => View::Pow(&p.0, &p.1),
+            Repr::Func(f, a) => View::Func(*f, a),
+        }
+    }
+
+    pub fn as_num(&self) -> Option<&Q> {
+        match &self.0 {
+            Repr::Num(q) => Some(q),
+            _ => None,
+        }
+    }
+
+    pub fn as_symbol(&self) -> Option<Symbol> {
+        match &self.0 {
+            Repr::Sym(s) => Some(*s),
+            _ => None,
+        }
+    }
+
+    pub fn is_zero(&self) -> bool {
+        matches!(&self.0, Repr::Num(q) if q.is_zero())
+    }
+
+    pub fn is_one(&self) -> bool {
+        matches!(&self.0, Repr::Num(q) if q.is_one())
+    }
+
+    /// Splits a term into its numeric coefficient and the remaining factors:
+    /// `-3 x y` gives `(-3, [x, y])`, `x` gives `(1, [x])`, `5` gives `(5, [])`.
+    pub fn coeff_and_factors(&self) -> (Q, &[Expr]) {
+        match &self.0 {
+            Repr::Num(q) => (q.clone(), &[]),
+            Repr::Mul(f) => match &f[0].0 {
+                Repr::Num(q) => (q.clone(), &f[1..]),
+                _ => (Q::ONE, &f[..]),
+            },
+            _ => (Q::ONE, std::slice::from_ref(self)),
+        }
+    }
+
+    /// The terms of a sum, or the expression itself as a single term.
+    pub fn terms(&self) -> &[Expr] {
+        match &self.0 {
+            Repr::Add(t) => t,
+            _ => std::slice::from_ref(self),
+        }
+    }
+
+    /// The factors of a product (coefficient included), or the expression itself.
+    pub fn factors(&self) -> &[Expr] {
+        match &self.0 {
+            Repr::Mul(f) => f,
+            _ => std::slice::from_ref(self),
+        }
+    }
+
+    /// Base and exponent: `x^n` gives `(x, n)`, anything else `(self, 1)`.
+    pub fn base_and_exponent(&self) -> (&Expr, Expr) {
+        match &self.0 {
+            Repr::Pow(p) => (&p.0, p.1.clone()),
+            _ => (self, Expr::one()),
+        }
+    }
+
+    /// The canonical sum of the given terms.
+    pub fn add_all<I: IntoIterator<Item = Expr>>(terms: I) -> Expr {
+        let mut flat: Vec<Expr> = Vec::new();
+        let mut constant = Q::ZERO;
+        for t in terms {
+            match &t.0 {
+                Repr::Add(inner) => {
+                    for u in inner.iter() {
+                        match &u.0 {
+                            Repr::Num(q) => constant = &constant + q,
+                            _ => flat.push(u.clone()),
+                        }
+                    }
+                }
+                Repr::Num(q) => constant = &constant + q,
+                _ => flat.push(t),
+            }
+        }
+        flat.sort_by(|a, b| cmp_slices(a.coeff_and_factors().1, b.coeff_and_factors().1));
+        let mut out: Vec<Expr> = Vec::with_capacity(flat.len() + 1);
+        if !constant.is_zero() {
+            out.push(Expr::num(constant));
+        }
+        let mut i = 0;
+        while i < flat.len() {
+            let (c0, rest) = flat[i].coeff_and_factors();
+            let mut j = i + 1;
+            let mut coeff = c0;
+            while j < flat.len()
+                && cmp_slices(flat[j].coeff_and_factors().1, rest) == Ordering::Equal
+            {
+                coeff = &coeff + &flat[j].coeff_and_factors().0;
+                j += 1;
+            }
+            if !coeff.is_zero() {
+                if j == i + 1 {
+                    out.push(flat[i].clone());
+                } else {
+                    out.push(term_from(coeff, rest));
+                }
+            }
+            i = j;
+        }
+        match out.len() {
+            0 => Expr::zero(),
+            1 => out.pop().unwrap_or_else(Expr::zero),
+            _ => Expr(Repr::Add(out.into())),
+        }
+    }
+
+    /// The canonical product of the given factors.
+    pub fn mul_all<I: IntoIterator<Item = Expr>>(factors: I) -> Expr {
+        let mut coeff = Q::ONE;
+        let mut flat: Vec<Expr> = Vec::new();
+        for f in factors {
+            match &f.0 {
+                Repr::Num(q) => coeff = &coeff * q,
+                Repr::Mul(inner) => {
+                    for g in inner.iter() {
+                        match &g.0 {
+                            Repr::Num(q) => coeff = &coeff * q,
+                            _ => flat.push(g.clone()),
+                        }
+                    }
+                }
+                _ => flat.push(f),
+            }
+        }
+        if coeff.is_zero() {
+            return Expr::zero();
+        }
+        flat.sort_by(|a, b| a.base_and_exponent().0.cmp(b.base_and_exponent().0));
+        let mut out: Vec<Expr> = Vec::with_capacity(flat.len() + 1);
+        let mut merged = false;
+        let mut renormalise = false;
+        let mut i = 0;
+        while i < flat.len() {
+            let base = flat[i].base_and_exponent().0;
+            let mut j = i + 1;
+            while j < flat.len() && flat[j].base_and_exponent().0 == base {
+                j += 1;
+            }
+            if j == i + 1 {
+                out.push(flat[i].clone());
+            } else {
+                merged = true;
+                let exponent = Expr::add_all(flat[i..j].iter().map(|f| f.base_and_exponent().1));
+                let power = power_or_unevaluated(base, &exponent);
+                match &power.0 {
+                    Repr::Num(q) => coeff = &coeff * q,
+                    Repr::Mul(_) => {
+                        renormalise = true;
+                        out.push(power);
+                    }
+                    _ => out.push(power),
+                }
+            }
+            i = j;
+        }
+        if merged {
+            out.sort_by(|a, b| a.base_and_exponent().0.cmp(b.base_and_exponent().0));
+        }
+        if renormalise {
+            out.push(Expr::num(coeff));
+            return Expr::mul_all(out);
+        }
+        if coeff.is_zero() {
+            return Expr::zero();
+        }
+        if out.is_empty() {
+            return Expr::num(coeff);
+        }
+        if out.len() == 1 {
+            let only = out.pop().unwrap_or_else(Expr::one);
+            if coeff.is_one() {
+                return only;
+            }
+            if let Repr::Add(terms) = &only.0 {
+                // A number times a sum is distributed, so that sums cancel as wholes.
+                let c = Expr::num(coeff);
+                return Expr::add_all(terms.iter().map(|t| Expr::mul_all([c.clone(), t.clone()])));
+            }
+            return Expr(Repr::Mul(vec![Expr::num(coeff), only].into()));
+        }
+        if !coeff.is_one() {
+            out.insert(0, Expr::num(coeff));
+        }
+        Expr(Repr::Mul(out.into()))
+    }
+
+    /// `self^exponent`, or an error for `0` to a negative power.
+    pub fn checked_pow(&self, exponent: &Expr) -> Result<Expr, AlgebraError> {
+        if self.is_zero() {
+            if let Some(e) = exponent.as_num() {
+                if e.is_negative() {
+                    return Err(AlgebraError::DivisionByZero);
+                }
+            }
+        }
+        Ok(power_or_unevaluated(self, exponent))
+    }
+
+    /// `self^n` for an integer `n`. Panics for `0^n` with `n < 0` (a programming error;
+    /// parsed input goes through [`Expr::checked_pow`]).
+    pub fn powi(&self, n: i64) -> Expr {
+        self.checked_pow(&Expr::int(n))
+            .expect("zero raised to a negative power")
+    }
+
+    /// `self / other`, or an error when `other` is zero.
+    pub fn checked_div(&self, other: &Expr) -> Result<Expr, AlgebraError> {
+        Ok(Expr::mul_all([
+            self.clone(),
+            other.checked_pow(&Expr::int(-1))?,
+        ]))
+    }
+
+    /// `f(arg)` with the function's simplifications applied.
+    pub fn func(f: Func, arg: Expr) -> Expr {
+        f.apply(arg)
+    }
+
+    /// A function node with no simplification; only for [`Func::apply`].
+    pub(crate) fn func_node(f: Func, arg: Expr) -> Expr {
+        Expr(Repr::Func(f, Arc::new(arg)))
+    }
+
+    /// Number of nodes in the tree (a measure of size, for limits).
+    pub fn node_count(&self) -> usize {
+        match self.view() {
+            View::Num(_) | View::Sym(_) => 1,
+            View::Add(xs) | View::Mul(xs) => 1 + xs.iter().map(Expr::node_count).sum::<usize>(),
+            View::Pow(b, e) => 1 + b.node_count() + e.node_count(),
+            View::Func(_, a) => 1 + a.node_count(),
+        }
+    }
+
+    /// Whether `s` occurs anywhere in the expression.
+    pub fn contains(&self, s: Symbol) -> bool {
+        match self.view() {
+            View::Num(_) => false,
+            View::Sym(t) => t == s,
+            View::Add(xs) | View::Mul(xs) => xs.iter().any(|x| x.contains(s)),
+            View::Pow(b, e) => b.contains(s) || e.contains(s),
+            View::Func(_, a) => a.contains(s),
+        }
+    }
+
+    /// The symbols in the expression, sorted by name, each once.
+    pub fn symbols(&self) -> Vec<Symbol> {
+        fn walk(e: &Expr, out: &mut Vec<Symbol>) {
+            match e.view() {
+                View::Num(_) => {}
+                View::Sym(s) => out.push(s),
+                View::Add(xs) | View::Mul(xs) => xs.iter().for_each(|x| walk(x, out)),
+                View::Pow(b, x) => {
+                    walk(b, out);
+                    walk(x, out);
+                }
+                View::Func(_, a) => walk(a, out),
+            }
+        }
+        let mut out = Vec::new();
+        walk(self, &mut out);
+        out.sort();
+        out.dedup();
+        out
+    }
+
+    fn rank(&self) -> u8 {
+        match &self.0 {
+            Repr::Num(_) => 0,
+            Repr::Sym(_) => 1,
+            Repr::Pow(_) => 2,
+            Repr::Mul(_) => 3,
+            Repr::Add(_) => 4,
+            Repr::Func(..) => 5,
+        }
+    }
+}
+
+/// `coeff · rest` as a canonical term.
+fn term_from(coeff: Q, rest: &[Expr]) -> Expr {
+    Expr::mul_all(std::iter::once(Expr::num(coeff)).chain(rest.iter().cloned()))
+}
+
+/// `base^exponent` in canonical form; a numeric power too large to fold, or `0` to a
+/// negative power, stays as an unevaluated power node.
+fn power_or_unevaluated(base: &Expr, exponent: &Expr) -> Expr {
+    if exponent.is_zero() {
+        return Expr::one();
+    }
+    if exponent.is_one() {
+        return base.clone();
+    }
+    if base.is_one() {
+        return Expr::one();
+    }
+    let int_exp = exponent.as_num().and_then(Q::to_i64);
+    match (&base.0, exponent.as_num()) {
+        (Repr::Num(b), Some(e)) => {
+            if b.is_zero() && !e.is_negative() {
+                return Expr::zero();
+            }
+            if let Some(n) = int_exp {
+                if let Some(v) = b.checked_pow(n) {
+                    return Expr::num(v);
+                }
+            } else if let (Some(p), Some(q)) = (e.numer().to_i64(), e.denom().to_i64()) {
+                if let Some(root) = u32::try_from(q).ok().and_then(|q| b.exact_root(q)) {
+                    if let Some(v) = root.checked_pow(p) {
+                        return Expr::num(v);
+                    }
+                }
+            }
+        }
+        (Repr::Pow(p), _) if int_exp.is_some() => {
+            let combined = Expr::mul_all([p.1.clone(), exponent.clone()]);
+            return power_or_unevaluated(&p.0, &combined);
+        }
+        (Repr::Mul(factors), _) if int_exp.is_some() => {
+            return Expr::mul_all(factors.iter().map(|f| power_or_unevaluated(f, exponent)));
+        }
+        _ => {}
+    }
+    Expr(Repr::Pow(Arc::new((base.clone(), exponent.clone()))))
+}
+
+/// Lexicographic order of two slices of expressions, shorter first on a common prefix.
+pub(crate) fn cmp_slices(a: &[Expr], b: &[Expr]) -> Ordering {
+    for (x, y) in a.iter().zip(b.iter()) {
+        match x.cmp(y) {
+            Ordering::Equal => {}
+            other => return other,
+        }
+    }
+    a.len().cmp(&b.len())
+}
+
+impl Ord for Expr {
+    fn cmp(&self, other: &Expr) -> Ordering {
+        match (&self.0, &other.0) {
+            (Repr::Num(a), Repr::Num(b)) => a.cmp(b),
+            (Repr::Sym(a), Repr::Sym(b)) => a.cmp(b),
+            (Repr::Add(a), Repr::Add(b)) | (Repr::Mul(a), Repr::Mul(b)) => {
+                if Arc::ptr_eq(a, b) {
+                    Ordering::Equal
+                } else {
+                    cmp_slices(a, b)
+                }
+            }
+            (Repr::Pow(a), Repr::Pow(b)) => a.0.cmp(&b.0).then_with(|| a.1.cmp(&b.1)),
+            (Repr::Func(f, a), Repr::Func(g, b)) => f.cmp(g).then_with(|| a.cmp(b)),
+            _ => self.rank().cmp(&other.rank()),
+        }
+    }
+}
+
+impl PartialOrd for Expr {
+    fn partial_cmp(&self, other: &Expr) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl PartialEq for Expr {
+    fn eq(&self, other: &Expr) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+
+impl Eq for Expr {}
+
+impl Hash for Expr {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        self.rank().hash(state);
+        match &self.0 {
+            Repr::Num(q) => q.hash(state),
+            Repr::Sym(s) => s.hash(state),
+            Repr::Add(xs) | Repr::Mul(xs) => xs.iter().for_each(|x| x.hash(state)),
+            Repr::Pow(p) => {
+                p.0.hash(state);
+                p.1.hash(state);
+            }
+            Repr::Func(f, a) => {
+                f.hash(state);
+                a.hash(state);
+            }
+        }
+    }
+}
+
+impl std::fmt::Debug for Expr {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&crate::print::text(self))
+    }
+}
+
+impl std::fmt::Display for Expr {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&crate::print::text(self))
+    }
+}
+
+impl From<Symbol> for Expr {
+    fn from(s: Symbol) -> Expr {
+        Expr::sym(s)
+    }
+}
+
+impl From<i64> for Expr {
+    fn from(n: i64) -> Expr {
+        Expr::int(n)
+    }
+}
+
+impl From<Q> for Expr {
+    fn from(q: Q) -> Expr {
+        Expr::num(q)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn s(n: &str) -> Expr {
+        Expr::symbol(n)
+    }
+
+    #[test]
+    fn like_terms_and_powers_combine() {
+        let (x, y) = (s("x"), s("y"));
+        assert_eq!(
+            Expr::add_all([x.clone(), x.clone(), y.clone()]),
+            Expr::add_all([Expr::mul_all([Expr::int(2), x.clone()]), y.clone()])
+        );
+        assert!(Expr::add_all([x.clone(), Expr::mul_all([Expr::int(-1), x.clone()])]).is_zero());
+        assert_eq!(Expr::mul_all([x.clone(), x.clone(), x.clone()]), x.powi(3));
+        assert!(x.powi(0).is_one());
+        assert_eq!(x.powi(1), x);
+        assert!(Expr::mul_all([Expr::zero(), x.clone()]).is_zero());
+    }
+
+    #[test]
+    fn sums_cancel_as_wholes_and_roots_fold() {
+        let sum = Expr::add_all([s("a"), s("b")]);
+        let neg = Expr::mul_all([Expr::int(-1), sum.clone()]);
+        assert!(Expr::add_all([sum, neg]).is_zero());
+        let root2 = Expr::int(2).checked_pow(&Expr::rational(1, 2)).unwrap();
+        assert_eq!(Expr::mul_all([root2.clone(), root2]), Expr::int(2));
+        assert_eq!(
+            Expr::int(4).checked_pow(&Expr::rational(1, 2)).unwrap(),
+            Expr::int(2)
+        );
+    }
+
+    #[test]
+    fn zero_to_negative_power_is_an_error() {
+        assert_eq!(
+            Expr::zero().checked_pow(&Expr::int(-1)),
+            Err(AlgebraError::DivisionByZero)
+        );
+        assert!(Expr::one().checked_div(&Expr::zero()).is_err());
+    }
+
+    #[test]
+    fn huge_numeric_power_stays_symbolic() {
+        let p = Expr::int(2).checked_pow(&Expr::int(99_999_999)).unwrap();
+        assert!(matches!(p.view(), View::Pow(..)));
+    }
+}

@@ -1,0 +1,84 @@
+//! The elementary functions an expression may hold: `sin`, `cos`, `tan`, `abs`.
+//! (`sqrt(x)` is the power `x^(1/2)`.)
+//!
+//! Construction applies the parity rules `sin(-x) = -sin x`, `cos(-x) = cos x`,
+//! `tan(-x) = -tan x`, `|-x| = |x|`, `||x|| = |x|` and the values at zero.
+
+use super::expr::{Expr, View};
+
+/// An elementary function of one argument.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Func {
+    Sin,
+    Cos,
+    Tan,
+    Abs,
+}
+
+impl Func {
+    /// The function of this ASCII name (`sin`, `cos`, `tan`, `abs`).
+    pub fn from_name(name: &str) -> Option<Func> {
+        Some(match name {
+            "sin" => Func::Sin,
+            "cos" => Func::Cos,
+            "tan" => Func::Tan,
+            "abs" => Func::Abs,
+            _ => return None,
+        })
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Func::Sin => "sin",
+            Func::Cos => "cos",
+            Func::Tan => "tan",
+            Func::Abs => "abs",
+        }
+    }
+
+    /// `f(arg)` in canonical form.
+    pub fn apply(self, arg: Expr) -> Expr {
+        if let Some(q) = arg.as_num() {
+            match self {
+                Func::Abs => return Expr::num(q.abs()),
+                Func::Sin | Func::Tan if q.is_zero() => return Expr::zero(),
+                Func::Cos if q.is_zero() => return Expr::one(),
+                _ => {}
+            }
+        }
+        if let View::Func(Func::Abs, _) = arg.view() {
+            if self == Func::Abs {
+                return arg;
+            }
+        }
+        let (coeff, _) = arg.coeff_and_factors();
+        if coeff.is_negative() && !matches!(arg.view(), View::Add(_)) {
+            let positive = -arg;
+            return match self {
+                Func::Sin | Func::Tan => -Expr::func_node(self, positive),
+                Func::Cos | Func::Abs => Expr::func_node(self, positive),
+            };
+        }
+        Expr::func_node(self, arg)
+    }
+
+    /// `f'(u)`, the derivative with respect to the argument, evaluated at `u`.
+    pub fn derivative_at(self, u: &Expr) -> Expr {
+        match self {
+            Func::Sin => Func::Cos.apply(u.clone()),
+            Func::Cos => -Func::Sin.apply(u.clone()),
+            Func::Tan => Expr::one() + Func::Tan.apply(u.clone()).powi(2),
+            Func::Abs => u * &Func::Abs.apply(u.clone()).powi(-1),
+        }
+    }
+
+    /// The function on a floating-point scalar.
+    pub fn eval<T: num_traits::Float>(self, x: T) -> T {
+        match self {
+            Func::Sin => x.sin(),
+            Func::Cos => x.cos(),
+            Func::Tan => x.tan(),
+            Func::Abs => x.abs(),
+        }
+    }
+}

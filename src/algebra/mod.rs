@@ -1,0 +1,32 @@
+//! The exact expression algebra the derivations are written in.
+//!
+//! [`Expr`] is an immutable expression in canonical form with exact rational constants and
+//! interned [`Symbol`]s. It supports `+ - * /` (so nalgebra matrices and vectors of
+//! expressions work), [`Expr::expand`], [`Expr::subs`], [`Expr::collect`], [`Expr::d_dt`],
+//! [`Expr::diff`] and [`Expr::eval`] over any float type.
+
+mod collect;
+mod derivative;
+mod error;
+mod eval;
+mod expand;
+mod expr;
+mod function;
+mod ops;
+mod rational;
+mod subs;
+mod symbol;
+pub mod vector;
+
+pub use collect::Collected;
+pub use error::{AlgebraError, MAX_EXPANDED_TERMS};
+pub use eval::rational_to;
+pub use expr::{Expr, View};
+pub use function::Func;
+pub use rational::Q;
+pub use symbol::{Role, Symbol};
+
+/// A three-vector of expressions (`i`, `j`, `k` components).
+pub type Vector = nalgebra::Vector3<Expr>;
+/// A 3 × 3 matrix of expressions, such as the inertia tensor.
+pub type Matrix = nalgebra::Matrix3<Expr>;

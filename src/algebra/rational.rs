@@ -1,0 +1,418 @@
+//! Exact rational numbers `p/q` (`q > 0`, `gcd(p, q) = 1`).
+//!
+//! Small values live in two machine words; an operation that would overflow moves to a big
+//! integer representation, and a result that fits again moves back. The algebra never
+//! rounds: a decimal such as `0.1` is the rational `1/10`.
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::cmp::Ordering;
+use std::fmt;
+use std::hash::{Hash, Hasher};
+use std::sync::Arc;
+
+/// An exact rational number.
+#[derive(Clone)]
+pub enum Q {
+    /// `num/den` with `den > 0` and `gcd(num, den) = 1`.
+    Small(i64, i64),
+    /// A value that does not fit `Small`; never holds a value that would.
+    Big(Arc<BigRational>),
+}
+
+/// Largest number of bits a folded power `p^n` may have; larger powers stay symbolic.
+pub const MAX_POWER_BITS: u64 = 4096;
+
+impl Q {
+    pub const ZERO: Q = Q::Small(0, 1);
+    pub const ONE: Q = Q::Small(1, 1);
+    pub const MINUS_ONE: Q = Q::Small(-1, 1);
+
+    /// The integer `n`.
+    pub fn int(n: i64) -> Q {
+        Q::Small(n, 1)
+    }
+
+    /// `num/den` reduced; `None` when `den` is zero.
+    pub fn new(num: i64, den: i64) -> Option<Q> {
+        if den == 0 {
+            return None;
+        }
+        Some(Q::from_big(BigRational::new(num.into(), den.into())))
+    }
+
+    /// The exact value of a decimal literal such as `12`, `0.25`, `1.5e-3` or `.5`.
+    pub fn parse_decimal(text: &str) -> Option<Q> {
+        let (mantissa, exponent) = match text.find(['e', 'E']) {
+            Some(at) => (&text[..at], text[at + 1..].parse::<i64>().ok()?),
+            None => (text, 0),
+        };
+        let (int_part, frac_part) = match mantissa.find('.') {
+            Some(at) => (&mantissa[..at], &mantissa[at + 1..]),
+            None => (mantissa, ""),
+        };
+        if int_part.is_empty() && frac_part.is_empty() {
+            return None;
+        }
+        let digits: String = [int_part, frac_part].concat();
+        if !digits.bytes().all(|b| b.is_ascii_digit()) {
+            return None;
+        }
+        let scale = exponent.checked_sub(frac_part.len() as i64)?;
+        if scale.unsigned_abs() > 4096 {
+            return None;
+        }
+        let value: BigInt = digits.parse().ok()?;
+        let ten = BigInt::from(10);
+        let power = num_traits::pow(ten, scale.unsigned_abs() as usize);
+        let ratio = if scale >= 0 {
+            BigRational::from_integer(value * power)
+        } else {
+            BigRational::new(value, power)
+        };
+        Some(Q::from_big(ratio))
+    }
+
+    fn from_big(r: BigRational) -> Q {
+        match (r.numer().to_i64(), r.denom().to_i64()) {
+            (Some(n), Some(d)) => Q::Small(n, d),
+            _ => Q::Big(Arc::new(r)),
+        }
+    }
+
+    fn to_big(&self) -> BigRational {
+        match self {
+            Q::Small(n, d) => BigRational::new_raw((*n).into(), (*d).into()),
+            Q::Big(b) => (**b).clone(),
+        }
+    }
+
+    /// Reduces `n/d` (`d != 0`) computed in 128-bit arithmetic.
+    fn from_i128(n: i128, d: i128) -> Q {
+        let g = n.gcd(&d);
+        let (mut n, mut d) = (n / g, d / g);
+        if d < 0 {
+            n = -n;
+            d = -d;
+        }
+        match (i64::try_from(n), i64::try_from(d)) {
+            (Ok(n), Ok(d)) => Q::Small(n, d),
+            _ => Q::from_big(BigRational::new(n.into(), d.into())),
+        }
+    }
+
+    pub fn is_zero(&self) -> bool {
+        matches!(self, Q::Small(0, _))
+    }
+
+    pub fn is_one(&self) -> bool {
+        matches!(self, Q::Small(1, 1))
+    }
+
+    pub fn is_negative(&self) -> bool {
+        match self {
+            Q::Small(n, _) => *n < 0,
+            Q::Big(b) => b.is_negative(),
+        }
+    }
+
+    pub fn is_integer(&self) -> bool {
+        match self {
+            Q::Small(_, d) => *d == 1,
+            Q::Big(b) => b.is_integer(),
+        }
+    }
+
+    /// The value as an `i64` when it is an integer that fits.
+    pub fn to_i64(&self) -> Option<i64> {
+        match self {
+            Q::Small(n, 1) => Some(*n),
+            _ => None,
+        }
+    }
+
+    /// Numerator and denominator as big integers.
+    pub fn parts(&self) -> (BigInt, BigInt) {
+        let b = self.to_big();
+        (b.numer().clone(), b.denom().clone())
+    }
+
+    /// The numerator as a rational (an integer), keeping the sign.
+    pub fn numer(&self) -> Q {
+        match self {
+            Q::Small(n, _) => Q::int(*n),
+            Q::Big(b) => Q::from_big(BigRational::from_integer(b.numer().clone())),
+        }
+    }
+
+    /// The denominator as a rational (a positive integer).
+    pub fn denom(&self) -> Q {
+        match self {
+            Q::Small(_, d) => Q::int(*d),
+            Q::Big(b) => Q::from_big(BigRational::from_integer(b.denom().clone())),
+        }
+    }
+
+    /// The nearest `f64` (correctly rounded for small values, to within an ulp otherwise).
+    pub fn to_f64(&self) -> f64 {
+        match self {
+            Q::Small(n, d) => *n as f64 / *d as f64,
+            Q::Big(b) => big_to_f64(b),
+        }
+    }
+
+    pub fn abs(&self) -> Q {
+        if self.is_negative() {
+            -self
+        } else {
+            self.clone()
+        }
+    }
+
+    /// `1/self`, or `None` for zero.
+    pub fn recip(&self) -> Option<Q> {
+        match self {
+            Q::Small(0, _) => None,
+            Q::Small(n, d) => Some(Q::from_i128(*d as i128, *n as i128)),
+            Q::Big(b) => Some(Q::from_big(b.recip())),
+        }
+    }
+
+    /// `self / other`, or `None` when `other` is zero.
+    pub fn checked_div(&self, other: &Q) -> Option<Q> {
+        Some(self * &other.recip()?)
+    }
+
+    /// `self^n` for an integer `n`; `None` for `0^n` with `n < 0` or when the result would
+    /// have more than [`MAX_POWER_BITS`] bits.
+    pub fn checked_pow(&self, n: i64) -> Option<Q> {
+        if n == 0 {
+            return Some(Q::ONE);
+        }
+        let base = if n < 0 { self.recip()? } else { self.clone() };
+        let (num, den) = base.parts();
+        let bits = num.bits().max(den.bits()).max(1);
+        if bits.saturating_mul(n.unsigned_abs()) > MAX_POWER_BITS {
+            return None;
+        }
+        let e = n.unsigned_abs() as usize;
+        Some(Q::from_big(BigRational::new(
+            num_traits::pow(num, e),
+            num_traits::pow(den, e),
+        )))
+    }
+
+    /// The exact `k`-th root when `self` is a perfect `k`-th power (sign allowed for odd `k`).
+    pub fn exact_root(&self, k: u32) -> Option<Q> {
+        if k == 0 || (self.is_negative() && k.is_multiple_of(2)) {
+            return None;
+        }
+        let (num, den) = self.parts();
+        let root = |x: &BigInt| -> Option<BigInt> {
+            let r = x.nth_root(k);
+            (num_traits::pow(r.clone(), k as usize) == *x).then_some(r)
+        };
+        Some(Q::from_big(BigRational::new(root(&num)?, root(&den)?)))
+    }
+}
+
+fn big_to_f64(b: &BigRational) -> f64 {
+    match (b.numer().to_f64(), b.denom().to_f64()) {
+        (Some(n), Some(d)) if n.is_finite() && d.is_finite() => n / d,
+        _ => {
+            // Scale both parts down to a common exponent before dividing.
+            let shift = b.numer().bits().max(b.denom().bits()).saturating_sub(1000);
+            let n = (b.numer() >> shift).to_f64().unwrap_or(f64::NAN);
+            let d = (b.denom() >> shift).to_f64().unwrap_or(f64::NAN);
+            n / d
+        }
+    }
+}
+
+impl PartialEq for Q {
+    fn eq(&self, other: &Q) -> bool {
+        match (self, other) {
+            (Q::Small(a, b), Q::Small(c, d)) => a == c && b == d,
+            (Q::Big(a), Q::Big(b)) => a == b,
+            _ => false,
+        }
+    }
+}
+
+impl Eq for Q {}
+
+impl Hash for Q {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        match self {
+            Q::Small(n, d) => {
+                n.hash(state);
+                d.hash(state);
+            }
+            Q::Big(b) => b.hash(state),
+        }
+    }
+}
+
+impl Ord for Q {
+    fn cmp(&self, other: &Q) -> Ordering {
+        match (self, other) {
+            (Q::Small(a, b), Q::Small(c, d)) => {
+                (*a as i128 * *d as i128).cmp(&(*c as i128 * *b as i128))
+            }
+            _ => self.to_big().cmp(&other.to_big()),
+        }
+    }
+}
+
+impl PartialOrd for Q {
+    fn partial_cmp(&self, other: &Q) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl std::ops::Add for &Q {
+    type Output = Q;
+    fn add(self, other: &Q) -> Q {
+        match (self, other) {
+            (Q::Small(a, b), Q::Small(c, d)) => {
+                if b == d {
+                    match a.checked_add(*c) {
+                        Some(n) if *b == 1 => Q::Small(n, 1),
+                        _ => Q::from_i128(*a as i128 + *c as i128, *b as i128),
+                    }
+                } else {
+                    let (a, b, c, d) = (*a as i128, *b as i128, *c as i128, *d as i128);
+                    Q::from_i128(a * d + c * b, b * d)
+                }
+            }
+            _ => Q::from_big(self.to_big() + other.to_big()),
+        }
+    }
+}
+
+impl std::ops::Sub for &Q {
+    type Output = Q;
+    fn sub(self, other: &Q) -> Q {
+        self + &(-other)
+    }
+}
+
+impl std::ops::Mul for &Q {
+    type Output = Q;
+    fn mul(self, other: &Q) -> Q {
+        match (self, other) {
+            (Q::Small(a, 1), Q::Small(c, 1)) => match a.checked_mul(*c) {
+                Some(n) => Q::Small(n, 1),
+                None => Q::from_i128(*a as i128 * *c as i128, 1),
+            },
+            (Q::Small(a, b), Q::Small(c, d)) => {
+                Q::from_i128(*a as i128 * *c as i128, *b as i128 * *d as i128)
+            }
+            _ => Q::from_big(self.to_big() * other.to_big()),
+        }
+    }
+}
+
+impl std::ops::Neg for &Q {
+    type Output = Q;
+    fn neg(self) -> Q {
+        match self {
+            Q::Small(n, d) => match n.checked_neg() {
+                Some(m) => Q::Small(m, *d),
+                None => Q::from_i128(-(*n as i128), *d as i128),
+            },
+            Q::Big(b) => Q::from_big(-(**b).clone()),
+        }
+    }
+}
+
+impl fmt::Display for Q {
+    /// `p` for integers, `p/q` otherwise.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Q::Small(n, 1) => write!(f, "{n}"),
+            Q::Small(n, d) => write!(f, "{n}/{d}"),
+            Q::Big(b) if b.is_integer() => write!(f, "{}", b.numer()),
+            Q::Big(b) => write!(f, "{}/{}", b.numer(), b.denom()),
+        }
+    }
+}
+
+impl fmt::Debug for Q {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(self, f)
+    }
+}
+
+impl From<i64> for Q {
+    fn from(n: i64) -> Q {
+        Q::int(n)
+    }
+}
+
+impl One for Q {
+    fn one() -> Q {
+        Q::ONE
+    }
+}
+
+impl Zero for Q {
+    fn zero() -> Q {
+        Q::ZERO
+    }
+    fn is_zero(&self) -> bool {
+        Q::is_zero(self)
+    }
+}
+
+impl std::ops::Mul for Q {
+    type Output = Q;
+    fn mul(self, other: Q) -> Q {
+        &self * &other
+    }
+}
+
+impl std::ops::Add for Q {
+    type Output = Q;
+    fn add(self, other: Q) -> Q {
+        &self + &other
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimals_are_exact() {
+        assert_eq!(Q::parse_decimal("0.1"), Q::new(1, 10));
+        assert_eq!(Q::parse_decimal("1.5e-3"), Q::new(3, 2000));
+        assert_eq!(Q::parse_decimal(".5"), Q::new(1, 2));
+        assert_eq!(Q::parse_decimal("2.4"), Q::new(12, 5));
+        assert_eq!(Q::parse_decimal("."), None);
+    }
+
+    #[test]
+    fn overflow_moves_to_big_and_back() {
+        let big = &Q::int(i64::MAX) * &Q::int(4);
+        assert!(matches!(big, Q::Big(_)));
+        let back = big.checked_div(&Q::int(8)).unwrap();
+        assert_eq!(back, Q::new(i64::MAX, 2).unwrap());
+        assert_eq!(
+            &(&Q::int(i64::MIN) + &Q::int(-1)) - &Q::int(-1),
+            Q::int(i64::MIN)
+        );
+    }
+
+    #[test]
+    fn powers_and_roots() {
+        assert_eq!(Q::new(2, 3).unwrap().checked_pow(-2), Q::new(9, 4));
+        assert_eq!(Q::ZERO.checked_pow(-1), None);
+        assert_eq!(Q::int(2).checked_pow(100_000), None);
+        assert_eq!(Q::new(4, 9).unwrap().exact_root(2), Q::new(2, 3));
+        assert_eq!(Q::int(2).exact_root(2), None);
+        assert_eq!(Q::int(-8).exact_root(3), Some(Q::int(-2)));
+    }
+}

@@ -1,0 +1,348 @@
+//! Interned symbols: each knows its ASCII name, its LaTeX form, its order of time
+//! derivative and its role in a formula.
+//!
+//! Names follow one convention, read by [`Symbol::new`]:
+//!
+//! ```text
+//! name      = base ["bar"] ["dot" | "ddot"] [digits] ["_" subscript]
+//! w_x       -> \omega_x          (ω, time-dependent)
+//! wdot_x    -> \dot{\omega}_x    (ω̇: the time derivative of w_x)
+//! w1        -> \omega_1          (trailing digits are a subscript: the same symbol as w_1)
+//! I_xy      -> I_{xy}            (a product of inertia)
+//! vbar_x    -> \bar{v}_x
+//! Dt        -> \Delta t
+//! ```
+//!
+//! The role decides the order of factors in a printed product (numbers, then inertia and
+//! mass, then other quantities, then lengths, then kinematic symbols) and which symbols
+//! depend on time: only kinematic ones (`w`, `omega`, `Omega`, `alpha`, `theta`, `phi`,
+//! `psi`, `v`, `vbar`, axis components `a_x`, ... and every dotted symbol).
+//!
+//! ```
+//! use kinetics::algebra::Symbol;
+//! let w = Symbol::new("w_x");
+//! assert_eq!(w.latex(), r"\omega_x");
+//! assert_eq!(w.dot().latex(), r"\dot{\omega}_x");
+//! assert_eq!(w.dot().name(), "wdot_x");
+//! assert_eq!(Symbol::new("w1"), Symbol::new("w_1"));
+//! ```
+
+use std::collections::HashMap;
+use std::fmt;
+use std::hash::{Hash, Hasher};
+use std::sync::{Mutex, OnceLock};
+
+/// What a symbol stands for; decides factor order in print and time dependence.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Role {
+    /// Moments and products of inertia: `I_x`, `I_xy`, `I`.
+    Inertia,
+    /// Mass: `m`, `m_1`.
+    Mass,
+    /// Forces, couples, impulses, times, constant angles, everything not classified.
+    Other,
+    /// Lengths: `L`, `l`, `r`, `a`, `b`, `c`, `d`, `h`, `x`, `y`, `z`, `xbar`, ...
+    Length,
+    /// Time-dependent quantities: angular velocities and accelerations, velocities,
+    /// accelerations, Euler angles, and any derivative.
+    Kinematic,
+    /// The unit vectors `i`, `j`, `k` of a vector sum.
+    UnitVector,
+}
+
+/// The data behind a [`Symbol`], interned once per distinct name for the process's life.
+#[derive(Debug)]
+pub struct SymbolData {
+    name: Box<str>,
+    base: Box<str>,
+    barred: bool,
+    dots: u8,
+    subscript: Box<str>,
+    role: Role,
+    latex: Box<str>,
+}
+
+/// An interned symbol; copying and comparing for equality are pointer operations.
+#[derive(Clone, Copy)]
+pub struct Symbol(&'static SymbolData);
+
+const GREEK: [&str; 30] = [
+    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
+    "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi",
+    "omega", "Gamma", "Delta", "Theta", "Lambda", "Sigma", "Phi", "Omega",
+];
+
+fn interner() -> &'static Mutex<HashMap<Box<str>, &'static SymbolData>> {
+    static INTERNER: OnceLock<Mutex<HashMap<Box<str>, &'static SymbolData>>> = OnceLock::new();
+    INTERNER.get_or_init(|| Mutex::new(HashMap::new()))
+}
+
+impl Symbol {
+    /// The symbol with this ASCII name (see the module documentation for the convention).
+    /// The caller guarantees the name is well formed: an ASCII letter followed by letters,
+    /// digits, `_` and `'` (the parser checks this for user input).
+    pub fn new(name: &str) -> Symbol {
+        let mut map = interner()
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner());
+        if let Some(data) = map.get(name) {
+            return Symbol(data);
+        }
+        let data = SymbolData::from_name(name);
+        let data: &'static SymbolData = match map.get(&*data.name) {
+            Some(existing) => existing,
+            None => {
+                let leaked: &'static SymbolData = Box::leak(Box::new(data));
+                map.insert(leaked.name.clone(), leaked);
+                leaked
+            }
+        };
+        map.insert(name.into(), data);
+        Symbol(data)
+    }
+
+    /// The canonical ASCII name: `wdot_x`, `I_xy`, `w_1`.
+    pub fn name(self) -> &'static str {
+        &self.0.name
+    }
+
+    /// The LaTeX form: `\dot{\omega}_x`, `I_{xy}`.
+    pub fn latex(self) -> &'static str {
+        &self.0.latex
+    }
+
+    pub fn role(self) -> Role {
+        self.0.role
+    }
+
+    /// The subscript as written (`x`, `xy`, `1`, `x'`), empty when there is none.
+    pub fn subscript(self) -> &'static str {
+        &self.0.subscript
+    }
+
+    /// The base name without decoration or subscript: `w` for `wdot_x`.
+    pub fn base(self) -> &'static str {
+        &self.0.base
+    }
+
+    /// How many times this symbol has been differentiated with respect to time.
+    pub fn dots(self) -> u8 {
+        self.0.dots
+    }
+
+    /// Whether `d/dt` of this symbol is non-zero.
+    pub fn is_time_dependent(self) -> bool {
+        self.0.role == Role::Kinematic
+    }
+
+    /// The time derivative `ẋ` of this symbol.
+    pub fn dot(self) -> Symbol {
+        let d = self.0;
+        Symbol::new(&compose_name(&d.base, d.barred, d.dots + 1, &d.subscript))
+    }
+
+    /// The same symbol with another subscript: `I` with `xy` gives `I_xy`.
+    pub fn with_subscript(self, subscript: &str) -> Symbol {
+        let d = self.0;
+        Symbol::new(&compose_name(&d.base, d.barred, d.dots, subscript))
+    }
+
+    /// True for the derivative of a kinematic symbol (an acceleration-like quantity) and
+    /// for symbols that name an acceleration (`alpha`, `a_x`).
+    pub fn is_acceleration(self) -> bool {
+        self.0.dots > 0
+            || &*self.0.base == "alpha"
+            || (&*self.0.base == "a" && self.0.role == Role::Kinematic)
+    }
+}
+
+fn compose_name(base: &str, barred: bool, dots: u8, subscript: &str) -> String {
+    let mut name = base.to_string();
+    if barred {
+        name.push_str("bar");
+    }
+    match dots {
+        0 => {}
+        1 => name.push_str("dot"),
+        2 => name.push_str("ddot"),
+        n => name.push_str(&format!("d{n}ot")),
+    }
+    if !subscript.is_empty() {
+        name.push('_');
+        name.push_str(subscript);
+    }
+    name
+}
+
+impl SymbolData {
+    fn from_name(name: &str) -> SymbolData {
+        let (head, mut subscript) = match name.split_once('_') {
+            Some((h, s)) => (h, s.to_string()),
+            None => (name, String::new()),
+        };
+        let mut head = head;
+        if subscript.is_empty() {
+            let digits = head.len() - head.trim_end_matches(|c: char| c.is_ascii_digit()).len();
+            if digits > 0 && digits < head.len() {
+                subscript = head[head.len() - digits..].to_string();
+                head = &head[..head.len() - digits];
+            }
+        }
+        let mut dots = 0u8;
+        for (suffix, n) in [("ddot", 2u8), ("dot", 1u8)] {
+            if head.len() > suffix.len() && head.ends_with(suffix) {
+                head = &head[..head.len() - suffix.len()];
+                dots = n;
+                break;
+            }
+        }
+        let mut barred = false;
+        if head.len() > 3 && head.ends_with("bar") {
+            head = &head[..head.len() - 3];
+            barred = true;
+        }
+        let role = classify(head, barred, dots, &subscript);
+        let latex = latex_of(head, barred, dots, &subscript);
+        SymbolData {
+            name: compose_name(head, barred, dots, &subscript).into(),
+            base: head.into(),
+            barred,
+            dots,
+            subscript: subscript.into(),
+            role,
+            latex: latex.into(),
+        }
+    }
+}
+
+fn is_axis_subscript(subscript: &str) -> bool {
+    !subscript.is_empty()
+        && subscript
+            .chars()
+            .all(|c| matches!(c, 'x' | 'y' | 'z' | 'X' | 'Y' | 'Z' | '\''))
+}
+
+fn classify(base: &str, barred: bool, dots: u8, subscript: &str) -> Role {
+    if dots > 0 {
+        return Role::Kinematic;
+    }
+    match base {
+        "i" | "j" | "k" if subscript.is_empty() && !barred => Role::UnitVector,
+        "I" => Role::Inertia,
+        "m" => Role::Mass,
+        "w" | "omega" | "Omega" | "alpha" | "theta" | "phi" | "psi" | "v" => Role::Kinematic,
+        "a" if barred || is_axis_subscript(subscript) => Role::Kinematic,
+        "L" | "l" | "r" | "a" | "b" | "c" | "d" | "h" | "x" | "y" | "z" | "e" => Role::Length,
+        _ => Role::Other,
+    }
+}
+
+fn latex_of(base: &str, barred: bool, dots: u8, subscript: &str) -> String {
+    let mut core = if base == "w" {
+        r"\omega".to_string()
+    } else if base == "Dt" {
+        r"\Delta t".to_string()
+    } else if GREEK.contains(&base) {
+        format!(r"\{base}")
+    } else if matches!(base, "i" | "j" | "k") && subscript.is_empty() && !barred && dots == 0 {
+        format!(r"\mathbf{{{base}}}")
+    } else {
+        base.to_string()
+    };
+    if barred {
+        core = format!(r"\bar{{{core}}}");
+    }
+    core = match dots {
+        0 => core,
+        1 => format!(r"\dot{{{core}}}"),
+        2 => format!(r"\ddot{{{core}}}"),
+        n => format!(r"\overset{{({n})}}{{{core}}}"),
+    };
+    if subscript.is_empty() {
+        core
+    } else if subscript.len() == 1 {
+        format!("{core}_{subscript}")
+    } else {
+        format!("{core}_{{{subscript}}}")
+    }
+}
+
+impl PartialEq for Symbol {
+    fn eq(&self, other: &Symbol) -> bool {
+        std::ptr::eq(self.0, other.0)
+    }
+}
+
+impl Eq for Symbol {}
+
+impl Hash for Symbol {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        self.0.name.hash(state)
+    }
+}
+
+impl Ord for Symbol {
+    fn cmp(&self, other: &Symbol) -> std::cmp::Ordering {
+        if self == other {
+            std::cmp::Ordering::Equal
+        } else {
+            self.0.name.cmp(&other.0.name)
+        }
+    }
+}
+
+impl PartialOrd for Symbol {
+    fn partial_cmp(&self, other: &Symbol) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl fmt::Debug for Symbol {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl fmt::Display for Symbol {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_latex_and_roles() {
+        let cases = [
+            ("I_xy", "I_{xy}", Role::Inertia),
+            ("w_x", r"\omega_x", Role::Kinematic),
+            ("wdot_x", r"\dot{\omega}_x", Role::Kinematic),
+            ("alpha", r"\alpha", Role::Kinematic),
+            ("beta", r"\beta", Role::Other),
+            ("Dt", r"\Delta t", Role::Other),
+            ("a", "a", Role::Length),
+            ("a_x", "a_x", Role::Kinematic),
+            ("vbar_x", r"\bar{v}_x", Role::Kinematic),
+            ("I_x'", "I_{x'}", Role::Inertia),
+            ("i", r"\mathbf{i}", Role::UnitVector),
+            ("m", "m", Role::Mass),
+            ("thetaddot", r"\ddot{\theta}", Role::Kinematic),
+        ];
+        for (name, latex, role) in cases {
+            let s = Symbol::new(name);
+            assert_eq!(s.latex(), latex, "{name}");
+            assert_eq!(s.role(), role, "{name}");
+        }
+    }
+
+    #[test]
+    fn derivative_names_round_trip() {
+        let w = Symbol::new("w1");
+        assert_eq!(w.name(), "w_1");
+        assert_eq!(w.dot(), Symbol::new("wdot_1"));
+        assert_eq!(w.dot().dot(), Symbol::new("wddot1"));
+        assert!(!Symbol::new("L").is_time_dependent());
+    }
+}

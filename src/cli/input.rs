@@ -1,0 +1,29 @@
+//! Reading a command's mathematical input: an argument, or `-` for standard input.
+
+use kinetics::parse::limits::MAX_INPUT_BYTES;
+use std::io::Read;
+
+/// The text of the argument, or all of standard input when it is `-`, with the name to use
+/// in diagnostics. Standard input beyond the size limit is not read.
+pub fn read(argument: &str) -> Result<(String, String), String> {
+    if argument != "-" {
+        return Ok(("input".into(), argument.to_string()));
+    }
+    let mut bytes = Vec::new();
+    std::io::stdin()
+        .take(MAX_INPUT_BYTES as u64 + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| format!("error: cannot read standard input: {e}"))?;
+    if bytes.len() > MAX_INPUT_BYTES {
+        return Err(format!(
+            "error: <stdin>: input is more than the limit of {MAX_INPUT_BYTES} bytes\n  = help: split the input into smaller expressions"
+        ));
+    }
+    let text = String::from_utf8(bytes).map_err(|e| {
+        format!(
+            "error: <stdin>: input is not UTF-8 text (invalid byte at offset {})",
+            e.utf8_error().valid_up_to()
+        )
+    })?;
+    Ok(("<stdin>".into(), text))
+}

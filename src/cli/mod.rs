@@ -1,0 +1,46 @@
+//! The command line: argument parsing (clap) and one module per command.
+
+mod input;
+mod show;
+mod simplify;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Kinetics of rigid bodies in three dimensions: derive, print, evaluate, check.
+#[derive(Parser)]
+#[command(name = "kinetics", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Print an expression or equation as LaTeX (or text or JSON).
+    Latex(show::Args),
+    /// Bring an expression to canonical form, optionally expanded.
+    Simplify(simplify::Args),
+}
+
+/// Runs the command line and maps failures to a message on standard error and exit code 1.
+pub fn run() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Latex(args) => show::run(args),
+        Command::Simplify(args) => simplify::run(args),
+    };
+    match result {
+        Ok(output) => {
+            println!("{output}");
+            ExitCode::SUCCESS
+        }
+        Err(message) => {
+            eprint!("{message}");
+            if !message.ends_with('\n') {
+                eprintln!();
+            }
+            ExitCode::FAILURE
+        }
+    }
+}

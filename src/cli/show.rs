@@ -1,0 +1,72 @@
+//! `kinetics latex "<expr or equation>"`: print as LaTeX (default), text or JSON.
+
+use super::input;
+use kinetics::algebra::{vector, Expr};
+use kinetics::parse::{parse_statement, Statement};
+use kinetics::print::{self, Axis, Notation};
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// The expression or equation, in ASCII (`I_x*w_x - I_xy*w_y`); `-` reads standard input.
+    pub input: String,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Latex)]
+    pub format: Format,
+}
+
+/// The output formats of the quick commands.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    Text,
+    Latex,
+    Json,
+}
+
+pub fn run(args: Args) -> Result<String, String> {
+    let (name, source) = input::read(&args.input)?;
+    let statement = parse_statement(&name, &source).map_err(|d| d.render())?;
+    render_statement(&statement, args.format)
+}
+
+/// Prints an expression or an equation in the chosen format; vectors written with `i j k`
+/// print component by component.
+pub fn render_statement(statement: &Statement, format: Format) -> Result<String, String> {
+    let show = |notation: Notation| -> Result<String, String> {
+        Ok(match statement {
+            Statement::Expression(e) => side(e, notation, Axis::X)?,
+            Statement::Equation(eq) => {
+                let axis = equation_axis(&eq.lhs);
+                format!(
+                    "{} = {}",
+                    side(&eq.lhs, notation, axis)?,
+                    side(&eq.rhs, notation, axis)?
+                )
+            }
+        })
+    };
+    match format {
+        Format::Text => show(Notation::Text),
+        Format::Latex => show(Notation::Latex),
+        Format::Json => Ok(serde_json::json!({
+            "text": show(Notation::Text)?,
+            "latex": show(Notation::Latex)?,
+        })
+        .to_string()),
+    }
+}
+
+fn side(e: &Expr, notation: Notation, axis: Axis) -> Result<String, String> {
+    if vector::has_unit_vectors(e) {
+        let v = vector::components(e).map_err(|err| format!("error: {err}"))?;
+        Ok(print::vector(&v, notation))
+    } else {
+        Ok(print::render(e, notation, axis))
+    }
+}
+
+/// The axis an equation is about, from a left side such as `M_y`.
+fn equation_axis(lhs: &Expr) -> Axis {
+    lhs.as_symbol()
+        .and_then(|s| Axis::from_subscript(s.subscript()))
+        .unwrap_or_default()
+}

@@ -1,0 +1,384 @@
+//! The expression parser: `grammar/expr.pest` read with a `PrattParser`.
+//!
+//! Precedence, loosest first: `+ -`; `* /` and juxtaposition (left-associative);
+//! prefix `-` and `+`; `^` (right-associative). So `-a^2` is `-(a^2)` and `1/2 m v^2` is
+//! `(1/2)·m·v²`. Decimals are exact (`0.1` is 1/10). `sqrt(x)` is `x^(1/2)`.
+//!
+//! ```
+//! use kinetics::parse::parse_expression;
+//! use kinetics::algebra::Expr;
+//! let e = parse_expression("input", "-a^2 + 1/2 m v^2").unwrap();
+//! let (a, m, v) = (Expr::symbol("a"), Expr::symbol("m"), Expr::symbol("v"));
+//! assert_eq!(e, -a.powi(2) + Expr::rational(1, 2) * m * v.powi(2));
+//! ```
+
+use super::diagnostic::Diagnostic;
+use super::limits::check_input;
+use crate::algebra::{AlgebraError, Expr, Func, Q};
+use pest::iterators::{Pair, Pairs};
+use pest::pratt_parser::{Assoc, Op, PrattParser};
+use pest::Parser;
+use std::sync::OnceLock;
+
+#[derive(pest_derive::Parser)]
+#[grammar = "../grammar/expr.pest"]
+struct ExprGrammar;
+
+/// An equation `lhs = rhs`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Equation {
+    pub lhs: Expr,
+    pub rhs: Expr,
+}
+
+/// What a line of mathematics says: an expression, or an equation.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Statement {
+    Expression(Expr),
+    Equation(Equation),
+}
+
+/// Identifiers that look like numbers but are not finite values.
+const NOT_FINITE: [&str; 3] = ["nan", "inf", "infinity"];
+
+fn pratt() -> &'static PrattParser<Rule> {
+    static PRATT: OnceLock<PrattParser<Rule>> = OnceLock::new();
+    PRATT.get_or_init(|| {
+        PrattParser::new()
+            .op(Op::infix(Rule::add, Assoc::Left) | Op::infix(Rule::sub, Assoc::Left))
+            .op(Op::infix(Rule::mul, Assoc::Left)
+                | Op::infix(Rule::div, Assoc::Left)
+                | Op::infix(Rule::implicit, Assoc::Left))
+            .op(Op::prefix(Rule::neg) | Op::prefix(Rule::pos))
+            .op(Op::infix(Rule::pow, Assoc::Right))
+    })
+}
+
+/// Parses one expression.
+pub fn parse_expression(source_name: &str, source: &str) -> Result<Expr, Diagnostic> {
+    let mut pairs = parse_rule(Rule::expression_input, source_name, source)?;
+    let input = pairs.next().map(Pair::into_inner);
+    let expr = input.and_then(|mut p| p.next());
+    match expr {
+        Some(e) => build(e, source_name, source),
+        None => Err(Diagnostic::at(source_name, source, 0, 0, "empty input")),
+    }
+}
+
+/// Parses an expression or an equation `lhs = rhs`.
+pub fn parse_statement(source_name: &str, source: &str) -> Result<Statement, Diagnostic> {
+    let mut pairs = parse_rule(Rule::statement_input, source_name, source)?;
+    let sides: Vec<Pair<Rule>> = pairs
+        .next()
+        .map(|p| {
+            p.into_inner()
+                .filter(|q| q.as_rule() == Rule::expr)
+                .collect()
+        })
+        .unwrap_or_default();
+    let mut exprs = sides
+        .into_iter()
+        .map(|p| build(p, source_name, source))
+        .collect::<Result<Vec<_>, _>>()?;
+    match exprs.len() {
+        1 => Ok(Statement::Expression(exprs.remove(0))),
+        2 => {
+            let rhs = exprs.remove(1);
+            let lhs = exprs.remove(0);
+            Ok(Statement::Equation(Equation { lhs, rhs }))
+        }
+        _ => Err(Diagnostic::at(source_name, source, 0, 0, "empty input")),
+    }
+}
+
+/// Parses an equation `lhs = rhs`.
+pub fn parse_equation(source_name: &str, source: &str) -> Result<Equation, Diagnostic> {
+    match parse_statement(source_name, source)? {
+        Statement::Equation(eq) => Ok(eq),
+        Statement::Expression(_) => Err(Diagnostic::at(
+            source_name,
+            source,
+            source.len(),
+            source.len(),
+            "expected an equation 'left = right', found an expression",
+        )),
+    }
+}
+
+fn parse_rule<'i>(
+    rule: Rule,
+    source_name: &str,
+    source: &'i str,
+) -> Result<Pairs<'i, Rule>, Diagnostic> {
+    check_input(source_name, source)?;
+    ExprGrammar::parse(rule, source).map_err(|e| from_pest(e, source_name, source))
+}
+
+fn describe(rule: &Rule) -> &'static str {
+    match rule {
+        Rule::expr
+        | Rule::number
+        | Rule::symbol
+        | Rule::identifier
+        | Rule::call
+        | Rule::callee
+        | Rule::paren
+        | Rule::neg
+        | Rule::pos => "an expression (a number, a symbol or a parenthesis)",
+        Rule::add | Rule::sub | Rule::mul | Rule::div | Rule::pow | Rule::implicit => "an operator",
+        Rule::EOI => "the end of the input",
+        _ => "",
+    }
+}
+
+fn from_pest(e: pest::error::Error<Rule>, source_name: &str, source: &str) -> Diagnostic {
+    let (start, end) = match e.location {
+        pest::error::InputLocation::Pos(p) => (p, p),
+        pest::error::InputLocation::Span(s) => s,
+    };
+    let mut expected: Vec<&str> = match &e.variant {
+        pest::error::ErrorVariant::ParsingError { positives, .. } => {
+            positives.iter().map(describe).collect()
+        }
+        pest::error::ErrorVariant::CustomError { .. } => vec![],
+    };
+    let at_paren_close = source[start..].starts_with(')');
+    if source[start..].trim_start().is_empty() || expected.is_empty() {
+        expected.retain(|d| *d != "an operator");
+    }
+    expected.retain(|d| !d.is_empty());
+    expected.sort();
+    expected.dedup();
+    let found = match source[start..].chars().next() {
+        None => "end of input".to_string(),
+        Some(c) => format!("'{c}'"),
+    };
+    let expected = match expected.len() {
+        0 => "a well-formed expression".to_string(),
+        1 => expected[0].to_string(),
+        _ => format!(
+            "{} or {}",
+            expected[..expected.len() - 1].join(", "),
+            expected[expected.len() - 1]
+        ),
+    };
+    let opens = source.matches('(').count();
+    let closes = source.matches(')').count();
+    let help = if opens > closes {
+        "every '(' needs an expression and a matching ')'"
+    } else if closes > opens || at_paren_close {
+        "there is a ')' without a matching '(' or with nothing inside"
+    } else {
+        "write products with '*' or a space, powers with '^', and functions as sin(x)"
+    };
+    Diagnostic::at(
+        source_name,
+        source,
+        start,
+        end.max(start + 1),
+        format!("expected {expected}, found {found}"),
+    )
+    .with_help(help)
+}
+
+/// The parse tree of one expression before it becomes an [`Expr`]. Sums and products are
+/// flat lists, so a long chain `a + b + c + ...` is one node, not a deep tree.
+enum Ast {
+    Number(Q),
+    Symbol(String),
+    Call(String, Box<Ast>),
+    Sum(Vec<(bool, Ast)>),
+    /// Factors with `true` for a divisor, and the byte span of each.
+    Product(Vec<(bool, Ast, (usize, usize))>),
+    Power(Box<Ast>, Box<Ast>, (usize, usize)),
+    Negate(Box<Ast>),
+    Error(Diagnostic),
+}
+
+fn build(expr: Pair<Rule>, source_name: &str, source: &str) -> Result<Expr, Diagnostic> {
+    let ast = to_ast(expr.into_inner(), source_name, source);
+    lower(ast, source_name, source)
+}
+
+fn span_of(p: &Pair<Rule>) -> (usize, usize) {
+    (p.as_span().start(), p.as_span().end())
+}
+
+fn to_ast(pairs: Pairs<Rule>, source_name: &str, source: &str) -> Ast {
+    // Spans of operands, for errors on divisors and powers.
+    pratt()
+        .map_primary(|p| primary(p, source_name, source))
+        .map_prefix(|op, rhs| match op.as_rule() {
+            Rule::neg => Ast::Negate(Box::new(rhs)),
+            _ => rhs,
+        })
+        .map_infix(|lhs, op, rhs| {
+            let span = span_of(&op);
+            match op.as_rule() {
+                Rule::add | Rule::sub => {
+                    let subtract = op.as_rule() == Rule::sub;
+                    match lhs {
+                        Ast::Sum(mut terms) => {
+                            terms.push((subtract, rhs));
+                            Ast::Sum(terms)
+                        }
+                        other => Ast::Sum(vec![(false, other), (subtract, rhs)]),
+                    }
+                }
+                Rule::mul | Rule::div | Rule::implicit => {
+                    let divide = op.as_rule() == Rule::div;
+                    let rhs_span = (span.1, source.len());
+                    match lhs {
+                        Ast::Product(mut factors) => {
+                            factors.push((divide, rhs, rhs_span));
+                            Ast::Product(factors)
+                        }
+                        other => {
+                            Ast::Product(vec![(false, other, (0, 0)), (divide, rhs, rhs_span)])
+                        }
+                    }
+                }
+                _ => Ast::Power(Box::new(lhs), Box::new(rhs), span),
+            }
+        })
+        .parse(pairs)
+}
+
+fn primary(p: Pair<Rule>, source_name: &str, source: &str) -> Ast {
+    let (start, end) = span_of(&p);
+    match p.as_rule() {
+        Rule::number => match Q::parse_decimal(p.as_str()) {
+            Some(q) => Ast::Number(q),
+            None => Ast::Error(
+                Diagnostic::at(
+                    source_name,
+                    source,
+                    start,
+                    end,
+                    format!("the number {} is out of range", p.as_str()),
+                )
+                .with_help("numbers may have at most 4096 digits of exponent"),
+            ),
+        },
+        Rule::symbol => {
+            let name = p.as_str();
+            if NOT_FINITE.contains(&name.to_ascii_lowercase().as_str()) {
+                return Ast::Error(
+                    Diagnostic::at(source_name, source, start, end, format!("{name} is not a finite number"))
+                        .with_help("give every quantity a finite value, or leave it as a symbol with another name"),
+                );
+            }
+            if Func::from_name(name).is_some() || name == "sqrt" {
+                return Ast::Error(
+                    Diagnostic::at(
+                        source_name,
+                        source,
+                        start,
+                        end,
+                        format!("the function {name} needs an argument"),
+                    )
+                    .with_help(format!("write {name}(x)")),
+                );
+            }
+            Ast::Symbol(name.to_string())
+        }
+        Rule::call => {
+            let mut inner = p.into_inner();
+            let callee = inner.next();
+            let name = callee
+                .as_ref()
+                .map(|c| c.as_str().trim_end_matches('(').to_string())
+                .unwrap_or_default();
+            let arg = inner
+                .next()
+                .map(|a| to_ast(a.into_inner(), source_name, source))
+                .unwrap_or(Ast::Number(Q::ZERO));
+            if Func::from_name(&name).is_none() && name != "sqrt" {
+                let end = start + name.len();
+                return Ast::Error(
+                    Diagnostic::at(source_name, source, start, end, format!("unknown function {name}"))
+                        .with_help(format!(
+                            "the functions are sin, cos, tan, sqrt and abs; for a product write {name}*(...)"
+                        )),
+                );
+            }
+            Ast::Call(name, Box::new(arg))
+        }
+        Rule::paren => match p.into_inner().next() {
+            Some(e) => to_ast(e.into_inner(), source_name, source),
+            None => Ast::Error(Diagnostic::at(
+                source_name,
+                source,
+                start,
+                end,
+                "empty parentheses",
+            )),
+        },
+        _ => Ast::Error(Diagnostic::at(
+            source_name,
+            source,
+            start,
+            end,
+            "unexpected input",
+        )),
+    }
+}
+
+fn lower(ast: Ast, source_name: &str, source: &str) -> Result<Expr, Diagnostic> {
+    let fail = |err: AlgebraError, span: (usize, usize)| {
+        let (start, end) = span;
+        let help = match err {
+            AlgebraError::DivisionByZero => "the divisor is exactly zero",
+            _ => "simplify the expression",
+        };
+        Diagnostic::at(
+            source_name,
+            source,
+            start,
+            end.max(start + 1),
+            err.to_string(),
+        )
+        .with_help(help)
+    };
+    Ok(match ast {
+        Ast::Number(q) => Expr::num(q),
+        Ast::Symbol(name) => Expr::symbol(&name),
+        Ast::Error(d) => return Err(d),
+        Ast::Negate(inner) => -lower(*inner, source_name, source)?,
+        Ast::Call(name, arg) => {
+            let arg = lower(*arg, source_name, source)?;
+            match Func::from_name(&name) {
+                Some(f) => Expr::func(f, arg),
+                None => arg
+                    .checked_pow(&Expr::rational(1, 2))
+                    .map_err(|e| fail(e, (0, 0)))?,
+            }
+        }
+        Ast::Sum(terms) => {
+            let mut out = Vec::with_capacity(terms.len());
+            for (subtract, t) in terms {
+                let e = lower(t, source_name, source)?;
+                out.push(if subtract { -e } else { e });
+            }
+            Expr::add_all(out)
+        }
+        Ast::Product(factors) => {
+            let mut out = Vec::with_capacity(factors.len());
+            for (divide, f, span) in factors {
+                let e = lower(f, source_name, source)?;
+                out.push(if divide {
+                    e.checked_pow(&Expr::int(-1))
+                        .map_err(|err| fail(err, span))?
+                } else {
+                    e
+                });
+            }
+            Expr::mul_all(out)
+        }
+        Ast::Power(base, exponent, span) => {
+            let b = lower(*base, source_name, source)?;
+            let e = lower(*exponent, source_name, source)?;
+            b.checked_pow(&e).map_err(|err| fail(err, span))?
+        }
+    })
+}

@@ -1,0 +1,8 @@
+//! Parsers of user input, with located diagnostics.
+
+pub mod diagnostic;
+pub mod expression;
+pub mod limits;
+
+pub use diagnostic::Diagnostic;
+pub use expression::{parse_equation, parse_expression, parse_statement, Equation, Statement};

@@ -1,0 +1,493 @@
+//! The presented form of an expression: how a textbook orders and groups it.
+//!
+//! The canonical form decides; this form is for reading. One set of rules, over structure,
+//! reproduces the chapter's forms:
+//!
+//! 1. A sum is split term by term into a kinematic part (ω, ω̇, α, v, a, angles and
+//!    functions of them) and a coefficient (inertia, mass, lengths, numbers). Terms with the
+//!    same kinematic part are collected; their coefficient becomes a group such as
+//!    `(I_y - I_z)`, with a common factor and a leading minus pulled out of it.
+//! 2. Groups are ordered: terms free of kinematic symbols first (`N = W + ...`), then
+//!    accelerations before velocities (`I_z α` before `I_yz ω²`), translational before
+//!    rotational (`½ m v²` before `½ I_x ω_x²`), pure powers before mixed products
+//!    (`ω_x²` before `ω_x ω_y`), then by axis x, y, z, and mixed pairs in cyclic order
+//!    xy, yz, zx.
+//! 3. Inside a group, inertia symbols are ordered cyclically from the equation's own axis:
+//!    moments first (`I_x, I_y, I_z` for the x-equation, `I_y, I_z, I_x` for y), then
+//!    products (`I_xy, I_yz, I_xz` for x).
+//! 4. In a product: the number, then inertia and mass, other quantities, lengths, groups,
+//!    functions, kinematic symbols, unit vectors; factors with negative exponents form a
+//!    denominator.
+
+use crate::algebra::{Expr, Func, Role, Symbol, View, Q};
+use std::cmp::Ordering;
+use std::collections::HashMap;
+
+/// A node of the presented form. Numbers and coefficients here are never negative: signs
+/// live on the terms of a [`Layout::Sum`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum Layout {
+    Number(Q),
+    Symbol(Symbol),
+    /// Terms with their signs (`true` = subtracted); at least two.
+    Sum(Vec<(bool, Layout)>),
+    Product(Product),
+    /// A base to a positive exponent other than 1/2.
+    Power(Box<Layout>, Box<Layout>),
+    SquareRoot(Box<Layout>),
+    Function(Func, Box<Layout>),
+}
+
+/// `coefficient · numerator / denominator`, coefficient positive.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Product {
+    pub coefficient: Q,
+    pub numerator: Vec<Layout>,
+    pub denominator: Vec<Layout>,
+}
+
+/// Which equation an expression belongs to, for ordering inertia symbols cyclically.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Axis {
+    #[default]
+    X,
+    Y,
+    Z,
+}
+
+impl Axis {
+    fn index(self) -> usize {
+        self as usize
+    }
+
+    /// The axis named by a subscript such as `x` in `M_x`, if it names exactly one.
+    pub fn from_subscript(subscript: &str) -> Option<Axis> {
+        match subscript.trim_end_matches('\'') {
+            "x" | "X" => Some(Axis::X),
+            "y" | "Y" => Some(Axis::Y),
+            "z" | "Z" => Some(Axis::Z),
+            _ => None,
+        }
+    }
+}
+
+/// The presented form of `e` as a signed layout: `(negative, layout)`.
+pub fn present(e: &Expr, axis: Axis) -> (bool, Layout) {
+    match e.view() {
+        View::Add(_) => present_sum(e, axis),
+        _ => present_term(e, axis),
+    }
+}
+
+fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
+    // (kinematic factors, coefficient terms), found through an index by kinematic part.
+    let mut groups: Vec<(Vec<Expr>, Vec<Expr>)> = Vec::new();
+    let mut index: HashMap<Vec<Expr>, usize> = HashMap::new();
+    for term in e.terms() {
+        let (kinematic, coefficient): (Vec<Expr>, Vec<Expr>) = term
+            .factors()
+            .iter()
+            .cloned()
+            .partition(is_kinematic_factor);
+        let coefficient = Expr::mul_all(coefficient);
+        match index.get(&kinematic) {
+            Some(&at) => groups[at].1.push(coefficient),
+            None => {
+                index.insert(kinematic.clone(), groups.len());
+                groups.push((kinematic, vec![coefficient]));
+            }
+        }
+    }
+    groups.sort_by(|a, b| compare_kinematic(&a.0, &b.0));
+    let mut terms: Vec<(bool, Layout)> = Vec::new();
+    for (kinematic, coefficients) in groups {
+        let coefficient = Expr::add_all(coefficients);
+        if coefficient.is_zero() {
+            continue;
+        }
+        if kinematic.is_empty() && coefficient.terms().len() > 1 {
+            // No kinematic part to collect by: the terms stand on their own.
+            let mut plain = coefficient.terms().to_vec();
+            plain.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
+            terms.extend(plain.iter().map(|t| present_term(t, axis)));
+        } else if coefficient.terms().len() == 1 {
+            let factors = coefficient.factors().iter().cloned().chain(kinematic);
+            terms.push(present_term(&Expr::mul_all(factors), axis));
+        } else {
+            terms.push(present_group(&coefficient, &kinematic, axis));
+        }
+    }
+    match terms.len() {
+        0 => (false, Layout::Number(Q::ZERO)),
+        1 => terms.pop().unwrap_or((false, Layout::Number(Q::ZERO))),
+        _ => {
+            // A sum whose terms are all subtracted reads better with the minus outside.
+            if terms.iter().all(|(negative, _)| *negative) && terms.len() > 1 {
+                let flipped = terms.into_iter().map(|(_, t)| (false, t)).collect();
+                (true, Layout::Sum(flipped))
+            } else {
+                (false, Layout::Sum(terms))
+            }
+        }
+    }
+}
+
+/// `± common · (group) · kinematic` for a coefficient with several terms.
+fn present_group(coefficient: &Expr, kinematic: &[Expr], axis: Axis) -> (bool, Layout) {
+    let mut inner: Vec<Expr> = coefficient.terms().to_vec();
+    inner.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
+    let common = common_factor(&inner);
+    let inner: Vec<Expr> = inner.iter().map(|t| t / &common).collect();
+    let negative = inner
+        .first()
+        .is_some_and(|t| t.coeff_and_factors().0.is_negative());
+    let group_terms: Vec<(bool, Layout)> = inner
+        .iter()
+        .map(|t| {
+            let (neg, layout) = present_term(t, axis);
+            (neg != negative, layout)
+        })
+        .collect();
+    let group = Layout::Sum(group_terms);
+    let outer = Expr::mul_all(
+        common
+            .factors()
+            .iter()
+            .cloned()
+            .chain(kinematic.iter().cloned()),
+    );
+    let (outer_negative, outer_layout) = present_term(&outer, axis);
+    let product = match outer_layout {
+        Layout::Product(mut p) => {
+            let at = p
+                .numerator
+                .iter()
+                .position(|f| placement(f) > GROUP_PLACE)
+                .unwrap_or(p.numerator.len());
+            p.numerator.insert(at, group);
+            p
+        }
+        Layout::Number(q) => Product {
+            coefficient: q,
+            numerator: vec![group],
+            denominator: vec![],
+        },
+        other => {
+            let mut numerator = vec![group];
+            if placement(&other) > GROUP_PLACE {
+                numerator.push(other);
+            } else {
+                numerator.insert(0, other);
+            }
+            Product {
+                coefficient: Q::ONE,
+                numerator,
+                denominator: vec![],
+            }
+        }
+    };
+    (negative != outer_negative, Layout::Product(product))
+}
+
+/// The monomial that divides every term (symbols to their least power), sign excluded.
+fn common_factor(terms: &[Expr]) -> Expr {
+    let Some(first) = terms.first() else {
+        return Expr::one();
+    };
+    let mut common: Vec<(Expr, Q)> = first
+        .coeff_and_factors()
+        .1
+        .iter()
+        .filter_map(|f| {
+            let (base, exp) = f.base_and_exponent();
+            exp.as_num().map(|q| (base.clone(), q.clone()))
+        })
+        .collect();
+    for term in &terms[1..] {
+        let factors = term.coeff_and_factors().1;
+        common.retain_mut(|(base, exp)| {
+            let found = factors.iter().find_map(|f| {
+                let (b, e) = f.base_and_exponent();
+                (b == base).then(|| e.as_num().cloned()).flatten()
+            });
+            match found {
+                Some(e) if e.is_negative() == exp.is_negative() => {
+                    if (e < *exp) != exp.is_negative() {
+                        *exp = e;
+                    }
+                    true
+                }
+                _ => false,
+            }
+        });
+    }
+    Expr::mul_all(common.into_iter().map(|(b, e)| power(&b, e)))
+}
+
+fn power(base: &Expr, exponent: Q) -> Expr {
+    base.checked_pow(&Expr::num(exponent))
+        .unwrap_or_else(|_| Expr::one())
+}
+
+/// A single term (no top-level sum) as a signed product.
+fn present_term(e: &Expr, axis: Axis) -> (bool, Layout) {
+    let (coefficient, factors) = e.coeff_and_factors();
+    let negative = coefficient.is_negative();
+    let coefficient = coefficient.abs();
+    let mut numerator: Vec<Layout> = Vec::new();
+    let mut denominator: Vec<Layout> = Vec::new();
+    let mut ordered: Vec<&Expr> = factors.iter().collect();
+    ordered.sort_by(|a, b| compare_factors(a, b));
+    ordered = cyclic_pair_order(ordered);
+    for f in ordered {
+        let (base, exponent) = f.base_and_exponent();
+        match exponent.as_num() {
+            Some(q) if q.is_negative() => denominator.push(present_power(base, &q.abs(), axis)),
+            Some(q) => numerator.push(present_power(base, q, axis)),
+            None => numerator.push(Layout::Power(
+                Box::new(present_atom(base, axis)),
+                Box::new(present_signed_inline(&exponent, axis)),
+            )),
+        }
+    }
+    if numerator.is_empty() && denominator.is_empty() {
+        return (negative, Layout::Number(coefficient));
+    }
+    if coefficient.is_one() && denominator.is_empty() && numerator.len() == 1 {
+        return (negative, numerator.pop().unwrap_or(Layout::Number(Q::ONE)));
+    }
+    (
+        negative,
+        Layout::Product(Product {
+            coefficient,
+            numerator,
+            denominator,
+        }),
+    )
+}
+
+fn present_power(base: &Expr, exponent: &Q, axis: Axis) -> Layout {
+    let base_layout = present_atom(base, axis);
+    if exponent.is_one() {
+        base_layout
+    } else if *exponent == Q::Small(1, 2) {
+        Layout::SquareRoot(Box::new(present_signed_inline(base, axis)))
+    } else {
+        Layout::Power(
+            Box::new(base_layout),
+            Box::new(Layout::Number(exponent.clone())),
+        )
+    }
+}
+
+/// A factor or base: a symbol, a number, a function, or a parenthesised sum.
+fn present_atom(e: &Expr, axis: Axis) -> Layout {
+    match e.view() {
+        View::Sym(s) => Layout::Symbol(s),
+        View::Num(q) if !q.is_negative() && q.is_integer() => Layout::Number(q.clone()),
+        View::Func(f, arg) => Layout::Function(f, Box::new(present_signed_inline(arg, axis))),
+        _ => present_signed_inline(e, axis),
+    }
+}
+
+/// An expression that must stand as one unit; a leading minus becomes part of a sum.
+fn present_signed_inline(e: &Expr, axis: Axis) -> Layout {
+    match present(e, axis) {
+        (false, l) => l,
+        (true, Layout::Sum(mut terms)) => {
+            terms.iter_mut().for_each(|t| t.0 = !t.0);
+            Layout::Sum(terms)
+        }
+        (true, l) => Layout::Sum(vec![(true, l)]),
+    }
+}
+
+fn is_kinematic_factor(f: &Expr) -> bool {
+    let (base, _) = f.base_and_exponent();
+    match base.view() {
+        View::Sym(s) => matches!(s.role(), Role::Kinematic | Role::UnitVector),
+        View::Func(_, arg) => arg.symbols().iter().any(|s| s.role() == Role::Kinematic),
+        _ => false,
+    }
+}
+
+/// Where a factor stands in a product (rule 4).
+const GROUP_PLACE: u8 = 6;
+
+fn placement(l: &Layout) -> u8 {
+    match l {
+        Layout::Number(_) => 0,
+        Layout::Symbol(s) => symbol_place(*s),
+        Layout::Power(b, _) => placement(b),
+        Layout::SquareRoot(b) => placement(b).min(GROUP_PLACE),
+        Layout::Sum(_) | Layout::Product(_) => GROUP_PLACE,
+        Layout::Function(..) => 7,
+    }
+}
+
+fn symbol_place(s: Symbol) -> u8 {
+    match s.role() {
+        Role::Inertia => 1,
+        Role::Mass => 2,
+        // The interval Δt follows the force or couple it multiplies: `F \Delta t`.
+        Role::Other => 3,
+        Role::Length => 4,
+        Role::Kinematic => 8,
+        Role::UnitVector => 9,
+    }
+}
+
+fn expr_place(e: &Expr) -> u8 {
+    let (base, _) = e.base_and_exponent();
+    match base.view() {
+        View::Num(_) => 0,
+        View::Sym(s) => symbol_place(s),
+        View::Func(_, arg) if arg.symbols().iter().any(|s| s.role() == Role::Kinematic) => 8,
+        View::Func(..) => 7,
+        _ => GROUP_PLACE,
+    }
+}
+
+fn axis_of(s: Symbol) -> Option<usize> {
+    Axis::from_subscript(s.subscript()).map(Axis::index)
+}
+
+/// Translational (v, a) before rotational (ω, α) before angles and others.
+fn family(s: Symbol) -> u8 {
+    match s.base() {
+        "v" | "a" => 0,
+        "w" | "omega" | "Omega" | "alpha" => 1,
+        _ => 2,
+    }
+}
+
+fn compare_factors(a: &Expr, b: &Expr) -> Ordering {
+    expr_place(a).cmp(&expr_place(b)).then_with(|| {
+        let (sa, sb) = (
+            a.base_and_exponent().0.as_symbol(),
+            b.base_and_exponent().0.as_symbol(),
+        );
+        match (sa, sb) {
+            (Some(x), Some(y)) if x.role() == Role::Kinematic && y.role() == Role::Kinematic => {
+                family(x)
+                    .cmp(&family(y))
+                    .then_with(|| axis_of(x).cmp(&axis_of(y)))
+                    .then_with(|| x.cmp(&y))
+            }
+            (Some(x), Some(y)) if x.role() == Role::Inertia && y.role() == Role::Inertia => {
+                inertia_key(x, Axis::X).cmp(&inertia_key(y, Axis::X))
+            }
+            (Some(x), Some(y)) => (x.base() == "Dt")
+                .cmp(&(y.base() == "Dt"))
+                .then_with(|| x.cmp(&y)),
+            _ => a.cmp(b),
+        }
+    })
+}
+
+/// Two kinematic factors on the axes z and x are written `ω_z ω_x` (cyclic order zx).
+fn cyclic_pair_order(mut factors: Vec<&Expr>) -> Vec<&Expr> {
+    let kinematic: Vec<usize> = (0..factors.len())
+        .filter(|&i| expr_place(factors[i]) == 8)
+        .collect();
+    if let [i, j] = kinematic[..] {
+        let axes = |k: usize| {
+            factors[k]
+                .base_and_exponent()
+                .0
+                .as_symbol()
+                .and_then(axis_of)
+        };
+        if axes(i) == Some(0) && axes(j) == Some(2) {
+            factors.swap(i, j);
+        }
+    }
+    factors
+}
+
+/// Ordering key of a kinematic monomial (rule 2).
+fn kinematic_key(factors: &[Expr]) -> (u8, u8, usize, usize) {
+    let symbols: Vec<Symbol> = factors
+        .iter()
+        .flat_map(|f| f.base_and_exponent().0.symbols())
+        .filter(|s| s.role() == Role::Kinematic)
+        .collect();
+    if symbols.is_empty() {
+        return (0, 0, 0, 0);
+    }
+    let class = if symbols.iter().any(|s| s.is_acceleration()) {
+        1
+    } else {
+        2
+    };
+    let fam = symbols.iter().map(|s| family(*s)).min().unwrap_or(2);
+    let mut axes: Vec<usize> = symbols.iter().filter_map(|s| axis_of(*s)).collect();
+    axes.sort_unstable();
+    axes.dedup();
+    let axis_rank = match axes[..] {
+        [a] => a,
+        [0, 1] => 0,
+        [1, 2] => 1,
+        [0, 2] => 2,
+        _ => 3,
+    };
+    (class, fam, symbols.len().min(factors.len()), axis_rank)
+}
+
+fn compare_kinematic(a: &[Expr], b: &[Expr]) -> Ordering {
+    kinematic_key(a).cmp(&kinematic_key(b)).then_with(|| {
+        crate::algebra::Expr::mul_all(a.iter().cloned()).cmp(&Expr::mul_all(b.iter().cloned()))
+    })
+}
+
+/// Ordering key of an inertia symbol for the equation about `axis` (rule 3).
+fn inertia_key(s: Symbol, axis: Axis) -> (u8, usize, Symbol) {
+    let a = axis.index();
+    let sub: Vec<usize> = s
+        .subscript()
+        .chars()
+        .filter_map(|c| Axis::from_subscript(&c.to_string()).map(Axis::index))
+        .collect();
+    match sub[..] {
+        [k] if s.subscript().len() == 1 => (0, (k + 3 - a) % 3, s),
+        [p, q] => {
+            let pair = match (p.min(q), p.max(q)) {
+                (0, 1) => 0,
+                (1, 2) => 1,
+                _ => 2,
+            };
+            (1, (pair + 3 - a) % 3, s)
+        }
+        _ => (2, 0, s),
+    }
+}
+
+fn compare_coefficient_terms(a: &Expr, b: &Expr, axis: Axis) -> Ordering {
+    let key = |e: &Expr| {
+        e.coeff_and_factors()
+            .1
+            .iter()
+            .filter_map(|f| f.base_and_exponent().0.as_symbol())
+            .filter(|s| s.role() == Role::Inertia)
+            .map(|s| inertia_key(s, axis))
+            .min()
+    };
+    match (key(a), key(b)) {
+        (Some(x), Some(y)) => x.cmp(&y),
+        (Some(_), None) => Ordering::Less,
+        (None, Some(_)) => Ordering::Greater,
+        (None, None) => compare_lexicographic(a.coeff_and_factors().1, b.coeff_and_factors().1),
+    }
+}
+
+/// Lexicographic order of monomials, higher powers first: `a^3, a^2 b, a b^2, b^3`.
+fn compare_lexicographic(a: &[Expr], b: &[Expr]) -> Ordering {
+    for (x, y) in a.iter().zip(b.iter()) {
+        let ((bx, ex), (by, ey)) = (x.base_and_exponent(), y.base_and_exponent());
+        let order = bx.cmp(by).then_with(|| ey.cmp(&ex));
+        if order != Ordering::Equal {
+            return order;
+        }
+    }
+    b.len().cmp(&a.len())
+}

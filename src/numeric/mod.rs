@@ -3,5 +3,6 @@
 pub mod double_double;
 pub mod elliptic;
 pub mod error;
+pub mod reference;
 
 pub use error::NumericError;

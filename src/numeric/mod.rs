@@ -4,5 +4,6 @@ pub mod double_double;
 pub mod elliptic;
 pub mod error;
 pub mod reference;
+pub mod torque_free;
 
 pub use error::NumericError;

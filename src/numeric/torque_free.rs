@@ -348,10 +348,8 @@ fn classify(moments: &Vector3<f64>, omega: &Vector3<f64>) -> (Regime, WorkingFra
     };
     // Signs: ω₃ > 0 and ω₁ >= 0 in the working frame (rotations by π about a principal axis
     // are symmetries of Euler's equations), the middle sign keeping the determinant +1.
-    let parity = if axis[0] < axis[1] && axis[1] < axis[2]
-        || axis[1] < axis[2] && axis[2] < axis[0]
-        || axis[2] < axis[0] && axis[0] < axis[1]
-    {
+    // Even permutations of three axes are the cyclic shifts.
+    let parity = if axis[1] == (axis[0] + 1) % 3 {
         1.0
     } else {
         -1.0

@@ -83,6 +83,26 @@ fn start_near_the_intermediate_axis_reaches_1e10_at_t_100() {
 }
 
 #[test]
+fn start_within_1e9_of_the_intermediate_axis_stays_accurate() {
+    // m' = 2e-18: m rounds to 1 in f64, the phase and Π are carried by m' and (sn, cn, dn).
+    let (moments, omega0) = ([1.0, 2.0, 3.0], [1e-9, 1.0, 1e-9]);
+    assert_eq!(exact(moments, omega0).regime(), Regime::AroundLargestMoment);
+    assert_matches_reference(moments, omega0, &[0.5, 10.0, 100.0], 1e-13, 1e-12);
+}
+
+#[test]
+fn components_beyond_double_precision_range_are_dropped_not_turned_into_nan() {
+    // 1e-200 next to 1 squares to 1e-400: taken as zero, so this is steady spin about the
+    // intermediate axis.
+    let motion = exact([1.0, 2.0, 3.0], [0.0, 1.0, 1e-200]);
+    assert_eq!(motion.regime(), Regime::PrincipalAxis);
+    assert_eq!(motion.omega(50.0), Vector3::new(0.0, 1.0, 0.0));
+    let q = motion.orientation(50.0);
+    let expected = start_orientation() * UnitQuaternion::from_euler_angles(0.0, 50.0, 0.0);
+    assert!(q.angle_to(&expected) < 1e-13);
+}
+
+#[test]
 fn polhode_around_the_smallest_moment_matches_the_reference() {
     let (moments, omega0) = ([1.0, 2.0, 3.0], [1.0, -0.1, 0.1]);
     assert_eq!(

@@ -24,7 +24,9 @@
 //! `sn = sin φ₀`, `cn = cos φ₀`, `dn = √(cn² + m' sn²)`. The argument is first reduced to
 //! `[0, K]` with the quarter-period `K = π/(2 a_N)` from the same mean, and on `(K/2, K]`
 //! the reflection `sn(u) = cn(v)/dn(v)`, `cn(u) = √m' sn(v)/dn(v)`, `dn(u) = √m'/dn(v)`,
-//! `v = K − u`, keeps cn and dn accurate to their last bits where they are small.
+//! `v = K − u`, keeps cn and dn accurate to their last bits where they are small. (Where
+//! both branches meet, at u ≈ K/2 with cn ≈ dn ≈ m'^{1/4}, their relative error can reach
+//! ε/m'^{1/4} as m → 1; the absolute error stays a few ulps.)
 
 use crate::numeric::double_double::DoubleDouble;
 use crate::numeric::error::NumericError;
@@ -392,11 +394,27 @@ fn reduce_amplitude(phi: f64) -> (f64, f64, f64) {
     (j, s, c)
 }
 
+/// `F(φ|m) = sin φ · R_F(cos²φ, Δ², 1)` for `φ ∈ [−π/2, π/2]` given by `sin φ`, `|cos φ|` and
+/// `Δ = √(1 − m sin²φ)`. At `φ = am u`, `|u| <= K`, these are `sn u, cn u, dn u`: the
+/// integral then follows u without the loss that recovering φ near ±π/2 would cost when
+/// m' is small (F has slope 1/Δ in φ but 1 in u).
+pub fn first_kind_from_sines(sin: f64, cos: f64, delta: f64) -> f64 {
+    sin * carlson_rf(cos * cos, delta * delta, 1.0)
+}
+
+/// `Π(n; φ|m) = F(φ|m) + (n/3) sin³φ R_J(cos²φ, Δ², 1, 1 − n sin²φ)` for `n < 1` and
+/// `φ ∈ [−π/2, π/2]`, from the same three numbers as [`first_kind_from_sines`].
+pub fn third_kind_from_sines(n: f64, sin: f64, cos: f64, delta: f64) -> f64 {
+    let (c2, d2) = (cos * cos, delta * delta);
+    sin * carlson_rf(c2, d2, 1.0)
+        + n / 3.0 * sin * sin * sin * carlson_rj(c2, d2, 1.0, 1.0 - n * sin * sin)
+}
+
 /// Incomplete elliptic integral of the first kind `F(φ|m) = ∫₀^φ dθ/√(1 − m sin²θ)`, for any
 /// real `φ` (`F(φ + π) = F(φ) + 2K`).
 pub fn incomplete_first_kind(phi: f64, parameter: &EllipticParameter) -> f64 {
     let (j, s, c) = reduce_amplitude(phi);
-    let reduced = s * carlson_rf(c * c, c * c + parameter.mc * s * s, 1.0);
+    let reduced = first_kind_from_sines(s, c, (c * c + parameter.mc * s * s).sqrt());
     if j == 0.0 {
         reduced
     } else {
@@ -409,9 +427,7 @@ pub fn incomplete_first_kind(phi: f64, parameter: &EllipticParameter) -> f64 {
 /// (`Π(n; φ + π|m) = Π(n; φ|m) + 2Π(n|m)`).
 pub fn incomplete_third_kind(n: f64, phi: f64, parameter: &EllipticParameter) -> f64 {
     let (j, s, c) = reduce_amplitude(phi);
-    let delta2 = c * c + parameter.mc * s * s;
-    let reduced = s * carlson_rf(c * c, delta2, 1.0)
-        + n / 3.0 * s * s * s * carlson_rj(c * c, delta2, 1.0, 1.0 - n * s * s);
+    let reduced = third_kind_from_sines(n, s, c, (c * c + parameter.mc * s * s).sqrt());
     if j == 0.0 {
         reduced
     } else {
@@ -578,6 +594,39 @@ mod tests {
                     );
                 }
             }
+        }
+    }
+
+    #[test]
+    fn integrals_from_jacobi_functions_follow_the_argument_near_the_quarter_period() {
+        // m' = 1e-18: near u = K, am(u) is within one rounding of π/2 while F has slope
+        // 1/√m' = 1e9 in φ; from (sn, cn, dn) the integral still returns u, and the
+        // third-kind integral matches its derivative 1/(1 − n sn²) in u.
+        let p = EllipticParameter::from_complement(1e-18).unwrap();
+        let k = complete_first_kind(p.complement());
+        let n = -1.5;
+        let at = |u: f64| {
+            let f = jacobi(u, &p);
+            (
+                first_kind_from_sines(f.sn, f.cn, f.dn),
+                third_kind_from_sines(n, f.sn, f.cn, f.dn),
+                f,
+            )
+        };
+        // Near K/2, cn ≈ dn ≈ m'^{1/4} carry a relative error up to ε/m'^{1/4}.
+        let tol = 8.0 * f64::EPSILON * k + 4.0 * f64::EPSILON / p.complement().powf(0.25);
+        for u in [0.5 * k, k - 2.0, k - 1e-3, k] {
+            let (first, third, f) = at(u);
+            assert!((first - u).abs() < tol, "u={u}: {first}");
+            let h = 1e-4;
+            let slope = (at(u - h).1 - at(u - 2.0 * h).1) / h;
+            let mid = jacobi(u - 1.5 * h, &p);
+            let expected = 1.0 / (1.0 - n * mid.sn * mid.sn);
+            assert!(
+                (slope - expected).abs() < 1e-7,
+                "u={u}: {slope} vs {expected}"
+            );
+            assert!(third.is_finite() && f.dn > 0.0);
         }
     }
 

@@ -34,15 +34,23 @@
 //! Scaling: the motion of λω is the motion of ω with time scaled by λ, and the moments
 //! matter only through their ratios, so ω₀ and the moments are divided by powers of two
 //! (exactly) to be of order one; |H| from 1e-150 to 1e150 is handled without overflow.
+//! Components of ω₀ below 2⁻⁴⁸⁰ times the largest are taken as zero: their squares would
+//! leave the normal range.
 
 use crate::mechanics::validation::validate_principal_moments;
 use crate::numeric::double_double::DoubleDouble as Dd;
 use crate::numeric::elliptic::{
-    complete_first_kind, complete_third_kind, incomplete_first_kind, incomplete_third_kind, jacobi,
+    complete_first_kind, complete_third_kind, first_kind_from_sines, jacobi, third_kind_from_sines,
     EllipticParameter,
 };
 use crate::numeric::error::NumericError;
 use nalgebra::{Matrix3, Rotation3, Unit, UnitQuaternion, Vector3};
+
+/// Components of ω₀ below this fraction (2⁻⁴⁸⁰ ≈ 3e-145) of the largest are set to zero:
+/// their squares, which the invariants are made of, would leave the normal range. (Such a
+/// component matters only for a start at the intermediate axis, whose departure it would
+/// delay beyond t ≈ 330/p.)
+const UNRESOLVED: f64 = f64::from_bits((1023 - 480) << 52);
 
 /// Which closed form describes the motion.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -130,7 +138,7 @@ enum Phase {
         parameter: EllipticParameter,
         half_period: Dd,
         half_period_integral: Dd,
-        integral0: f64,
+        integral0: Dd,
     },
     /// m = 1: sech, tanh and `∫dτ/(1 − n tanh²τ) = (τ + √−n atan(√−n tanh τ))/(1 − n)`.
     Separatrix {
@@ -140,13 +148,14 @@ enum Phase {
     },
 }
 
-/// Where the elliptic motion is at one time.
+/// Where the elliptic motion is at one time: `τ = 2K·half_periods + r` and the Jacobi
+/// functions of r (of τ itself on the separatrix, where they are tanh, sech, sech).
 struct PhasePoint {
     omega: Vector3<f64>,
-    /// Whole half-periods 2K in τ (periodic family).
     half_periods: Dd,
-    /// `am(r)` of the reduced argument (periodic family), `tanh τ` (separatrix).
-    reduced: f64,
+    sn: f64,
+    cn: f64,
+    dn: f64,
 }
 
 fn invalid(what: &str, reason: String) -> NumericError {
@@ -251,7 +260,7 @@ impl TorqueFree {
             ));
         }
         let rate_scale = power_of_two_scale(&omega0);
-        let omega = omega0 / rate_scale;
+        let omega = (omega0 / rate_scale).map(|w| if w.abs() < UNRESOLVED { 0.0 } else { w });
         let moments = principal_moments / power_of_two_scale(&principal_moments);
         let (regime, frame) = classify(&moments, &omega);
         let start = q0 * frame.rotation;
@@ -449,19 +458,45 @@ impl EllipticMotion {
             } else {
                 EllipticParameter::from_complement(mc.to_f64())
             }?;
-            let phi0 = (omega.y / amplitude.y).atan2(omega.x / amplitude.x);
-            let tau0 = incomplete_first_kind(phi0, &parameter);
-            let integral0 = incomplete_third_kind(n.to_f64(), phi0, &parameter);
+            let half_period = complete_first_kind(mc).mul_f64(2.0);
+            let half_period_integral = complete_third_kind(n, mc).mul_f64(2.0);
+            // sn τ₀, cn τ₀, dn τ₀ straight from ω₀ (no amplitude angle, see
+            // `first_kind_from_sines`); cn τ₀ < 0 means τ₀ = ±2K − τ' with cn τ' = −cn τ₀.
+            let (sn0, cn0, dn0) = (
+                omega.y / amplitude.y,
+                omega.x / amplitude.x,
+                omega.z / amplitude.z,
+            );
+            let tau0 = Dd::from_f64(first_kind_from_sines(sn0, cn0.abs(), dn0));
+            let integral0 = Dd::from_f64(third_kind_from_sines(n.to_f64(), sn0, cn0.abs(), dn0));
+            let (tau0, integral0) = if cn0 < 0.0 {
+                let side = if sn0 < 0.0 { -1.0 } else { 1.0 };
+                (
+                    half_period.mul_f64(side) - tau0,
+                    half_period_integral.mul_f64(side) - integral0,
+                )
+            } else {
+                (tau0, integral0)
+            };
             (
-                Dd::from_f64(tau0),
+                tau0,
                 Phase::Periodic {
                     parameter,
-                    half_period: complete_first_kind(mc).mul_f64(2.0),
-                    half_period_integral: complete_third_kind(n, mc).mul_f64(2.0),
+                    half_period,
+                    half_period_integral,
                     integral0,
                 },
             )
         };
+        let finite = amplitude.iter().all(|a| a.is_finite())
+            && rate.to_f64().is_finite()
+            && phase0.to_f64().is_finite();
+        if !finite {
+            return Err(invalid(
+                "initial angular velocity",
+                format!("{omega:?} (scaled) is too close to the separatrix to resolve in double precision"),
+            ));
+        }
         Ok(Self {
             moments: *moments,
             amplitude,
@@ -498,7 +533,9 @@ impl EllipticMotion {
                 PhasePoint {
                     omega: Vector3::new(parity * a.x * f.cn, parity * a.y * f.sn, a.z * f.dn),
                     half_periods,
-                    reduced: f.am,
+                    sn: f.sn,
+                    cn: f.cn,
+                    dn: f.dn,
                 }
             }
             Phase::Separatrix { .. } => {
@@ -507,7 +544,9 @@ impl EllipticMotion {
                 PhasePoint {
                     omega: Vector3::new(a.x * sech, a.y * tanh, a.z * sech),
                     half_periods: Dd::ZERO,
-                    reduced: tanh,
+                    sn: tanh,
+                    cn: sech,
+                    dn: sech,
                 }
             }
         }
@@ -519,15 +558,16 @@ impl EllipticMotion {
         let secular = self.precession * time;
         match &self.phase {
             Phase::Periodic {
-                parameter,
                 half_period_integral,
                 integral0,
                 ..
             } => {
-                let integral = incomplete_third_kind(self.n, point.reduced, parameter) - integral0;
+                // |r| <= K, so cn r >= 0 up to rounding at ±K, where Π is symmetric anyway.
+                let integral = third_kind_from_sines(self.n, point.sn, point.cn.abs(), point.dn);
                 secular
                     + self.coefficient
-                        * (point.half_periods * *half_period_integral + Dd::from_f64(integral))
+                        * (point.half_periods * *half_period_integral + Dd::from_f64(integral)
+                            - *integral0)
             }
             Phase::Separatrix {
                 root_minus_n,
@@ -535,7 +575,7 @@ impl EllipticMotion {
                 arctan0,
             } => {
                 let linear = self.coefficient * self.rate * time / *one_minus_n;
-                let arctan = (root_minus_n * point.reduced).atan() - arctan0;
+                let arctan = (root_minus_n * point.sn).atan() - arctan0;
                 let bounded = (self.coefficient / *one_minus_n).to_f64() * root_minus_n * arctan;
                 secular + linear + Dd::from_f64(bounded)
             }

@@ -216,6 +216,26 @@ fn extreme_angular_momentum_scales_exactly() {
 }
 
 #[test]
+fn negative_times_are_the_motion_with_reversed_spin() {
+    // Time reversal: ω̃(t) = −ω(−t), q̃(t) = q(−t) is the motion from −ω₀.
+    let cases = [
+        ([1.0, 2.0, 3.0], [1.0, 1.0, 1.0]),
+        ([1.0, 2.0, 3.0], [1.0, -0.1, 0.1]),
+        ([3.0, 4.0, 6.0], [2.0, 0.5, 1.0]),
+        ([1.0, 2.0, 1.0], [0.7, -0.4, 1.2]),
+    ];
+    for (moments, omega0) in cases {
+        let forward = exact(moments, omega0);
+        let reversed = exact(moments, omega0.map(|w| -w));
+        for t in [0.3, 7.0, 120.0] {
+            assert!((forward.omega(-t) + reversed.omega(t)).amax() < 1e-14);
+            let angle = forward.orientation(-t).angle_to(&reversed.orientation(t));
+            assert!(angle < 1e-13, "{moments:?} t={t}: {angle:e}");
+        }
+    }
+}
+
+#[test]
 fn energy_and_fixed_angular_momentum_are_conserved() {
     let cases = [
         ([1.0, 2.0, 3.0], [1.0, 1.0, 1.0]),

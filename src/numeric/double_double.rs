@@ -11,7 +11,7 @@
 //! long-time phases of the exact torque-free motion.
 
 use std::cmp::Ordering;
-use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
+use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
 
 /// A double-double number `hi + lo`.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -196,12 +196,6 @@ impl AddAssign for DoubleDouble {
 impl SubAssign for DoubleDouble {
     fn sub_assign(&mut self, b: Self) {
         *self = *self - b;
-    }
-}
-
-impl MulAssign for DoubleDouble {
-    fn mul_assign(&mut self, b: Self) {
-        *self = *self * b;
     }
 }
 

@@ -295,7 +295,8 @@ impl TorqueFree {
         self.regime
     }
 
-    /// Body-frame angular velocity at time `t`, in the caller's axis order.
+    /// Body-frame angular velocity at time `t` (any finite t, also negative), in the caller's
+    /// axis order. Accuracy holds while |ω|·t stays well below 1e15; a NaN t gives NaN.
     pub fn omega(&self, t: f64) -> Vector3<f64> {
         let s = t * self.rate_scale;
         let working = match &self.motion {
@@ -306,7 +307,8 @@ impl TorqueFree {
         self.frame.to_caller(&working) * self.rate_scale
     }
 
-    /// Orientation at time `t` (`r_fixed = q * r_body`, caller's body axes).
+    /// Orientation at time `t` (`r_fixed = q * r_body`, caller's body axes), with the same
+    /// range as [`TorqueFree::omega`].
     pub fn orientation(&self, t: f64) -> UnitQuaternion<f64> {
         let s = t * self.rate_scale;
         let working = match &self.motion {

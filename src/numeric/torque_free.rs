@@ -117,9 +117,13 @@ struct Axisymmetric {
 #[derive(Debug, Clone)]
 struct EllipticMotion {
     moments: Vector3<f64>,
+    /// `(a₁, ±a₂, a₃)`.
     amplitude: Vector3<f64>,
+    /// `p` in `τ = p t + τ₀`.
     rate: Dd,
+    /// `τ₀`.
     phase0: Dd,
+    /// `|H|`.
     momentum: f64,
     /// φ = `precession`·t + `coefficient`·(Π(n; am τ) − Π(n; am τ₀)) (periodic family) or
     /// the separatrix analogue.

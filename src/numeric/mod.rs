@@ -1,7 +1,11 @@
 //! Numbers: evaluation, integration of Euler's equations, exact torque-free motion.
 
+pub mod double_double;
 pub mod dual;
+pub mod elliptic;
 pub mod error;
+pub mod reference;
+pub mod torque_free;
 
 pub use dual::Dual;
 pub use error::NumericError;

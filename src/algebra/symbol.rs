@@ -11,6 +11,7 @@
 //! I_xy      -> I_{xy}            (a product of inertia)
 //! vbar_x    -> \bar{v}_x
 //! Dt        -> \Delta t
+//! SumM_x    -> \Sigma M_x        (a resultant)
 //! ```
 //!
 //! The role decides the order of factors in a printed product (numbers, then inertia and
@@ -238,6 +239,10 @@ fn classify(base: &str, barred: bool, dots: u8, subscript: &str) -> Role {
 }
 
 fn latex_of(base: &str, barred: bool, dots: u8, subscript: &str) -> String {
+    if let Some(rest) = base.strip_prefix("Sum").filter(|r| !r.is_empty()) {
+        // `SumM_x` is the resultant ΣM_x.
+        return format!(r"\Sigma {}", latex_of(rest, barred, dots, subscript));
+    }
     let mut core = if base == "w" {
         r"\omega".to_string()
     } else if base == "Dt" {
@@ -329,6 +334,7 @@ mod tests {
             ("i", r"\mathbf{i}", Role::UnitVector),
             ("m", "m", Role::Mass),
             ("thetaddot", r"\ddot{\theta}", Role::Kinematic),
+            ("SumM_x", r"\Sigma M_x", Role::Other),
         ];
         for (name, latex, role) in cases {
             let s = Symbol::new(name);

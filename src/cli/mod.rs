@@ -1,5 +1,6 @@
 //! The command line: argument parsing (clap) and one module per command.
 
+mod derive;
 mod input;
 mod show;
 mod simplify;
@@ -21,6 +22,8 @@ enum Command {
     Latex(show::Args),
     /// Bring an expression to canonical form, optionally expanded.
     Simplify(simplify::Args),
+    /// Derive the chapter's equations for a general body.
+    Derive(derive::Args),
 }
 
 /// Runs the command line and maps failures to a message on standard error and exit code 1.
@@ -29,6 +32,7 @@ pub fn run() -> ExitCode {
     let result = match cli.command {
         Command::Latex(args) => show::run(args),
         Command::Simplify(args) => simplify::run(args),
+        Command::Derive(args) => derive::run(args),
     };
     match result {
         Ok(output) => {

@@ -1,4 +1,20 @@
 //! The mechanics of chapter 18: inertia, momentum, energy, rotating frames, Euler's
-//! equations, fixed-axis rotation and balancing, impulse and momentum.
+//! equations, fixed-axis rotation and balancing, impulse and momentum. Every function
+//! derives its result from the definition with the expression algebra and returns the
+//! steps with it.
 
+pub mod angular_momentum;
+pub mod balancing;
+pub mod catalogue;
+pub mod derivation;
+pub mod euler;
+pub mod fixed_axis;
+pub mod impulse_momentum;
+pub mod inertia;
+pub mod kinetic_energy;
+pub mod rotating_frame;
+pub mod shapes;
 pub mod validation;
+
+pub use derivation::{Derivation, Relation, Step};
+pub use inertia::InertiaTensor;

@@ -103,11 +103,21 @@ fn product(p: &Product) -> String {
     if !cn.is_one() || numerator.is_empty() {
         top.push(cn.to_string());
     }
-    top.extend(numerator);
+    // A fraction bar groups on its own: a lone sum above or below it needs no parentheses.
+    let alone = |parts: &[Layout], number_is_one: bool| number_is_one && parts.len() == 1;
+    if alone(&p.numerator, top.is_empty()) {
+        top.push(node(&p.numerator[0]));
+    } else {
+        top.extend(numerator);
+    }
     let mut bottom = Vec::new();
     if !cd.is_one() {
         bottom.push(cd.to_string());
     }
-    bottom.extend(p.denominator.iter().map(factor));
+    if alone(&p.denominator, bottom.is_empty()) {
+        bottom.push(node(&p.denominator[0]));
+    } else {
+        bottom.extend(p.denominator.iter().map(factor));
+    }
     format!(r"\frac{{{}}}{{{}}}", top.join(" "), bottom.join(" "))
 }

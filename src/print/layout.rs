@@ -99,6 +99,7 @@ fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
         }
     }
     groups.sort_by(|a, b| compare_kinematic(&a.0, &b.0));
+    let only_group = groups.len() == 1;
     let mut terms: Vec<(bool, Layout)> = Vec::new();
     for (kinematic, coefficients) in groups {
         let coefficient = Expr::add_all(coefficients);
@@ -109,6 +110,17 @@ fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
             // No kinematic part to collect by: the terms stand on their own.
             let mut plain = coefficient.terms().to_vec();
             plain.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
+            if only_group && plain[0].coeff_and_factors().0.is_negative() {
+                // A sum of coefficients alone (a denominator, a group) starts with a
+                // positive term where it has one: `z_2 - z_1`, not `-z_1 + z_2`.
+                if let Some(at) = plain
+                    .iter()
+                    .position(|t| !t.coeff_and_factors().0.is_negative())
+                {
+                    let first = plain.remove(at);
+                    plain.insert(0, first);
+                }
+            }
             terms.extend(plain.iter().map(|t| present_term(t, axis)));
         } else if coefficient.terms().len() == 1 {
             let factors = coefficient.factors().iter().cloned().chain(kinematic);
@@ -120,15 +132,7 @@ fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
     match terms.len() {
         0 => (false, Layout::Number(Q::ZERO)),
         1 => terms.pop().unwrap_or((false, Layout::Number(Q::ZERO))),
-        _ => {
-            // A sum whose terms are all subtracted reads better with the minus outside.
-            if terms.iter().all(|(negative, _)| *negative) && terms.len() > 1 {
-                let flipped = terms.into_iter().map(|(_, t)| (false, t)).collect();
-                (true, Layout::Sum(flipped))
-            } else {
-                (false, Layout::Sum(terms))
-            }
-        }
+        _ => (false, Layout::Sum(terms)),
     }
 }
 

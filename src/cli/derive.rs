@@ -1,0 +1,127 @@
+//! `kinetics derive --general [--principal] [--only H_G,T,euler,...] [--steps]
+//! [--format text|latex|json]`: the chapter's equations for a general body.
+
+use kinetics::mechanics::catalogue::{derive_general, NAMES};
+use kinetics::mechanics::{Derivation, Relation};
+use kinetics::print::{self, Notation};
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Derive for a general body (symbols I_x ... I_xz, w_x, w_y, w_z, m, vbar).
+    #[arg(long, required = true)]
+    pub general: bool,
+    /// Principal axes: every product of inertia is zero.
+    #[arg(long)]
+    pub principal: bool,
+    /// Only these derivations (comma-separated): H_G, H_O, T, impulse, Hdot, euler,
+    /// fixed_axis, reactions, balancing.
+    #[arg(long, value_delimiter = ',')]
+    pub only: Vec<String>,
+    /// Show every step, not only the results.
+    #[arg(long)]
+    pub steps: bool,
+    #[arg(long, value_enum, default_value_t = super::show::Format::Text)]
+    pub format: super::show::Format,
+}
+
+pub fn run(args: Args) -> Result<String, String> {
+    let names: Vec<&str> = if args.only.is_empty() {
+        NAMES.to_vec()
+    } else {
+        args.only.iter().map(String::as_str).collect()
+    };
+    let mut derivations = Vec::new();
+    for name in names {
+        let derived = derive_general(name, args.principal).ok_or_else(|| {
+            format!(
+                "error: unknown derivation '{name}'\n  = help: choose from {}",
+                NAMES.join(", ")
+            )
+        })?;
+        derivations.push(derived.map_err(|e| format!("error: {name}: {e}"))?);
+    }
+    Ok(match args.format {
+        super::show::Format::Text => render(&derivations, Notation::Text, args.steps),
+        super::show::Format::Latex => render(&derivations, Notation::Latex, args.steps),
+        super::show::Format::Json => json(&derivations).to_string(),
+    })
+}
+
+fn relation(r: &Relation, notation: Notation) -> (String, String) {
+    (
+        print::render(&r.lhs, notation, r.axis),
+        print::render(&r.rhs, notation, r.axis),
+    )
+}
+
+/// Text: a heading per derivation and `lhs = rhs` lines. LaTeX: an `align*` block per step.
+fn render(derivations: &[Derivation], notation: Notation, all_steps: bool) -> String {
+    let mut out = String::new();
+    for d in derivations {
+        let steps = if all_steps {
+            &d.steps[..]
+        } else {
+            &d.steps[d.steps.len() - 1..]
+        };
+        match notation {
+            Notation::Text => out.push_str(&format!("# {}\n", d.title)),
+            Notation::Latex => out.push_str(&format!("% {}\n", d.title)),
+        }
+        for step in steps {
+            if all_steps {
+                match notation {
+                    Notation::Text => out.push_str(&format!("## {}\n", step.title)),
+                    Notation::Latex => out.push_str(&format!("% {}\n", step.title)),
+                }
+            }
+            let lines: Vec<String> = step
+                .relations
+                .iter()
+                .map(|r| {
+                    let (l, rhs) = relation(r, notation);
+                    match notation {
+                        Notation::Text => format!("{l} = {rhs}"),
+                        Notation::Latex => format!("{l} &= {rhs}"),
+                    }
+                })
+                .collect();
+            match notation {
+                Notation::Text => out.push_str(&(lines.join("\n") + "\n")),
+                Notation::Latex => out.push_str(&format!(
+                    "\\begin{{align*}}\n{}\n\\end{{align*}}\n",
+                    lines.join(" \\\\\n")
+                )),
+            }
+        }
+        out.push('\n');
+    }
+    out.trim_end().to_string()
+}
+
+fn json(derivations: &[Derivation]) -> serde_json::Value {
+    let relations = |rs: &[Relation]| -> Vec<serde_json::Value> {
+        rs.iter()
+            .map(|r| {
+                let (lt, rt) = relation(r, Notation::Text);
+                let (ll, rl) = relation(r, Notation::Latex);
+                serde_json::json!({"text": format!("{lt} = {rt}"), "latex": format!("{ll} = {rl}")})
+            })
+            .collect()
+    };
+    serde_json::Value::Array(
+        derivations
+            .iter()
+            .map(|d| {
+                serde_json::json!({
+                    "name": d.name,
+                    "title": d.title,
+                    "result": relations(d.result()),
+                    "steps": d.steps.iter().map(|s| serde_json::json!({
+                        "title": s.title,
+                        "relations": relations(&s.relations),
+                    })).collect::<Vec<_>>(),
+                })
+            })
+            .collect(),
+    )
+}

@@ -1,0 +1,54 @@
+//! Angular momentum (§18.2): `{H_G} = [I]{ω}`, by components
+//!
+//! ```text
+//! H_x =  I_x ω_x - I_xy ω_y - I_xz ω_z
+//! H_y = -I_xy ω_x + I_y ω_y - I_yz ω_z
+//! H_z = -I_xz ω_x - I_yz ω_y + I_z ω_z
+//! ```
+//!
+//! and about another point, `H_O = H_G + r̄ × m v̄`. For a body turning about a fixed point
+//! O the same `[I]{ω}` holds with moments and products about O.
+
+use super::derivation::{Derivation, Relation, Step};
+use super::inertia::InertiaTensor;
+use crate::algebra::{Expr, Vector};
+
+/// `{H} = [I]{ω}`; `point` names the reference point (`G` or `O`).
+pub fn angular_momentum(inertia: &InertiaTensor, omega: &Vector, point: &str) -> Derivation {
+    let h = inertia.matrix() * omega;
+    Derivation {
+        name: format!("H_{point}"),
+        title: format!("angular momentum about {point}"),
+        steps: vec![Step {
+            title: format!(
+                "{{H_{point}}} = [I]{{ω}}, with the moments and products of inertia about {point} (products positive, entered with a minus sign)"
+            ),
+            relations: Relation::components("H", &h),
+        }],
+    }
+}
+
+/// `H_O = H_G + r̄ × m v̄`, where `rbar` is the position of G from O.
+pub fn angular_momentum_about_point(
+    h_g: &Vector,
+    rbar: &Vector,
+    mass: &Expr,
+    vbar: &Vector,
+) -> Derivation {
+    let moment_of_momentum = rbar.cross(&vbar.map(|v| mass * &v));
+    let h_o = h_g + &moment_of_momentum;
+    Derivation {
+        name: "H_O".into(),
+        title: "angular momentum about O".into(),
+        steps: vec![
+            Step {
+                title: "moment of the linear momentum, r̄ × m v̄".into(),
+                relations: Relation::components("H", &moment_of_momentum),
+            },
+            Step {
+                title: "H_O = H_G + r̄ × m v̄".into(),
+                relations: Relation::components("H", &h_o),
+            },
+        ],
+    }
+}

@@ -1,0 +1,54 @@
+//! A derivation: the result together with the steps that led to it (definition,
+//! substitution, grouping), so worked solutions can show them.
+
+use crate::algebra::Expr;
+use crate::print::Axis;
+
+/// One displayed equation `lhs = rhs`, presented as the equation about `axis`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Relation {
+    pub lhs: Expr,
+    pub rhs: Expr,
+    pub axis: Axis,
+}
+
+impl Relation {
+    pub fn new(lhs: Expr, rhs: Expr, axis: Axis) -> Relation {
+        Relation { lhs, rhs, axis }
+    }
+
+    /// The three component relations `name_x = v[0]`, `name_y = v[1]`, `name_z = v[2]`.
+    pub fn components(name: &str, v: &crate::algebra::Vector) -> Vec<Relation> {
+        [("x", Axis::X), ("y", Axis::Y), ("z", Axis::Z)]
+            .iter()
+            .zip(v.iter())
+            .map(|((sub, axis), rhs)| {
+                Relation::new(Expr::symbol(&format!("{name}_{sub}")), rhs.clone(), *axis)
+            })
+            .collect()
+    }
+}
+
+/// A step of a derivation: what was done, in words, and the relations it produced.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Step {
+    pub title: String,
+    pub relations: Vec<Relation>,
+}
+
+/// A named derivation and its steps; the last step holds the result.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Derivation {
+    /// Short machine name: `H_G`, `T`, `euler`, ...
+    pub name: String,
+    /// What is derived, in words.
+    pub title: String,
+    pub steps: Vec<Step>,
+}
+
+impl Derivation {
+    /// The relations of the final step.
+    pub fn result(&self) -> &[Relation] {
+        self.steps.last().map_or(&[], |s| s.relations.as_slice())
+    }
+}

@@ -1,0 +1,95 @@
+//! Rotation about a fixed axis (§18.8). With z along the axis, `ω = ω k`, Ω = ω and
+//! `α = ω̇`, `ΣM_O = [I]{α k} + ω k × [I]{ω k}` gives
+//!
+//! ```text
+//! ΣM_x = -I_xz α + I_yz ω²
+//! ΣM_y = -I_yz α - I_xz ω²
+//! ΣM_z =  I_z α
+//! ```
+//!
+//! For a shaft on bearings A (at O) and B (at distance l along z), the moments about A of
+//! the radial reactions at B are `ΣM_x = -l B_y`, `ΣM_y = l B_x`, so the dynamic reactions
+//! are `B_y = -(ΣM_x)/l`, `B_x = (ΣM_y)/l`, and `A = m ā - B` with
+//! `ā = α k × r̄ - ω² r̄_⊥` (gravity's static part is left out).
+
+use super::derivation::{Derivation, Relation, Step};
+use super::inertia::InertiaTensor;
+use super::rotating_frame::rate_of_angular_momentum;
+use crate::algebra::{AlgebraError, Expr, Vector};
+use crate::print::Axis;
+
+fn axis_vector(e: Expr) -> Vector {
+    Vector::new(Expr::zero(), Expr::zero(), e)
+}
+
+/// The three moment equations for rotation about z.
+pub fn fixed_axis_rotation(inertia: &InertiaTensor) -> Result<Derivation, AlgebraError> {
+    let omega = axis_vector(Expr::symbol("w"));
+    let alpha = axis_vector(Expr::symbol("alpha"));
+    let rate = rate_of_angular_momentum(inertia, &omega, &alpha, &omega)?;
+    let moments = Vector::from_iterator(rate.result().iter().map(|r| r.rhs.clone()));
+    let mut steps = vec![Step {
+        title: "z along the fixed axis: ω = ω k, Ω = ω, α = ω̇ (ω_x = ω_y = 0)".into(),
+        relations: Relation::components("H", &(inertia.matrix() * &omega)),
+    }];
+    steps.extend(rate.steps);
+    steps.push(Step {
+        title: "ΣM_O = Ḣ_O".into(),
+        relations: Relation::components("SumM", &moments),
+    });
+    Ok(Derivation {
+        name: "fixed_axis".into(),
+        title: "rotation about a fixed axis".into(),
+        steps,
+    })
+}
+
+/// Dynamic reactions of bearings A (at the origin) and B (at `z = l`) on a body of mass
+/// `m` whose mass centre is at `(x̄, ȳ)` off the axis.
+pub fn bearing_reactions(
+    inertia: &InertiaTensor,
+    mass: &Expr,
+    centroid: (&Expr, &Expr),
+    l: &Expr,
+) -> Result<Derivation, AlgebraError> {
+    let fixed = fixed_axis_rotation(inertia)?;
+    let moments: Vec<Expr> = fixed.result().iter().map(|r| r.rhs.clone()).collect();
+    let (w, alpha) = (Expr::symbol("w"), Expr::symbol("alpha"));
+    let (xbar, ybar) = centroid;
+    let b_x = (&moments[1] / l).expand()?;
+    let b_y = (-&moments[0] / l).expand()?;
+    let a_bar_x = -(&alpha * ybar) - w.powi(2) * xbar;
+    let a_bar_y = &alpha * xbar - w.powi(2) * ybar;
+    let a_x = (mass * &a_bar_x - &b_x).expand()?;
+    let a_y = (mass * &a_bar_y - &b_y).expand()?;
+    let s = Expr::symbol;
+    Ok(Derivation {
+        name: "reactions".into(),
+        title: "dynamic reactions of the bearings".into(),
+        steps: vec![
+            Step {
+                title: "moments about A of the reaction at B: ΣM_x = -l B_y, ΣM_y = l B_x".into(),
+                relations: vec![
+                    Relation::new(-(l * s("B_y")), moments[0].clone(), Axis::X),
+                    Relation::new(l * s("B_x"), moments[1].clone(), Axis::Y),
+                ],
+            },
+            Step {
+                title: "ΣF = m ā with ā = α k × r̄ - ω² r̄".into(),
+                relations: vec![
+                    Relation::new(s("A_x") + s("B_x"), mass * &a_bar_x, Axis::X),
+                    Relation::new(s("A_y") + s("B_y"), mass * &a_bar_y, Axis::Y),
+                ],
+            },
+            Step {
+                title: "the reactions".into(),
+                relations: vec![
+                    Relation::new(s("B_x"), b_x, Axis::X),
+                    Relation::new(s("B_y"), b_y, Axis::Y),
+                    Relation::new(s("A_x"), a_x, Axis::X),
+                    Relation::new(s("A_y"), a_y, Axis::Y),
+                ],
+            },
+        ],
+    })
+}

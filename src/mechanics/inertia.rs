@@ -1,0 +1,107 @@
+//! The inertia tensor in the chapter's convention.
+//!
+//! Moments `I_x = ∫(y² + z²) dm` and products `I_xy = ∫xy dm` (positive integrals); the
+//! tensor is
+//!
+//! ```text
+//!       [  I_x  -I_xy  -I_xz ]
+//! [I] = [ -I_xy   I_y  -I_yz ]
+//!       [ -I_xz  -I_yz   I_z ]
+//! ```
+//!
+//! Rotation into other axes is `[I'] = R [I] Rᵀ` (R's rows are the new axes in the old
+//! frame); the parallel-axis theorem moves a centroidal tensor to a point at `r̄` from G:
+//! `I_x = Ī_x + m(ȳ² + z̄²)`, `I_xy = Ī_xy + m x̄ ȳ`; composite bodies add tensors about a
+//! common point.
+
+use crate::algebra::{Expr, Matrix, Vector};
+
+/// An inertia tensor by its six components: products of inertia are the positive integrals
+/// `∫xy dm`, entered in the matrix with a minus sign.
+#[derive(Debug, Clone, PartialEq)]
+pub struct InertiaTensor {
+    /// `[I_x, I_y, I_z]`.
+    pub moments: [Expr; 3],
+    /// `[I_xy, I_yz, I_xz]` (positive-integral convention).
+    pub products: [Expr; 3],
+}
+
+impl InertiaTensor {
+    /// The general tensor with symbols `I_x, I_y, I_z, I_xy, I_yz, I_xz`.
+    pub fn general() -> InertiaTensor {
+        InertiaTensor {
+            moments: ["I_x", "I_y", "I_z"].map(Expr::symbol),
+            products: ["I_xy", "I_yz", "I_xz"].map(Expr::symbol),
+        }
+    }
+
+    /// Principal axes: symbols `I_x, I_y, I_z`, every product zero.
+    pub fn principal() -> InertiaTensor {
+        InertiaTensor::diagonal(["I_x", "I_y", "I_z"].map(Expr::symbol))
+    }
+
+    pub fn diagonal(moments: [Expr; 3]) -> InertiaTensor {
+        InertiaTensor {
+            moments,
+            products: [Expr::zero(), Expr::zero(), Expr::zero()],
+        }
+    }
+
+    /// Whether every product of inertia is zero (the axes are principal).
+    pub fn is_principal(&self) -> bool {
+        self.products.iter().all(Expr::is_zero)
+    }
+
+    /// `[I]` with the chapter's signs.
+    pub fn matrix(&self) -> Matrix {
+        let [ix, iy, iz] = self.moments.clone();
+        let [ixy, iyz, ixz] = self.products.clone().map(|p| -p);
+        Matrix::new(
+            ix,
+            ixy.clone(),
+            ixz.clone(),
+            ixy,
+            iy,
+            iyz.clone(),
+            ixz,
+            iyz,
+            iz,
+        )
+    }
+
+    /// The tensor whose matrix is `m` (symmetric; products read as `-m[0][1]`, ...).
+    pub fn from_matrix(m: &Matrix) -> InertiaTensor {
+        InertiaTensor {
+            moments: [m[(0, 0)].clone(), m[(1, 1)].clone(), m[(2, 2)].clone()],
+            products: [-&m[(0, 1)], -&m[(1, 2)], -&m[(0, 2)]],
+        }
+    }
+
+    /// The tensor in axes whose directions are the rows of `rotation`: `R [I] Rᵀ`.
+    pub fn rotated(&self, rotation: &Matrix) -> InertiaTensor {
+        let m = rotation * self.matrix() * rotation.transpose();
+        InertiaTensor::from_matrix(&m.map(|e| e.expand().unwrap_or(e)))
+    }
+
+    /// Moves a centroidal tensor to axes through a point O, parallel to the centroidal
+    /// ones, where `centroid` is the position of G from O:
+    /// `I_x = Ī_x + m(ȳ² + z̄²)`, `I_xy = Ī_xy + m x̄ ȳ`, and cyclically.
+    pub fn parallel_axis(&self, mass: &Expr, centroid: &Vector) -> InertiaTensor {
+        let [x, y, z] = [&centroid[0], &centroid[1], &centroid[2]];
+        let sq = |a: &Expr| a * a;
+        let shift_moments = [sq(y) + sq(z), sq(z) + sq(x), sq(x) + sq(y)];
+        let shift_products = [x * y, y * z, x * z];
+        InertiaTensor {
+            moments: std::array::from_fn(|k| &self.moments[k] + &(mass * &shift_moments[k])),
+            products: std::array::from_fn(|k| &self.products[k] + &(mass * &shift_products[k])),
+        }
+    }
+
+    /// The tensor of two parts about the same point and axes.
+    pub fn add(&self, other: &InertiaTensor) -> InertiaTensor {
+        InertiaTensor {
+            moments: std::array::from_fn(|k| &self.moments[k] + &other.moments[k]),
+            products: std::array::from_fn(|k| &self.products[k] + &other.products[k]),
+        }
+    }
+}

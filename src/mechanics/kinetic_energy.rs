@@ -1,0 +1,53 @@
+//! Kinetic energy (§18.4):
+//!
+//! ```text
+//! T = ½ m v̄² + ½ {ω}ᵀ[I]{ω}
+//!   = ½ m v̄² + ½(I_x ω_x² + I_y ω_y² + I_z ω_z² - 2I_xy ω_x ω_y - 2I_yz ω_y ω_z - 2I_xz ω_z ω_x)
+//! ```
+//!
+//! For a body about a fixed point O, `T = ½ {ω}ᵀ[I_O]{ω}` (no translational part).
+
+use super::derivation::{Derivation, Relation, Step};
+use super::inertia::InertiaTensor;
+use crate::algebra::{AlgebraError, Expr, Vector};
+use crate::print::Axis;
+
+/// `T = ½ m v̄² + ½ ωᵀ[I]ω`; `translation` is `Some((m, v̄))` for a free body, `None` for a
+/// body about a fixed point.
+pub fn kinetic_energy(
+    inertia: &InertiaTensor,
+    omega: &Vector,
+    translation: Option<(&Expr, &Vector)>,
+) -> Result<Derivation, AlgebraError> {
+    let half = Expr::rational(1, 2);
+    let rotational = (&half * &omega.dot(&(inertia.matrix() * omega))).expand()?;
+    let t = Expr::symbol("T");
+    let steps = match translation {
+        Some((m, v)) => {
+            let translational = (&half * m * v.dot(v)).expand()?;
+            vec![
+                Step {
+                    title: "rotational part ½{ω}ᵀ[I]{ω}".into(),
+                    relations: vec![Relation::new(
+                        Expr::symbol("T_rot"),
+                        rotational.clone(),
+                        Axis::X,
+                    )],
+                },
+                Step {
+                    title: "add the translational part ½ m v̄²".into(),
+                    relations: vec![Relation::new(t, &translational + &rotational, Axis::X)],
+                },
+            ]
+        }
+        None => vec![Step {
+            title: "T = ½{ω}ᵀ[I_O]{ω} about the fixed point O".into(),
+            relations: vec![Relation::new(t, rotational, Axis::X)],
+        }],
+    };
+    Ok(Derivation {
+        name: "T".into(),
+        title: "kinetic energy".into(),
+        steps,
+    })
+}

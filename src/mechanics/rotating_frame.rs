@@ -1,0 +1,52 @@
+//! Rate of change of angular momentum in a rotating frame (§18.5, §18.7):
+//!
+//! ```text
+//! Ḣ_G = (Ḣ_G)_Gxyz + Ω × H_G,     (Ḣ_G)_Gxyz = [I]{ω̇}
+//! ```
+//!
+//! `(Ḣ_G)_Gxyz = [I]{ω̇}` because the moments and products of inertia are constant in a
+//! frame in which the body's mass distribution looks the same: the body-fixed frame
+//! (Ω = ω), or, for an axisymmetric body, a frame that does not spin with the body (Ω ≠ ω).
+//! The same holds about a fixed point O with `[I_O]`.
+
+use super::derivation::{Derivation, Relation, Step};
+use super::inertia::InertiaTensor;
+use crate::algebra::{AlgebraError, Vector};
+
+/// `Ḣ = [I]{ω̇} + Ω × ([I]{ω})`. `omega_dot` holds the rates of the components of ω as
+/// seen in the rotating frame; `frame_rate` is Ω.
+pub fn rate_of_angular_momentum(
+    inertia: &InertiaTensor,
+    omega: &Vector,
+    omega_dot: &Vector,
+    frame_rate: &Vector,
+) -> Result<Derivation, AlgebraError> {
+    let matrix = inertia.matrix();
+    let relative = &matrix * omega_dot;
+    let h = &matrix * omega;
+    let transport = frame_rate.cross(&h);
+    let total = expand_each(&(&relative + &transport))?;
+    Ok(Derivation {
+        name: "Hdot".into(),
+        title: "rate of change of angular momentum".into(),
+        steps: vec![
+            Step {
+                title: "rate relative to the rotating frame, (Ḣ)_Gxyz = [I]{ω̇}".into(),
+                relations: Relation::components("Hdot", &expand_each(&relative)?),
+            },
+            Step {
+                title: "transport term Ω × H".into(),
+                relations: Relation::components("Hdot", &expand_each(&transport)?),
+            },
+            Step {
+                title: "Ḣ = (Ḣ)_Gxyz + Ω × H".into(),
+                relations: Relation::components("Hdot", &total),
+            },
+        ],
+    })
+}
+
+/// Each component expanded.
+pub fn expand_each(v: &Vector) -> Result<Vector, AlgebraError> {
+    Ok(Vector::new(v[0].expand()?, v[1].expand()?, v[2].expand()?))
+}

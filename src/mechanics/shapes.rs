@@ -1,0 +1,67 @@
+//! Centroidal inertia of the standard shapes, each in its own axes.
+//!
+//! | shape | axes | moments |
+//! |---|---|---|
+//! | slender rod, length L | along x | `0, mL²/12, mL²/12` |
+//! | thin rectangular plate a × b | sides along x (a), y (b), normal z | `mb²/12, ma²/12, m(a²+b²)/12` |
+//! | thin disk, radius r | axis x | `mr²/2, mr²/4, mr²/4` |
+//! | solid cylinder, radius r, length h | axis x | `mr²/2, m(3r²+h²)/12, m(3r²+h²)/12` |
+//! | solid sphere, radius r | any | `2mr²/5` each |
+//! | rectangular prism a × b × c | edges along x, y, z | `m(b²+c²)/12, m(c²+a²)/12, m(a²+b²)/12` |
+//! | point mass | any | `0, 0, 0` |
+//!
+//! All products of inertia are zero in these axes (they are principal by symmetry).
+
+use super::inertia::InertiaTensor;
+use crate::algebra::Expr;
+
+/// A body whose inertia is known in closed form.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Shape {
+    SlenderRod { length: Expr },
+    ThinPlate { a: Expr, b: Expr },
+    ThinDisk { radius: Expr },
+    SolidCylinder { radius: Expr, length: Expr },
+    SolidSphere { radius: Expr },
+    RectangularPrism { a: Expr, b: Expr, c: Expr },
+    PointMass,
+}
+
+impl Shape {
+    /// The centroidal tensor of this shape with mass `m`, in the shape's own axes.
+    pub fn centroidal_inertia(&self, m: &Expr) -> InertiaTensor {
+        let q = |n: i64, d: i64| Expr::rational(n, d) * m;
+        let sq = |e: &Expr| e.powi(2);
+        let moments = match self {
+            Shape::SlenderRod { length } => {
+                let i = q(1, 12) * sq(length);
+                [Expr::zero(), i.clone(), i]
+            }
+            Shape::ThinPlate { a, b } => [
+                q(1, 12) * sq(b),
+                q(1, 12) * sq(a),
+                q(1, 12) * (sq(a) + sq(b)),
+            ],
+            Shape::ThinDisk { radius } => [
+                q(1, 2) * sq(radius),
+                q(1, 4) * sq(radius),
+                q(1, 4) * sq(radius),
+            ],
+            Shape::SolidCylinder { radius, length } => {
+                let transverse = q(1, 12) * (Expr::int(3) * sq(radius) + sq(length));
+                [q(1, 2) * sq(radius), transverse.clone(), transverse]
+            }
+            Shape::SolidSphere { radius } => {
+                let i = q(2, 5) * sq(radius);
+                [i.clone(), i.clone(), i]
+            }
+            Shape::RectangularPrism { a, b, c } => [
+                q(1, 12) * (sq(b) + sq(c)),
+                q(1, 12) * (sq(c) + sq(a)),
+                q(1, 12) * (sq(a) + sq(b)),
+            ],
+            Shape::PointMass => [Expr::zero(), Expr::zero(), Expr::zero()],
+        };
+        InertiaTensor::diagonal(moments.map(|e| e.expand().unwrap_or(e)))
+    }
+}

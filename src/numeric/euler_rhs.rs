@@ -59,9 +59,12 @@ impl<'a, T: RealField + Copy> EulerRhs<'a, T> {
 
     /// Angular acceleration `ω̇ = [I]⁻¹ (M − ω × [I] ω)`.
     pub fn angular_acceleration(&self, t: T, state: &RigidBodyState<T>) -> Vector3<T> {
-        let omega = &state.omega;
-        let gyroscopic = omega.cross(&self.inertia.angular_momentum(omega));
-        let net = self.torque.body_moment(t, state) - gyroscopic;
+        self.solve_euler(&state.omega, self.torque.body_moment(t, state))
+    }
+
+    /// `[I]⁻¹ (M − ω × [I] ω)` for a given moment.
+    fn solve_euler(&self, omega: &Vector3<T>, moment: Vector3<T>) -> Vector3<T> {
+        let net = moment - omega.cross(&self.inertia.angular_momentum(omega));
         match &self.inverse {
             InverseInertia::Principal(reciprocal) => net.component_mul(reciprocal),
             InverseInertia::Tensor(inverse) => inverse * net,
@@ -71,10 +74,12 @@ impl<'a, T: RealField + Copy> EulerRhs<'a, T> {
 
 impl<T: RealField + Copy> OdeSystem<T, STATE_DIMENSION> for EulerRhs<'_, T> {
     fn derivative(&self, t: T, y: &SVector<T, STATE_DIMENSION>) -> SVector<T, STATE_DIMENSION> {
-        let state = RigidBodyState::from_vector(y);
-        let omega_dot = self.angular_acceleration(t, &state);
-        let q_dot =
-            (raw_quaternion(y) * Quaternion::from_imag(state.omega)).coords * constant::<T>(0.5);
+        let omega = y.fixed_rows::<3>(0).into_owned();
+        let moment = self
+            .torque
+            .body_moment_with(t, || RigidBodyState::from_vector(y));
+        let omega_dot = self.solve_euler(&omega, moment);
+        let q_dot = (raw_quaternion(y) * Quaternion::from_imag(omega)).coords * constant::<T>(0.5);
         SVector::from([
             omega_dot.x,
             omega_dot.y,

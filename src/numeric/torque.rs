@@ -25,11 +25,21 @@ pub enum Torque<T: RealField + Copy> {
 impl<T: RealField + Copy> Torque<T> {
     /// Body-frame components of the moment at time `t` in state `state`.
     pub fn body_moment(&self, t: T, state: &RigidBodyState<T>) -> Vector3<T> {
+        self.body_moment_with(t, || *state)
+    }
+
+    /// [`Torque::body_moment`] with the state built only if the moment depends on it
+    /// (building it normalises the quaternion, a large part of an evaluation's cost).
+    pub(crate) fn body_moment_with(
+        &self,
+        t: T,
+        state: impl FnOnce() -> RigidBodyState<T>,
+    ) -> Vector3<T> {
         match self {
             Torque::None => Vector3::zeros(),
             Torque::Body(moment) => *moment,
-            Torque::Fixed(moment) => state.orientation.inverse_transform_vector(moment),
-            Torque::Function(function) => function(t, state),
+            Torque::Fixed(moment) => state().orientation.inverse_transform_vector(moment),
+            Torque::Function(function) => function(t, &state()),
         }
     }
 

@@ -9,6 +9,7 @@ use kinetics::numeric::body_inertia::BodyInertia;
 use kinetics::numeric::rigid_body_state::RigidBodyState;
 use kinetics::numeric::sample_sink::Sample;
 use kinetics::numeric::simulate::{simulate, Method, Problem, Sampling};
+use kinetics::numeric::splitting::SplittingOrder;
 use kinetics::numeric::torque::Torque;
 use nalgebra::{UnitQuaternion, Vector3};
 
@@ -47,7 +48,12 @@ fn methods() -> Vec<(String, Method<f64>)> {
     )];
     for step in [0.01, 0.001] {
         methods.push((format!("rk4 h {step}"), Method::Rk4 { step }));
-        methods.push((format!("splitting h {step}"), Method::Splitting { step }));
+        for order in [SplittingOrder::Second, SplittingOrder::Fourth] {
+            methods.push((
+                format!("splitting {order:?} h {step}"),
+                Method::Splitting { step, order },
+            ));
+        }
     }
     methods
 }

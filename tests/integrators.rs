@@ -8,6 +8,7 @@ use kinetics::numeric::body_inertia::BodyInertia;
 use kinetics::numeric::rigid_body_state::RigidBodyState;
 use kinetics::numeric::sample_sink::Sample;
 use kinetics::numeric::simulate::{simulate, Method, Problem, Sampling, SimulationStatistics};
+use kinetics::numeric::splitting::SplittingOrder;
 use kinetics::numeric::torque::Torque;
 use kinetics::numeric::NumericError;
 use nalgebra::{Matrix3, RealField, Rotation3, UnitQuaternion, Vector3};
@@ -181,41 +182,58 @@ fn splitting_conserves_angular_momentum_magnitude_to_round_off() {
         interval: 1.0,
         end: 1000.0,
     };
-    let (samples, statistics) = run(&body, Method::Splitting { step: 0.01 }, sampling);
-    assert_eq!(statistics.steps, 100_000);
-    let momentum_drift = relative_drift(&samples, |s| s.angular_momentum_magnitude);
-    let energy_drift = relative_drift(&samples, |s| s.kinetic_energy);
-    println!(
-        "splitting, 1e5 steps of 0.01: |H| drift {momentum_drift:e}, energy drift {energy_drift:e}"
-    );
-    assert!(momentum_drift < 1e-13, "|H| drift {momentum_drift:e}");
-    // Energy is not conserved exactly, but its error stays bounded at O(h²).
-    assert!(energy_drift < 1e-4, "energy drift {energy_drift:e}");
+    for order in [SplittingOrder::Second, SplittingOrder::Fourth] {
+        let method = Method::Splitting { step: 0.01, order };
+        let (samples, statistics) = run(&body, method, sampling.clone());
+        assert_eq!(statistics.steps, 100_000);
+        let momentum_drift = relative_drift(&samples, |s| s.angular_momentum_magnitude);
+        let energy_drift = relative_drift(&samples, |s| s.kinetic_energy);
+        println!(
+            "{order:?} splitting, 1e5 steps of 0.01: |H| drift {momentum_drift:e}, energy drift {energy_drift:e}"
+        );
+        assert!(
+            momentum_drift < 1e-13,
+            "{order:?}: |H| drift {momentum_drift:e}"
+        );
+        // Energy is not conserved exactly, but its error stays bounded at O(h^order).
+        assert!(
+            energy_drift < 1e-4,
+            "{order:?}: energy drift {energy_drift:e}"
+        );
+    }
 }
 
 #[test]
-fn splitting_is_second_order_and_exact_for_an_axisymmetric_body() {
+fn splitting_converges_at_its_order_and_is_exact_for_an_axisymmetric_body() {
     let body = reference_body();
     let reference = final_sample(&body, TIGHT, 10.0);
-    let errors: Vec<f64> = [0.02, 0.01, 0.005]
-        .iter()
-        .map(|&step| {
-            omega_error(
-                &final_sample(&body, Method::Splitting { step }, 10.0),
-                &reference,
-            )
-        })
-        .collect();
-    println!("splitting errors at t = 10 for h = 0.02, 0.01, 0.005: {errors:?}");
-    for pair in errors.windows(2) {
-        let ratio = pair[0] / pair[1];
-        assert!((3.5..4.5).contains(&ratio), "ratio {ratio}");
+    for (order, steps, expected_ratio) in [
+        (SplittingOrder::Second, [0.02, 0.01, 0.005], 4.0),
+        (SplittingOrder::Fourth, [0.04, 0.02, 0.01], 16.0),
+    ] {
+        let errors: Vec<f64> = steps
+            .iter()
+            .map(|&step| {
+                let method = Method::Splitting { step, order };
+                omega_error(&final_sample(&body, method, 10.0), &reference)
+            })
+            .collect();
+        println!("{order:?} splitting errors at t = 10 for h = {steps:?}: {errors:?}");
+        for pair in errors.windows(2) {
+            let ratio = pair[0] / pair[1];
+            let bounds = 0.85 * expected_ratio..1.15 * expected_ratio;
+            assert!(bounds.contains(&ratio), "{order:?}: ratio {ratio}");
+        }
     }
     // Axisymmetric (prolate and oblate): the pieces commute and a coarse step is exact.
     for moments in [[1.0, 1.0, 1.5], [1.0, 2.0, 2.0]] {
         let body = free_body(moments, [0.4, -1.3, 2.1]);
         let exact = final_sample(&body, TIGHT, 10.0);
-        let split = final_sample(&body, Method::Splitting { step: 0.5 }, 10.0);
+        let coarse = Method::Splitting {
+            step: 0.5,
+            order: SplittingOrder::Second,
+        };
+        let split = final_sample(&body, coarse, 10.0);
         let error = omega_error(&split, &exact).max(split.orientation.angle_to(&exact.orientation));
         println!("axisymmetric {moments:?}: splitting with h = 0.5 off by {error:e}");
         assert!(error < 1e-11, "{error:e}");
@@ -266,8 +284,14 @@ fn f32_and_f64_agree_to_f32_accuracy() {
             1e-5,
         ),
         (
-            Method::Splitting { step: 0.01f32 },
-            Method::Splitting { step: 0.01 },
+            Method::Splitting {
+                step: 0.01f32,
+                order: SplittingOrder::Second,
+            },
+            Method::Splitting {
+                step: 0.01,
+                order: SplittingOrder::Second,
+            },
             1e-5,
         ),
         (Method::dop853(2e-6f32, 1e-8), TIGHT, 5e-5),
@@ -354,7 +378,13 @@ fn constant_fixed_frame_torque_changes_fixed_momentum_linearly() {
         (Method::dop853(1e-11, 1e-13), 1e-9),
         (Method::Rk4 { step: 0.005 }, 1e-7),
         // The kick is exact and every rotation keeps q H q⁻¹: round-off only.
-        (Method::Splitting { step: 0.05 }, 1e-13),
+        (
+            Method::Splitting {
+                step: 0.05,
+                order: SplittingOrder::Second,
+            },
+            1e-13,
+        ),
     ] {
         let (samples, _) = run(&problem, method, sampling.clone());
         let error = samples
@@ -381,7 +411,10 @@ fn constant_body_torque_on_a_sphere_gives_linear_spin_up() {
     for method in [
         Method::dop853(1e-10, 1e-12),
         Method::Rk4 { step: 0.1 },
-        Method::Splitting { step: 0.1 },
+        Method::Splitting {
+            step: 0.1,
+            order: SplittingOrder::Second,
+        },
     ] {
         let (samples, _) = run(&problem, method, sampling.clone());
         let error = samples
@@ -501,7 +534,10 @@ fn bad_input_is_rejected_before_any_step() {
             good_inertia,
             good_omega,
             good_sampling.clone(),
-            Method::Splitting { step: 0.01 },
+            Method::Splitting {
+                step: 0.01,
+                order: SplittingOrder::Second,
+            },
         ),
     ];
     for (name, inertia, omega, sampling, method) in cases {
@@ -624,4 +660,37 @@ fn a_million_samples_stream_through_a_counting_sink() {
         fractions.len()
     );
     assert_eq!(fractions.last(), Some(&1.0));
+}
+
+#[test]
+fn a_zero_attitude_quaternion_is_rejected_and_a_rounded_one_normalised() {
+    let mut problem = reference_body();
+    problem.initial.orientation =
+        UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(0.0, 0.0, 0.0, 0.0));
+    let result = simulate(
+        &problem,
+        &TIGHT,
+        &Sampling::Times(vec![1.0]),
+        &mut |_: Sample<f64>| {},
+        &mut |_| {},
+    );
+    assert!(
+        matches!(result, Err(NumericError::InvalidInput { .. })),
+        "{result:?}"
+    );
+
+    problem.initial.orientation =
+        UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(1.0 + 1e-9, 0.0, 0.0, 0.0));
+    let (samples, _) = run(
+        &problem,
+        Method::Rk4 { step: 0.1 },
+        Sampling::Times(vec![0.0, 1.0]),
+    );
+    for sample in samples {
+        assert!(
+            (sample.orientation.norm() - 1.0).abs() < 1e-15,
+            "{}",
+            sample.orientation.norm()
+        );
+    }
 }

@@ -13,7 +13,7 @@
 //! * [`Method::Dop853`]: adaptive Dormand–Prince 8(5,3); samples come from its dense output,
 //!   so the step sequence does not depend on the sampling.
 //! * [`Method::Splitting`]: the structure-preserving Lie–Poisson splitting (torque-free or a
-//!   constant moment), equal steps like `Rk4`.
+//!   constant moment), second or fourth order, equal steps like `Rk4`.
 
 use super::body_inertia::BodyInertia;
 use super::dop853::{Dop853, Dop853Settings, DEFAULT_MAX_STEPS};
@@ -23,9 +23,9 @@ use super::ode::{constant, to_f64};
 use super::rigid_body_state::{RigidBodyState, STATE_DIMENSION};
 use super::rk4::rk4_step;
 use super::sample_sink::{Sample, SampleSink};
-use super::splitting::{LiePoissonSplitting, SplittingState};
+use super::splitting::{LiePoissonSplitting, SplittingOrder, SplittingState};
 use super::torque::Torque;
-use nalgebra::{RealField, SVector};
+use nalgebra::{RealField, SVector, UnitQuaternion};
 
 /// Most steps (or samples) a simulation may be asked for.
 const MAX_COUNT: f64 = 1e15;
@@ -48,8 +48,8 @@ pub enum Method<T> {
     Rk4 { step: T },
     /// Adaptive DOP853 with relative and absolute tolerances and a budget of steps.
     Dop853 { rtol: T, atol: T, max_steps: usize },
-    /// Second-order Lie–Poisson splitting with steps of at most `step`.
-    Splitting { step: T },
+    /// Lie–Poisson splitting of the given order with steps of at most `step`.
+    Splitting { step: T, order: SplittingOrder },
 }
 
 impl<T> Method<T> {
@@ -151,6 +151,12 @@ fn validate_problem<T: RealField + Copy>(problem: &Problem<T>) -> Result<(), Num
                 problem.initial.omega.map(to_f64),
                 problem.initial.orientation.coords.map(to_f64)
             ),
+        ));
+    }
+    if problem.initial.orientation.norm() == T::zero() {
+        return Err(invalid(
+            "initial state",
+            "the attitude quaternion is zero; it must be a rotation (unit quaternion)",
         ));
     }
     if !problem.torque.is_finite() {
@@ -277,22 +283,27 @@ fn propagator<'a, T: RealField + Copy>(
     end: T,
 ) -> Result<Box<dyn Propagator<T> + 'a>, NumericError> {
     let start = problem.start_time;
+    // A quaternion that is nearly unit (rounded input) is made exactly so.
+    let initial = RigidBodyState::new(
+        problem.initial.omega,
+        UnitQuaternion::new_normalize(problem.initial.orientation.into_inner()),
+    );
     match *method {
         Method::Rk4 { step } => {
             validate_fixed_step(step, end - start)?;
             Ok(Box::new(Rk4Propagator {
                 rhs: EulerRhs::new(problem.inertia, &problem.torque)?,
                 t: start,
-                y: problem.initial.to_vector(),
+                y: initial.to_vector(),
                 max_step: step,
                 steps: 0,
             }))
         }
-        Method::Splitting { step } => {
+        Method::Splitting { step, order } => {
             validate_fixed_step(step, end - start)?;
-            let splitting = LiePoissonSplitting::new(&problem.inertia, &problem.torque)?;
+            let splitting = LiePoissonSplitting::new(&problem.inertia, &problem.torque, order)?;
             Ok(Box::new(SplittingPropagator {
-                state: splitting.to_splitting_state(&problem.initial),
+                state: splitting.to_splitting_state(&initial),
                 splitting,
                 t: start,
                 max_step: step,
@@ -311,7 +322,7 @@ fn propagator<'a, T: RealField + Copy>(
             };
             settings.validate()?;
             let rhs = EulerRhs::new(problem.inertia, &problem.torque)?;
-            let y0 = problem.initial.to_vector();
+            let y0 = initial.to_vector();
             let integrator = if end > start {
                 Some(Dop853::new(&rhs, start, y0, end, settings)?)
             } else {
@@ -320,7 +331,7 @@ fn propagator<'a, T: RealField + Copy>(
             Ok(Box::new(Dop853Propagator {
                 rhs,
                 integrator,
-                initial: problem.initial,
+                initial,
             }))
         }
     }

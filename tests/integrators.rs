@@ -694,3 +694,30 @@ fn a_zero_attitude_quaternion_is_rejected_and_a_rounded_one_normalised() {
         );
     }
 }
+
+#[test]
+fn right_hand_side_is_the_chapters_cyclic_form() {
+    use kinetics::numeric::euler_rhs::EulerRhs;
+    let (ix, iy, iz) = (1.0, 2.0, 2.5);
+    let omega = Vector3::new(0.3, -0.7, 1.1);
+    let moment = Vector3::new(0.2, 0.1, -0.4);
+    let torque = Torque::Body(moment);
+    let state = RigidBodyState::new(omega, UnitQuaternion::identity());
+    let rhs = EulerRhs::new(BodyInertia::Principal(Vector3::new(ix, iy, iz)), &torque).unwrap();
+    let alpha = rhs.angular_acceleration(0.0, &state);
+    // ΣM_x = I_x ω̇_x − (I_y − I_z) ω_y ω_z and cyclically.
+    let (wx, wy, wz) = (omega.x, omega.y, omega.z);
+    let textbook = Vector3::new(
+        (moment.x + (iy - iz) * wy * wz) / ix,
+        (moment.y + (iz - ix) * wz * wx) / iy,
+        (moment.z + (ix - iy) * wx * wy) / iz,
+    );
+    assert!((alpha - textbook).amax() < 1e-15, "{alpha} vs {textbook}");
+
+    // Full tensor with products of inertia: ΣM = [I] ω̇ + ω × [I] ω must hold.
+    let tensor = Matrix3::new(1.2, -0.1, 0.05, -0.1, 2.0, 0.0, 0.05, 0.0, 2.9);
+    let rhs = EulerRhs::new(BodyInertia::Tensor(tensor), &torque).unwrap();
+    let alpha = rhs.angular_acceleration(0.0, &state);
+    let residual = tensor * alpha + omega.cross(&(tensor * omega)) - moment;
+    assert!(residual.amax() < 1e-15, "residual {residual}");
+}

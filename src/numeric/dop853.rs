@@ -316,8 +316,11 @@ impl<T: RealField + Copy> Dop853Settings<T> {
 /// Counters of an integration.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Dop853Statistics {
+    /// Steps whose error estimate passed.
     pub accepted_steps: usize,
+    /// Steps retried with a smaller size.
     pub rejected_steps: usize,
+    /// Evaluations of the right-hand side, dense-output stages included.
     pub evaluations: usize,
 }
 
@@ -340,7 +343,6 @@ pub struct Dop853<T: RealField + Copy, const N: usize> {
     stages: [SVector<T, N>; EXTENDED_STAGES],
     /// Coefficients of the continuous extension of the last step, once computed.
     dense: Option<[SVector<T, N>; 7]>,
-    previous_error: T,
     last_rejected: bool,
     statistics: Dop853Statistics,
 }
@@ -378,7 +380,6 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
             last_step: T::zero(),
             stages: [SVector::zeros(); EXTENDED_STAGES],
             dense: None,
-            previous_error: constant(1e-4),
             last_rejected: false,
             statistics: Dop853Statistics {
                 evaluations: 1,
@@ -510,7 +511,6 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
                 if self.last_rejected {
                     next = next.min(h);
                 }
-                self.previous_error = error.max(constant(1e-4));
                 system.project(&mut y_new);
                 let t_new = if last { self.t_end } else { self.t + h };
                 let derivative = system.derivative(t_new, &y_new);

@@ -7,7 +7,8 @@
 //! Samples are produced one at a time and never stored, so memory does not depend on their
 //! number.
 //!
-//! Methods, each behind one [`Propagator`] (the state carried between sample times):
+//! Methods, each behind one `Propagator` (the state a method carries between sample
+//! times; adding a method is one [`Method`] variant and one `Propagator`):
 //! * [`Method::Rk4`]: classical Runge–Kutta; between two sample times it takes equal steps
 //!   no longer than `step`, landing on each sample time.
 //! * [`Method::Dop853`]: adaptive Dormand–Prince 8(5,3); samples come from its dense output,
@@ -35,9 +36,13 @@ const PROGRESS_RESOLUTION: f64 = 1e-3;
 /// A rigid body, the moment on it and where it starts.
 #[derive(Debug)]
 pub struct Problem<T: RealField + Copy> {
+    /// Inertia in body axes (principal moments or the full tensor).
     pub inertia: BodyInertia<T>,
+    /// Moment about the mass centre.
     pub torque: Torque<T>,
+    /// `(ω, q)` at `start_time`.
     pub initial: RigidBodyState<T>,
+    /// Time of the initial state.
     pub start_time: T,
 }
 

@@ -148,3 +148,30 @@ proptest! {
         prop_assert!(reconstruction_error(&axes, &tensor) < 1e-13);
     }
 }
+
+proptest! {
+    /// Two equal moments in a random orientation: the distinct moment's axis is the
+    /// symmetry axis to round-off (the rounded input tensor already moves it by a few ε
+    /// divided by the relative gap between the moments).
+    #[test]
+    fn random_axisymmetric_bodies_keep_their_symmetry_axis(
+        equal in 0.5..3.0f64,
+        ratio in prop_oneof![0.55..0.95f64, 1.05..1.9f64],
+        axis in prop::array::uniform3(-4.0..4.0f64),
+    ) {
+        let distinct = equal * ratio;
+        let rotation = Rotation3::from_scaled_axis(Vector3::from(axis));
+        let tensor = rotated_tensor(Vector3::new(equal, equal, distinct), &rotation);
+        let axes = principal_axes(&tensor).unwrap();
+        // Ascending order puts the distinct moment first (oblate) or last (prolate).
+        let column = if distinct < equal { 0 } else { 2 };
+        let symmetry_axis = rotation.matrix().column(2).into_owned();
+        let found = axes.rotation.matrix().column(column).into_owned();
+        let error = (found - symmetry_axis * found.dot(&symmetry_axis).signum()).amax();
+        // Rounding the tensor (|ΔI| ~ ε |I|) tilts the axis by ~ ε |I| / gap.
+        let bound = 50.0 * f64::EPSILON * equal.max(distinct) / (distinct - equal).abs();
+        prop_assert!(error < bound, "symmetry axis off by {:e} > {:e}", error, bound);
+        prop_assert!((axes.moments[column] - distinct).abs() < 1e-14 * equal);
+        prop_assert!(orthonormality_error(&axes) < 1e-15);
+    }
+}

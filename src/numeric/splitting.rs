@@ -18,16 +18,18 @@
 //!
 //! A constant moment adds the flow `Ḣ = M_body` with `q` frozen, exact as a kick
 //! `H ← H + h M_body` (for a moment fixed in space `M_body = q⁻¹ M_fixed`, constant while `q`
-//! is frozen). One step is the symmetric (Strang) composition
+//! is frozen). With `A`, `B` the flows of the `a` and `b` pieces, `C` that of the `|H|²`
+//! piece and `K` the kick, one step applies, in this order,
 //!
 //! ```text
-//! Φ_h = K(h/2) ∘ A(h/2) ∘ B(h) ∘ A(h/2) ∘ C(h) ∘ K(h/2)
+//! K(h/2), A(h/2), B(h), A(h/2), C(h), K(h/2)
 //! ```
 //!
-//! which is second order. [`SplittingOrder::Fourth`] composes three of them with Yoshida's
-//! triple jump `Φ_{w₁h} ∘ Φ_{w₀h} ∘ Φ_{w₁h}`, `w₁ = 1/(2 − 2^⅓)`, `w₀ = 1 − 2w₁`, which is
-//! fourth order (a symmetric composition of a symmetric method). For an axisymmetric body (`κ_a = 0` or `κ_b = 0`) and torque-free
-//! motion the pieces commute and the step is exact. `|H|` is conserved by every torque-free
+//! a symmetric (Strang) composition, since `C` commutes with `A` and `B`: second order.
+//! [`SplittingOrder::Fourth`] chains three such steps of sizes `w₁h, w₀h, w₁h` (Yoshida's
+//! triple jump, `w₁ = 1/(2 − 2^⅓)`, `w₀ = 1 − 2w₁`), fourth order as a symmetric
+//! composition of a symmetric method. For an axisymmetric body (`κ_a = 0` or `κ_b = 0`)
+//! and torque-free motion the pieces commute and the step is exact. `|H|` is conserved by every torque-free
 //! sub-flow, and so is the fixed-frame momentum `q H q⁻¹`. A body given by its full tensor is
 //! integrated in its principal frame ([`BodyInertia::principal_frame`]).
 

@@ -38,7 +38,7 @@ use super::error::NumericError;
 use super::ode::constant;
 use super::rigid_body_state::RigidBodyState;
 use super::torque::Torque;
-use nalgebra::{RealField, UnitQuaternion, Vector3};
+use nalgebra::{Quaternion, RealField, UnitQuaternion, Vector3};
 
 /// The moment the splitting can integrate exactly: constant in the body or in space.
 #[derive(Debug, Clone, Copy)]
@@ -180,7 +180,9 @@ impl<T: RealField + Copy> LiePoissonSplitting<T> {
         let (hj, hk) = (state.momentum[j], state.momentum[k]);
         state.momentum[j] = hj - (versine * hj - sin * hk);
         state.momentum[k] = hk - (versine * hk + sin * hj);
-        state.orientation *= UnitQuaternion::from_axis_angle(&Vector3::ith_axis(axis), theta);
+        // The same half angle gives the attitude's turn exp(θ e_i / 2) directly.
+        let turn = Quaternion::from_parts(cos_half, Vector3::ith(axis, sin_half));
+        state.orientation *= UnitQuaternion::new_unchecked(turn);
     }
 
     /// Exact flow of `|H|²/(2 I_r)` over `h`.

@@ -93,6 +93,35 @@ pub struct SimulationStatistics {
 /// Integrates `problem` with `method`, handing a [`Sample`] to `sink` at each time of
 /// `sampling` (the first may be the start itself) and the fraction done to `progress`
 /// (non-decreasing, at most about a thousand calls, the last one `1.0`).
+///
+/// ```
+/// use kinetics::numeric::body_inertia::BodyInertia;
+/// use kinetics::numeric::rigid_body_state::RigidBodyState;
+/// use kinetics::numeric::sample_sink::Sample;
+/// use kinetics::numeric::simulate::{simulate, Method, Problem, Sampling};
+/// use kinetics::numeric::torque::Torque;
+/// use nalgebra::{UnitQuaternion, Vector3};
+///
+/// let problem = Problem {
+///     inertia: BodyInertia::Principal(Vector3::new(1.0, 2.0, 3.0)),
+///     torque: Torque::None,
+///     initial: RigidBodyState::new(Vector3::new(1.0, 1.0, 1.0), UnitQuaternion::identity()),
+///     start_time: 0.0,
+/// };
+/// // Torque-free: T = ½ Σ I_i ω_i² stays at its initial ½ (1 + 2 + 3) = 3.
+/// let mut energy_error: f64 = 0.0;
+/// let mut record = |s: Sample<f64>| energy_error = energy_error.max((s.kinetic_energy - 3.0).abs());
+/// let statistics = simulate(
+///     &problem,
+///     &Method::dop853(1e-10, 1e-12),
+///     &Sampling::Every { interval: 0.1, end: 10.0 },
+///     &mut record,
+///     &mut |_fraction| {},
+/// )
+/// .unwrap();
+/// assert_eq!(statistics.samples, 101);
+/// assert!(energy_error < 1e-9);
+/// ```
 pub fn simulate<T, K>(
     problem: &Problem<T>,
     method: &Method<T>,

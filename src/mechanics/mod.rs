@@ -12,6 +12,7 @@ pub mod fixed_axis;
 pub mod impulse_momentum;
 pub mod inertia;
 pub mod kinetic_energy;
+pub mod principal_axes;
 pub mod rotating_frame;
 pub mod shapes;
 pub mod validation;

@@ -13,4 +13,21 @@ pub enum NumericError {
     /// time before the start, a non-finite initial value).
     #[error("{what}: {reason}")]
     InvalidInput { what: String, reason: String },
+    /// An adaptive integrator used up its budget of steps before reaching the end time.
+    #[error(
+        "integration stopped at t = {t} after {max_steps} steps (the step limit); loosen the tolerances or raise the limit"
+    )]
+    StepLimit { max_steps: usize, t: f64 },
+    /// The step size an adaptive integrator needs fell below the resolution of `t`: the
+    /// solution is singular there or the right-hand side is not finite.
+    #[error(
+        "step size {step:e} underflows at t = {t}: the solution is singular there or the torque is not finite"
+    )]
+    StepSizeUnderflow { t: f64, step: f64 },
+    /// The state became infinite or NaN (for instance a torque function returned NaN).
+    #[error("the state is no longer finite at t = {t}; check the torque")]
+    NonFinite { t: f64 },
+    /// A sample sink refused a sample (for instance it could not write it).
+    #[error("the sample sink failed: {reason}")]
+    Sink { reason: String },
 }

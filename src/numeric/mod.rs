@@ -1,10 +1,20 @@
 //! Numbers: evaluation, integration of Euler's equations, exact torque-free motion.
 
+pub mod body_inertia;
+pub mod dop853;
 pub mod double_double;
 pub mod dual;
 pub mod elliptic;
 pub mod error;
+pub mod euler_rhs;
+pub mod ode;
 pub mod reference;
+pub mod rigid_body_state;
+pub mod rk4;
+pub mod sample_sink;
+pub mod simulate;
+pub mod splitting;
+pub mod torque;
 pub mod torque_free;
 
 pub use dual::Dual;

@@ -1,0 +1,98 @@
+//! The inertia of the body in its own frame, as the numerical layer uses it: either the
+//! principal moments `(I_x', I_y', I_z')` or the full tensor in the chapter's convention
+//! `[[I_x, -I_xy, -I_xz], [-I_xy, I_y, -I_yz], [-I_xz, -I_yz, I_z]]`.
+//!
+//! `H = [I] ω` and `T = ½ ωᵀ [I] ω`. Euler's equations need `[I]⁻¹`, so on top of the
+//! physical admissibility checks a body whose smallest principal moment is zero (an ideal
+//! slender rod) is refused.
+
+use super::error::NumericError;
+use super::ode::{constant, to_f64};
+use crate::mechanics::principal_axes::principal_axes;
+use crate::mechanics::validation::{
+    validate_inertia_tensor, validate_principal_moments, INERTIA_RELATIVE_TOLERANCE,
+};
+use nalgebra::{Matrix3, RealField, Rotation3, Vector3};
+
+/// Inertia of a rigid body about its mass centre (or a fixed point), in body-frame axes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum BodyInertia<T: RealField + Copy> {
+    /// Principal moments `(I_x', I_y', I_z')`: the body axes are principal axes.
+    Principal(Vector3<T>),
+    /// The full tensor, chapter convention (products of inertia enter with a minus sign).
+    Tensor(Matrix3<T>),
+}
+
+/// Principal moments and the rotation from the principal frame to the body frame, in the
+/// working scalar.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PrincipalFrame<T: RealField + Copy> {
+    /// Principal moments `(I_x', I_y', I_z')`.
+    pub moments: Vector3<T>,
+    /// Columns: the principal axes in body-frame components (`r_body = R r_principal`).
+    pub rotation: Rotation3<T>,
+}
+
+impl<T: RealField + Copy> BodyInertia<T> {
+    /// Checks that the body can exist (finite, triangle inequality, positive semidefinite)
+    /// and that `[I]` is invertible (smallest principal moment above
+    /// [`INERTIA_RELATIVE_TOLERANCE`] times the trace).
+    pub fn validate(&self) -> Result<(), NumericError> {
+        let moments = match self {
+            BodyInertia::Principal(moments) => {
+                let moments = moments.map(to_f64);
+                validate_principal_moments(&moments)?;
+                moments
+            }
+            BodyInertia::Tensor(tensor) => {
+                let tensor = tensor.map(to_f64);
+                validate_inertia_tensor(&tensor)?;
+                tensor.symmetric_eigenvalues()
+            }
+        };
+        let smallest = moments.min();
+        if smallest <= INERTIA_RELATIVE_TOLERANCE * moments.sum() {
+            return Err(NumericError::InvalidInput {
+                what: "inertia".to_string(),
+                reason: format!(
+                    "the smallest principal moment is {smallest:e}; Euler's equations need an \
+                     invertible inertia tensor (every principal moment positive)"
+                ),
+            });
+        }
+        Ok(())
+    }
+
+    /// Angular momentum `H = [I] ω`, body-frame components.
+    pub fn angular_momentum(&self, omega: &Vector3<T>) -> Vector3<T> {
+        match self {
+            BodyInertia::Principal(moments) => moments.component_mul(omega),
+            BodyInertia::Tensor(tensor) => tensor * omega,
+        }
+    }
+
+    /// Kinetic energy of rotation `T = ½ ω · [I] ω`.
+    pub fn kinetic_energy(&self, omega: &Vector3<T>) -> T {
+        omega.dot(&self.angular_momentum(omega)) * constant(0.5)
+    }
+
+    /// The principal frame: the identity for [`BodyInertia::Principal`], otherwise
+    /// [`principal_axes`] of the tensor (computed in f64). Validate first.
+    pub fn principal_frame(&self) -> Result<PrincipalFrame<T>, NumericError> {
+        match self {
+            BodyInertia::Principal(moments) => Ok(PrincipalFrame {
+                moments: *moments,
+                rotation: Rotation3::identity(),
+            }),
+            BodyInertia::Tensor(tensor) => {
+                let axes = principal_axes(&tensor.map(to_f64))?;
+                Ok(PrincipalFrame {
+                    moments: axes.moments.map(constant),
+                    rotation: Rotation3::from_matrix_unchecked(
+                        axes.rotation.matrix().map(constant),
+                    ),
+                })
+            }
+        }
+    }
+}

@@ -13,3 +13,5 @@ pub mod mechanics;
 pub mod numeric;
 pub mod parse;
 pub mod print;
+pub mod scene;
+pub mod solution;

@@ -12,6 +12,7 @@ mod eval;
 mod expand;
 mod expr;
 mod function;
+pub mod linear_solve;
 mod ops;
 mod rational;
 mod subs;

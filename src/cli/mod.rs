@@ -4,6 +4,7 @@ mod derive;
 mod input;
 mod show;
 mod simplify;
+mod solve;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -24,6 +25,10 @@ enum Command {
     Simplify(simplify::Args),
     /// Derive the chapter's equations for a general body.
     Derive(derive::Args),
+    /// Solve a scene file and write the worked solution.
+    Solve(solve::Args),
+    /// Show which derivations a scene's requests pull, in order.
+    Plan(solve::PlanArgs),
 }
 
 /// Runs the command line and maps failures to a message on standard error and exit code 1.
@@ -33,6 +38,8 @@ pub fn run() -> ExitCode {
         Command::Latex(args) => show::run(args),
         Command::Simplify(args) => simplify::run(args),
         Command::Derive(args) => derive::run(args),
+        Command::Solve(args) => solve::run(args),
+        Command::Plan(args) => solve::plan(args),
     };
     match result {
         Ok(output) => {

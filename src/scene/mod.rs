@@ -1,0 +1,10 @@
+//! Scenes: a problem described in a file (`grammar/scene.pest`), analysed on demand.
+
+pub mod analysis;
+pub mod model;
+pub mod parse;
+pub mod units;
+
+pub use analysis::{analyse, Analysis, Value};
+pub use model::Scene;
+pub use parse::parse_scene;

@@ -1,0 +1,548 @@
+//! Scene files: `grammar/scene.pest` → [`Scene`], with every error located in the file
+//! (file:line:column, a caret, a hint). The mathematics inside a statement goes through the
+//! expression parser; its diagnostics are moved to their place in the file.
+
+use super::model::{Constraint, Force, Given, Part, Request, Scene, Span};
+use super::units::{dimension_of, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
+use crate::algebra::{vector, Expr, Func, Matrix, Symbol, Vector};
+use crate::mechanics::shapes::Shape;
+use crate::parse::{parse_expression, Diagnostic};
+use pest::iterators::Pair;
+use pest::Parser;
+
+#[derive(pest_derive::Parser)]
+#[grammar = "../grammar/scene.pest"]
+struct SceneGrammar;
+
+/// Parses and checks a scene file.
+pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic> {
+    crate::parse::limits::check_input(source_name, source)?;
+    let mut pairs = SceneGrammar::parse(Rule::scene, source).map_err(|e| {
+        let (start, end) = match e.location {
+            pest::error::InputLocation::Pos(p) => (p, p + 1),
+            pest::error::InputLocation::Span(s) => s,
+        };
+        let found = source[start.min(source.len())..].chars().next();
+        let found = found.map_or("end of file".to_string(), |c| format!("'{c}'"));
+        Diagnostic::at(source_name, source, start, end, format!("this statement cannot be read here (found {found})"))
+            .with_help(
+                "statements are: title, given, body, fixed point, omega, omegadot, frame, vbar, force, couple, impulse, constraint, unknown, find; see examples/ for each",
+            )
+    })?;
+    let mut reader = Reader {
+        source_name,
+        source,
+        dims: Dimensions::new(),
+        scene: Scene {
+            source_name: source_name.to_string(),
+            source: source.to_string(),
+            title: None,
+            givens: vec![],
+            parts: vec![],
+            fixed_point: false,
+            omega: None,
+            omega_dot: None,
+            frame_rate: None,
+            vbar: None,
+            forces: vec![],
+            couples: vec![],
+            impulses: vec![],
+            constraints: vec![],
+            unknowns: vec![],
+            requests: vec![],
+        },
+    };
+    for unit_vector in vector::unit_vectors() {
+        if let Some(s) = unit_vector.as_symbol() {
+            reader.dims.insert(s, Dimension::NONE);
+        }
+    }
+    let statements = pairs.next().map(Pair::into_inner).into_iter().flatten();
+    for statement in statements {
+        reader.statement(statement)?;
+    }
+    if reader.scene.requests.is_empty() {
+        return Err(Diagnostic::at(
+            source_name,
+            source,
+            source.len(),
+            source.len(),
+            "the scene asks for nothing",
+        )
+        .with_help("add a line such as 'find T, H_G' naming what to compute"));
+    }
+    Ok(reader.scene)
+}
+
+struct Reader<'a> {
+    source_name: &'a str,
+    source: &'a str,
+    dims: Dimensions,
+    scene: Scene,
+}
+
+fn span(p: &Pair<Rule>) -> (usize, usize) {
+    (p.as_span().start(), p.as_span().end())
+}
+
+impl Reader<'_> {
+    fn error(&self, (start, end): (usize, usize), message: impl Into<String>) -> Diagnostic {
+        Diagnostic::at(self.source_name, self.source, start, end, message)
+    }
+
+    fn statement(&mut self, p: Pair<Rule>) -> Result<(), Diagnostic> {
+        let at = span(&p);
+        let rule = p.as_rule();
+        let mut inner: Vec<Pair<Rule>> = p.into_inner().collect();
+        match rule {
+            Rule::title => self.scene.title = inner.first().map(|t| t.as_str().trim().to_string()),
+            Rule::given => self.given(inner)?,
+            Rule::body => self.body(inner)?,
+            Rule::fixed_point => self.scene.fixed_point = true,
+            Rule::omega => {
+                self.scene.omega = Some(self.vector(&inner[0], Dimension::ANGULAR_VELOCITY)?)
+            }
+            Rule::omegadot => {
+                self.scene.omega_dot =
+                    Some(self.vector(&inner[0], Dimension::ANGULAR_ACCELERATION)?)
+            }
+            Rule::frame => {
+                if inner[0].as_rule() == Rule::math {
+                    self.scene.frame_rate =
+                        Some(self.vector(&inner[0], Dimension::ANGULAR_VELOCITY)?);
+                }
+            }
+            Rule::vbar => self.scene.vbar = Some(self.vector(&inner[0], Dimension::VELOCITY)?),
+            Rule::force => {
+                let name = inner[0].as_str().to_string();
+                let value = self.vector(&inner[1], Dimension::FORCE)?;
+                let point = self.point(&inner[2])?;
+                self.scene.forces.push(Force { name, value, point });
+            }
+            Rule::couple => {
+                let c = self.vector(&inner[0], Dimension::MOMENT)?;
+                self.scene.couples.push(c);
+            }
+            Rule::impulse => {
+                let value = self.vector(&inner[0], Dimension::new(1, 1, -1))?;
+                let point = self.point(&inner[1])?;
+                self.scene.impulses.push((value, point));
+            }
+            Rule::constraint => {
+                let c = inner.remove(0);
+                let constraint = match c.as_rule() {
+                    Rule::velocity_zero => {
+                        let point = c
+                            .into_inner()
+                            .next()
+                            .ok_or_else(|| self.error(at, "expected a point"))?;
+                        Constraint::VelocityZero(self.point(&point)?)
+                    }
+                    _ => {
+                        let sides: Vec<Pair<Rule>> = c.into_inner().collect();
+                        let lhs = self.math(&sides[0])?;
+                        let rhs = self.math(&sides[1])?;
+                        self.same_dimension(&lhs, &rhs, span(&sides[1]))?;
+                        Constraint::Equation(lhs, rhs)
+                    }
+                };
+                self.scene.constraints.push(constraint);
+            }
+            Rule::unknown => self.unknown(inner)?,
+            Rule::EOI => {}
+            Rule::find => {
+                for r in inner {
+                    let (start, end) = span(&r);
+                    self.scene.requests.push(Request {
+                        name: r.as_str().to_string(),
+                        span: Span { start, end },
+                    });
+                }
+            }
+            _ => return Err(self.error(at, "unexpected statement")),
+        }
+        Ok(())
+    }
+
+    fn declare(&mut self, name: &Pair<Rule>, dimension: Dimension) -> Result<Symbol, Diagnostic> {
+        let symbol = Symbol::new(name.as_str());
+        if self.dims.contains_key(&symbol) {
+            return Err(self
+                .error(span(name), format!("{} is declared twice", name.as_str()))
+                .with_help("declare each symbol once, with 'given' or 'unknown'"));
+        }
+        if matches!(name.as_str(), "i" | "j" | "k") {
+            return Err(self
+                .error(span(name), "i, j and k are the unit vectors")
+                .with_help("choose another name"));
+        }
+        self.dims.insert(symbol, dimension);
+        Ok(symbol)
+    }
+
+    fn unit(&self, p: &Pair<Rule>) -> Result<super::units::Unit, Diagnostic> {
+        let mut dimension = Dimension::NONE;
+        let mut to_si = 1.0;
+        let mut divide = false;
+        for part in p.clone().into_inner() {
+            match part.as_rule() {
+                Rule::unit_op => divide = part.as_str() == "/",
+                Rule::unit_power => {
+                    let mut pieces = part.clone().into_inner();
+                    let name = pieces
+                        .next()
+                        .ok_or_else(|| self.error(span(&part), "expected a unit"))?;
+                    let unit = unit_named(name.as_str()).ok_or_else(|| {
+                        self.error(span(&name), format!("unknown unit '{}'", name.as_str()))
+                            .with_help(format!(
+                                "the units are {UNIT_NAMES}, combined with * / and ^"
+                            ))
+                    })?;
+                    let exponent: i8 = match pieces.next() {
+                        Some(e) => e
+                            .as_str()
+                            .parse()
+                            .map_err(|_| self.error(span(&e), "exponent out of range"))?,
+                        None => 1,
+                    };
+                    let exponent = if divide { -exponent } else { exponent };
+                    dimension = dimension.times(unit.dimension.power(exponent));
+                    to_si *= unit.to_si.powi(exponent as i32);
+                }
+                _ => {}
+            }
+        }
+        Ok(super::units::Unit { dimension, to_si })
+    }
+
+    fn given(&mut self, inner: Vec<Pair<Rule>>) -> Result<(), Diagnostic> {
+        let name = &inner[0];
+        let mut value = None;
+        let mut written = None;
+        let mut dimension = None;
+        for p in &inner[1..] {
+            match p.as_rule() {
+                Rule::quantity => {
+                    let mut q = p.clone().into_inner();
+                    let number = q
+                        .next()
+                        .ok_or_else(|| self.error(span(p), "expected a number"))?;
+                    let n: f64 = number
+                        .as_str()
+                        .parse()
+                        .map_err(|_| self.error(span(&number), "not a number"))?;
+                    if !n.is_finite() {
+                        return Err(self.error(span(&number), "the value is not a finite number"));
+                    }
+                    let unit = match q.next() {
+                        Some(u) => self.unit(&u)?,
+                        None => super::units::Unit {
+                            dimension: Dimension::NONE,
+                            to_si: 1.0,
+                        },
+                    };
+                    value = Some(n * unit.to_si);
+                    written = Some(p.as_str().trim().to_string());
+                    dimension = Some((unit.dimension, span(p)));
+                }
+                Rule::unit => {
+                    let unit = self.unit(p)?;
+                    if let Some((d, _)) = dimension {
+                        if d != unit.dimension {
+                            return Err(self
+                                .error(
+                                    span(p),
+                                    format!(
+                                        "unit mismatch: the value is in {d} but the unit is {}",
+                                        unit.dimension
+                                    ),
+                                )
+                                .with_help("give the value in a unit of the declared kind"));
+                        }
+                    }
+                    dimension = Some((unit.dimension, span(p)));
+                }
+                _ => {}
+            }
+        }
+        let Some((dimension, _)) = dimension else {
+            return Err(self
+                .error(
+                    span(name),
+                    format!("the given {} has neither a value nor a unit", name.as_str()),
+                )
+                .with_help(format!(
+                    "write 'given {0} = 2 m' or 'given {0} : m'",
+                    name.as_str()
+                )));
+        };
+        let symbol = self.declare(name, dimension)?;
+        if dimension == Dimension::MASS && value.is_some_and(|v| v <= 0.0) {
+            return Err(self
+                .error(
+                    span(&inner[1]),
+                    format!("mass {} must be positive", name.as_str()),
+                )
+                .with_help("a body's mass is a positive number"));
+        }
+        self.scene.givens.push(Given {
+            symbol,
+            dimension,
+            value,
+            written,
+        });
+        Ok(())
+    }
+
+    fn unknown(&mut self, inner: Vec<Pair<Rule>>) -> Result<(), Diagnostic> {
+        let unit = match inner.last() {
+            Some(u) if u.as_rule() == Rule::unit => Some(self.unit(u)?),
+            _ => None,
+        };
+        for name in inner.iter().filter(|p| p.as_rule() == Rule::name) {
+            let dimension = unit.map_or_else(|| default_dimension(name.as_str()), |u| u.dimension);
+            let symbol = self.declare(name, dimension)?;
+            self.scene.unknowns.push((symbol, dimension));
+        }
+        Ok(())
+    }
+
+    fn body(&mut self, inner: Vec<Pair<Rule>>) -> Result<(), Diagnostic> {
+        let shape_pair = &inner[0];
+        let mut shape_inner = shape_pair.clone().into_inner();
+        let kind = shape_inner
+            .next()
+            .ok_or_else(|| self.error(span(shape_pair), "expected a shape"))?;
+        let args: Vec<Pair<Rule>> = shape_inner.collect();
+        let mut lengths = Vec::new();
+        for a in &args {
+            let e = self.math(a)?;
+            self.expect_dimension(&e, Dimension::LENGTH, span(a))?;
+            lengths.push(e);
+        }
+        let shape = self.shape(&kind, lengths, span(shape_pair))?;
+        let mass = self.math(&inner[1])?;
+        self.expect_dimension(&mass, Dimension::MASS, span(&inner[1]))?;
+        let mut position = Vector::from_element(Expr::zero());
+        let mut rotation = Matrix::identity();
+        let mut i = 2;
+        while i < inner.len() {
+            match inner[i].as_rule() {
+                Rule::point => position = self.point(&inner[i])?,
+                Rule::axis => rotation = along(inner[i].as_str()),
+                Rule::math => {
+                    let angle = self.math(&inner[i])?;
+                    self.expect_dimension(&angle, Dimension::NONE, span(&inner[i]))?;
+                    let about = inner.get(i + 1).map(|p| p.as_str()).unwrap_or("z");
+                    rotation = rotation_about(about, &angle) * rotation;
+                    i += 1;
+                }
+                _ => {}
+            }
+            i += 1;
+        }
+        self.scene.parts.push(Part {
+            shape,
+            mass,
+            position,
+            rotation,
+        });
+        Ok(())
+    }
+
+    fn shape(
+        &self,
+        kind: &Pair<Rule>,
+        mut l: Vec<Expr>,
+        at: (usize, usize),
+    ) -> Result<Shape, Diagnostic> {
+        let expected = |n: usize, usage: &str| -> Result<(), Diagnostic> {
+            if l.len() == n {
+                Ok(())
+            } else {
+                Err(self
+                    .error(
+                        at,
+                        format!("{} takes {n} length(s), found {}", kind.as_str(), l.len()),
+                    )
+                    .with_help(format!("write {usage}")))
+            }
+        };
+        Ok(match kind.as_str() {
+            "rod" => {
+                expected(1, "rod(L)")?;
+                Shape::SlenderRod { length: l.remove(0) }
+            }
+            "plate" => {
+                expected(2, "plate(a, b)")?;
+                let b = l.remove(1);
+                Shape::ThinPlate { a: l.remove(0), b }
+            }
+            "disk" => {
+                expected(1, "disk(r)")?;
+                Shape::ThinDisk { radius: l.remove(0) }
+            }
+            "cylinder" => {
+                expected(2, "cylinder(r, h)")?;
+                let h = l.remove(1);
+                Shape::SolidCylinder { radius: l.remove(0), length: h }
+            }
+            "sphere" => {
+                expected(1, "sphere(r)")?;
+                Shape::SolidSphere { radius: l.remove(0) }
+            }
+            "prism" => {
+                expected(3, "prism(a, b, c)")?;
+                let c = l.remove(2);
+                let b = l.remove(1);
+                Shape::RectangularPrism { a: l.remove(0), b, c }
+            }
+            "point" => {
+                expected(0, "point()")?;
+                Shape::PointMass
+            }
+            other => {
+                return Err(self
+                    .error(span(kind), format!("unknown shape '{other}'"))
+                    .with_help("the shapes are rod(L), plate(a, b), disk(r), cylinder(r, h), sphere(r), prism(a, b, c), point()"))
+            }
+        })
+    }
+
+    fn math(&self, p: &Pair<Rule>) -> Result<Expr, Diagnostic> {
+        let (start, _) = span(p);
+        let e = parse_expression(self.source_name, p.as_str()).map_err(|d| {
+            let offset = start + d.span.offset();
+            let mut moved = Diagnostic::at(
+                self.source_name,
+                self.source,
+                offset,
+                offset + d.span.len(),
+                d.message.clone(),
+            );
+            moved.help = d.help.clone();
+            moved
+        })?;
+        if let Some(unknown) = e.symbols().into_iter().find(|s| !self.dims.contains_key(s)) {
+            return Err(self
+                .error(span(p), format!("unknown symbol {}", unknown.name()))
+                .with_help(format!(
+                    "declare it first: 'given {0} = <value> <unit>', 'given {0} : <unit>' or 'unknown {0} : <unit>'",
+                    unknown.name()
+                )));
+        }
+        Ok(e)
+    }
+
+    fn dimension(&self, e: &Expr, at: (usize, usize)) -> Result<Dimension, Diagnostic> {
+        dimension_of(e, &self.dims).map_err(|err| {
+            let help = match err {
+                DimensionError::Mismatch(..) => {
+                    "every term of a sum must be in the same kind of unit"
+                }
+                _ => "check the units of the symbols",
+            };
+            self.error(at, err.to_string()).with_help(help)
+        })
+    }
+
+    fn expect_dimension(
+        &self,
+        e: &Expr,
+        want: Dimension,
+        at: (usize, usize),
+    ) -> Result<(), Diagnostic> {
+        let d = self.dimension(e, at)?;
+        if d != want && !e.is_zero() {
+            return Err(self
+                .error(
+                    at,
+                    format!("unit mismatch: expected a quantity in {want}, found {d}"),
+                )
+                .with_help("check the units declared for the symbols of this expression"));
+        }
+        Ok(())
+    }
+
+    fn same_dimension(&self, a: &Expr, b: &Expr, at: (usize, usize)) -> Result<(), Diagnostic> {
+        let (da, db) = (self.dimension(a, at)?, self.dimension(b, at)?);
+        if da != db && !a.is_zero() && !b.is_zero() {
+            return Err(self
+                .error(
+                    at,
+                    format!("unit mismatch: the left side is in {da}, the right side in {db}"),
+                )
+                .with_help("both sides of an equation must be in the same kind of unit"));
+        }
+        Ok(())
+    }
+
+    /// A vector written with i, j, k whose components have the given dimension.
+    fn vector(&self, p: &Pair<Rule>, want: Dimension) -> Result<Vector, Diagnostic> {
+        let e = self.math(p)?;
+        let v = vector::components(&e).map_err(|err| {
+            self.error(span(p), err.to_string())
+                .with_help("write a vector with the unit vectors: a*i + b*j + c*k")
+        })?;
+        for c in v.iter() {
+            self.expect_dimension(c, want, span(p))?;
+        }
+        Ok(v)
+    }
+
+    fn point(&self, p: &Pair<Rule>) -> Result<Vector, Diagnostic> {
+        let mut coords = Vec::with_capacity(3);
+        for c in p.clone().into_inner() {
+            let e = self.math(&c)?;
+            self.expect_dimension(&e, Dimension::LENGTH, span(&c))?;
+            coords.push(e);
+        }
+        Ok(Vector::from_iterator(coords))
+    }
+}
+
+/// Unknowns without a unit: forces by their usual names, otherwise angular velocities.
+fn default_dimension(name: &str) -> Dimension {
+    let s = Symbol::new(name);
+    match s.base() {
+        "w" | "omega" => Dimension::ANGULAR_VELOCITY,
+        "alpha" => Dimension::ANGULAR_ACCELERATION,
+        "v" | "vbar" => Dimension::VELOCITY,
+        _ => Dimension::FORCE,
+    }
+}
+
+/// The rotation taking a shape's own x axis to the frame axis `axis` (a cyclic relabelling).
+fn along(axis: &str) -> Matrix {
+    let z = Expr::zero;
+    let o = Expr::one;
+    match axis {
+        "y" => Matrix::new(z(), z(), o(), o(), z(), z(), z(), o(), z()),
+        "z" => Matrix::new(z(), o(), z(), z(), z(), o(), o(), z(), z()),
+        _ => Matrix::identity(),
+    }
+}
+
+/// The rotation by `angle` about a frame axis.
+fn rotation_about(axis: &str, angle: &Expr) -> Matrix {
+    let (c, s) = (
+        Expr::func(Func::Cos, angle.clone()),
+        Expr::func(Func::Sin, angle.clone()),
+    );
+    let (z, o) = (Expr::zero(), Expr::one());
+    match axis {
+        "x" => Matrix::new(o, z.clone(), z.clone(), z.clone(), c.clone(), -&s, z, s, c),
+        "y" => Matrix::new(
+            c.clone(),
+            z.clone(),
+            s.clone(),
+            z.clone(),
+            o,
+            z.clone(),
+            -&s,
+            z,
+            c,
+        ),
+        _ => Matrix::new(c.clone(), -&s, z.clone(), s, c, z.clone(), z.clone(), z, o),
+    }
+}

@@ -1,0 +1,211 @@
+//! Units and dimensions: SI and US customary units in scene files, converted to SI, and the
+//! dimension (mass, length, time) of every expression, so that `N + m` is an error.
+
+use crate::algebra::{Expr, Symbol, View};
+use std::collections::HashMap;
+use std::fmt;
+
+/// Exponents of mass, length and time.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct Dimension {
+    pub mass: i8,
+    pub length: i8,
+    pub time: i8,
+}
+
+impl Dimension {
+    pub const NONE: Dimension = Dimension::new(0, 0, 0);
+    pub const MASS: Dimension = Dimension::new(1, 0, 0);
+    pub const LENGTH: Dimension = Dimension::new(0, 1, 0);
+    pub const TIME: Dimension = Dimension::new(0, 0, 1);
+    pub const FORCE: Dimension = Dimension::new(1, 1, -2);
+    pub const MOMENT: Dimension = Dimension::new(1, 2, -2);
+    pub const ANGULAR_VELOCITY: Dimension = Dimension::new(0, 0, -1);
+    pub const ANGULAR_ACCELERATION: Dimension = Dimension::new(0, 0, -2);
+    pub const VELOCITY: Dimension = Dimension::new(0, 1, -1);
+    pub const ACCELERATION: Dimension = Dimension::new(0, 1, -2);
+    pub const INERTIA: Dimension = Dimension::new(1, 2, 0);
+
+    pub const fn new(mass: i8, length: i8, time: i8) -> Dimension {
+        Dimension { mass, length, time }
+    }
+
+    pub fn times(self, o: Dimension) -> Dimension {
+        Dimension::new(
+            self.mass + o.mass,
+            self.length + o.length,
+            self.time + o.time,
+        )
+    }
+
+    pub fn power(self, n: i8) -> Dimension {
+        Dimension::new(self.mass * n, self.length * n, self.time * n)
+    }
+
+    /// The SI unit a result of this dimension is given in.
+    pub fn si_unit(self) -> String {
+        let named = [
+            (Dimension::NONE, ""),
+            (Dimension::MASS, "kg"),
+            (Dimension::LENGTH, "m"),
+            (Dimension::TIME, "s"),
+            (Dimension::FORCE, "N"),
+            (Dimension::MOMENT, "N·m"),
+            (Dimension::ANGULAR_VELOCITY, "rad/s"),
+            (Dimension::ANGULAR_ACCELERATION, "rad/s²"),
+            (Dimension::VELOCITY, "m/s"),
+            (Dimension::ACCELERATION, "m/s²"),
+            (Dimension::INERTIA, "kg·m²"),
+            (Dimension::new(1, 1, -1), "N·s"),
+            (Dimension::new(1, 2, -1), "kg·m²/s"),
+        ];
+        if let Some((_, name)) = named.iter().find(|(d, _)| *d == self) {
+            return name.to_string();
+        }
+        let part = |base: &str, e: i8| match e {
+            0 => None,
+            1 => Some(base.to_string()),
+            e => Some(format!("{base}^{e}")),
+        };
+        [
+            part("kg", self.mass),
+            part("m", self.length),
+            part("s", self.time),
+        ]
+        .into_iter()
+        .flatten()
+        .collect::<Vec<_>>()
+        .join("·")
+    }
+}
+
+impl fmt::Display for Dimension {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let unit = self.si_unit();
+        f.write_str(if unit.is_empty() { "no unit" } else { &unit })
+    }
+}
+
+/// A unit: its dimension and the factor that converts a value in it to SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Unit {
+    pub dimension: Dimension,
+    pub to_si: f64,
+}
+
+/// The units a scene may name.
+pub fn unit_named(name: &str) -> Option<Unit> {
+    use std::f64::consts::PI;
+    let (dimension, to_si) = match name {
+        "kg" => (Dimension::MASS, 1.0),
+        "g" => (Dimension::MASS, 1e-3),
+        "slug" => (Dimension::MASS, 14.593_902_937_206_364),
+        "m" => (Dimension::LENGTH, 1.0),
+        "mm" => (Dimension::LENGTH, 1e-3),
+        "cm" => (Dimension::LENGTH, 1e-2),
+        "ft" => (Dimension::LENGTH, 0.3048),
+        "in" => (Dimension::LENGTH, 0.0254),
+        "s" => (Dimension::TIME, 1.0),
+        "min" => (Dimension::TIME, 60.0),
+        "N" => (Dimension::FORCE, 1.0),
+        "kN" => (Dimension::FORCE, 1e3),
+        "lb" => (Dimension::FORCE, 4.448_221_615_260_5),
+        "J" => (Dimension::MOMENT, 1.0),
+        "rad" => (Dimension::NONE, 1.0),
+        "deg" => (Dimension::NONE, PI / 180.0),
+        "rpm" => (Dimension::ANGULAR_VELOCITY, 2.0 * PI / 60.0),
+        _ => return None,
+    };
+    Some(Unit { dimension, to_si })
+}
+
+/// The names accepted by [`unit_named`], for hints.
+pub const UNIT_NAMES: &str = "kg, g, slug, m, mm, cm, ft, in, s, min, N, kN, lb, J, rad, deg, rpm";
+
+/// Dimensions of the symbols of a scene.
+pub type Dimensions = HashMap<Symbol, Dimension>;
+
+/// Why an expression has no consistent dimension.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DimensionError {
+    /// Two terms of a sum differ: `(term, its dimension, other term, its dimension)`.
+    Mismatch(String, Dimension, String, Dimension),
+    /// A symbol that the scene never declared.
+    Undeclared(Symbol),
+    /// A function of a quantity that has a dimension.
+    FunctionOfDimensioned(String, Dimension),
+}
+
+impl fmt::Display for DimensionError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            DimensionError::Mismatch(a, da, b, db) => {
+                write!(f, "unit mismatch: cannot add {a} ({da}) to {b} ({db})")
+            }
+            DimensionError::Undeclared(s) => write!(f, "unknown symbol {}", s.name()),
+            DimensionError::FunctionOfDimensioned(e, d) => {
+                write!(
+                    f,
+                    "the argument {e} of a function must have no unit, but it is in {d}"
+                )
+            }
+        }
+    }
+}
+
+/// The dimension of `e`, from the dimensions of its symbols.
+pub fn dimension_of(e: &Expr, dims: &Dimensions) -> Result<Dimension, DimensionError> {
+    match e.view() {
+        View::Num(_) => Ok(Dimension::NONE),
+        View::Sym(s) => dims.get(&s).copied().ok_or(DimensionError::Undeclared(s)),
+        View::Add(terms) => {
+            let first = dimension_of(&terms[0], dims)?;
+            for t in &terms[1..] {
+                let d = dimension_of(t, dims)?;
+                if d != first {
+                    return Err(DimensionError::Mismatch(
+                        terms[0].to_string(),
+                        first,
+                        t.to_string(),
+                        d,
+                    ));
+                }
+            }
+            Ok(first)
+        }
+        View::Mul(factors) => factors.iter().try_fold(Dimension::NONE, |acc, f| {
+            Ok(acc.times(dimension_of(f, dims)?))
+        }),
+        View::Pow(b, x) => {
+            let base = dimension_of(b, dims)?;
+            match x.as_num().and_then(|q| q.to_i64()) {
+                Some(n) => Ok(base.power(n as i8)),
+                None if base == Dimension::NONE => Ok(Dimension::NONE),
+                None => {
+                    // sqrt of an even dimension, e.g. sqrt(m^2)
+                    let half = x
+                        .as_num()
+                        .is_some_and(|q| *q == crate::algebra::Q::Small(1, 2));
+                    let even = base.mass % 2 == 0 && base.length % 2 == 0 && base.time % 2 == 0;
+                    if half && even {
+                        Ok(Dimension::new(
+                            base.mass / 2,
+                            base.length / 2,
+                            base.time / 2,
+                        ))
+                    } else {
+                        Err(DimensionError::FunctionOfDimensioned(e.to_string(), base))
+                    }
+                }
+            }
+        }
+        View::Func(_, arg) => {
+            let d = dimension_of(arg, dims)?;
+            if d == Dimension::NONE {
+                Ok(Dimension::NONE)
+            } else {
+                Err(DimensionError::FunctionOfDimensioned(arg.to_string(), d))
+            }
+        }
+    }
+}

@@ -1,0 +1,342 @@
+//! Rendering a worked solution: the givens, each step of the plan with its component
+//! equations in textbook form, and the results with values and units.
+//!
+//! JSON schema (stable):
+//!
+//! ```text
+//! { "title": string|null,
+//!   "plan": [string],                               the steps done, in order
+//!   "givens": [{"name", "written": string|null, "si_value": number|null, "unit"}],
+//!   "steps": [{"title", "relations": [{"text", "latex"}]}],
+//!   "results": [{"name", "text", "latex",
+//!                "value": number | [x, y, z] | null,  when every given has a value
+//!                "unit": string|null}] }
+//! ```
+
+use super::numbers::{format_value, scene_dimensions, unit, value};
+use crate::algebra::{Expr, Vector};
+use crate::mechanics::derivation::Relation;
+use crate::print::{self, Notation};
+use crate::scene::units::Dimensions;
+use crate::scene::{Analysis, Scene, Value};
+
+/// The output formats of a worked solution.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    Text,
+    Latex,
+    Markdown,
+    Json,
+}
+
+/// A result with its forms and value.
+struct Result<'a> {
+    name: &'a str,
+    text: String,
+    latex: String,
+    value: Option<Vec<f64>>,
+    unit: Option<String>,
+}
+
+fn results<'a>(scene: &Scene, analysis: &'a Analysis, dims: &Dimensions) -> Vec<Result<'a>> {
+    analysis
+        .results
+        .iter()
+        .map(|(request, v)| match v {
+            Value::Scalar(e) => Result {
+                name: &request.name,
+                text: print::text(e),
+                latex: print::latex(e),
+                value: value(scene, e).map(|x| vec![x]),
+                unit: unit(dims, e),
+            },
+            Value::Vector(vec) => Result {
+                name: &request.name,
+                text: print::vector(vec, Notation::Text),
+                latex: print::vector(vec, Notation::Latex),
+                value: vec.iter().map(|c| value(scene, c)).collect(),
+                unit: vector_unit(dims, vec),
+            },
+        })
+        .collect()
+}
+
+fn vector_unit(dims: &Dimensions, v: &Vector) -> Option<String> {
+    v.iter().find(|c| !c.is_zero()).and_then(|c| unit(dims, c))
+}
+
+fn relation(r: &Relation, notation: Notation) -> (String, String) {
+    (
+        print::render(&r.lhs, notation, r.axis),
+        print::render(&r.rhs, notation, r.axis),
+    )
+}
+
+fn result_name_latex(name: &str) -> String {
+    match name {
+        "omega" => r"\boldsymbol{\omega}".into(),
+        "vbar" => r"\bar{\mathbf{v}}".into(),
+        "mvbar" | "m*vbar" => r"m\bar{\mathbf{v}}".into(),
+        "abar" => r"\bar{\mathbf{a}}".into(),
+        "mabar" | "m*abar" => r"m\bar{\mathbf{a}}".into(),
+        "H_G" => r"\mathbf{H}_G".into(),
+        "H_O" => r"\mathbf{H}_O".into(),
+        "Hdot_G" => r"\dot{\mathbf{H}}_G".into(),
+        other => print::latex(&Expr::symbol(other)),
+    }
+}
+
+fn value_text(r: &Result) -> Option<String> {
+    let v = r.value.as_ref()?;
+    let numbers: Vec<String> = v.iter().map(|x| format_value(*x)).collect();
+    let body = if numbers.len() == 1 {
+        numbers[0].clone()
+    } else {
+        format!("({})", numbers.join(", "))
+    };
+    Some(match r.unit.as_deref() {
+        Some(u) if !u.is_empty() => format!("{body} {u}"),
+        _ => body,
+    })
+}
+
+fn latex_unit(u: &str) -> String {
+    u.replace('·', r"\cdot ").replace('²', "^2")
+}
+
+/// Unicode in step titles, as LaTeX text that pdflatex reads with amsmath alone.
+fn latex_text(s: &str) -> String {
+    let mut out = String::new();
+    let chars: Vec<char> = s.chars().collect();
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        let accent = match chars.get(i + 1) {
+            Some('\u{0304}') => Some(r"\bar"),
+            Some('\u{0307}') => Some(r"\dot"),
+            _ => None,
+        };
+        let symbol = |c: char| -> Option<String> {
+            Some(
+                match c {
+                    'ω' => r"\omega",
+                    'Ω' => r"\Omega",
+                    'α' => r"\alpha",
+                    'Σ' => r"\Sigma",
+                    'Δ' => r"\Delta",
+                    '×' => r"\times",
+                    '≠' => r"\neq",
+                    '∫' => r"\int",
+                    '½' => r"\frac{1}{2}",
+                    'ᵀ' => "^T",
+                    '²' => "^2",
+                    '₁' => "_1",
+                    '₂' => "_2",
+                    _ => return None,
+                }
+                .to_string(),
+            )
+        };
+        if let Some(acc) = accent {
+            let base = symbol(c).unwrap_or_else(|| c.to_string());
+            out.push_str(&format!("${acc}{{{base}}}$"));
+            i += 2;
+            continue;
+        }
+        match (symbol(c), c) {
+            (Some(sym), _) => out.push_str(&format!("${sym}$")),
+            (None, '_' | '%' | '&' | '#' | '{' | '}') => {
+                out.push('\\');
+                out.push(c);
+            }
+            (None, '^') => out.push_str(r"\^{}"),
+            (None, '~') => out.push_str(r"\~{}"),
+            (None, '\\') => out.push_str(r"\textbackslash{}"),
+            (None, _) => out.push(c),
+        }
+        i += 1;
+    }
+    out.replace("$$", "")
+}
+
+/// Renders the worked solution in the chosen format; `standalone` LaTeX is a whole document.
+pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bool) -> String {
+    let dims = scene_dimensions(scene);
+    let results = results(scene, analysis, &dims);
+    match format {
+        Format::Text => text(scene, analysis, &results),
+        Format::Latex => latex(scene, analysis, &results, standalone),
+        Format::Markdown => markdown(scene, analysis, &results),
+        Format::Json => json(scene, analysis, &results).to_string(),
+    }
+}
+
+fn given_line(g: &crate::scene::model::Given) -> String {
+    match &g.written {
+        Some(w) => format!("{} = {w}", g.symbol.name()),
+        None => format!("{} ({}, symbolic)", g.symbol.name(), g.dimension),
+    }
+}
+
+fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
+    let mut out = String::new();
+    if let Some(t) = &scene.title {
+        out.push_str(&format!("{t}\n\n"));
+    }
+    out.push_str("Given\n");
+    for g in &scene.givens {
+        out.push_str(&format!("  {}\n", given_line(g)));
+    }
+    for (k, step) in analysis.plan.iter().enumerate() {
+        out.push_str(&format!("\nStep {}: {}\n", k + 1, step.title));
+        for r in &step.relations {
+            let (l, rhs) = relation(r, Notation::Text);
+            out.push_str(&format!("  {l} = {rhs}\n"));
+        }
+    }
+    out.push_str("\nResults\n");
+    for r in results {
+        match value_text(r).filter(|v| *v != r.text) {
+            Some(v) => out.push_str(&format!("  {} = {} = {v}\n", r.name, r.text)),
+            None => out.push_str(&format!("  {} = {}\n", r.name, r.text)),
+        }
+    }
+    out
+}
+
+fn latex_relations(relations: &[Relation]) -> String {
+    let lines: Vec<String> = relations
+        .iter()
+        .map(|r| {
+            let (l, rhs) = relation(r, Notation::Latex);
+            format!("{l} &= {rhs}")
+        })
+        .collect();
+    format!(
+        "\\begin{{align*}}\n{}\n\\end{{align*}}\n",
+        lines.join(" \\\\\n")
+    )
+}
+
+fn latex_results(results: &[Result]) -> String {
+    let lines: Vec<String> = results
+        .iter()
+        .map(|r| {
+            let value = r.value.as_ref().map(|_| {
+                let v = value_text(r).unwrap_or_default();
+                let (number, unit) = match &r.unit {
+                    Some(u) if !u.is_empty() => (
+                        v.trim_end_matches(u.as_str()).trim().to_string(),
+                        latex_unit(u),
+                    ),
+                    _ => (v, String::new()),
+                };
+                format!(r" = {number}\ \mathrm{{{unit}}}")
+            });
+            format!(
+                "{} &= {}{}",
+                result_name_latex(r.name),
+                r.latex,
+                value.unwrap_or_default()
+            )
+        })
+        .collect();
+    format!(
+        "\\begin{{align*}}\n{}\n\\end{{align*}}\n",
+        lines.join(" \\\\\n")
+    )
+}
+
+fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: bool) -> String {
+    let mut out = String::new();
+    if standalone {
+        out.push_str("\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\begin{document}\n");
+    }
+    if let Some(t) = &scene.title {
+        out.push_str(&format!("\\section*{{{}}}\n", latex_text(t)));
+    }
+    out.push_str("\\paragraph{Given}\n");
+    let givens: Vec<String> = scene
+        .givens
+        .iter()
+        .map(|g| {
+            let name = print::latex(&Expr::sym(g.symbol));
+            match &g.written {
+                Some(w) => format!("${name} = {}$", latex_text(w)),
+                None => format!("${name}$"),
+            }
+        })
+        .collect();
+    out.push_str(&format!("{}.\n\n", givens.join(", ")));
+    for (k, step) in analysis.plan.iter().enumerate() {
+        out.push_str(&format!(
+            "\\paragraph{{Step {}}} {}\n",
+            k + 1,
+            latex_text(&step.title)
+        ));
+        out.push_str(&latex_relations(&step.relations));
+    }
+    out.push_str("\\paragraph{Results}\n");
+    out.push_str(&latex_results(results));
+    if standalone {
+        out.push_str("\\end{document}\n");
+    }
+    out
+}
+
+fn markdown(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
+    let mut out = String::new();
+    if let Some(t) = &scene.title {
+        out.push_str(&format!("# {t}\n\n"));
+    }
+    out.push_str("**Given:** ");
+    let givens: Vec<String> = scene
+        .givens
+        .iter()
+        .map(|g| format!("`{}`", given_line(g)))
+        .collect();
+    out.push_str(&format!("{}\n\n", givens.join(", ")));
+    for (k, step) in analysis.plan.iter().enumerate() {
+        out.push_str(&format!(
+            "## Step {}: {}\n\n$$\n{}$$\n\n",
+            k + 1,
+            step.title,
+            latex_relations(&step.relations)
+        ));
+    }
+    out.push_str(&format!("## Results\n\n$$\n{}$$\n", latex_results(results)));
+    out
+}
+
+fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::Value {
+    let relations = |rs: &[Relation]| -> Vec<serde_json::Value> {
+        rs.iter()
+            .map(|r| {
+                let (lt, rt) = relation(r, Notation::Text);
+                let (ll, rl) = relation(r, Notation::Latex);
+                serde_json::json!({"text": format!("{lt} = {rt}"), "latex": format!("{ll} = {rl}")})
+            })
+            .collect()
+    };
+    serde_json::json!({
+        "title": scene.title,
+        "plan": analysis.plan.iter().map(|s| s.title.clone()).collect::<Vec<_>>(),
+        "givens": scene.givens.iter().map(|g| serde_json::json!({
+            "name": g.symbol.name(),
+            "written": g.written,
+            "si_value": g.value,
+            "unit": g.dimension.si_unit(),
+        })).collect::<Vec<_>>(),
+        "steps": analysis.plan.iter().map(|s| serde_json::json!({
+            "title": s.title,
+            "relations": relations(&s.relations),
+        })).collect::<Vec<_>>(),
+        "results": results.iter().map(|r| serde_json::json!({
+            "name": r.name,
+            "text": r.text,
+            "latex": r.latex,
+            "value": r.value.as_ref().map(|v| if v.len() == 1 { serde_json::json!(v[0]) } else { serde_json::json!(v) }),
+            "unit": r.unit,
+        })).collect::<Vec<_>>(),
+    })
+}

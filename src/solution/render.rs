@@ -38,6 +38,13 @@ struct Result<'a> {
     unit: Option<String>,
 }
 
+impl Result<'_> {
+    /// Whether the symbolic form is already a plain number (its value adds nothing).
+    fn is_number(&self) -> bool {
+        self.text.parse::<f64>().is_ok()
+    }
+}
+
 fn results<'a>(scene: &Scene, analysis: &'a Analysis, dims: &Dimensions) -> Vec<Result<'a>> {
     analysis
         .results
@@ -128,6 +135,8 @@ fn latex_text(s: &str) -> String {
                     '≠' => r"\neq",
                     '∫' => r"\int",
                     '½' => r"\frac{1}{2}",
+                    'ā' => r"\bar{a}",
+                    'Ḣ' => r"\dot{H}",
                     'ᵀ' => "^T",
                     '²' => "^2",
                     '₁' => "_1",
@@ -196,7 +205,7 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     }
     out.push_str("\nResults\n");
     for r in results {
-        match value_text(r).filter(|v| *v != r.text) {
+        match value_text(r).filter(|_| !r.is_number()) {
             Some(v) => out.push_str(&format!("  {} = {} = {v}\n", r.name, r.text)),
             None => out.push_str(&format!("  {} = {}\n", r.name, r.text)),
         }
@@ -222,7 +231,7 @@ fn latex_results(results: &[Result]) -> String {
     let lines: Vec<String> = results
         .iter()
         .map(|r| {
-            let value = r.value.as_ref().map(|_| {
+            let value = r.value.as_ref().filter(|_| !r.is_number()).map(|_| {
                 let v = value_text(r).unwrap_or_default();
                 let (number, unit) = match &r.unit {
                     Some(u) if !u.is_empty() => (
@@ -262,7 +271,11 @@ fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: boo
         .map(|g| {
             let name = print::latex(&Expr::sym(g.symbol));
             match &g.written {
-                Some(w) => format!("${name} = {}$", latex_text(w)),
+                Some(w) => {
+                    let (number, unit) = w.split_once(' ').unwrap_or((w.as_str(), ""));
+                    let unit = unit.replace(' ', "").replace('*', r"\cdot ");
+                    format!(r"${name} = {number}\ \mathrm{{{unit}}}$")
+                }
                 None => format!("${name}$"),
             }
         })

@@ -6,6 +6,7 @@ pub mod double_double;
 pub mod dual;
 pub mod elliptic;
 pub mod error;
+pub mod exact_propagation;
 pub mod euler_rhs;
 pub mod ode;
 pub mod reference;

@@ -133,9 +133,25 @@ where
     T: RealField + Copy,
     K: SampleSink<T> + ?Sized,
 {
+    simulate_with(problem, &|end| propagator(problem, method, end), sampling, sink, progress)
+}
+
+/// [`simulate`] with the propagator built by `make` from the last sample time: the
+/// one driver behind every method, the integrators here and the exact solution.
+pub(crate) fn simulate_with<'a, T, K>(
+    problem: &'a Problem<T>,
+    make: &dyn Fn(T) -> Result<Box<dyn Propagator<T> + 'a>, NumericError>,
+    sampling: &Sampling<T>,
+    sink: &mut K,
+    progress: &mut dyn FnMut(f64),
+) -> Result<SimulationStatistics, NumericError>
+where
+    T: RealField + Copy,
+    K: SampleSink<T> + ?Sized,
+{
     validate_problem(problem)?;
     let times = SampleTimes::new(sampling, problem.start_time)?;
-    let mut propagator = propagator(problem, method, times.last())?;
+    let mut propagator = make(times.last())?;
     let span = times.last() - problem.start_time;
     let mut reported = f64::NEG_INFINITY;
     for k in 0..times.len() {
@@ -304,7 +320,7 @@ impl<'a, T: RealField + Copy> SampleTimes<'a, T> {
 }
 
 /// A method's state between sample times.
-trait Propagator<T: RealField + Copy> {
+pub(crate) trait Propagator<T: RealField + Copy> {
     /// Integrates up to `t` (not before the previous call's time) and returns the state.
     fn advance_to(&mut self, t: T) -> Result<RigidBodyState<T>, NumericError>;
     /// Steps and evaluations so far (`samples` left at zero).

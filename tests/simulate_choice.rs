@@ -12,11 +12,15 @@ use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
 fn rotated_body(torque: Torque<f64>) -> Problem<f64> {
     let r = Rotation3::from_euler_angles(0.3, -0.7, 1.1);
-    let tensor = r.matrix() * Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)) * r.matrix().transpose();
+    let tensor =
+        r.matrix() * Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)) * r.matrix().transpose();
     Problem {
         inertia: BodyInertia::Tensor(tensor),
         torque,
-        initial: RigidBodyState::new(Vector3::new(0.4, -1.0, 0.8), UnitQuaternion::from_euler_angles(0.2, 0.1, -0.3)),
+        initial: RigidBodyState::new(
+            Vector3::new(0.4, -1.0, 0.8),
+            UnitQuaternion::from_euler_angles(0.2, 0.1, -0.3),
+        ),
         start_time: 0.0,
     }
 }
@@ -38,7 +42,11 @@ fn exact_agrees_with_tight_dop853_for_a_full_tensor() {
     for (e, n) in exact.iter().zip(&numeric) {
         let dw = (e.omega - n.omega).norm();
         let dq = e.orientation.angle_to(&n.orientation);
-        assert!(dw < 1e-9 && dq < 1e-9, "t = {}: |Δω| = {dw:e}, attitude {dq:e}", e.t);
+        assert!(
+            dw < 1e-9 && dq < 1e-9,
+            "t = {}: |Δω| = {dw:e}, attitude {dq:e}",
+            e.t
+        );
     }
 }
 
@@ -48,6 +56,12 @@ fn a_torque_sends_auto_to_the_integrator_and_exact_to_an_error() {
     let (_, used) = run(&problem, Choice::Auto { rtol: 1e-10 });
     assert_eq!(used, MethodUsed::Integrator);
     let mut sink = |_: Sample<f64>| {};
-    let err = simulate_choice(&problem, &Choice::Exact, &Sampling::Times(vec![1.0]), &mut sink, &mut |_| {});
+    let err = simulate_choice(
+        &problem,
+        &Choice::Exact,
+        &Sampling::Times(vec![1.0]),
+        &mut sink,
+        &mut |_| {},
+    );
     assert!(err.unwrap_err().to_string().contains("torque-free"));
 }

@@ -27,3 +27,23 @@ pub fn read(argument: &str) -> Result<(String, String), String> {
     })?;
     Ok(("<stdin>".into(), text))
 }
+
+/// The text of a file (size-limited), or of standard input for `-`, with its name.
+pub fn read_file(path: &str) -> Result<(String, String), String> {
+    if path == "-" {
+        return read("-");
+    }
+    let limit = MAX_INPUT_BYTES as u64;
+    let file = std::fs::File::open(path).map_err(|e| format!("error: cannot read {path}: {e}"))?;
+    let mut bytes = Vec::new();
+    file.take(limit + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| format!("error: cannot read {path}: {e}"))?;
+    if bytes.len() as u64 > limit {
+        return Err(format!(
+            "error: {path}: the file is larger than {limit} bytes"
+        ));
+    }
+    let text = String::from_utf8(bytes).map_err(|_| format!("error: {path}: not UTF-8 text"))?;
+    Ok((path.to_string(), text))
+}

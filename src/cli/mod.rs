@@ -4,6 +4,7 @@ mod derive;
 mod input;
 mod show;
 mod simplify;
+mod simulate;
 mod solve;
 
 use clap::{Parser, Subcommand};
@@ -29,6 +30,8 @@ enum Command {
     Solve(solve::Args),
     /// Show which derivations a scene's requests pull, in order.
     Plan(solve::PlanArgs),
+    /// Integrate Euler's equations and the orientation for a scene's body.
+    Simulate(simulate::Args),
 }
 
 /// Runs the command line and maps failures to a message on standard error and exit code 1.
@@ -40,10 +43,13 @@ pub fn run() -> ExitCode {
         Command::Derive(args) => derive::run(args),
         Command::Solve(args) => solve::run(args),
         Command::Plan(args) => solve::plan(args),
+        Command::Simulate(args) => simulate::run(args),
     };
     match result {
         Ok(output) => {
-            println!("{output}");
+            if !output.is_empty() {
+                println!("{output}");
+            }
             ExitCode::SUCCESS
         }
         Err(message) => {

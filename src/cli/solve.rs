@@ -3,7 +3,6 @@
 
 use kinetics::scene::{analyse, parse_scene, Analysis, Scene};
 use kinetics::solution::{render, Format};
-use std::io::Read;
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -23,25 +22,7 @@ pub struct PlanArgs {
 }
 
 fn load(path: &str) -> Result<(Scene, Analysis), String> {
-    let (name, text) = if path == "-" {
-        super::input::read("-")?
-    } else {
-        let limit = kinetics::parse::limits::MAX_INPUT_BYTES as u64;
-        let file =
-            std::fs::File::open(path).map_err(|e| format!("error: cannot read {path}: {e}"))?;
-        let mut bytes = Vec::new();
-        file.take(limit + 1)
-            .read_to_end(&mut bytes)
-            .map_err(|e| format!("error: cannot read {path}: {e}"))?;
-        if bytes.len() as u64 > limit {
-            return Err(format!(
-                "error: {path}: the scene is larger than {limit} bytes"
-            ));
-        }
-        let text =
-            String::from_utf8(bytes).map_err(|_| format!("error: {path}: not UTF-8 text"))?;
-        (path.to_string(), text)
-    };
+    let (name, text) = super::input::read_file(path)?;
     let scene = parse_scene(&name, &text).map_err(|d| d.render())?;
     let analysis = analyse(&scene).map_err(|d| d.render())?;
     Ok((scene, analysis))

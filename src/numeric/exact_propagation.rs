@@ -43,7 +43,10 @@ impl Propagator<f64> for ExactPropagator {
         let tau = t - self.start;
         let omega = self.principal_to_body * self.motion.omega(tau);
         let back = UnitQuaternion::from_rotation_matrix(&self.principal_to_body.inverse());
-        Ok(RigidBodyState::new(omega, self.motion.orientation(tau) * back))
+        Ok(RigidBodyState::new(
+            omega,
+            self.motion.orientation(tau) * back,
+        ))
     }
 
     fn statistics(&self) -> SimulationStatistics {
@@ -55,7 +58,9 @@ fn exact(problem: &Problem<f64>) -> Result<Box<dyn Propagator<f64> + '_>, Numeri
     if !matches!(problem.torque, Torque::None) {
         return Err(NumericError::InvalidInput {
             what: "method exact".into(),
-            reason: "the closed form exists only for a torque-free body; use dop853, rk4 or splitting".into(),
+            reason:
+                "the closed form exists only for a torque-free body; use dop853, rk4 or splitting"
+                    .into(),
         });
     }
     let (moments, principal_to_body) = match problem.inertia {
@@ -89,7 +94,10 @@ pub fn simulate_choice<K: SampleSink<f64> + ?Sized>(
         Choice::Integrate(m) => Some(m),
     };
     match method {
-        None => Ok((simulate_with(problem, &|_| exact(problem), sampling, sink, progress)?, MethodUsed::Exact)),
+        None => Ok((
+            simulate_with(problem, &|_| exact(problem), sampling, sink, progress)?,
+            MethodUsed::Exact,
+        )),
         Some(m) => Ok((
             super::simulate::simulate(problem, &m, sampling, sink, progress)?,
             MethodUsed::Integrator,

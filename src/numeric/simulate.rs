@@ -133,7 +133,13 @@ where
     T: RealField + Copy,
     K: SampleSink<T> + ?Sized,
 {
-    simulate_with(problem, &|end| propagator(problem, method, end), sampling, sink, progress)
+    simulate_with(
+        problem,
+        &|end| propagator(problem, method, end),
+        sampling,
+        sink,
+        progress,
+    )
 }
 
 /// [`simulate`] with the propagator built by `make` from the last sample time: the

@@ -88,6 +88,32 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
     })
 }
 
+/// The body's mass, mass centre (from O) and centroidal inertia, for callers that need the
+/// body but no derivation (the simulator).
+pub fn centroidal_body(scene: &Scene) -> Result<(Expr, Vector, InertiaTensor), Diagnostic> {
+    let mut a = Analyser {
+        scene,
+        plan: Vec::new(),
+        body: None,
+        kinematics: None,
+        vbar: None,
+        abar: None,
+        h_g: None,
+        hdot_g: None,
+        unknowns: None,
+    };
+    let whole_file = Request {
+        name: "body".into(),
+        span: super::model::Span { start: 0, end: 0 },
+    };
+    let body = a.body(&whole_file)?;
+    Ok((
+        body.mass.clone(),
+        body.centroid.clone(),
+        body.inertia.clone(),
+    ))
+}
+
 fn zero_vector() -> Vector {
     Vector::from_element(Expr::zero())
 }

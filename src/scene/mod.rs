@@ -3,6 +3,7 @@
 pub mod analysis;
 pub mod model;
 pub mod parse;
+pub mod simulation;
 pub mod units;
 
 pub use analysis::{analyse, Analysis, Value};

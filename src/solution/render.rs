@@ -56,7 +56,13 @@ fn results<'a>(scene: &Scene, analysis: &'a Analysis, dims: &Dimensions) -> Vec<
                 latex: print::latex(e),
                 value: value(scene, e).map(|x| vec![x]),
                 // Kinetic energy is work-like: joules, not newton metres.
-                unit: unit(dims, e).map(|u| if request.name == "T" && u == "N·m" { "J".into() } else { u }),
+                unit: unit(dims, e).map(|u| {
+                    if request.name == "T" && u == "N·m" {
+                        "J".into()
+                    } else {
+                        u
+                    }
+                }),
             },
             Value::Vector(vec) => Result {
                 name: &request.name,

@@ -1,0 +1,199 @@
+//! `kinetics simulate SCENE (--until T [--every dt] | --at t1,t2,...) [--method ...]
+//! [--rtol R | --step h] [--format csv|json] [--plot out.svg]`: integrate Euler's equations
+//! and the orientation for the scene's body, streaming the samples (memory stays flat).
+
+use kinetics::numeric::exact_propagation::{simulate_choice, Choice, MethodUsed};
+use kinetics::numeric::plot::{line_chart, Series};
+use kinetics::numeric::sample_sink::Sample;
+use kinetics::numeric::simulate::{Method, Sampling};
+use kinetics::numeric::splitting::SplittingOrder;
+use kinetics::scene::{parse_scene, simulation};
+use std::io::Write;
+use std::path::PathBuf;
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum MethodName {
+    Auto,
+    Exact,
+    Rk4,
+    Dop853,
+    Splitting,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Output {
+    Csv,
+    Json,
+}
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// The scene file; `-` reads standard input.
+    pub scene: String,
+    /// Simulate until this time (s).
+    #[arg(long, conflicts_with = "at", required_unless_present = "at")]
+    pub until: Option<f64>,
+    /// Sample interval with --until (s); default: until/100.
+    #[arg(long, requires = "until")]
+    pub every: Option<f64>,
+    /// Sample at these times (s), comma-separated and increasing.
+    #[arg(long, value_delimiter = ',')]
+    pub at: Option<Vec<f64>>,
+    #[arg(long, value_enum, default_value_t = MethodName::Auto)]
+    pub method: MethodName,
+    /// Relative tolerance of dop853 (and of auto when it integrates).
+    #[arg(long, default_value_t = 1e-10, conflicts_with = "step")]
+    pub rtol: f64,
+    /// Step of rk4 and splitting (s).
+    #[arg(long)]
+    pub step: Option<f64>,
+    #[arg(long, value_enum, default_value_t = Output::Csv)]
+    pub format: Output,
+    /// Also draw ω(t) into this SVG file.
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+    /// Overwrite the plot file if it exists.
+    #[arg(long)]
+    pub force: bool,
+}
+
+/// Most points kept for the plot; longer runs are thinned evenly.
+const PLOT_POINTS: usize = 20_000;
+
+pub fn run(args: Args) -> Result<String, String> {
+    let (name, text) = super::input::read_file(&args.scene)?;
+    let scene = parse_scene(&name, &text).map_err(|d| d.render())?;
+    let problem = simulation::problem(&scene).map_err(|d| d.render())?;
+    if let Some(path) = &args.plot {
+        if path.exists() && !args.force {
+            return Err(format!(
+                "error: {} exists; pass --force to overwrite it",
+                path.display()
+            ));
+        }
+    }
+    let step = args.step.unwrap_or(1e-3);
+    let choice = match args.method {
+        MethodName::Auto => Choice::Auto { rtol: args.rtol },
+        MethodName::Exact => Choice::Exact,
+        MethodName::Rk4 => Choice::Integrate(Method::Rk4 { step }),
+        MethodName::Dop853 => Choice::Integrate(Method::dop853(args.rtol, args.rtol * 1e-3)),
+        MethodName::Splitting => Choice::Integrate(Method::Splitting {
+            step,
+            order: SplittingOrder::Fourth,
+        }),
+    };
+    let (sampling, count) = match (&args.at, args.until) {
+        (Some(times), _) => (Sampling::Times(times.clone()), times.len()),
+        (None, Some(until)) => {
+            let every = args.every.unwrap_or(until / 100.0);
+            let count = if every > 0.0 && until.is_finite() {
+                (until / every) as usize + 1
+            } else {
+                1
+            };
+            (
+                Sampling::Every {
+                    interval: every,
+                    end: until,
+                },
+                count,
+            )
+        }
+        (None, None) => return Err("error: give --until T or --at t1,t2,...".into()),
+    };
+    let stride = count.div_ceil(PLOT_POINTS).max(1);
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    let mut plotted: [Vec<(f64, f64)>; 3] = Default::default();
+    let mut written = 0usize;
+    let mut failure: Option<std::io::Error> = None;
+    let header = "t,w_x,w_y,w_z,q_w,q_x,q_y,q_z,T,H";
+    let opening = match args.format {
+        Output::Csv => writeln!(out, "{header}"),
+        Output::Json => write!(out, "["),
+    };
+    opening.map_err(|e| format!("error: cannot write: {e}"))?;
+    let bar = indicatif::ProgressBar::new(1000);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "{bar:40} {percent:>3}% {elapsed} elapsed, {eta} left",
+        )
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    let mut sink = |s: Sample<f64>| {
+        if failure.is_some() {
+            return;
+        }
+        let q = s.orientation.into_inner();
+        let fields = [
+            s.t,
+            s.omega.x,
+            s.omega.y,
+            s.omega.z,
+            q.w,
+            q.i,
+            q.j,
+            q.k,
+            s.kinetic_energy,
+            s.angular_momentum_magnitude,
+        ];
+        let row = fields
+            .iter()
+            .map(|v| format!("{v:.17e}"))
+            .collect::<Vec<_>>()
+            .join(",");
+        let result = match args.format {
+            Output::Csv => writeln!(out, "{row}"),
+            Output::Json => write!(out, "{}[{row}]", if written == 0 { "" } else { "," }),
+        };
+        if let Err(e) = result {
+            failure = Some(e);
+        }
+        if args.plot.is_some() && written % stride == 0 {
+            for k in 0..3 {
+                plotted[k].push((s.t, s.omega[k]));
+            }
+        }
+        written += 1;
+    };
+    let (statistics, used) = simulate_choice(&problem, &choice, &sampling, &mut sink, &mut |f| {
+        bar.set_position((f * 1000.0) as u64)
+    })
+    .map_err(|e| format!("error: {name}: {e}"))?;
+    bar.finish_and_clear();
+    if let Some(e) = failure {
+        return Err(format!("error: cannot write the samples: {e}"));
+    }
+    if args.format == Output::Json {
+        writeln!(out, "]").map_err(|e| format!("error: cannot write: {e}"))?;
+    }
+    out.flush()
+        .map_err(|e| format!("error: cannot write: {e}"))?;
+    if let Some(path) = &args.plot {
+        let series: Vec<Series> = ["ω_x", "ω_y", "ω_z"]
+            .iter()
+            .zip(plotted)
+            .map(|(n, points)| Series {
+                name: n.to_string(),
+                points,
+            })
+            .collect();
+        line_chart(
+            path,
+            "angular velocity in body axes",
+            "t [s]",
+            "ω [rad/s]",
+            &series,
+        )?;
+    }
+    let method = match used {
+        MethodUsed::Exact => "exact (closed form)".to_string(),
+        MethodUsed::Integrator => format!(
+            "{} steps, {} rejected",
+            statistics.steps, statistics.rejected_steps
+        ),
+    };
+    eprintln!("{} samples; method: {method}", statistics.samples);
+    Ok(String::new())
+}

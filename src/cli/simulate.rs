@@ -150,9 +150,9 @@ pub fn run(args: Args) -> Result<String, String> {
         if let Err(e) = result {
             failure = Some(e);
         }
-        if args.plot.is_some() && written % stride == 0 {
-            for k in 0..3 {
-                plotted[k].push((s.t, s.omega[k]));
+        if args.plot.is_some() && written.is_multiple_of(stride) {
+            for (line, w) in plotted.iter_mut().zip(s.omega.iter()) {
+                line.push((s.t, *w));
             }
         }
         written += 1;

@@ -144,9 +144,9 @@ where
 
 /// [`simulate`] with the propagator built by `make` from the last sample time: the
 /// one driver behind every method, the integrators here and the exact solution.
-pub(crate) fn simulate_with<T, K>(
+pub(crate) fn simulate_with<'a, T, K>(
     problem: &Problem<T>,
-    make: &dyn Fn(T) -> Result<Box<dyn Propagator<T> + '_>, NumericError>,
+    make: &dyn Fn(T) -> Result<Box<dyn Propagator<T> + 'a>, NumericError>,
     sampling: &Sampling<T>,
     sink: &mut K,
     progress: &mut dyn FnMut(f64),

@@ -1,5 +1,6 @@
 //! The command line: argument parsing (clap) and one module per command.
 
+mod bench;
 mod derive;
 mod input;
 mod show;
@@ -32,6 +33,9 @@ enum Command {
     Plan(solve::PlanArgs),
     /// Integrate Euler's equations and the orientation for a scene's body.
     Simulate(simulate::Args),
+    /// Benchmarks that print tables.
+    #[command(subcommand)]
+    Bench(bench::Bench),
 }
 
 /// Runs the command line and maps failures to a message on standard error and exit code 1.
@@ -44,6 +48,7 @@ pub fn run() -> ExitCode {
         Command::Solve(args) => solve::run(args),
         Command::Plan(args) => solve::plan(args),
         Command::Simulate(args) => simulate::run(args),
+        Command::Bench(b) => bench::run(b),
     };
     match result {
         Ok(output) => {

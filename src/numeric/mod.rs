@@ -18,6 +18,7 @@ pub mod simulate;
 pub mod splitting;
 pub mod torque;
 pub mod torque_free;
+pub mod work_precision;
 
 pub use dual::Dual;
 pub use error::NumericError;

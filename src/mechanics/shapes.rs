@@ -10,7 +10,8 @@
 //! | rectangular prism a × b × c | edges along x, y, z | `m(b²+c²)/12, m(c²+a²)/12, m(a²+b²)/12` |
 //! | point mass | any | `0, 0, 0` |
 //!
-//! All products of inertia are zero in these axes (they are principal by symmetry).
+//! All products of inertia are zero in these axes (they are principal by symmetry). A body
+//! may also be given by its six centroidal components ([`Shape::Explicit`]).
 
 use super::inertia::InertiaTensor;
 use crate::algebra::Expr;
@@ -18,13 +19,32 @@ use crate::algebra::Expr;
 /// A body whose inertia is known in closed form.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Shape {
-    SlenderRod { length: Expr },
-    ThinPlate { a: Expr, b: Expr },
-    ThinDisk { radius: Expr },
-    SolidCylinder { radius: Expr, length: Expr },
-    SolidSphere { radius: Expr },
-    RectangularPrism { a: Expr, b: Expr, c: Expr },
+    SlenderRod {
+        length: Expr,
+    },
+    ThinPlate {
+        a: Expr,
+        b: Expr,
+    },
+    ThinDisk {
+        radius: Expr,
+    },
+    SolidCylinder {
+        radius: Expr,
+        length: Expr,
+    },
+    SolidSphere {
+        radius: Expr,
+    },
+    RectangularPrism {
+        a: Expr,
+        b: Expr,
+        c: Expr,
+    },
     PointMass,
+    /// A body whose centroidal moments `[I_x, I_y, I_z]` and products `[I_xy, I_yz, I_xz]`
+    /// (positive-integral convention) are given directly.
+    Explicit(InertiaTensor),
 }
 
 impl Shape {
@@ -61,6 +81,7 @@ impl Shape {
                 q(1, 12) * (sq(a) + sq(b)),
             ],
             Shape::PointMass => [Expr::zero(), Expr::zero(), Expr::zero()],
+            Shape::Explicit(tensor) => return tensor.clone(),
         };
         InertiaTensor::diagonal(moments.map(|e| e.expand().unwrap_or(e)))
     }

@@ -5,7 +5,9 @@
 use super::model::{Constraint, Force, Given, Part, Request, Scene, Span};
 use super::units::{dimension_of, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
 use crate::algebra::{vector, Expr, Func, Matrix, Symbol, Vector};
+use crate::mechanics::inertia::InertiaTensor;
 use crate::mechanics::shapes::Shape;
+use crate::mechanics::validation::validate_inertia_tensor;
 use crate::parse::{parse_expression, Diagnostic};
 use pest::iterators::Pair;
 use pest::Parser;
@@ -314,13 +316,23 @@ impl Reader<'_> {
             .next()
             .ok_or_else(|| self.error(span(shape_pair), "expected a shape"))?;
         let args: Vec<Pair<Rule>> = shape_inner.collect();
+        let explicit = kind.as_str() == "inertia";
+        let want = if explicit {
+            Dimension::INERTIA
+        } else {
+            Dimension::LENGTH
+        };
         let mut lengths = Vec::new();
         for a in &args {
             let e = self.math(a)?;
-            self.expect_dimension(&e, Dimension::LENGTH, span(a))?;
+            self.expect_dimension(&e, want, span(a))?;
             lengths.push(e);
         }
-        let shape = self.shape(&kind, lengths, span(shape_pair))?;
+        let shape = if explicit {
+            self.explicit_inertia(lengths, span(shape_pair))?
+        } else {
+            self.shape(&kind, lengths, span(shape_pair))?
+        };
         let mass = self.math(&inner[1])?;
         self.expect_dimension(&mass, Dimension::MASS, span(&inner[1]))?;
         let mut position = Vector::from_element(Expr::zero());
@@ -348,6 +360,30 @@ impl Reader<'_> {
             rotation,
         });
         Ok(())
+    }
+
+    /// `inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz)`: checked for physical admissibility when
+    /// every component has a value.
+    fn explicit_inertia(&self, mut c: Vec<Expr>, at: (usize, usize)) -> Result<Shape, Diagnostic> {
+        if c.len() != 6 {
+            return Err(self
+                .error(at, format!("inertia takes 6 components, found {}", c.len()))
+                .with_help("write inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz), products as positive integrals"));
+        }
+        let products: [Expr; 3] = [c.remove(3), c.remove(3), c.remove(3)];
+        let moments: [Expr; 3] = [c.remove(0), c.remove(0), c.remove(0)];
+        let tensor = InertiaTensor { moments, products };
+        let value = |e: &Expr| e.eval(&|s: Symbol| self.scene.value(s)).ok();
+        let numbers: Option<Vec<f64>> = tensor.matrix().iter().map(value).collect();
+        if let Some(numbers) = numbers {
+            let m = nalgebra::Matrix3::from_column_slice(&numbers);
+            validate_inertia_tensor(&m).map_err(|e| {
+                self.error(at, e.to_string()).with_help(
+                    "these components cannot belong to a real body; check their values and signs",
+                )
+            })?;
+        }
+        Ok(Shape::Explicit(tensor))
     }
 
     fn shape(
@@ -404,7 +440,7 @@ impl Reader<'_> {
             other => {
                 return Err(self
                     .error(span(kind), format!("unknown shape '{other}'"))
-                    .with_help("the shapes are rod(L), plate(a, b), disk(r), cylinder(r, h), sphere(r), prism(a, b, c), point()"))
+                    .with_help("the shapes are rod(L), plate(a, b), disk(r), cylinder(r, h), sphere(r), prism(a, b, c), point(), inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz)"))
             }
         })
     }

@@ -104,19 +104,25 @@ impl Reader<'_> {
             Rule::body => self.body(inner)?,
             Rule::fixed_point => self.scene.fixed_point = true,
             Rule::omega => {
+                self.only_once(self.scene.omega.is_some(), at)?;
                 self.scene.omega = Some(self.vector(&inner[0], Dimension::ANGULAR_VELOCITY)?)
             }
             Rule::omegadot => {
+                self.only_once(self.scene.omega_dot.is_some(), at)?;
                 self.scene.omega_dot =
                     Some(self.vector(&inner[0], Dimension::ANGULAR_ACCELERATION)?)
             }
             Rule::frame => {
                 if inner[0].as_rule() == Rule::math {
+                    self.only_once(self.scene.frame_rate.is_some(), at)?;
                     self.scene.frame_rate =
                         Some(self.vector(&inner[0], Dimension::ANGULAR_VELOCITY)?);
                 }
             }
-            Rule::vbar => self.scene.vbar = Some(self.vector(&inner[0], Dimension::VELOCITY)?),
+            Rule::vbar => {
+                self.only_once(self.scene.vbar.is_some(), at)?;
+                self.scene.vbar = Some(self.vector(&inner[0], Dimension::VELOCITY)?)
+            }
             Rule::force => {
                 let name = inner[0].as_str().to_string();
                 let value = self.vector(&inner[1], Dimension::FORCE)?;
@@ -171,6 +177,21 @@ impl Reader<'_> {
             _ => return Err(self.error(at, "unexpected statement")),
         }
         Ok(())
+    }
+
+    /// A statement that sets one vector of the scene (omega, omegadot, frame rate, vbar)
+    /// may appear once: a second would silently replace the first.
+    fn only_once(&self, already_set: bool, at: (usize, usize)) -> Result<(), Diagnostic> {
+        if !already_set {
+            return Ok(());
+        }
+        let keyword = self.source[at.0..at.1]
+            .split_whitespace()
+            .next()
+            .unwrap_or_default();
+        Err(self
+            .error(at, format!("'{keyword}' is given twice"))
+            .with_help("keep one of the two lines: the second would replace the first"))
     }
 
     fn declare(&mut self, name: &Pair<Rule>, dimension: Dimension) -> Result<Symbol, Diagnostic> {

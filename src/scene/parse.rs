@@ -19,17 +19,21 @@ struct SceneGrammar;
 /// Parses and checks a scene file.
 pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic> {
     crate::parse::limits::check_input(source_name, source)?;
+    // Error detail records the furthest place the grammar reached and what it expected there.
+    pest::set_error_detail(true);
     let mut pairs = SceneGrammar::parse(Rule::scene, source).map_err(|e| {
-        let (start, end) = match e.location {
-            pest::error::InputLocation::Pos(p) => (p, p + 1),
-            pest::error::InputLocation::Span(s) => s,
+        let start = match e.location {
+            pest::error::InputLocation::Pos(p) => p,
+            pest::error::InputLocation::Span((s, _)) => s,
         };
-        let found = source[start.min(source.len())..].chars().next();
-        let found = found.map_or("end of file".to_string(), |c| format!("'{c}'"));
-        Diagnostic::at(source_name, source, start, end, format!("this statement cannot be read here (found {found})"))
-            .with_help(
-                "statements are: title, given, body, fixed point, omega, omegadot, frame, vbar, force, couple, impulse, constraint, unknown, find; see examples/ for each",
-            )
+        let attempts = e.parse_attempts();
+        let furthest = attempts
+            .as_ref()
+            .map_or(start, |a| a.max_position.max(start));
+        let expected = attempts
+            .map(|a| expected_words(&a.expected_tokens()))
+            .unwrap_or_default();
+        syntax_error(source_name, source, furthest, &expected)
     })?;
     let mut reader = Reader {
         source_name,
@@ -102,19 +106,25 @@ impl Reader<'_> {
             Rule::body => self.body(inner)?,
             Rule::fixed_point => self.scene.fixed_point = true,
             Rule::omega => {
+                self.only_once(self.scene.omega.is_some(), at)?;
                 self.scene.omega = Some(self.vector(&inner[0], Dimension::ANGULAR_VELOCITY)?)
             }
             Rule::omegadot => {
+                self.only_once(self.scene.omega_dot.is_some(), at)?;
                 self.scene.omega_dot =
                     Some(self.vector(&inner[0], Dimension::ANGULAR_ACCELERATION)?)
             }
             Rule::frame => {
                 if inner[0].as_rule() == Rule::math {
+                    self.only_once(self.scene.frame_rate.is_some(), at)?;
                     self.scene.frame_rate =
                         Some(self.vector(&inner[0], Dimension::ANGULAR_VELOCITY)?);
                 }
             }
-            Rule::vbar => self.scene.vbar = Some(self.vector(&inner[0], Dimension::VELOCITY)?),
+            Rule::vbar => {
+                self.only_once(self.scene.vbar.is_some(), at)?;
+                self.scene.vbar = Some(self.vector(&inner[0], Dimension::VELOCITY)?)
+            }
             Rule::force => {
                 let name = inner[0].as_str().to_string();
                 let value = self.vector(&inner[1], Dimension::FORCE)?;
@@ -155,6 +165,11 @@ impl Reader<'_> {
             Rule::find => {
                 for r in inner {
                     let (start, end) = span(&r);
+                    if self.scene.requests.iter().any(|q| q.name == r.as_str()) {
+                        return Err(self
+                            .error((start, end), format!("{} is asked for twice", r.as_str()))
+                            .with_help("name each quantity once in 'find'"));
+                    }
                     self.scene.requests.push(Request {
                         name: r.as_str().to_string(),
                         span: Span { start, end },
@@ -166,17 +181,32 @@ impl Reader<'_> {
         Ok(())
     }
 
+    /// A statement that sets one vector of the scene (omega, omegadot, frame rate, vbar)
+    /// may appear once: a second would silently replace the first.
+    fn only_once(&self, already_set: bool, at: (usize, usize)) -> Result<(), Diagnostic> {
+        if !already_set {
+            return Ok(());
+        }
+        let keyword = self.source[at.0..at.1]
+            .split_whitespace()
+            .next()
+            .unwrap_or_default();
+        Err(self
+            .error(at, format!("'{keyword}' is given twice"))
+            .with_help("keep one of the two lines: the second would replace the first"))
+    }
+
     fn declare(&mut self, name: &Pair<Rule>, dimension: Dimension) -> Result<Symbol, Diagnostic> {
         let symbol = Symbol::new(name.as_str());
-        if self.dims.contains_key(&symbol) {
-            return Err(self
-                .error(span(name), format!("{} is declared twice", name.as_str()))
-                .with_help("declare each symbol once, with 'given' or 'unknown'"));
-        }
         if matches!(name.as_str(), "i" | "j" | "k") {
             return Err(self
                 .error(span(name), "i, j and k are the unit vectors")
                 .with_help("choose another name"));
+        }
+        if self.dims.contains_key(&symbol) {
+            return Err(self
+                .error(span(name), format!("{} is declared twice", name.as_str()))
+                .with_help("declare each symbol once, with 'given' or 'unknown'"));
         }
         self.dims.insert(symbol, dimension);
         Ok(symbol)
@@ -201,10 +231,10 @@ impl Reader<'_> {
                             ))
                     })?;
                     let exponent: i8 = match pieces.next() {
-                        Some(e) => e
-                            .as_str()
-                            .parse()
-                            .map_err(|_| self.error(span(&e), "exponent out of range"))?,
+                        Some(e) => e.as_str().parse().map_err(|_| {
+                            self.error(span(&e), "exponent out of range")
+                                .with_help("unit exponents are small integers, as in m/s^2")
+                        })?,
                         None => 1,
                     };
                     let exponent = if divide { -exponent } else { exponent };
@@ -234,7 +264,9 @@ impl Reader<'_> {
                         .parse()
                         .map_err(|_| self.error(span(&number), "not a number"))?;
                     if !n.is_finite() {
-                        return Err(self.error(span(&number), "the value is not a finite number"));
+                        return Err(self
+                            .error(span(&number), "the value is not a finite number")
+                            .with_help("write the value in a unit that keeps it within 1e308"));
                     }
                     let unit = match q.next() {
                         Some(u) => self.unit(&u)?,
@@ -535,6 +567,131 @@ impl Reader<'_> {
         }
         Ok(Vector::from_iterator(coords))
     }
+}
+
+/// Each statement with the form it is written in, for the hint of a syntax error.
+const STATEMENT_FORMS: [(&str, &str); 14] = [
+    ("title", "title Sample Problem 18.4"),
+    ("given", "given m = 0.3 kg  or  given L : m"),
+    ("body", "body rod(c) mass m at (L/2, c/2, 0) along y"),
+    ("fixed", "fixed point"),
+    ("omega", "omega = w1*i - w2*j"),
+    ("omegadot", "omegadot = alpha*i"),
+    ("frame", "frame rate = -w2*j  or  frame body-fixed"),
+    ("vbar", "vbar = vbar_x*i + vbar_z*k"),
+    ("force", "force D = D_y*j + D_z*k at (L, 0, 0)"),
+    ("couple", "couple M*i"),
+    ("impulse", "impulse -F*Dt*k at (-a/2, -b/2, 0)"),
+    (
+        "constraint",
+        "constraint velocity at (L, -r, 0) = 0  or  constraint vbar_y = 0",
+    ),
+    ("unknown", "unknown C_y, D_y : N"),
+    ("find", "find D_y, C_y, H_G, T"),
+];
+
+/// A line the grammar cannot read: an unknown first word is named with the nearest
+/// statement; a known statement gets its form as the hint.
+fn syntax_error(source_name: &str, source: &str, at: usize, expected: &[String]) -> Diagnostic {
+    let at = source.floor_char_boundary(at.min(source.len()));
+    let line_start = source[..at].rfind('\n').map_or(0, |i| i + 1);
+    let line = &source[line_start..];
+    let line = &line[..line.find('\n').unwrap_or(line.len())];
+    let indent = line.len() - line.trim_start().len();
+    let word_len = line[indent..]
+        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '-' || c == '_'))
+        .unwrap_or(line.len() - indent);
+    let word = &line[indent..indent + word_len];
+    let word_start = line_start + indent;
+    match STATEMENT_FORMS.iter().find(|(keyword, _)| *keyword == word) {
+        Some((keyword, form)) => {
+            // The grammar may give up at the start of the statement: point past the keyword.
+            let at = if at <= word_start {
+                let after = word_start + word_len;
+                after + source[after..].len()
+                    - source[after..].trim_start_matches([' ', '\t']).len()
+            } else {
+                at
+            };
+            let found = match source[at..].chars().next() {
+                None => "end of file".to_string(),
+                Some('\n' | '\r') => "end of line".to_string(),
+                Some(c) => format!("'{c}'"),
+            };
+            let expected = match expected {
+                [] => String::new(),
+                tokens => format!(", expected {}", tokens.join(" or ")),
+            };
+            Diagnostic::at(
+                source_name,
+                source,
+                at,
+                at + 1,
+                format!("cannot read this '{keyword}' statement (found {found}{expected})"),
+            )
+            .with_help(format!("write it as '{form}'"))
+        }
+        None => {
+            let nearest = STATEMENT_FORMS
+                .iter()
+                .map(|(keyword, _)| (edit_distance(word, keyword), *keyword))
+                .min()
+                .filter(|(d, _)| *d <= 2 && !word.is_empty());
+            let help = match nearest {
+                Some((_, keyword)) => format!("did you mean '{keyword}'?"),
+                None => format!(
+                    "statements begin with one of: {}",
+                    STATEMENT_FORMS.map(|(keyword, _)| keyword).join(", ")
+                ),
+            };
+            let shown = if word.is_empty() { line.trim() } else { word };
+            Diagnostic::at(
+                source_name,
+                source,
+                word_start,
+                word_start + word_len.max(1),
+                format!("unknown statement '{shown}'"),
+            )
+            .with_help(help)
+        }
+    }
+}
+
+/// What the grammar expected, in words, without the spaces, line ends and comments that
+/// are allowed almost everywhere.
+fn expected_words<T: std::fmt::Display>(tokens: &[T]) -> Vec<String> {
+    let mut words: Vec<String> = Vec::new();
+    for token in tokens.iter().map(T::to_string) {
+        let word = match token.as_str() {
+            "#" | "BUILTIN_RULE" => continue,
+            "0..9" => "a digit".to_string(),
+            "A..Z" | "a..z" => "a letter".to_string(),
+            t if t.trim().is_empty() => continue,
+            t => format!("'{t}'"),
+        };
+        if !words.contains(&word) {
+            words.push(word);
+        }
+    }
+    words
+}
+
+/// The Levenshtein distance between two words, for "did you mean".
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let next = (row[j + 1] + 1)
+                .min(row[j] + 1)
+                .min(diagonal + usize::from(ca != *cb));
+            diagonal = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
 }
 
 /// Unknowns without a unit: forces by their usual names, otherwise angular velocities.

@@ -14,28 +14,7 @@ use std::time::Duration;
 
 /// Scenes whose error is still wrong, each with the reason; the fix belongs outside
 /// `src/scene/parse.rs`. Remove an entry once its scene passes.
-const EXPECTED_TO_FAIL: [(&str, &str); 5] = [
-    (
-        "inconsistent.scene",
-        "analysis.rs points at the 'find' request, not at the conflicting constraint",
-    ),
-    (
-        "nonlinear_unknown.scene",
-        "analysis.rs points at the 'find' request, not at the nonlinear constraint",
-    ),
-    (
-        "velocity_constraint_without_motion.scene",
-        "analysis.rs points at the 'find' request, not at the velocity constraint",
-    ),
-    (
-        "division_by_zero_given_value.scene",
-        "a given value of 0 in a divisor is not caught: the solution is printed, exit code 0",
-    ),
-    (
-        "oversized.scene",
-        "cli/solve.rs refuses a scene over the size limit without a location, caret or hint",
-    ),
-];
+const EXPECTED_TO_FAIL: [(&str, &str); 0] = [];
 
 struct Outcome {
     code: Option<i32>,

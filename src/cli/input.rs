@@ -40,9 +40,12 @@ pub fn read_file(path: &str) -> Result<(String, String), String> {
         .read_to_end(&mut bytes)
         .map_err(|e| format!("error: cannot read {path}: {e}"))?;
     if bytes.len() as u64 > limit {
-        return Err(format!(
-            "error: {path}: the file is larger than {limit} bytes"
-        ));
+        let head = String::from_utf8_lossy(&bytes[..bytes.len().min(200)]).into_owned();
+        let line = head.lines().next().unwrap_or_default();
+        let message = format!("the file is larger than the limit of {limit} bytes");
+        return Err(kinetics::parse::Diagnostic::at(path, line, 0, 0, message)
+            .with_help("split the problem into smaller scene files")
+            .render());
     }
     let text = String::from_utf8(bytes).map_err(|_| format!("error: {path}: not UTF-8 text"))?;
     Ok((path.to_string(), text))

@@ -12,7 +12,7 @@
 //! | `Hdot_G` | inertia, kinematics, rate of change of angular momentum |
 //! | an unknown | impulse and momentum (a scene with impulses), else the equations of motion; then the solution |
 
-use super::model::{Constraint, Request, Scene};
+use super::model::{ConstraintKind, Request, Scene, Span};
 use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
 use crate::algebra::{Expr, Symbol, Vector};
 use crate::mechanics::derivation::{Relation, Step};
@@ -272,16 +272,22 @@ impl Analyser<'_> {
             let scene = self.scene;
             let omega = scene.omega.clone().unwrap_or_else(zero_vector);
             let mut equations: Vec<Expr> = Vec::new();
+            // The constraint each equation came from, to locate errors.
+            let mut sources: Vec<Span> = Vec::new();
             let mut shown: Vec<Relation> = Vec::new();
             for c in &scene.constraints {
-                match c {
-                    Constraint::VelocityZero(point) => {
+                let at = Request {
+                    name: "constraint".into(),
+                    span: c.span,
+                };
+                match &c.kind {
+                    ConstraintKind::VelocityZero(point) => {
                         let base = if scene.fixed_point {
                             zero_vector()
                         } else {
                             let vbar = scene.vbar.clone().ok_or_else(|| {
                                 self.fail(
-                                    r,
+                                    &at,
                                     "a velocity constraint needs the motion of the body",
                                     "add 'fixed point' or 'vbar = ...'",
                                 )
@@ -293,6 +299,7 @@ impl Analyser<'_> {
                         for (k, c) in v.iter().enumerate() {
                             if !c.is_zero() {
                                 equations.push(c.clone());
+                                sources.push(at.span);
                                 shown.push(Relation::new(
                                     c.clone(),
                                     Expr::zero(),
@@ -301,8 +308,9 @@ impl Analyser<'_> {
                             }
                         }
                     }
-                    Constraint::Equation(lhs, rhs) => {
+                    ConstraintKind::Equation(lhs, rhs) => {
                         equations.push(lhs - rhs);
+                        sources.push(at.span);
                         shown.push(Relation::new(lhs.clone(), rhs.clone(), Axis::X));
                     }
                 }
@@ -319,7 +327,24 @@ impl Analyser<'_> {
                 let Solution {
                     values: solved,
                     free,
-                } = solve_linear(&equations, &constrained).map_err(|e| self.solve_error(r, e))?;
+                } = solve_linear(&equations, &constrained).map_err(|e| {
+                    // An equation that cannot be used is reported at its constraint.
+                    let span = match &e {
+                        SolveError::Inconsistent { equation, .. }
+                        | SolveError::Nonlinear { equation, .. } => sources.get(*equation).copied(),
+                        _ => None,
+                    };
+                    match span {
+                        Some(span) => self.solve_error(
+                            &Request {
+                                name: "constraint".into(),
+                                span,
+                            },
+                            e,
+                        ),
+                        None => self.solve_error(r, e),
+                    }
+                })?;
                 if !free.is_empty() {
                     return Err(self.solve_error(r, SolveError::UnderDetermined(free)));
                 }

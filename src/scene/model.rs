@@ -44,11 +44,18 @@ pub struct Force {
 
 /// A kinematic condition.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Constraint {
+pub enum ConstraintKind {
     /// The body point at this position has zero velocity (rolling contact, a pin).
     VelocityZero(Vector),
     /// `lhs = rhs` among the kinematic quantities.
     Equation(Expr, Expr),
+}
+
+/// A kinematic condition and where the scene states it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Constraint {
+    pub kind: ConstraintKind,
+    pub span: Span,
 }
 
 /// A quantity asked for.

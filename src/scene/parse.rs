@@ -2,7 +2,7 @@
 //! (file:line:column, a caret, a hint). The mathematics inside a statement goes through the
 //! expression parser; its diagnostics are moved to their place in the file.
 
-use super::model::{Constraint, Force, Given, Part, Request, Scene, Span};
+use super::model::{Constraint, ConstraintKind, Force, Given, Part, Request, Scene, Span};
 use super::units::{dimension_of, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
 use crate::algebra::{vector, Expr, Func, Matrix, Symbol, Vector};
 use crate::mechanics::inertia::InertiaTensor;
@@ -148,17 +148,23 @@ impl Reader<'_> {
                             .into_inner()
                             .next()
                             .ok_or_else(|| self.error(at, "expected a point"))?;
-                        Constraint::VelocityZero(self.point(&point)?)
+                        ConstraintKind::VelocityZero(self.point(&point)?)
                     }
                     _ => {
                         let sides: Vec<Pair<Rule>> = c.into_inner().collect();
                         let lhs = self.math(&sides[0])?;
                         let rhs = self.math(&sides[1])?;
                         self.same_dimension(&lhs, &rhs, span(&sides[1]))?;
-                        Constraint::Equation(lhs, rhs)
+                        ConstraintKind::Equation(lhs, rhs)
                     }
                 };
-                self.scene.constraints.push(constraint);
+                self.scene.constraints.push(Constraint {
+                    kind: constraint,
+                    span: Span {
+                        start: at.0,
+                        end: at.1,
+                    },
+                });
             }
             Rule::unknown => self.unknown(inner)?,
             Rule::EOI => {}
@@ -499,7 +505,28 @@ impl Reader<'_> {
                     unknown.name()
                 )));
         }
+        self.finite_with_values(&e, span(p))?;
         Ok(e)
+    }
+
+    /// With every symbol given a value, the expression must be a finite number.
+    fn finite_with_values(&self, e: &Expr, at: (usize, usize)) -> Result<(), Diagnostic> {
+        let value = |s: Symbol| {
+            if matches!(s.name(), "i" | "j" | "k") {
+                Some(1.0)
+            } else {
+                self.scene.value(s)
+            }
+        };
+        match e.eval::<f64>(&value) {
+            Err(crate::algebra::AlgebraError::NotFinite { value, .. }) => Err(self
+                .error(
+                    at,
+                    format!("division by zero: with the given values this is {value}"),
+                )
+                .with_help("check the values of the givens in this expression")),
+            _ => Ok(()),
+        }
     }
 
     fn dimension(&self, e: &Expr, at: (usize, usize)) -> Result<Dimension, Diagnostic> {

@@ -187,3 +187,29 @@ fn worked_solutions_in_latex() {
         );
     }
 }
+
+#[test]
+fn answers_asked_in_a_unit_are_converted() {
+    let path = format!(
+        "{}/examples/scenes/sp18_4_shaft_reactions.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(path).unwrap().replace(
+        "find alpha, D_y, D_z, C_y, C_z",
+        "find D_y in lb, C_y in kN",
+    );
+    let scene = parse_scene("in_units.scene", &text).unwrap();
+    let analysis = analyse(&scene).unwrap();
+    kinetics::solution::numbers::check_numeric_requests(&scene, &analysis).unwrap();
+    let json: serde_json::Value =
+        serde_json::from_str(&render(&scene, &analysis, Format::Json, false)).unwrap();
+    let d_y = &json["results"][0];
+    assert_eq!(d_y["unit"], "lb");
+    // D_y = -3M/(16c) - m c w²/4 with the notes' numbers, converted with 1 lb = 4.4482216152605 N.
+    let d_y_newton = -3.0 * 6.0 / (16.0 * 0.1) - 0.25 * 0.3 * 0.1 * 125.7f64.powi(2);
+    assert!((d_y["value"].as_f64().unwrap() - d_y_newton / 4.4482216152605).abs() < 1e-9);
+    let c_y = &json["results"][1];
+    assert_eq!(c_y["unit"], "kN");
+    let c_y_newton = -9.0 * 6.0 / (16.0 * 0.1) - 0.25 * 0.3 * 0.1 * 125.7f64.powi(2);
+    assert!((c_y["value"].as_f64().unwrap() - c_y_newton / 1000.0).abs() < 1e-12);
+}

@@ -25,6 +25,8 @@ fn load(path: &str) -> Result<(Scene, Analysis), String> {
     let (name, text) = super::input::read_file(path)?;
     let scene = parse_scene(&name, &text).map_err(|d| d.render())?;
     let analysis = analyse(&scene).map_err(|d| d.render())?;
+    kinetics::solution::numbers::check_numeric_requests(&scene, &analysis)
+        .map_err(|d| d.render())?;
     Ok((scene, analysis))
 }
 

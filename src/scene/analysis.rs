@@ -102,10 +102,7 @@ pub fn centroidal_body(scene: &Scene) -> Result<(Expr, Vector, InertiaTensor), D
         hdot_g: None,
         unknowns: None,
     };
-    let whole_file = Request {
-        name: "body".into(),
-        span: super::model::Span { start: 0, end: 0 },
-    };
+    let whole_file = Request::at("body", Span { start: 0, end: 0 });
     let body = a.body(&whole_file)?;
     Ok((
         body.mass.clone(),
@@ -276,10 +273,7 @@ impl Analyser<'_> {
             let mut sources: Vec<Span> = Vec::new();
             let mut shown: Vec<Relation> = Vec::new();
             for c in &scene.constraints {
-                let at = Request {
-                    name: "constraint".into(),
-                    span: c.span,
-                };
+                let at = Request::at("constraint", c.span);
                 match &c.kind {
                     ConstraintKind::VelocityZero(point) => {
                         let base = if scene.fixed_point {
@@ -335,13 +329,7 @@ impl Analyser<'_> {
                         _ => None,
                     };
                     match span {
-                        Some(span) => self.solve_error(
-                            &Request {
-                                name: "constraint".into(),
-                                span,
-                            },
-                            e,
-                        ),
+                        Some(span) => self.solve_error(&Request::at("constraint", span), e),
                         None => self.solve_error(r, e),
                     }
                 })?;

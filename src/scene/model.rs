@@ -63,6 +63,19 @@ pub struct Constraint {
 pub struct Request {
     pub name: String,
     pub span: Span,
+    /// `find D_y in N`: the answer must be a number, given in this unit (as written).
+    pub unit: Option<(String, super::units::Unit)>,
+}
+
+impl Request {
+    /// A request-like place in the file (a constraint, the whole file) for diagnostics.
+    pub fn at(name: &str, span: Span) -> Request {
+        Request {
+            name: name.to_string(),
+            span,
+            unit: None,
+        }
+    }
 }
 
 /// A whole scene.

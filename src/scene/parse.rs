@@ -171,14 +171,24 @@ impl Reader<'_> {
             Rule::find => {
                 for r in inner {
                     let (start, end) = span(&r);
-                    if self.scene.requests.iter().any(|q| q.name == r.as_str()) {
+                    let mut parts = r.into_inner();
+                    let name = parts
+                        .next()
+                        .map(|n| n.as_str().to_string())
+                        .unwrap_or_default();
+                    let unit = match parts.next() {
+                        Some(u) => Some((u.as_str().to_string(), self.unit(&u)?)),
+                        None => None,
+                    };
+                    if self.scene.requests.iter().any(|q| q.name == name) {
                         return Err(self
-                            .error((start, end), format!("{} is asked for twice", r.as_str()))
+                            .error((start, end), format!("{name} is asked for twice"))
                             .with_help("name each quantity once in 'find'"));
                     }
                     self.scene.requests.push(Request {
-                        name: r.as_str().to_string(),
+                        name,
                         span: Span { start, end },
+                        unit,
                     });
                 }
             }

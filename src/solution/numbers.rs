@@ -1,8 +1,9 @@
 //! Values of results: evaluation with the scene's givens (in SI) and the unit of the result.
 
 use crate::algebra::{vector, Expr, Symbol};
+use crate::parse::Diagnostic;
 use crate::scene::units::{dimension_of, Dimension, Dimensions};
-use crate::scene::Scene;
+use crate::scene::{Analysis, Scene, Value};
 
 /// The dimensions of every symbol the scene declares, and of the unit vectors.
 pub fn scene_dimensions(scene: &Scene) -> Dimensions {
@@ -28,6 +29,57 @@ pub fn value(scene: &Scene, e: &Expr) -> Option<f64> {
 /// The SI unit of `e`, when its dimension is consistent.
 pub fn unit(dims: &Dimensions, e: &Expr) -> Option<String> {
     dimension_of(e, dims).ok().map(Dimension::si_unit)
+}
+
+/// Checks the requests written `find X in UNIT`: the answer must be in that kind of unit
+/// and every given it depends on must have a value.
+pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), Diagnostic> {
+    let dims = scene_dimensions(scene);
+    for (request, value) in &analysis.results {
+        let Some((written, unit)) = &request.unit else {
+            continue;
+        };
+        let fail = |message: String, help: String| {
+            Diagnostic::at(
+                &scene.source_name,
+                &scene.source,
+                request.span.start,
+                request.span.end,
+                message,
+            )
+            .with_help(help)
+        };
+        let components: Vec<&Expr> = match value {
+            Value::Scalar(e) => vec![e],
+            Value::Vector(v) => v.iter().collect(),
+        };
+        for e in components.into_iter().filter(|e| !e.is_zero()) {
+            if let Ok(d) = dimension_of(e, &dims) {
+                if d != unit.dimension {
+                    return Err(fail(
+                        format!(
+                            "unit mismatch: {} is in {d}, not in {written}",
+                            request.name
+                        ),
+                        format!("ask for it in a unit of {d}"),
+                    ));
+                }
+            }
+            let missing: Vec<&str> = e
+                .symbols()
+                .into_iter()
+                .filter(|s| scene.value(*s).is_none())
+                .map(|s| s.name())
+                .collect();
+            if let Some(first) = missing.first() {
+                return Err(fail(
+                    format!("{} in {written} needs a value for {}", request.name, missing.join(", ")),
+                    format!("give it one, e.g. 'given {first} = <number> <unit>', or drop 'in {written}' for a symbolic answer"),
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Four significant figures, without trailing noise: `-129.8`, `0.01234`, `1.235e-7`.

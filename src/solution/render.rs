@@ -49,7 +49,27 @@ fn results<'a>(scene: &Scene, analysis: &'a Analysis, dims: &Dimensions) -> Vec<
     analysis
         .results
         .iter()
-        .map(|(request, v)| match v {
+        .map(|(request, v)| in_requested_unit(request, computed(scene, request, v, dims)))
+        .collect()
+}
+
+/// A value asked for `in UNIT` is converted from SI and labelled with the unit as written.
+fn in_requested_unit<'a>(request: &crate::scene::model::Request, mut r: Result<'a>) -> Result<'a> {
+    if let Some((written, unit)) = &request.unit {
+        r.value = r.value.map(|v| v.iter().map(|x| x / unit.to_si).collect());
+        r.unit = Some(written.clone());
+    }
+    r
+}
+
+fn computed<'a>(
+    scene: &Scene,
+    request: &'a crate::scene::model::Request,
+    v: &Value,
+    dims: &Dimensions,
+) -> Result<'a> {
+    {
+        match v {
             Value::Scalar(e) => Result {
                 name: &request.name,
                 text: print::text(e),
@@ -71,8 +91,8 @@ fn results<'a>(scene: &Scene, analysis: &'a Analysis, dims: &Dimensions) -> Vec<
                 value: vec.iter().map(|c| value(scene, c)).collect(),
                 unit: vector_unit(dims, vec),
             },
-        })
-        .collect()
+        }
+    }
 }
 
 fn vector_unit(dims: &Dimensions, v: &Vector) -> Option<String> {

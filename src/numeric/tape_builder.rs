@@ -1,0 +1,355 @@
+//! Compiling expressions into a [`Tape`]: exact substitution of fixed values, then one
+//! instruction per distinct value.
+//!
+//! - Fixed symbols are replaced by their exact values with `Expr::subs` before anything is
+//!   emitted, so the canonical form drops every term they make zero (principal axes:
+//!   `I_xy = I_yz = I_xz = 0` remove all product-of-inertia terms).
+//! - Common subexpressions are shared across all outputs twice over: every distinct
+//!   subexpression (`Expr` is hashed) is compiled once, and every distinct instruction
+//!   (opcode and operands, commutative operands ordered) is emitted once (value numbering).
+//!   Products are multiplied from their last factor to their first, so terms that differ
+//!   only in their leading factor (`I_xz ω_x ω_y`, `I_yz ω_x ω_y`) share `ω_x ω_y`.
+//! - Constants are folded exactly by the algebra; a term with a negative coefficient is
+//!   subtracted, `-1·x` is a negation and factors with negative exponents go to one
+//!   denominator (`a b / (c d²)`).
+//! - `x^n` for `|n| ≤ 16` is a multiplication chain by repeated squaring (`x⁴ = (x²)²`),
+//!   larger integers use `powi`, `x^(m/2)` is `sqrt(x)^m`, `x^-n` is `1 / x^n`, and any
+//!   other exponent is `powf`.
+//! - A rational constant that `f64` holds exactly is one constant; otherwise `p/q` with exact
+//!   integers is a division evaluated in the scalar's own precision.
+
+use super::error::NumericError;
+use super::tape::{Instruction, Tape};
+use crate::algebra::{Expr, Func, Symbol, View, Q};
+use std::collections::HashMap;
+
+/// Largest exponent written as a multiplication chain rather than `powi`.
+const MAX_CHAIN_EXPONENT: i64 = 16;
+/// Integers below this magnitude are exact in `f64`.
+const EXACT_F64_INTEGER: i64 = 1 << 53;
+
+impl Tape {
+    /// Compiles `outputs` as functions of `inputs` (input `k` of a parameter set is
+    /// `inputs[k]`). Fails for a symbol that is not an input, for a repeated input and for
+    /// an empty list of outputs.
+    pub fn compile(outputs: &[Expr], inputs: &[Symbol]) -> Result<Tape, NumericError> {
+        Tape::compile_with(outputs, inputs, &[])
+    }
+
+    /// Like [`Tape::compile`], with the symbols in `fixed` replaced by their exact values
+    /// first. A fixed symbol may also be listed as an input (so tapes with and without the
+    /// fixing take the same parameter sets); its input is then never read.
+    pub fn compile_with(
+        outputs: &[Expr],
+        inputs: &[Symbol],
+        fixed: &[(Symbol, Q)],
+    ) -> Result<Tape, NumericError> {
+        if outputs.is_empty() {
+            return Err(invalid("tape outputs", "at least one expression is needed"));
+        }
+        refuse_repeats("tape inputs", inputs.iter().copied())?;
+        refuse_repeats("fixed symbols", fixed.iter().map(|(s, _)| *s))?;
+        let mut builder = Builder {
+            inputs,
+            instructions: Vec::new(),
+            by_expr: HashMap::new(),
+            by_instruction: HashMap::new(),
+        };
+        let mut registers = Vec::with_capacity(outputs.len());
+        for (k, output) in outputs.iter().enumerate() {
+            let value = |s: Symbol| {
+                fixed
+                    .iter()
+                    .find(|(f, _)| *f == s)
+                    .map(|(_, q)| Expr::num(q.clone()))
+            };
+            let substituted = output
+                .subs(&value)
+                .map_err(|e| NumericError::InvalidInput {
+                    what: format!("tape output {k} with the fixed values"),
+                    reason: e.to_string(),
+                })?;
+            if let Some(s) = substituted
+                .symbols()
+                .into_iter()
+                .find(|s| !inputs.contains(s))
+            {
+                return Err(NumericError::InvalidInput {
+                    what: format!("symbol `{}` in tape output {k}", s.name()),
+                    reason: "is neither an input nor fixed".into(),
+                });
+            }
+            registers.push(builder.expr(&substituted)?);
+        }
+        Ok(Tape::from_parts(
+            builder.instructions,
+            registers,
+            inputs.len(),
+        ))
+    }
+}
+
+fn invalid(what: &str, reason: &str) -> NumericError {
+    NumericError::InvalidInput {
+        what: what.into(),
+        reason: reason.into(),
+    }
+}
+
+fn refuse_repeats(what: &str, symbols: impl Iterator<Item = Symbol>) -> Result<(), NumericError> {
+    let mut seen: Vec<Symbol> = Vec::new();
+    for s in symbols {
+        if seen.contains(&s) {
+            return Err(NumericError::InvalidInput {
+                what: what.into(),
+                reason: format!("`{}` is listed twice", s.name()),
+            });
+        }
+        seen.push(s);
+    }
+    Ok(())
+}
+
+/// What identifies an instruction for value numbering: opcode, operands, and a constant by
+/// its bit pattern.
+type InstructionKey = (u8, u64, u64);
+
+fn key(instruction: Instruction) -> InstructionKey {
+    use Instruction::*;
+    let r = u64::from;
+    match instruction {
+        Input(k) => (0, k as u64, 0),
+        Const(c) => (1, c.to_bits(), 0),
+        Add(a, b) => (2, r(a), r(b)),
+        Sub(a, b) => (3, r(a), r(b)),
+        Mul(a, b) => (4, r(a), r(b)),
+        Div(a, b) => (5, r(a), r(b)),
+        Neg(a) => (6, r(a), 0),
+        Powi(a, n) => (7, r(a), n as u64),
+        Sqrt(a) => (8, r(a), 0),
+        Powf(a, b) => (9, r(a), r(b)),
+        Sin(a) => (10, r(a), 0),
+        Cos(a) => (11, r(a), 0),
+        Tan(a) => (12, r(a), 0),
+        Abs(a) => (13, r(a), 0),
+    }
+}
+
+struct Builder<'a> {
+    inputs: &'a [Symbol],
+    instructions: Vec<Instruction>,
+    by_expr: HashMap<Expr, u32>,
+    by_instruction: HashMap<InstructionKey, u32>,
+}
+
+impl Builder<'_> {
+    /// The register of `instruction`, emitting it unless an identical one exists.
+    fn emit(&mut self, instruction: Instruction) -> u32 {
+        let instruction = match instruction {
+            Instruction::Add(a, b) => Instruction::Add(a.min(b), a.max(b)),
+            Instruction::Mul(a, b) => Instruction::Mul(a.min(b), a.max(b)),
+            other => other,
+        };
+        let next = self.instructions.len() as u32;
+        let register = *self.by_instruction.entry(key(instruction)).or_insert(next);
+        if register == next {
+            self.instructions.push(instruction);
+        }
+        register
+    }
+
+    /// The register holding the value of `e` (whose symbols are all inputs).
+    fn expr(&mut self, e: &Expr) -> Result<u32, NumericError> {
+        if let Some(&register) = self.by_expr.get(e) {
+            return Ok(register);
+        }
+        let register = match e.view() {
+            View::Num(q) => self.constant(q)?,
+            View::Sym(s) => {
+                let k = self.inputs.iter().position(|&i| i == s).ok_or_else(|| {
+                    NumericError::InvalidInput {
+                        what: format!("symbol `{}`", s.name()),
+                        reason: "is neither an input nor fixed".into(),
+                    }
+                })?;
+                self.emit(Instruction::Input(k))
+            }
+            View::Add(terms) => self.sum(terms)?,
+            View::Mul(_) => self.product(e)?,
+            View::Pow(base, exponent) => self.power(base, exponent)?,
+            View::Func(f, arg) => {
+                let a = self.expr(arg)?;
+                self.emit(match f {
+                    Func::Sin => Instruction::Sin(a),
+                    Func::Cos => Instruction::Cos(a),
+                    Func::Tan => Instruction::Tan(a),
+                    Func::Abs => Instruction::Abs(a),
+                })
+            }
+        };
+        self.by_expr.insert(e.clone(), register);
+        Ok(register)
+    }
+
+    fn constant(&mut self, q: &Q) -> Result<u32, NumericError> {
+        if let Q::Small(n, d) = *q {
+            let exact_numerator = n.unsigned_abs() < EXACT_F64_INTEGER as u64;
+            if exact_numerator && (d as u64).is_power_of_two() {
+                return Ok(self.emit(Instruction::Const(n as f64 / d as f64)));
+            }
+            if exact_numerator && d < EXACT_F64_INTEGER {
+                let p = self.emit(Instruction::Const(n as f64));
+                let q = self.emit(Instruction::Const(d as f64));
+                return Ok(self.emit(Instruction::Div(p, q)));
+            }
+        }
+        let value = q.to_f64();
+        if !value.is_finite() {
+            return Err(NumericError::InvalidInput {
+                what: format!("constant {q}"),
+                reason: "is too large for floating point".into(),
+            });
+        }
+        Ok(self.emit(Instruction::Const(value)))
+    }
+
+    /// A sum: positive terms added, negative ones subtracted as their negation.
+    fn sum(&mut self, terms: &[Expr]) -> Result<u32, NumericError> {
+        let mut positive = Vec::new();
+        let mut negative = Vec::new();
+        for t in terms {
+            if t.coeff_and_factors().0.is_negative() {
+                negative.push(self.expr(&-t)?);
+            } else {
+                positive.push(self.expr(t)?);
+            }
+        }
+        let negate_all = positive.is_empty();
+        let (first, added, subtracted) = if negate_all {
+            (negative[0], &negative[1..], &[][..])
+        } else {
+            (positive[0], &positive[1..], &negative[..])
+        };
+        let mut acc = first;
+        for &t in added {
+            acc = self.emit(Instruction::Add(acc, t));
+        }
+        for &t in subtracted {
+            acc = self.emit(Instruction::Sub(acc, t));
+        }
+        Ok(if negate_all {
+            self.emit(Instruction::Neg(acc))
+        } else {
+            acc
+        })
+    }
+
+    /// A product: `coefficient · numerator / denominator`, each part multiplied from its
+    /// last factor to its first.
+    fn product(&mut self, e: &Expr) -> Result<u32, NumericError> {
+        let (coefficient, factors) = e.coeff_and_factors();
+        let mut numerator = Vec::new();
+        let mut denominator = Vec::new();
+        for f in factors {
+            let (base, exponent) = f.base_and_exponent();
+            match exponent.as_num() {
+                Some(x) if x.is_negative() => {
+                    let reciprocal = base.checked_pow(&-&exponent).map_err(|err| {
+                        NumericError::InvalidInput {
+                            what: format!("factor {f}"),
+                            reason: err.to_string(),
+                        }
+                    })?;
+                    denominator.push(self.expr(&reciprocal)?);
+                }
+                _ => numerator.push(self.expr(f)?),
+            }
+        }
+        let mut value = self.multiply(&numerator);
+        let negate = coefficient == Q::MINUS_ONE;
+        if !coefficient.is_one() && !negate {
+            let c = self.constant(&coefficient)?;
+            value = Some(match value {
+                Some(v) => self.emit(Instruction::Mul(c, v)),
+                None => c,
+            });
+        }
+        if let Some(d) = self.multiply(&denominator) {
+            let n = match value {
+                Some(v) => v,
+                None => self.constant(&Q::ONE)?,
+            };
+            value = Some(self.emit(Instruction::Div(n, d)));
+        }
+        // A canonical product has at least two factors, so `value` is set here.
+        let value = match value {
+            Some(v) => v,
+            None => self.constant(&coefficient)?,
+        };
+        Ok(if negate {
+            self.emit(Instruction::Neg(value))
+        } else {
+            value
+        })
+    }
+
+    /// The product of registers, from the last to the first; `None` for no factors.
+    fn multiply(&mut self, registers: &[u32]) -> Option<u32> {
+        let (&last, rest) = registers.split_last()?;
+        Some(
+            rest.iter()
+                .rev()
+                .fold(last, |acc, &f| self.emit(Instruction::Mul(f, acc))),
+        )
+    }
+
+    fn power(&mut self, base: &Expr, exponent: &Expr) -> Result<u32, NumericError> {
+        let b = self.expr(base)?;
+        let Some(q) = exponent.as_num() else {
+            let x = self.expr(exponent)?;
+            return Ok(self.emit(Instruction::Powf(b, x)));
+        };
+        let (root, n) = match (q.numer().to_i64(), q.denom().to_i64()) {
+            (Some(n), Some(1)) => (b, n),
+            (Some(n), Some(2)) => (self.emit(Instruction::Sqrt(b)), n),
+            _ => {
+                let x = self.constant(q)?;
+                return Ok(self.emit(Instruction::Powf(b, x)));
+            }
+        };
+        let magnitude = self.integer_power(root, n.unsigned_abs());
+        Ok(if n < 0 {
+            let one = self.constant(&Q::ONE)?;
+            self.emit(Instruction::Div(one, magnitude))
+        } else {
+            magnitude
+        })
+    }
+
+    /// `r^n` for `n ≥ 1`: repeated squaring up to [`MAX_CHAIN_EXPONENT`], `powi` beyond.
+    fn integer_power(&mut self, r: u32, n: u64) -> u32 {
+        if n > MAX_CHAIN_EXPONENT as u64 {
+            if let Ok(n) = i32::try_from(n) {
+                return self.emit(Instruction::Powi(r, n));
+            }
+            let x = self.emit(Instruction::Const(n as f64));
+            return self.emit(Instruction::Powf(r, x));
+        }
+        let mut result: Option<u32> = None;
+        let mut square = r;
+        let mut rest = n;
+        loop {
+            if rest & 1 == 1 {
+                result = Some(match result {
+                    Some(acc) => self.emit(Instruction::Mul(acc, square)),
+                    None => square,
+                });
+            }
+            rest >>= 1;
+            if rest == 0 {
+                return result.unwrap_or(r);
+            }
+            square = self.emit(Instruction::Mul(square, square));
+        }
+    }
+}

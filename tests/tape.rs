@@ -311,6 +311,9 @@ fn bad_input_is_an_error_naming_the_problem() {
     );
     assert!(reciprocal.eval_batch::<f64>(&[], 0).is_err(), "zero stride");
 
+    let constant = Tape::compile_with(&[Expr::sym(x).powi(2)], &[], &[(x, Q::int(3))]).unwrap();
+    constant.eval(&[], &mut out).unwrap();
+    assert_eq!(out, [9.0], "a tape of no inputs");
     let fixed_zero = [(x, Q::ZERO)];
     let division = reason(Tape::compile_with(
         &[Expr::sym(x).powi(-1)],

@@ -38,12 +38,37 @@ pub enum Instruction {
     Abs(u32),
 }
 
+impl Instruction {
+    /// The instruction with each operand register `r` replaced by `f(r)` (operands visited
+    /// in order).
+    pub(super) fn map_registers(self, mut f: impl FnMut(u32) -> u32) -> Instruction {
+        use Instruction::*;
+        match self {
+            Input(_) | Const(_) => self,
+            Add(a, b) => Add(f(a), f(b)),
+            Sub(a, b) => Sub(f(a), f(b)),
+            Mul(a, b) => Mul(f(a), f(b)),
+            Div(a, b) => Div(f(a), f(b)),
+            Powf(a, b) => Powf(f(a), f(b)),
+            Neg(a) => Neg(f(a)),
+            Powi(a, n) => Powi(f(a), n),
+            Sqrt(a) => Sqrt(f(a)),
+            Sin(a) => Sin(f(a)),
+            Cos(a) => Cos(f(a)),
+            Tan(a) => Tan(f(a)),
+            Abs(a) => Abs(f(a)),
+        }
+    }
+}
+
 /// A compiled list of expressions of the same inputs.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Tape {
     instructions: Vec<Instruction>,
     outputs: Vec<u32>,
     n_inputs: usize,
+    /// Number of instructions at the start that are input loads.
+    leading_loads: usize,
 }
 
 impl Tape {
@@ -54,10 +79,15 @@ impl Tape {
         outputs: Vec<u32>,
         n_inputs: usize,
     ) -> Tape {
+        let leading_loads = instructions
+            .iter()
+            .take_while(|i| matches!(i, Instruction::Input(_)))
+            .count();
         Tape {
             instructions,
             outputs,
             n_inputs,
+            leading_loads,
         }
     }
 
@@ -108,12 +138,12 @@ impl Tape {
                 outputs.len(),
             ));
         }
-        self.run_block::<T, 1>(inputs, self.n_inputs, scratch);
+        self.run_block::<T, 1>(inputs, self.n_inputs.max(1), scratch);
         self.read_outputs::<T, 1>(scratch, outputs, 0)
     }
 
     /// Runs the tape on `L` parameter sets at once: set `l` has its inputs at
-    /// `inputs[l * stride..][..n_inputs]`. Register `i` lane `l` ends in
+    /// `inputs[l * stride..][..n_inputs]` (`stride ≥ 1`). Register `i` lane `l` ends in
     /// `scratch[i * L + l]`.
     pub(super) fn run_block<T: Float, const L: usize>(
         &self,
@@ -127,7 +157,17 @@ impl Tape {
             scratch.resize(size, T::zero());
         }
         let (registers, _) = scratch.as_chunks_mut::<L>();
-        for (i, instruction) in self.instructions.iter().enumerate() {
+        // The leading loads read each parameter set's row in order (not input by input
+        // across rows, which strides through memory).
+        let loads = &self.instructions[..self.leading_loads];
+        for (l, row) in inputs.chunks(stride).take(L).enumerate() {
+            for (register, load) in registers.iter_mut().zip(loads) {
+                if let Instruction::Input(k) = *load {
+                    register[l] = row[k];
+                }
+            }
+        }
+        for (i, instruction) in self.instructions.iter().enumerate().skip(loads.len()) {
             let (done, rest) = registers.split_at_mut(i);
             let out = &mut rest[0];
             let r = |a: u32| &done[a as usize];

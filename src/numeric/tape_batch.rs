@@ -12,9 +12,9 @@ use num_traits::Float;
 use rayon::prelude::*;
 
 /// Parameter sets evaluated side by side in one pass over the tape.
-pub const LANES: usize = 16;
+pub const LANES: usize = 32;
 /// Parameter sets per rayon task.
-pub const SETS_PER_TASK: usize = 64 * LANES;
+pub const SETS_PER_TASK: usize = 32 * LANES;
 
 impl Tape {
     /// Every output for every parameter set, on all cores. Fails for a malformed table or

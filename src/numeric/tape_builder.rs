@@ -9,12 +9,17 @@
 //!   (opcode and operands, commutative operands ordered) is emitted once (value numbering).
 //!   Products are multiplied from their last factor to their first, so terms that differ
 //!   only in their leading factor (`I_xz ω_x ω_y`, `I_yz ω_x ω_y`) share `ω_x ω_y`.
+//! - Sums are factored greedily (`f·a + f·b + c = f·(a + b) + c`, the most common factor
+//!   first), which turns the expanded `Ω × ([I]ω)` back into products with `H` and shares
+//!   `H` between components; a cofactor and its negation share one register.
 //! - Constants are folded exactly by the algebra; a term with a negative coefficient is
 //!   subtracted, `-1·x` is a negation and factors with negative exponents go to one
 //!   denominator (`a b / (c d²)`).
 //! - `x^n` for `|n| ≤ 16` is a multiplication chain by repeated squaring (`x⁴ = (x²)²`),
 //!   larger integers use `powi`, `x^(m/2)` is `sqrt(x)^m`, `x^-n` is `1 / x^n`, and any
 //!   other exponent is `powf`.
+//! - Finally the instructions are ordered by dependency level and, within a level, by
+//!   opcode, so that the evaluator meets runs of one kind.
 //! - A rational constant that `f64` holds exactly is one constant; otherwise `p/q` with exact
 //!   integers is a division evaluated in the scalar's own precision.
 
@@ -81,11 +86,8 @@ impl Tape {
             }
             registers.push(builder.expr(&substituted)?);
         }
-        Ok(Tape::from_parts(
-            builder.instructions,
-            registers,
-            inputs.len(),
-        ))
+        let (instructions, registers) = schedule(&builder.instructions, &registers);
+        Ok(Tape::from_parts(instructions, registers, inputs.len()))
     }
 }
 
@@ -108,6 +110,62 @@ fn refuse_repeats(what: &str, symbols: impl Iterator<Item = Symbol>) -> Result<(
         seen.push(s);
     }
     Ok(())
+}
+
+/// Reorders the instructions by dependency level (inputs and constants first, then what
+/// depends only on them, ...) and, within a level, by opcode. Instructions of one level are
+/// independent, so this is a valid order; runs of one opcode make the evaluator's dispatch
+/// branch predictable. Returns the instructions and the outputs renumbered.
+fn schedule(instructions: &[Instruction], outputs: &[u32]) -> (Vec<Instruction>, Vec<u32>) {
+    let mut levels: Vec<u32> = Vec::with_capacity(instructions.len());
+    for instruction in instructions {
+        let mut level = 0;
+        instruction.map_registers(|r| {
+            level = level.max(levels[r as usize] + 1);
+            r
+        });
+        levels.push(level);
+    }
+    let mut order: Vec<usize> = (0..instructions.len()).collect();
+    order.sort_by_key(|&i| (levels[i], key(instructions[i]).0, i));
+    let mut position = vec![0u32; instructions.len()];
+    for (new, &old) in order.iter().enumerate() {
+        position[old] = new as u32;
+    }
+    let reordered = order
+        .iter()
+        .map(|&old| instructions[old].map_registers(|r| position[r as usize]))
+        .collect();
+    let outputs = outputs.iter().map(|&r| position[r as usize]).collect();
+    (reordered, outputs)
+}
+
+/// The non-numeric factor occurring in most of `terms`, when some occurs in at least two
+/// (ties go to the first in the canonical order, so compilation is deterministic).
+fn most_common_factor(terms: &[Expr]) -> Option<Expr> {
+    let mut counts: HashMap<&Expr, usize> = HashMap::new();
+    for t in terms {
+        for f in t.coeff_and_factors().1 {
+            *counts.entry(f).or_default() += 1;
+        }
+    }
+    counts
+        .into_iter()
+        .filter(|&(_, n)| n >= 2)
+        .max_by(|a, b| a.1.cmp(&b.1).then_with(|| b.0.cmp(a.0)))
+        .map(|(f, _)| f.clone())
+}
+
+/// `term / factor` for a term that has `factor` among its factors.
+fn cofactor(term: &Expr, factor: &Expr) -> Expr {
+    let (coefficient, factors) = term.coeff_and_factors();
+    let at = factors.iter().position(|f| f == factor);
+    let others = factors
+        .iter()
+        .enumerate()
+        .filter(|&(i, _)| Some(i) != at)
+        .map(|(_, f)| f.clone());
+    Expr::mul_all(std::iter::once(Expr::num(coefficient)).chain(others))
 }
 
 /// What identifies an instruction for value numbering: opcode, operands, and a constant by
@@ -213,28 +271,23 @@ impl Builder<'_> {
         Ok(self.emit(Instruction::Const(value)))
     }
 
-    /// A sum: positive terms added, negative ones subtracted as their negation.
+    /// A sum: common factors pulled out greedily (see [`Builder::sum_parts`]), then the
+    /// parts with a plus sign added and those with a minus sign subtracted.
     fn sum(&mut self, terms: &[Expr]) -> Result<u32, NumericError> {
-        let mut positive = Vec::new();
-        let mut negative = Vec::new();
-        for t in terms {
-            if t.coeff_and_factors().0.is_negative() {
-                negative.push(self.expr(&-t)?);
-            } else {
-                positive.push(self.expr(t)?);
-            }
-        }
+        let mut parts = Vec::new();
+        self.sum_parts(terms, &mut parts)?;
+        let (positive, negative): (Vec<_>, Vec<_>) = parts.into_iter().partition(|p| !p.1);
         let negate_all = positive.is_empty();
         let (first, added, subtracted) = if negate_all {
-            (negative[0], &negative[1..], &[][..])
+            (negative[0].0, &negative[1..], &[][..])
         } else {
-            (positive[0], &positive[1..], &negative[..])
+            (positive[0].0, &positive[1..], &negative[..])
         };
         let mut acc = first;
-        for &t in added {
+        for &(t, _) in added {
             acc = self.emit(Instruction::Add(acc, t));
         }
-        for &t in subtracted {
+        for &(t, _) in subtracted {
             acc = self.emit(Instruction::Sub(acc, t));
         }
         Ok(if negate_all {
@@ -242,6 +295,42 @@ impl Builder<'_> {
         } else {
             acc
         })
+    }
+
+    /// Signed registers (`true` for minus) adding up to the sum of `terms`: the factor
+    /// shared by most terms is pulled out, `f·a + f·b + c = f·(a + b) + c`, and the rest is
+    /// factored again (a greedy multivariate Horner scheme). In the chapter's equations this
+    /// recovers `Ω_y (-I_xz ω_x - I_yz ω_y + I_z ω_z) = Ω_y H_z` from the expanded form.
+    fn sum_parts(
+        &mut self,
+        terms: &[Expr],
+        parts: &mut Vec<(u32, bool)>,
+    ) -> Result<(), NumericError> {
+        let Some(common) = most_common_factor(terms) else {
+            for t in terms {
+                parts.push(self.signed(t)?);
+            }
+            return Ok(());
+        };
+        let (with, without): (Vec<&Expr>, Vec<&Expr>) = terms
+            .iter()
+            .partition(|t| t.coeff_and_factors().1.contains(&common));
+        let cofactor = Expr::add_all(with.into_iter().map(|t| cofactor(t, &common)));
+        let (c, negative) = self.signed(&cofactor)?;
+        let f = self.expr(&common)?;
+        parts.push((self.emit(Instruction::Mul(f, c)), negative));
+        let rest: Vec<Expr> = without.into_iter().cloned().collect();
+        self.sum_parts(&rest, parts)
+    }
+
+    /// `e` as a register and a sign, the register holding `e` or `-e` so that its leading
+    /// coefficient is positive: `H` and `-H` share one register.
+    fn signed(&mut self, e: &Expr) -> Result<(u32, bool), NumericError> {
+        if e.terms()[0].coeff_and_factors().0.is_negative() {
+            Ok((self.expr(&-e)?, true))
+        } else {
+            Ok((self.expr(e)?, false))
+        }
     }
 
     /// A product: `coefficient · numerator / denominator`, each part multiplied from its

@@ -32,6 +32,10 @@ pub enum Instruction {
     Sqrt(u32),
     /// `r_a^r_b` for a non-integer, non-half-integer exponent.
     Powf(u32, u32),
+    /// `r_a·r_b + r_c` (rounded twice, as the separate operations: not a fused FMA).
+    MulAdd(u32, u32, u32),
+    /// `r_c - r_a·r_b` (rounded twice).
+    MulSub(u32, u32, u32),
     Sin(u32),
     Cos(u32),
     Tan(u32),
@@ -50,6 +54,8 @@ impl Instruction {
             Mul(a, b) => Mul(f(a), f(b)),
             Div(a, b) => Div(f(a), f(b)),
             Powf(a, b) => Powf(f(a), f(b)),
+            MulAdd(a, b, c) => MulAdd(f(a), f(b), f(c)),
+            MulSub(a, b, c) => MulSub(f(a), f(b), f(c)),
             Neg(a) => Neg(f(a)),
             Powi(a, n) => Powi(f(a), n),
             Sqrt(a) => Sqrt(f(a)),
@@ -67,8 +73,8 @@ pub struct Tape {
     instructions: Vec<Instruction>,
     outputs: Vec<u32>,
     n_inputs: usize,
-    /// Number of instructions at the start that are input loads.
-    leading_loads: usize,
+    /// The input index of each leading input load (instructions `0..n` load these).
+    leading_loads: Vec<usize>,
 }
 
 impl Tape {
@@ -81,8 +87,11 @@ impl Tape {
     ) -> Tape {
         let leading_loads = instructions
             .iter()
-            .take_while(|i| matches!(i, Instruction::Input(_)))
-            .count();
+            .map_while(|i| match *i {
+                Instruction::Input(k) => Some(k),
+                _ => None,
+            })
+            .collect();
         Tape {
             instructions,
             outputs,
@@ -159,15 +168,13 @@ impl Tape {
         let (registers, _) = scratch.as_chunks_mut::<L>();
         // The leading loads read each parameter set's row in order (not input by input
         // across rows, which strides through memory).
-        let loads = &self.instructions[..self.leading_loads];
         for (l, row) in inputs.chunks(stride).take(L).enumerate() {
-            for (register, load) in registers.iter_mut().zip(loads) {
-                if let Instruction::Input(k) = *load {
-                    register[l] = row[k];
-                }
+            for (register, &k) in registers.iter_mut().zip(&self.leading_loads) {
+                register[l] = row[k];
             }
         }
-        for (i, instruction) in self.instructions.iter().enumerate().skip(loads.len()) {
+        let loaded = self.leading_loads.len();
+        for (i, instruction) in self.instructions.iter().enumerate().skip(loaded) {
             let (done, rest) = registers.split_at_mut(i);
             let out = &mut rest[0];
             let r = |a: u32| &done[a as usize];
@@ -183,6 +190,8 @@ impl Tape {
                 Instruction::Mul(a, b) => lanes2(out, r(a), r(b), |x, y| x * y),
                 Instruction::Div(a, b) => lanes2(out, r(a), r(b), |x, y| x / y),
                 Instruction::Powf(a, b) => lanes2(out, r(a), r(b), T::powf),
+                Instruction::MulAdd(a, b, c) => lanes3(out, r(a), r(b), r(c), |x, y, z| x * y + z),
+                Instruction::MulSub(a, b, c) => lanes3(out, r(a), r(b), r(c), |x, y, z| z - x * y),
                 Instruction::Neg(a) => lanes1(out, r(a), |x| -x),
                 Instruction::Powi(a, n) => lanes1(out, r(a), |x| x.powi(n)),
                 Instruction::Sqrt(a) => lanes1(out, r(a), T::sqrt),
@@ -238,6 +247,18 @@ fn lanes2<T: Copy, const L: usize>(
 ) {
     for ((o, &a), &b) in out.iter_mut().zip(x).zip(y) {
         *o = f(a, b);
+    }
+}
+
+fn lanes3<T: Copy, const L: usize>(
+    out: &mut [T; L],
+    x: &[T; L],
+    y: &[T; L],
+    z: &[T; L],
+    f: impl Fn(T, T, T) -> T,
+) {
+    for (((o, &a), &b), &c) in out.iter_mut().zip(x).zip(y).zip(z) {
+        *o = f(a, b, c);
     }
 }
 

@@ -18,6 +18,8 @@
 //! - `x^n` for `|n| ≤ 16` is a multiplication chain by repeated squaring (`x⁴ = (x²)²`),
 //!   larger integers use `powi`, `x^(m/2)` is `sqrt(x)^m`, `x^-n` is `1 / x^n`, and any
 //!   other exponent is `powf`.
+//! - A product used only by one sum is fused into it (`x + a·b`, `x - a·b`: one
+//!   instruction, the same two roundings).
 //! - Finally the instructions are ordered by dependency level and, within a level, by
 //!   opcode, so that the evaluator meets runs of one kind.
 //! - A rational constant that `f64` holds exactly is one constant; otherwise `p/q` with exact
@@ -86,7 +88,8 @@ impl Tape {
             }
             registers.push(builder.expr(&substituted)?);
         }
-        let (instructions, registers) = schedule(&builder.instructions, &registers);
+        let fused = fuse_multiply_add(&builder.instructions, &registers);
+        let (instructions, registers) = schedule(&fused, &registers);
         Ok(Tape::from_parts(instructions, registers, inputs.len()))
     }
 }
@@ -112,11 +115,59 @@ fn refuse_repeats(what: &str, symbols: impl Iterator<Item = Symbol>) -> Result<(
     Ok(())
 }
 
-/// Reorders the instructions by dependency level (inputs and constants first, then what
-/// depends only on them, ...) and, within a level, by opcode. Instructions of one level are
+/// Merges a product used only by one sum into it: `x + a·b` becomes `MulAdd(a, b, x)` and
+/// `x - a·b` becomes `MulSub(a, b, x)` (same roundings, one dispatch fewer). The product is
+/// left in place unused; [`schedule`] drops it.
+fn fuse_multiply_add(instructions: &[Instruction], outputs: &[u32]) -> Vec<Instruction> {
+    let mut uses = vec![0usize; instructions.len()];
+    for instruction in instructions {
+        instruction.map_registers(|r| {
+            uses[r as usize] += 1;
+            r
+        });
+    }
+    for &r in outputs {
+        uses[r as usize] += 1;
+    }
+    let single_product = |r: u32| match instructions[r as usize] {
+        Instruction::Mul(a, b) if uses[r as usize] == 1 => Some((a, b)),
+        _ => None,
+    };
+    instructions
+        .iter()
+        .map(|&instruction| match instruction {
+            Instruction::Add(x, y) => match (single_product(x), single_product(y)) {
+                (_, Some((a, b))) => Instruction::MulAdd(a, b, x),
+                (Some((a, b)), None) => Instruction::MulAdd(a, b, y),
+                (None, None) => instruction,
+            },
+            Instruction::Sub(x, y) => match single_product(y) {
+                Some((a, b)) => Instruction::MulSub(a, b, x),
+                None => instruction,
+            },
+            other => other,
+        })
+        .collect()
+}
+
+/// Drops instructions no output depends on, then orders the rest by dependency level
+/// (inputs and constants first, then what depends only on them, ...) and, within a level,
+/// by opcode. Instructions of one level are
 /// independent, so this is a valid order; runs of one opcode make the evaluator's dispatch
 /// branch predictable. Returns the instructions and the outputs renumbered.
 fn schedule(instructions: &[Instruction], outputs: &[u32]) -> (Vec<Instruction>, Vec<u32>) {
+    let mut live = vec![false; instructions.len()];
+    for &r in outputs {
+        live[r as usize] = true;
+    }
+    for i in (0..instructions.len()).rev() {
+        if live[i] {
+            instructions[i].map_registers(|r| {
+                live[r as usize] = true;
+                r
+            });
+        }
+    }
     let mut levels: Vec<u32> = Vec::with_capacity(instructions.len());
     for instruction in instructions {
         let mut level = 0;
@@ -126,7 +177,7 @@ fn schedule(instructions: &[Instruction], outputs: &[u32]) -> (Vec<Instruction>,
         });
         levels.push(level);
     }
-    let mut order: Vec<usize> = (0..instructions.len()).collect();
+    let mut order: Vec<usize> = (0..instructions.len()).filter(|&i| live[i]).collect();
     order.sort_by_key(|&i| (levels[i], key(instructions[i]).0, i));
     let mut position = vec![0u32; instructions.len()];
     for (new, &old) in order.iter().enumerate() {
@@ -186,6 +237,8 @@ fn key(instruction: Instruction) -> InstructionKey {
         Powi(a, n) => (7, r(a), n as u64),
         Sqrt(a) => (8, r(a), 0),
         Powf(a, b) => (9, r(a), r(b)),
+        MulAdd(a, b, c) => (14, r(a) << 32 | r(b), r(c)),
+        MulSub(a, b, c) => (15, r(a) << 32 | r(b), r(c)),
         Sin(a) => (10, r(a), 0),
         Cos(a) => (11, r(a), 0),
         Tan(a) => (12, r(a), 0),

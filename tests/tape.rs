@@ -237,6 +237,17 @@ fn powers_and_functions_lower_to_the_intended_instructions() {
         assert!(tape.instructions().iter().any(wanted), "{e}: {tape:?}");
         assert!(!tape.instructions().iter().any(unwanted), "{e}: {tape:?}");
     }
+    // A product used once by a sum is fused into it: loads of x, y, z and one instruction.
+    let z = s("z");
+    let xyz = symbols(&["x", "y", "z"]);
+    for (e, fused) in [
+        (&x * &y + &z, Instruction::MulAdd(0, 1, 2)),
+        (&z - &x * &y, Instruction::MulSub(0, 1, 2)),
+    ] {
+        let tape = Tape::compile(std::slice::from_ref(&e), &xyz).unwrap();
+        assert_eq!(tape.instruction_count(), 4, "{e}: {tape:?}");
+        assert_eq!(tape.instructions()[3], fused, "{e}");
+    }
     // x^6 by squaring: x², x⁴ = (x²)², x⁶ = x⁴·x² — three multiplications.
     let sixth = Tape::compile(&[x.powi(6)], &inputs).unwrap();
     assert_eq!(sixth.instruction_count(), 4);

@@ -16,9 +16,13 @@ pub mod rk4;
 pub mod sample_sink;
 pub mod simulate;
 pub mod splitting;
+pub mod tape;
+pub mod tape_batch;
+pub mod tape_builder;
 pub mod torque;
 pub mod torque_free;
 pub mod work_precision;
 
 pub use dual::Dual;
 pub use error::NumericError;
+pub use tape::{Instruction, Tape};

@@ -13,8 +13,8 @@ pub struct Args {
     /// Principal axes: every product of inertia is zero.
     #[arg(long)]
     pub principal: bool,
-    /// Only these derivations (comma-separated): H_G, H_O, T, impulse, Hdot, euler,
-    /// fixed_axis, reactions, balancing.
+    /// Only these derivations (comma-separated): H_G, H_O, T, T_O, T_plane, impulse, Hdot,
+    /// euler, fixed_axis, reactions, balancing.
     #[arg(long, value_delimiter = ',')]
     pub only: Vec<String>,
     /// Show every step, not only the results.

@@ -13,10 +13,12 @@ use super::rotating_frame::rate_of_angular_momentum;
 use crate::algebra::{AlgebraError, Expr, Vector};
 
 /// The derivations `derive` knows, in the chapter's order.
-pub const NAMES: [&str; 9] = [
+pub const NAMES: [&str; 11] = [
     "H_G",
     "H_O",
     "T",
+    "T_O",
+    "T_plane",
     "impulse",
     "Hdot",
     "euler",
@@ -52,6 +54,18 @@ pub fn derive_general(name: &str, principal: bool) -> Option<Result<Derivation, 
             ))
         }
         "T" => kinetic_energy(&inertia, &omega, Some((&m, &vbar))),
+        // About a fixed point O: no translational part; moments and products about O.
+        "T_O" => kinetic_energy(&inertia, &omega, None),
+        // Plane motion: ω along the principal axis z (moment I), x along v̄.
+        "T_plane" => {
+            let plane = InertiaTensor::diagonal([Expr::symbol("I_x"), Expr::symbol("I_y"), Expr::symbol("I")]);
+            let spin = Vector::new(Expr::zero(), Expr::zero(), Expr::symbol("w"));
+            let v = Vector::new(Expr::symbol("vbar"), Expr::zero(), Expr::zero());
+            kinetic_energy(&plane, &spin, Some((&m, &v))).map(|mut d| {
+                d.title = "kinetic energy in plane motion".into();
+                d
+            })
+        }
         "impulse" => Ok(impulse_momentum(&ImpulseMomentum {
             mass: &m,
             velocity_before: &vector(["vbar_x1", "vbar_y1", "vbar_z1"]),

@@ -47,7 +47,11 @@ pub fn kinetic_energy(
     };
     Ok(Derivation {
         name: "T".into(),
-        title: "kinetic energy".into(),
+        title: if translation.is_some() {
+            "kinetic energy".into()
+        } else {
+            "kinetic energy about a fixed point O".into()
+        },
         steps,
     })
 }

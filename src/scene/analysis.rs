@@ -437,11 +437,21 @@ impl Analyser<'_> {
 
     fn abar(&mut self, r: &Request) -> Result<Vector, Diagnostic> {
         if self.abar.is_none() {
+            if let Some(given) = &self.scene.abar {
+                let a = given.map(|c| self.known(&c));
+                self.kinematics(r)?;
+                self.plan.push(Step {
+                    title: "acceleration of the mass centre (given)".into(),
+                    relations: components("abar", &a),
+                });
+                self.abar = Some(a);
+                return Ok(self.abar.clone().unwrap_or_else(zero_vector));
+            }
             if !self.scene.fixed_point {
                 return Err(self.fail(
                     r,
                     "the acceleration of the mass centre needs a fixed point",
-                    "add 'fixed point' when the body turns about the origin O",
+                    "add 'fixed point' when the body turns about the origin O, or give 'abar = ...'",
                 ));
             }
             let k = self.kinematics(r)?;

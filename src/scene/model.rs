@@ -95,6 +95,8 @@ pub struct Scene {
     pub frame_rate: Option<Vector>,
     /// Velocity of the mass centre, if given directly.
     pub vbar: Option<Vector>,
+    /// Acceleration of the mass centre, if given directly.
+    pub abar: Option<Vector>,
     pub forces: Vec<Force>,
     pub couples: Vec<Vector>,
     /// Impulses `F Δt` and their points (an impact from rest).

@@ -50,6 +50,7 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
             omega_dot: None,
             frame_rate: None,
             vbar: None,
+            abar: None,
             forces: vec![],
             couples: vec![],
             impulses: vec![],
@@ -124,6 +125,10 @@ impl Reader<'_> {
             Rule::vbar => {
                 self.only_once(self.scene.vbar.is_some(), at)?;
                 self.scene.vbar = Some(self.vector(&inner[0], Dimension::VELOCITY)?)
+            }
+            Rule::abar => {
+                self.only_once(self.scene.abar.is_some(), at)?;
+                self.scene.abar = Some(self.vector(&inner[0], Dimension::ACCELERATION)?)
             }
             Rule::force => {
                 let name = inner[0].as_str().to_string();
@@ -607,7 +612,7 @@ impl Reader<'_> {
 }
 
 /// Each statement with the form it is written in, for the hint of a syntax error.
-const STATEMENT_FORMS: [(&str, &str); 14] = [
+const STATEMENT_FORMS: [(&str, &str); 15] = [
     ("title", "title Sample Problem 18.4"),
     ("given", "given m = 0.3 kg  or  given L : m"),
     ("body", "body rod(c) mass m at (L/2, c/2, 0) along y"),
@@ -616,6 +621,7 @@ const STATEMENT_FORMS: [(&str, &str); 14] = [
     ("omegadot", "omegadot = alpha*i"),
     ("frame", "frame rate = -w2*j  or  frame body-fixed"),
     ("vbar", "vbar = vbar_x*i + vbar_z*k"),
+    ("abar", "abar = -g*j"),
     ("force", "force D = D_y*j + D_z*k at (L, 0, 0)"),
     ("couple", "couple M*i"),
     ("impulse", "impulse -F*Dt*k at (-a/2, -b/2, 0)"),

@@ -126,14 +126,46 @@ impl Expr {
     /// Splits a term into its numeric coefficient and the remaining factors:
     /// `-3 x y` gives `(-3, [x, y])`, `x` gives `(1, [x])`, `5` gives `(5, [])`.
     pub fn coeff_and_factors(&self) -> (Q, &[Expr]) {
+        (self.coefficient().clone(), self.monomial())
+    }
+
+    /// The numeric coefficient of a term: `-3` for `-3 x y`, `1` for `x`, `5` for `5`.
+    pub fn coefficient(&self) -> &Q {
+        static ONE: Q = Q::ONE;
         match &self.0 {
-            Repr::Num(q) => (q.clone(), &[]),
+            Repr::Num(q) => q,
             Repr::Mul(f) => match &f[0].0 {
-                Repr::Num(q) => (q.clone(), &f[1..]),
-                _ => (Q::ONE, &f[..]),
+                Repr::Num(q) => q,
+                _ => &ONE,
             },
-            _ => (Q::ONE, std::slice::from_ref(self)),
+            _ => &ONE,
         }
+    }
+
+    /// The factors of a term after its numeric coefficient: `[x, y]` for `-3 x y`, `[x]`
+    /// for `x`, `[]` for a number. Like terms of a sum have equal monomials.
+    pub fn monomial(&self) -> &[Expr] {
+        match &self.0 {
+            Repr::Num(_) => &[],
+            Repr::Mul(f) => match &f[0].0 {
+                Repr::Num(_) => &f[1..],
+                _ => f,
+            },
+            _ => std::slice::from_ref(self),
+        }
+    }
+
+    /// The term with the factors for which `drop` holds taken out, its numeric coefficient
+    /// kept: `-2 I_xy w_x w_y` without its kinematic factors is `-2 I_xy`. Equal to
+    /// [`Expr::mul_all`] of the remaining factors, without sorting them again.
+    pub fn without_factors(&self, drop: impl Fn(&Expr) -> bool) -> Expr {
+        let kept = self
+            .monomial()
+            .iter()
+            .filter(|f| !drop(f))
+            .cloned()
+            .collect();
+        Expr::product_of_sorted(self.coefficient().clone(), kept)
     }
 
     /// The terms of a sum, or the expression itself as a single term.
@@ -160,6 +192,15 @@ impl Expr {
         }
     }
 
+    /// The base of a power, or the expression itself: `x` for `x^n` and for `x`. Factors
+    /// of a product are ordered by their bases.
+    pub fn base(&self) -> &Expr {
+        match &self.0 {
+            Repr::Pow(p) => &p.0,
+            _ => self,
+        }
+    }
+
     /// The canonical sum of the given terms.
     pub fn add_all<I: IntoIterator<Item = Expr>>(terms: I) -> Expr {
         let mut flat: Vec<Expr> = Vec::new();
@@ -178,36 +219,25 @@ impl Expr {
                 _ => flat.push(t),
             }
         }
-        flat.sort_by(|a, b| cmp_slices(a.coeff_and_factors().1, b.coeff_and_factors().1));
+        flat.sort_by(|a, b| cmp_slices(a.monomial(), b.monomial()));
         let mut out: Vec<Expr> = Vec::with_capacity(flat.len() + 1);
         if !constant.is_zero() {
             out.push(Expr::num(constant));
         }
-        let mut i = 0;
-        while i < flat.len() {
-            let (c0, rest) = flat[i].coeff_and_factors();
-            let mut j = i + 1;
-            let mut coeff = c0;
-            while j < flat.len()
-                && cmp_slices(flat[j].coeff_and_factors().1, rest) == Ordering::Equal
-            {
-                coeff = &coeff + &flat[j].coeff_and_factors().0;
-                j += 1;
+        let mut flat = flat.into_iter().peekable();
+        while let Some(first) = flat.next() {
+            let mut coeff: Option<Q> = None;
+            while let Some(like) = flat.next_if(|t| t.monomial() == first.monomial()) {
+                let sum = coeff.as_ref().unwrap_or(first.coefficient());
+                coeff = Some(sum + like.coefficient());
             }
-            if !coeff.is_zero() {
-                if j == i + 1 {
-                    out.push(flat[i].clone());
-                } else {
-                    out.push(term_from(coeff, rest));
-                }
+            match coeff {
+                None => out.push(first),
+                Some(c) if c.is_zero() => {}
+                Some(c) => out.push(Expr::term(c, first.monomial())),
             }
-            i = j;
         }
-        match out.len() {
-            0 => Expr::zero(),
-            1 => out.pop().unwrap_or_else(Expr::zero),
-            _ => Expr(Repr::Add(out.into())),
-        }
+        Expr::sum_of_sorted(out)
     }
 
     /// The canonical product of the given factors.
@@ -231,15 +261,15 @@ impl Expr {
         if coeff.is_zero() {
             return Expr::zero();
         }
-        flat.sort_by(|a, b| a.base_and_exponent().0.cmp(b.base_and_exponent().0));
+        flat.sort_by(|a, b| a.base().cmp(b.base()));
         let mut out: Vec<Expr> = Vec::with_capacity(flat.len() + 1);
         let mut merged = false;
         let mut renormalise = false;
         let mut i = 0;
         while i < flat.len() {
-            let base = flat[i].base_and_exponent().0;
+            let base = flat[i].base();
             let mut j = i + 1;
-            while j < flat.len() && flat[j].base_and_exponent().0 == base {
+            while j < flat.len() && flat[j].base() == base {
                 j += 1;
             }
             if j == i + 1 {
@@ -260,34 +290,59 @@ impl Expr {
             i = j;
         }
         if merged {
-            out.sort_by(|a, b| a.base_and_exponent().0.cmp(b.base_and_exponent().0));
+            out.sort_by(|a, b| a.base().cmp(b.base()));
         }
         if renormalise {
             out.push(Expr::num(coeff));
             return Expr::mul_all(out);
         }
+        Expr::product_of_sorted(coeff, out)
+    }
+
+    /// `coeff · factors` in canonical form, for factors in canonical order with distinct
+    /// bases, none of them a number or a product.
+    pub(super) fn product_of_sorted(coeff: Q, mut factors: Vec<Expr>) -> Expr {
         if coeff.is_zero() {
             return Expr::zero();
         }
-        if out.is_empty() {
-            return Expr::num(coeff);
-        }
-        if out.len() == 1 {
-            let only = out.pop().unwrap_or_else(Expr::one);
-            if coeff.is_one() {
-                return only;
+        match factors.pop() {
+            None => Expr::num(coeff),
+            Some(only) if factors.is_empty() => {
+                if coeff.is_one() {
+                    return only;
+                }
+                if let Repr::Add(terms) = &only.0 {
+                    // A number times a sum is distributed, so that sums cancel as wholes.
+                    // Scaling keeps the terms' monomials, so their order and distinctness.
+                    let c = Expr::num(coeff);
+                    return Expr(Repr::Add(terms.iter().map(|t| &c * t).collect()));
+                }
+                Expr(Repr::Mul(Arc::new([Expr::num(coeff), only])))
             }
-            if let Repr::Add(terms) = &only.0 {
-                // A number times a sum is distributed, so that sums cancel as wholes.
-                let c = Expr::num(coeff);
-                return Expr::add_all(terms.iter().map(|t| Expr::mul_all([c.clone(), t.clone()])));
+            Some(last) => {
+                factors.push(last);
+                if coeff.is_one() {
+                    Expr(Repr::Mul(factors.into()))
+                } else {
+                    let c = std::iter::once(Expr::num(coeff));
+                    Expr(Repr::Mul(c.chain(factors).collect()))
+                }
             }
-            return Expr(Repr::Mul(vec![Expr::num(coeff), only].into()));
         }
-        if !coeff.is_one() {
-            out.insert(0, Expr::num(coeff));
+    }
+
+    /// The canonical sum of terms in canonical order with distinct monomials, none zero.
+    pub(super) fn sum_of_sorted(mut terms: Vec<Expr>) -> Expr {
+        match terms.len() {
+            0 => Expr::zero(),
+            1 => terms.pop().unwrap_or_else(Expr::zero),
+            _ => Expr(Repr::Add(terms.into())),
         }
-        Expr(Repr::Mul(out.into()))
+    }
+
+    /// `coeff · monomial` as a canonical term, for the monomial of a canonical term.
+    pub(super) fn term(coeff: Q, monomial: &[Expr]) -> Expr {
+        Expr::product_of_sorted(coeff, monomial.to_vec())
     }
 
     /// `self^exponent`, or an error for `0` to a negative power.
@@ -379,11 +434,6 @@ impl Expr {
             Repr::Func(..) => 5,
         }
     }
-}
-
-/// `coeff · rest` as a canonical term.
-fn term_from(coeff: Q, rest: &[Expr]) -> Expr {
-    Expr::mul_all(std::iter::once(Expr::num(coeff)).chain(rest.iter().cloned()))
 }
 
 /// `base^exponent` in canonical form; a numeric power too large to fold, or `0` to a

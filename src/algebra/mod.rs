@@ -12,6 +12,7 @@ mod eval;
 mod expand;
 mod expr;
 mod function;
+mod merge;
 mod ops;
 mod rational;
 mod subs;

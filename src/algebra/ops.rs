@@ -5,6 +5,7 @@
 //! from users goes through [`Expr::checked_div`], which returns an error instead.
 
 use super::expr::Expr;
+use super::merge;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 impl Add<&Expr> for &Expr {
@@ -16,7 +17,7 @@ impl Add<&Expr> for &Expr {
         if rhs.is_zero() {
             return self.clone();
         }
-        Expr::add_all([self.clone(), rhs.clone()])
+        merge::sum(self, rhs)
     }
 }
 
@@ -29,14 +30,14 @@ impl Mul<&Expr> for &Expr {
         if rhs.is_one() {
             return self.clone();
         }
-        Expr::mul_all([self.clone(), rhs.clone()])
+        merge::product(self, rhs)
     }
 }
 
 impl Neg for &Expr {
     type Output = Expr;
     fn neg(self) -> Expr {
-        Expr::mul_all([Expr::int(-1), self.clone()])
+        merge::product(&Expr::int(-1), self)
     }
 }
 

@@ -27,6 +27,7 @@
 //! assert_eq!(Symbol::new("w1"), Symbol::new("w_1"));
 //! ```
 
+use std::cell::RefCell;
 use std::collections::HashMap;
 use std::fmt;
 use std::hash::{Hash, Hasher};
@@ -54,6 +55,9 @@ pub enum Role {
 #[derive(Debug)]
 pub struct SymbolData {
     name: Box<str>,
+    /// The first eight bytes of `name`, big-endian and zero-padded: comparing these orders
+    /// most pairs of names without reading the strings.
+    name_prefix: u64,
     base: Box<str>,
     barred: bool,
     dots: u8,
@@ -77,11 +81,29 @@ fn interner() -> &'static Mutex<HashMap<Box<str>, &'static SymbolData>> {
     INTERNER.get_or_init(|| Mutex::new(HashMap::new()))
 }
 
+thread_local! {
+    /// This thread's copy of the names it has looked up, in front of the shared interner,
+    /// so that a repeated `Symbol::new` takes no lock.
+    static LOOKED_UP: RefCell<HashMap<Box<str>, Symbol>> = RefCell::new(HashMap::new());
+}
+
 impl Symbol {
     /// The symbol with this ASCII name (see the module documentation for the convention).
     /// The caller guarantees the name is well formed: an ASCII letter followed by letters,
     /// digits, `_` and `'` (the parser checks this for user input).
     pub fn new(name: &str) -> Symbol {
+        LOOKED_UP.with(|cache| {
+            if let Some(&symbol) = cache.borrow().get(name) {
+                return symbol;
+            }
+            let symbol = Symbol::intern(name);
+            cache.borrow_mut().insert(name.into(), symbol);
+            symbol
+        })
+    }
+
+    /// The symbol with this name from the process-wide interner, created on first use.
+    fn intern(name: &str) -> Symbol {
         let mut map = interner()
             .lock()
             .unwrap_or_else(|poisoned| poisoned.into_inner());
@@ -203,8 +225,10 @@ impl SymbolData {
         }
         let role = classify(head, barred, dots, &subscript);
         let latex = latex_of(head, barred, dots, &subscript);
+        let name = compose_name(head, barred, dots, &subscript);
         SymbolData {
-            name: compose_name(head, barred, dots, &subscript).into(),
+            name_prefix: name_prefix(&name),
+            name: name.into(),
             base: head.into(),
             barred,
             dots,
@@ -213,6 +237,16 @@ impl SymbolData {
             latex: latex.into(),
         }
     }
+}
+
+/// The first eight bytes of a name as a big-endian integer, zero-padded: for names without
+/// NUL bytes, `name_prefix(a) < name_prefix(b)` implies `a < b`, and equal prefixes of
+/// distinct names leave the order to the full strings.
+fn name_prefix(name: &str) -> u64 {
+    let mut bytes = [0u8; 8];
+    let n = name.len().min(8);
+    bytes[..n].copy_from_slice(&name.as_bytes()[..n]);
+    u64::from_be_bytes(bytes)
 }
 
 fn is_axis_subscript(subscript: &str) -> bool {
@@ -286,7 +320,10 @@ impl Ord for Symbol {
         if self == other {
             std::cmp::Ordering::Equal
         } else {
-            self.0.name.cmp(&other.0.name)
+            self.0
+                .name_prefix
+                .cmp(&other.0.name_prefix)
+                .then_with(|| self.0.name.cmp(&other.0.name))
         }
     }
 }
@@ -344,5 +381,41 @@ mod tests {
         assert_eq!(w.dot(), Symbol::new("wdot_1"));
         assert_eq!(w.dot().dot(), Symbol::new("wddot1"));
         assert!(!Symbol::new("L").is_time_dependent());
+    }
+
+    #[test]
+    fn order_is_the_order_of_names() {
+        let names = [
+            "I",
+            "I_x",
+            "I_xy",
+            "I_xz",
+            "I_y",
+            "alpha",
+            "alphadot",
+            "w",
+            "w_x",
+            "w_y",
+            "wdot_x",
+            "wdot_xy",
+            "wdot_xz",
+            "thetaddot_x'",
+            "a",
+        ];
+        for a in names {
+            for b in names {
+                let (sa, sb) = (Symbol::new(a), Symbol::new(b));
+                assert_eq!(sa.cmp(&sb), sa.name().cmp(sb.name()), "{a} vs {b}");
+            }
+        }
+    }
+
+    #[test]
+    fn other_threads_get_the_same_symbols() {
+        let here = Symbol::new("omega_thread");
+        let there = std::thread::spawn(|| Symbol::new("omega_thread"))
+            .join()
+            .expect("thread ran");
+        assert_eq!(here, there);
     }
 }

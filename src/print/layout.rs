@@ -21,7 +21,6 @@
 
 use crate::algebra::{Expr, Func, Role, Symbol, View, Q};
 use std::cmp::Ordering;
-use std::collections::HashMap;
 
 /// A node of the presented form. Numbers and coefficients here are never negative: signs
 /// live on the terms of a [`Layout::Sum`].
@@ -79,29 +78,51 @@ pub fn present(e: &Expr, axis: Axis) -> (bool, Layout) {
     }
 }
 
+/// The terms of a sum that share one kinematic part (rule 1).
+struct Group<'a> {
+    /// The kinematic factors, in canonical order.
+    kinematic: Vec<Expr>,
+    /// The first term with this kinematic part, and the coefficient of each term.
+    first: &'a Expr,
+    coefficients: Vec<Expr>,
+    /// The ordering key of the kinematic part (rule 2).
+    key: KinematicKey,
+}
+
 fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
-    // (kinematic factors, coefficient terms), found through an index by kinematic part.
-    let mut groups: Vec<(Vec<Expr>, Vec<Expr>)> = Vec::new();
-    let mut index: HashMap<Vec<Expr>, usize> = HashMap::new();
+    let mut groups: Vec<Group> = Vec::new();
     for term in e.terms() {
-        let (kinematic, coefficient): (Vec<Expr>, Vec<Expr>) = term
+        let kinematic: Vec<Expr> = term
             .factors()
             .iter()
+            .filter(|f| is_kinematic_factor(f))
             .cloned()
-            .partition(is_kinematic_factor);
-        let coefficient = Expr::mul_all(coefficient);
-        match index.get(&kinematic) {
-            Some(&at) => groups[at].1.push(coefficient),
-            None => {
-                index.insert(kinematic.clone(), groups.len());
-                groups.push((kinematic, vec![coefficient]));
-            }
+            .collect();
+        let coefficient = term.without_factors(is_kinematic_factor);
+        match groups.iter_mut().find(|g| g.kinematic == kinematic) {
+            Some(group) => group.coefficients.push(coefficient),
+            None => groups.push(Group {
+                key: kinematic_key(&kinematic),
+                kinematic,
+                first: term,
+                coefficients: vec![coefficient],
+            }),
         }
     }
-    groups.sort_by(|a, b| compare_kinematic(&a.0, &b.0));
+    groups.sort_by(|a, b| {
+        a.key.cmp(&b.key).then_with(|| {
+            Expr::mul_all(a.kinematic.iter().cloned())
+                .cmp(&Expr::mul_all(b.kinematic.iter().cloned()))
+        })
+    });
     let mut terms: Vec<(bool, Layout)> = Vec::new();
-    for (kinematic, coefficients) in groups {
-        let coefficient = Expr::add_all(coefficients);
+    for group in groups {
+        let kinematic = group.kinematic;
+        let one_term = group.coefficients.len() == 1;
+        let coefficient = match <[Expr; 1]>::try_from(group.coefficients) {
+            Ok([only]) => only,
+            Err(several) => Expr::add_all(several),
+        };
         if coefficient.is_zero() {
             continue;
         }
@@ -111,8 +132,13 @@ fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
             plain.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
             terms.extend(plain.iter().map(|t| present_term(t, axis)));
         } else if coefficient.terms().len() == 1 {
-            let factors = coefficient.factors().iter().cloned().chain(kinematic);
-            terms.push(present_term(&Expr::mul_all(factors), axis));
+            if one_term {
+                // The coefficient times the kinematic part is the term itself.
+                terms.push(present_term(group.first, axis));
+            } else {
+                let factors = coefficient.factors().iter().cloned().chain(kinematic);
+                terms.push(present_term(&Expr::mul_all(factors), axis));
+            }
         } else {
             terms.push(present_group(&coefficient, &kinematic, axis));
         }
@@ -238,7 +264,7 @@ fn present_term(e: &Expr, axis: Axis) -> (bool, Layout) {
     let mut denominator: Vec<Layout> = Vec::new();
     let mut ordered: Vec<&Expr> = factors.iter().collect();
     ordered.sort_by(|a, b| compare_factors(a, b));
-    ordered = cyclic_pair_order(ordered);
+    cyclic_pair_order(&mut ordered);
     for f in ordered {
         let (base, exponent) = f.base_and_exponent();
         match exponent.as_num() {
@@ -303,8 +329,7 @@ fn present_signed_inline(e: &Expr, axis: Axis) -> Layout {
 }
 
 fn is_kinematic_factor(f: &Expr) -> bool {
-    let (base, _) = f.base_and_exponent();
-    match base.view() {
+    match f.base().view() {
         View::Sym(s) => matches!(s.role(), Role::Kinematic | Role::UnitVector),
         View::Func(_, arg) => arg.symbols().iter().any(|s| s.role() == Role::Kinematic),
         _ => false,
@@ -338,8 +363,7 @@ fn symbol_place(s: Symbol) -> u8 {
 }
 
 fn expr_place(e: &Expr) -> u8 {
-    let (base, _) = e.base_and_exponent();
-    match base.view() {
+    match e.base().view() {
         View::Num(_) => 0,
         View::Sym(s) => symbol_place(s),
         View::Func(_, arg) if arg.symbols().iter().any(|s| s.role() == Role::Kinematic) => 8,
@@ -363,10 +387,7 @@ fn family(s: Symbol) -> u8 {
 
 fn compare_factors(a: &Expr, b: &Expr) -> Ordering {
     expr_place(a).cmp(&expr_place(b)).then_with(|| {
-        let (sa, sb) = (
-            a.base_and_exponent().0.as_symbol(),
-            b.base_and_exponent().0.as_symbol(),
-        );
+        let (sa, sb) = (a.base().as_symbol(), b.base().as_symbol());
         match (sa, sb) {
             (Some(x), Some(y)) if x.role() == Role::Kinematic && y.role() == Role::Kinematic => {
                 family(x)
@@ -386,71 +407,75 @@ fn compare_factors(a: &Expr, b: &Expr) -> Ordering {
 }
 
 /// Two kinematic factors on the axes z and x are written `ω_z ω_x` (cyclic order zx).
-fn cyclic_pair_order(mut factors: Vec<&Expr>) -> Vec<&Expr> {
-    let kinematic: Vec<usize> = (0..factors.len())
-        .filter(|&i| expr_place(factors[i]) == 8)
-        .collect();
-    if let [i, j] = kinematic[..] {
-        let axes = |k: usize| {
-            factors[k]
-                .base_and_exponent()
-                .0
-                .as_symbol()
-                .and_then(axis_of)
-        };
-        if axes(i) == Some(0) && axes(j) == Some(2) {
+fn cyclic_pair_order(factors: &mut [&Expr]) {
+    let (first, second, third) = {
+        let mut kinematic = (0..factors.len()).filter(|&i| expr_place(factors[i]) == 8);
+        (kinematic.next(), kinematic.next(), kinematic.next())
+    };
+    if let (Some(i), Some(j), None) = (first, second, third) {
+        let axis = |k: usize| factors[k].base().as_symbol().and_then(axis_of);
+        if axis(i) == Some(0) && axis(j) == Some(2) {
             factors.swap(i, j);
         }
     }
-    factors
 }
 
-/// Ordering key of a kinematic monomial (rule 2).
-fn kinematic_key(factors: &[Expr]) -> (u8, u8, usize, usize) {
-    let symbols: Vec<Symbol> = factors
-        .iter()
-        .flat_map(|f| f.base_and_exponent().0.symbols())
-        .filter(|s| s.role() == Role::Kinematic)
-        .collect();
-    if symbols.is_empty() {
+/// Ordering key of a kinematic monomial (rule 2): terms free of kinematic symbols, then
+/// accelerations before velocities, the family (translational first), the number of
+/// kinematic symbols, and the axis or the cyclic pair of axes.
+type KinematicKey = (u8, u8, usize, usize);
+
+fn kinematic_key(factors: &[Expr]) -> KinematicKey {
+    let mut count = 0usize;
+    let mut acceleration = false;
+    let mut lowest_family = 2u8;
+    // Bit k is set when a symbol on axis k occurs.
+    let mut axes = 0u8;
+    let mut visit = |s: Symbol| {
+        if s.role() == Role::Kinematic {
+            count += 1;
+            acceleration |= s.is_acceleration();
+            lowest_family = lowest_family.min(family(s));
+            if let Some(k) = axis_of(s) {
+                axes |= 1 << k;
+            }
+        }
+    };
+    for f in factors {
+        match f.base().as_symbol() {
+            Some(s) => visit(s),
+            None => f.base().symbols().into_iter().for_each(&mut visit),
+        }
+    }
+    if count == 0 {
         return (0, 0, 0, 0);
     }
-    let class = if symbols.iter().any(|s| s.is_acceleration()) {
-        1
-    } else {
-        2
-    };
-    let fam = symbols.iter().map(|s| family(*s)).min().unwrap_or(2);
-    let mut axes: Vec<usize> = symbols.iter().filter_map(|s| axis_of(*s)).collect();
-    axes.sort_unstable();
-    axes.dedup();
-    let axis_rank = match axes[..] {
-        [a] => a,
-        [0, 1] => 0,
-        [1, 2] => 1,
-        [0, 2] => 2,
+    let class = if acceleration { 1 } else { 2 };
+    let axis_rank = match axes {
+        0b001 | 0b011 => 0,
+        0b010 | 0b110 => 1,
+        0b100 | 0b101 => 2,
         _ => 3,
     };
-    (class, fam, symbols.len().min(factors.len()), axis_rank)
-}
-
-fn compare_kinematic(a: &[Expr], b: &[Expr]) -> Ordering {
-    kinematic_key(a).cmp(&kinematic_key(b)).then_with(|| {
-        crate::algebra::Expr::mul_all(a.iter().cloned()).cmp(&Expr::mul_all(b.iter().cloned()))
-    })
+    (class, lowest_family, count.min(factors.len()), axis_rank)
 }
 
 /// Ordering key of an inertia symbol for the equation about `axis` (rule 3).
 fn inertia_key(s: Symbol, axis: Axis) -> (u8, usize, Symbol) {
     let a = axis.index();
-    let sub: Vec<usize> = s
-        .subscript()
-        .chars()
-        .filter_map(|c| Axis::from_subscript(&c.to_string()).map(Axis::index))
-        .collect();
-    match sub[..] {
-        [k] if s.subscript().len() == 1 => (0, (k + 3 - a) % 3, s),
-        [p, q] => {
+    let subscript = s.subscript();
+    // The axes the subscript names, in order: the first two and how many.
+    let mut named = [0usize; 2];
+    let mut count = 0;
+    for k in subscript.chars().filter_map(axis_of_letter) {
+        if let Some(slot) = named.get_mut(count) {
+            *slot = k;
+        }
+        count += 1;
+    }
+    match (count, named) {
+        (1, [k, _]) if subscript.len() == 1 => (0, (k + 3 - a) % 3, s),
+        (2, [p, q]) => {
             let pair = match (p.min(q), p.max(q)) {
                 (0, 1) => 0,
                 (1, 2) => 1,
@@ -462,12 +487,21 @@ fn inertia_key(s: Symbol, axis: Axis) -> (u8, usize, Symbol) {
     }
 }
 
+/// The axis index of one subscript letter: `x` or `X` is 0, `y` 1, `z` 2.
+fn axis_of_letter(c: char) -> Option<usize> {
+    match c {
+        'x' | 'X' => Some(0),
+        'y' | 'Y' => Some(1),
+        'z' | 'Z' => Some(2),
+        _ => None,
+    }
+}
+
 fn compare_coefficient_terms(a: &Expr, b: &Expr, axis: Axis) -> Ordering {
     let key = |e: &Expr| {
-        e.coeff_and_factors()
-            .1
+        e.monomial()
             .iter()
-            .filter_map(|f| f.base_and_exponent().0.as_symbol())
+            .filter_map(|f| f.base().as_symbol())
             .filter(|s| s.role() == Role::Inertia)
             .map(|s| inertia_key(s, axis))
             .min()
@@ -476,7 +510,7 @@ fn compare_coefficient_terms(a: &Expr, b: &Expr, axis: Axis) -> Ordering {
         (Some(x), Some(y)) => x.cmp(&y),
         (Some(_), None) => Ordering::Less,
         (None, Some(_)) => Ordering::Greater,
-        (None, None) => compare_lexicographic(a.coeff_and_factors().1, b.coeff_and_factors().1),
+        (None, None) => compare_lexicographic(a.monomial(), b.monomial()),
     }
 }
 

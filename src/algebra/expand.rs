@@ -20,6 +20,9 @@ impl Expr {
     /// assert!((&a + &b).powi(99_999_999).expand().is_err());
     /// ```
     pub fn expand(&self) -> Result<Expr, AlgebraError> {
+        if is_expanded(self) {
+            return Ok(self.clone());
+        }
         match self.view() {
             View::Num(_) | View::Sym(_) => Ok(self.clone()),
             View::Add(terms) => {
@@ -61,6 +64,31 @@ impl Expr {
             }
             View::Func(f, arg) => Ok(Expr::func(f, arg.expand()?)),
         }
+    }
+}
+
+/// Whether `e` is a sum of monomials in symbols (or a single one), which expands to itself.
+fn is_expanded(e: &Expr) -> bool {
+    match e.view() {
+        View::Add(terms) => terms.iter().all(is_expanded_monomial),
+        _ => is_expanded_monomial(e),
+    }
+}
+
+/// A number, or a product of a number and numeric powers of symbols.
+fn is_expanded_monomial(e: &Expr) -> bool {
+    match e.view() {
+        View::Mul(factors) => factors.iter().all(is_power_of_symbol),
+        _ => is_power_of_symbol(e),
+    }
+}
+
+/// A number, a symbol, or a symbol to a numeric power.
+fn is_power_of_symbol(e: &Expr) -> bool {
+    match e.view() {
+        View::Num(_) | View::Sym(_) => true,
+        View::Pow(base, exponent) => base.as_symbol().is_some() && exponent.as_num().is_some(),
+        _ => false,
     }
 }
 

@@ -27,6 +27,7 @@ use super::error::AlgebraError;
 use super::function::Func;
 use super::rational::Q;
 use super::symbol::Symbol;
+use std::borrow::Borrow;
 use std::cmp::Ordering;
 use std::hash::{Hash, Hasher};
 use std::sync::Arc;
@@ -159,13 +160,8 @@ impl Expr {
     /// kept: `-2 I_xy w_x w_y` without its kinematic factors is `-2 I_xy`. Equal to
     /// [`Expr::mul_all`] of the remaining factors, without sorting them again.
     pub fn without_factors(&self, drop: impl Fn(&Expr) -> bool) -> Expr {
-        let kept = self
-            .monomial()
-            .iter()
-            .filter(|f| !drop(f))
-            .cloned()
-            .collect();
-        Expr::product_of_sorted(self.coefficient().clone(), kept)
+        let kept: Vec<&Expr> = self.monomial().iter().filter(|f| !drop(f)).collect();
+        Expr::product_of_sorted(self.coefficient().clone(), &kept)
     }
 
     /// The terms of a sum, or the expression itself as a single term.
@@ -237,7 +233,7 @@ impl Expr {
                 Some(c) => out.push(Expr::term(c, first.monomial())),
             }
         }
-        Expr::sum_of_sorted(out)
+        Expr::sum_of_sorted(&out)
     }
 
     /// The canonical product of the given factors.
@@ -296,20 +292,21 @@ impl Expr {
             out.push(Expr::num(coeff));
             return Expr::mul_all(out);
         }
-        Expr::product_of_sorted(coeff, out)
+        Expr::product_of_sorted(coeff, &out)
     }
 
     /// `coeff · factors` in canonical form, for factors in canonical order with distinct
     /// bases, none of them a number or a product.
-    pub(super) fn product_of_sorted(coeff: Q, mut factors: Vec<Expr>) -> Expr {
+    pub(super) fn product_of_sorted<F: Borrow<Expr>>(coeff: Q, factors: &[F]) -> Expr {
         if coeff.is_zero() {
             return Expr::zero();
         }
-        match factors.pop() {
-            None => Expr::num(coeff),
-            Some(only) if factors.is_empty() => {
+        match factors {
+            [] => Expr::num(coeff),
+            [only] => {
+                let only = only.borrow();
                 if coeff.is_one() {
-                    return only;
+                    return only.clone();
                 }
                 if let Repr::Add(terms) = &only.0 {
                     // A number times a sum is distributed, so that sums cancel as wholes.
@@ -317,32 +314,34 @@ impl Expr {
                     let c = Expr::num(coeff);
                     return Expr(Repr::Add(terms.iter().map(|t| &c * t).collect()));
                 }
-                Expr(Repr::Mul(Arc::new([Expr::num(coeff), only])))
+                Expr(Repr::Mul(Arc::new([Expr::num(coeff), only.clone()])))
             }
-            Some(last) => {
-                factors.push(last);
+            _ => {
+                let rest = factors.iter().map(|f| f.borrow().clone());
                 if coeff.is_one() {
-                    Expr(Repr::Mul(factors.into()))
+                    Expr(Repr::Mul(rest.collect()))
                 } else {
                     let c = std::iter::once(Expr::num(coeff));
-                    Expr(Repr::Mul(c.chain(factors).collect()))
+                    Expr(Repr::Mul(c.chain(rest).collect()))
                 }
             }
         }
     }
 
     /// The canonical sum of terms in canonical order with distinct monomials, none zero.
-    pub(super) fn sum_of_sorted(mut terms: Vec<Expr>) -> Expr {
-        match terms.len() {
-            0 => Expr::zero(),
-            1 => terms.pop().unwrap_or_else(Expr::zero),
-            _ => Expr(Repr::Add(terms.into())),
+    pub(super) fn sum_of_sorted<T: Borrow<Expr>>(terms: &[T]) -> Expr {
+        match terms {
+            [] => Expr::zero(),
+            [only] => only.borrow().clone(),
+            _ => Expr(Repr::Add(
+                terms.iter().map(|t| t.borrow().clone()).collect(),
+            )),
         }
     }
 
     /// `coeff · monomial` as a canonical term, for the monomial of a canonical term.
     pub(super) fn term(coeff: Q, monomial: &[Expr]) -> Expr {
-        Expr::product_of_sorted(coeff, monomial.to_vec())
+        Expr::product_of_sorted(coeff, monomial)
     }
 
     /// `self^exponent`, or an error for `0` to a negative power.

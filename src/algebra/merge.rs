@@ -9,41 +9,44 @@
 
 use super::expr::{cmp_slices, Expr};
 use super::rational::Q;
+use std::borrow::Cow;
 use std::cmp::Ordering;
 
 /// The canonical sum `a + b`.
 pub(super) fn sum(a: &Expr, b: &Expr) -> Expr {
     let (ca, ta) = split_constant(a.terms());
     let (cb, tb) = split_constant(b.terms());
-    let mut out: Vec<Expr> = Vec::with_capacity(ta.len() + tb.len() + 1);
+    let mut out = Operands::new(a);
     let constant = ca + cb;
     if !constant.is_zero() {
-        out.push(Expr::num(constant));
+        out.push(Cow::Owned(Expr::num(constant)));
     }
     let (mut i, mut j) = (0, 0);
     while i < ta.len() && j < tb.len() {
         match cmp_slices(ta[i].monomial(), tb[j].monomial()) {
             Ordering::Less => {
-                out.push(ta[i].clone());
+                out.push(Cow::Borrowed(&ta[i]));
                 i += 1;
             }
             Ordering::Greater => {
-                out.push(tb[j].clone());
+                out.push(Cow::Borrowed(&tb[j]));
                 j += 1;
             }
             Ordering::Equal => {
                 let coeff = ta[i].coefficient() + tb[j].coefficient();
                 if !coeff.is_zero() {
-                    out.push(Expr::term(coeff, ta[i].monomial()));
+                    out.push(Cow::Owned(Expr::term(coeff, ta[i].monomial())));
                 }
                 i += 1;
                 j += 1;
             }
         }
     }
-    out.extend_from_slice(&ta[i..]);
-    out.extend_from_slice(&tb[j..]);
-    Expr::sum_of_sorted(out)
+    ta[i..]
+        .iter()
+        .chain(&tb[j..])
+        .for_each(|t| out.push(Cow::Borrowed(t)));
+    Expr::sum_of_sorted(out.as_slice())
 }
 
 /// The constant of a list of terms (at most one, first) and the other terms.
@@ -61,21 +64,21 @@ pub(super) fn product(a: &Expr, b: &Expr) -> Expr {
         return Expr::zero();
     }
     let (fa, fb) = (a.monomial(), b.monomial());
-    let mut out: Vec<Expr> = Vec::with_capacity(fa.len() + fb.len());
+    let mut out = Operands::new(a);
     let (mut i, mut j) = (0, 0);
     while i < fa.len() && j < fb.len() {
         match fa[i].base().cmp(fb[j].base()) {
             Ordering::Less => {
-                out.push(fa[i].clone());
+                out.push(Cow::Borrowed(&fa[i]));
                 i += 1;
             }
             Ordering::Greater => {
-                out.push(fb[j].clone());
+                out.push(Cow::Borrowed(&fb[j]));
                 j += 1;
             }
             Ordering::Equal => {
                 match symbol_power_product(&fa[i], &fb[j]) {
-                    Some(Some(power)) => out.push(power),
+                    Some(Some(power)) => out.push(Cow::Owned(power)),
                     Some(None) => {}
                     None => return Expr::mul_all([a.clone(), b.clone()]),
                 }
@@ -84,9 +87,53 @@ pub(super) fn product(a: &Expr, b: &Expr) -> Expr {
             }
         }
     }
-    out.extend_from_slice(&fa[i..]);
-    out.extend_from_slice(&fb[j..]);
-    Expr::product_of_sorted(coeff, out)
+    fa[i..]
+        .iter()
+        .chain(&fb[j..])
+        .for_each(|f| out.push(Cow::Borrowed(f)));
+    Expr::product_of_sorted(coeff, out.as_slice())
+}
+
+/// How many operands [`Operands`] holds without allocating.
+const INLINE: usize = 12;
+
+/// The operands of a new sum or product while they are merged: on the stack while there
+/// are few, so that building the node allocates only the node itself.
+struct Operands<'a> {
+    inline: [Cow<'a, Expr>; INLINE],
+    len: usize,
+    spilled: Vec<Cow<'a, Expr>>,
+}
+
+impl<'a> Operands<'a> {
+    /// An empty list; `filler` only occupies the unused inline slots.
+    fn new(filler: &'a Expr) -> Operands<'a> {
+        Operands {
+            inline: std::array::from_fn(|_| Cow::Borrowed(filler)),
+            len: 0,
+            spilled: Vec::new(),
+        }
+    }
+
+    fn push(&mut self, operand: Cow<'a, Expr>) {
+        if self.len < INLINE {
+            self.inline[self.len] = operand;
+            self.len += 1;
+        } else {
+            if self.spilled.is_empty() {
+                self.spilled.extend(self.inline.iter().cloned());
+            }
+            self.spilled.push(operand);
+        }
+    }
+
+    fn as_slice(&self) -> &[Cow<'a, Expr>] {
+        if self.spilled.is_empty() {
+            &self.inline[..self.len]
+        } else {
+            &self.spilled
+        }
+    }
 }
 
 /// `s^p · s^q` for a symbol `s` and numbers `p`, `q`: `Some(None)` when the powers cancel,
@@ -128,6 +175,19 @@ mod tests {
                 inner.prop_map(|a| crate::algebra::Func::Sin.apply(a)),
             ]
         })
+    }
+
+    #[test]
+    fn long_merges_spill_to_the_heap() {
+        let powers = |name: &str| Expr::add_all((1..=10).map(|n| Expr::symbol(name).powi(n)));
+        let (a, b) = (powers("x"), powers("y"));
+        assert_eq!(sum(&a, &b), Expr::add_all([a.clone(), b.clone()]));
+        assert_eq!(sum(&a, &b).terms().len(), 20);
+        let monomial = |names: &[&str]| Expr::mul_all(names.iter().map(|n| Expr::symbol(n)));
+        let p = monomial(&["a", "c", "e", "g", "i", "k", "m"]);
+        let q = monomial(&["b", "d", "f", "h", "j", "l", "n"]);
+        assert_eq!(product(&p, &q), Expr::mul_all([p.clone(), q.clone()]));
+        assert_eq!(product(&p, &q).factors().len(), 14);
     }
 
     proptest! {

@@ -80,65 +80,75 @@ pub fn present(e: &Expr, axis: Axis) -> (bool, Layout) {
 
 /// The terms of a sum that share one kinematic part (rule 1).
 struct Group<'a> {
-    /// The kinematic factors, in canonical order.
-    kinematic: Vec<Expr>,
-    /// The first term with this kinematic part, and the coefficient of each term.
+    /// The first term with this kinematic part, and any others.
     first: &'a Expr,
-    coefficients: Vec<Expr>,
+    others: Vec<&'a Expr>,
     /// The ordering key of the kinematic part (rule 2).
     key: KinematicKey,
+}
+
+/// The kinematic factors of a term, in canonical order.
+fn kinematic_part(term: &Expr) -> impl Iterator<Item = &Expr> + Clone {
+    term.factors().iter().filter(|f| is_kinematic_factor(f))
+}
+
+/// The coefficient of a term: the product of its other factors, number included.
+fn coefficient_of(term: &Expr) -> Expr {
+    term.without_factors(is_kinematic_factor)
+}
+
+/// Whether the coefficient of a term is a sum (a single non-kinematic factor that is a sum).
+fn has_sum_coefficient(term: &Expr) -> bool {
+    let mut rest = term.monomial().iter().filter(|f| !is_kinematic_factor(f));
+    matches!(
+        (rest.next().map(Expr::view), rest.next()),
+        (Some(View::Add(_)), None)
+    )
 }
 
 fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
     let mut groups: Vec<Group> = Vec::new();
     for term in e.terms() {
-        let kinematic: Vec<Expr> = term
-            .factors()
-            .iter()
-            .filter(|f| is_kinematic_factor(f))
-            .cloned()
-            .collect();
-        let coefficient = term.without_factors(is_kinematic_factor);
-        match groups.iter_mut().find(|g| g.kinematic == kinematic) {
-            Some(group) => group.coefficients.push(coefficient),
+        let kinematic = kinematic_part(term);
+        match groups
+            .iter_mut()
+            .find(|g| kinematic_part(g.first).eq(kinematic.clone()))
+        {
+            Some(group) => group.others.push(term),
             None => groups.push(Group {
-                key: kinematic_key(&kinematic),
-                kinematic,
                 first: term,
-                coefficients: vec![coefficient],
+                others: Vec::new(),
+                key: kinematic_key(kinematic),
             }),
         }
     }
     groups.sort_by(|a, b| {
         a.key.cmp(&b.key).then_with(|| {
-            Expr::mul_all(a.kinematic.iter().cloned())
-                .cmp(&Expr::mul_all(b.kinematic.iter().cloned()))
+            Expr::mul_all(kinematic_part(a.first).cloned())
+                .cmp(&Expr::mul_all(kinematic_part(b.first).cloned()))
         })
     });
-    let mut terms: Vec<(bool, Layout)> = Vec::new();
+    let mut terms: Vec<(bool, Layout)> = Vec::with_capacity(groups.len());
     for group in groups {
-        let kinematic = group.kinematic;
-        let one_term = group.coefficients.len() == 1;
-        let coefficient = match <[Expr; 1]>::try_from(group.coefficients) {
-            Ok([only]) => only,
-            Err(several) => Expr::add_all(several),
-        };
+        if group.others.is_empty() && !has_sum_coefficient(group.first) {
+            // A coefficient of one term times the kinematic part is the term itself.
+            terms.push(present_term(group.first, axis));
+            continue;
+        }
+        let members = std::iter::once(group.first).chain(group.others);
+        let coefficient = Expr::add_all(members.map(coefficient_of));
         if coefficient.is_zero() {
             continue;
         }
+        let kinematic: Vec<Expr> = kinematic_part(group.first).cloned().collect();
         if kinematic.is_empty() && coefficient.terms().len() > 1 {
             // No kinematic part to collect by: the terms stand on their own.
             let mut plain = coefficient.terms().to_vec();
             plain.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
             terms.extend(plain.iter().map(|t| present_term(t, axis)));
         } else if coefficient.terms().len() == 1 {
-            if one_term {
-                // The coefficient times the kinematic part is the term itself.
-                terms.push(present_term(group.first, axis));
-            } else {
-                let factors = coefficient.factors().iter().cloned().chain(kinematic);
-                terms.push(present_term(&Expr::mul_all(factors), axis));
-            }
+            let factors = coefficient.factors().iter().cloned().chain(kinematic);
+            terms.push(present_term(&Expr::mul_all(factors), axis));
         } else {
             terms.push(present_group(&coefficient, &kinematic, axis));
         }
@@ -425,7 +435,8 @@ fn cyclic_pair_order(factors: &mut [&Expr]) {
 /// kinematic symbols, and the axis or the cyclic pair of axes.
 type KinematicKey = (u8, u8, usize, usize);
 
-fn kinematic_key(factors: &[Expr]) -> KinematicKey {
+fn kinematic_key<'a>(factors: impl Iterator<Item = &'a Expr>) -> KinematicKey {
+    let mut factor_count = 0usize;
     let mut count = 0usize;
     let mut acceleration = false;
     let mut lowest_family = 2u8;
@@ -442,6 +453,7 @@ fn kinematic_key(factors: &[Expr]) -> KinematicKey {
         }
     };
     for f in factors {
+        factor_count += 1;
         match f.base().as_symbol() {
             Some(s) => visit(s),
             None => f.base().symbols().into_iter().for_each(&mut visit),
@@ -457,7 +469,7 @@ fn kinematic_key(factors: &[Expr]) -> KinematicKey {
         0b100 | 0b101 => 2,
         _ => 3,
     };
-    (class, lowest_family, count.min(factors.len()), axis_rank)
+    (class, lowest_family, count.min(factor_count), axis_rank)
 }
 
 /// Ordering key of an inertia symbol for the equation about `axis` (rule 3).

@@ -9,44 +9,51 @@
 
 use super::expr::{cmp_slices, Expr};
 use super::rational::Q;
-use std::borrow::Cow;
 use std::cmp::Ordering;
+
+/// How many operands a merge gathers on the stack; longer merges use a vector.
+const INLINE: usize = 16;
 
 /// The canonical sum `a + b`.
 pub(super) fn sum(a: &Expr, b: &Expr) -> Expr {
     let (ca, ta) = split_constant(a.terms());
     let (cb, tb) = split_constant(b.terms());
-    let mut out = Operands::new(a);
+    if ca.is_zero() && cb.is_zero() && ta.len() + tb.len() <= INLINE {
+        let mut merged = [a; INLINE];
+        let by_monomial = |x: &Expr, y: &Expr| cmp_slices(x.monomial(), y.monomial());
+        if let Some(n) = merge_disjoint(ta, tb, &mut merged, by_monomial) {
+            return Expr::sum_of_sorted(&merged[..n]);
+        }
+    }
+    let mut out: Vec<Expr> = Vec::with_capacity(ta.len() + tb.len() + 1);
     let constant = ca + cb;
     if !constant.is_zero() {
-        out.push(Cow::Owned(Expr::num(constant)));
+        out.push(Expr::num(constant));
     }
     let (mut i, mut j) = (0, 0);
     while i < ta.len() && j < tb.len() {
         match cmp_slices(ta[i].monomial(), tb[j].monomial()) {
             Ordering::Less => {
-                out.push(Cow::Borrowed(&ta[i]));
+                out.push(ta[i].clone());
                 i += 1;
             }
             Ordering::Greater => {
-                out.push(Cow::Borrowed(&tb[j]));
+                out.push(tb[j].clone());
                 j += 1;
             }
             Ordering::Equal => {
                 let coeff = ta[i].coefficient() + tb[j].coefficient();
                 if !coeff.is_zero() {
-                    out.push(Cow::Owned(Expr::term(coeff, ta[i].monomial())));
+                    out.push(Expr::term(coeff, ta[i].monomial()));
                 }
                 i += 1;
                 j += 1;
             }
         }
     }
-    ta[i..]
-        .iter()
-        .chain(&tb[j..])
-        .for_each(|t| out.push(Cow::Borrowed(t)));
-    Expr::sum_of_sorted(out.as_slice())
+    out.extend_from_slice(&ta[i..]);
+    out.extend_from_slice(&tb[j..]);
+    Expr::sum_of_sorted(&out)
 }
 
 /// The constant of a list of terms (at most one, first) and the other terms.
@@ -64,21 +71,28 @@ pub(super) fn product(a: &Expr, b: &Expr) -> Expr {
         return Expr::zero();
     }
     let (fa, fb) = (a.monomial(), b.monomial());
-    let mut out = Operands::new(a);
+    if fa.len() + fb.len() <= INLINE {
+        let mut merged = [a; INLINE];
+        let by_base = |x: &Expr, y: &Expr| x.base().cmp(y.base());
+        if let Some(n) = merge_disjoint(fa, fb, &mut merged, by_base) {
+            return Expr::product_of_sorted(coeff, &merged[..n]);
+        }
+    }
+    let mut out: Vec<Expr> = Vec::with_capacity(fa.len() + fb.len());
     let (mut i, mut j) = (0, 0);
     while i < fa.len() && j < fb.len() {
         match fa[i].base().cmp(fb[j].base()) {
             Ordering::Less => {
-                out.push(Cow::Borrowed(&fa[i]));
+                out.push(fa[i].clone());
                 i += 1;
             }
             Ordering::Greater => {
-                out.push(Cow::Borrowed(&fb[j]));
+                out.push(fb[j].clone());
                 j += 1;
             }
             Ordering::Equal => {
                 match symbol_power_product(&fa[i], &fb[j]) {
-                    Some(Some(power)) => out.push(Cow::Owned(power)),
+                    Some(Some(power)) => out.push(power),
                     Some(None) => {}
                     None => return Expr::mul_all([a.clone(), b.clone()]),
                 }
@@ -87,53 +101,38 @@ pub(super) fn product(a: &Expr, b: &Expr) -> Expr {
             }
         }
     }
-    fa[i..]
-        .iter()
-        .chain(&fb[j..])
-        .for_each(|f| out.push(Cow::Borrowed(f)));
-    Expr::product_of_sorted(coeff, out.as_slice())
+    out.extend_from_slice(&fa[i..]);
+    out.extend_from_slice(&fb[j..]);
+    Expr::product_of_sorted(coeff, &out)
 }
 
-/// How many operands [`Operands`] holds without allocating.
-const INLINE: usize = 12;
-
-/// The operands of a new sum or product while they are merged: on the stack while there
-/// are few, so that building the node allocates only the node itself.
-struct Operands<'a> {
-    inline: [Cow<'a, Expr>; INLINE],
-    len: usize,
-    spilled: Vec<Cow<'a, Expr>>,
-}
-
-impl<'a> Operands<'a> {
-    /// An empty list; `filler` only occupies the unused inline slots.
-    fn new(filler: &'a Expr) -> Operands<'a> {
-        Operands {
-            inline: std::array::from_fn(|_| Cow::Borrowed(filler)),
-            len: 0,
-            spilled: Vec::new(),
-        }
-    }
-
-    fn push(&mut self, operand: Cow<'a, Expr>) {
-        if self.len < INLINE {
-            self.inline[self.len] = operand;
-            self.len += 1;
-        } else {
-            if self.spilled.is_empty() {
-                self.spilled.extend(self.inline.iter().cloned());
+/// Merges two lists, each strictly increasing in `order`, into `out` (long enough for
+/// both) when no element of one is equal in `order` to an element of the other: the
+/// merged length, or `None` at the first such pair.
+fn merge_disjoint<'a>(
+    a: &'a [Expr],
+    b: &'a [Expr],
+    out: &mut [&'a Expr],
+    order: impl Fn(&Expr, &Expr) -> Ordering,
+) -> Option<usize> {
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() && j < b.len() {
+        match order(&a[i], &b[j]) {
+            Ordering::Less => {
+                out[i + j] = &a[i];
+                i += 1;
             }
-            self.spilled.push(operand);
+            Ordering::Greater => {
+                out[i + j] = &b[j];
+                j += 1;
+            }
+            Ordering::Equal => return None,
         }
     }
-
-    fn as_slice(&self) -> &[Cow<'a, Expr>] {
-        if self.spilled.is_empty() {
-            &self.inline[..self.len]
-        } else {
-            &self.spilled
-        }
+    for (slot, x) in out[i + j..].iter_mut().zip(a[i..].iter().chain(&b[j..])) {
+        *slot = x;
     }
+    Some(a.len() + b.len())
 }
 
 /// `s^p · s^q` for a symbol `s` and numbers `p`, `q`: `Some(None)` when the powers cancel,

@@ -30,7 +30,7 @@
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::fmt;
-use std::hash::{Hash, Hasher};
+use std::hash::{BuildHasherDefault, Hash, Hasher};
 use std::sync::{Mutex, OnceLock};
 
 /// What a symbol stands for; decides factor order in print and time dependence.
@@ -84,7 +84,30 @@ fn interner() -> &'static Mutex<HashMap<Box<str>, &'static SymbolData>> {
 thread_local! {
     /// This thread's copy of the names it has looked up, in front of the shared interner,
     /// so that a repeated `Symbol::new` takes no lock.
-    static LOOKED_UP: RefCell<HashMap<Box<str>, Symbol>> = RefCell::new(HashMap::new());
+    static LOOKED_UP: RefCell<HashMap<Box<str>, Symbol, BuildHasherDefault<NameHasher>>> =
+        RefCell::new(HashMap::default());
+}
+
+/// FNV-1a, a hash that is quick on the few bytes of a symbol name (the names a thread
+/// looks up are its own, so resistance to chosen collisions is not needed here).
+struct NameHasher(u64);
+
+impl Default for NameHasher {
+    fn default() -> NameHasher {
+        NameHasher(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Hasher for NameHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+
+    fn finish(&self) -> u64 {
+        self.0
+    }
 }
 
 impl Symbol {

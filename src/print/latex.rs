@@ -8,7 +8,7 @@ use std::fmt::Write;
 
 /// Renders a signed layout.
 pub fn render(negative: bool, layout: &Layout) -> String {
-    let mut out = String::with_capacity(64);
+    let mut out = String::with_capacity(256);
     let grouped = negative && matches!(layout, Layout::Sum(_));
     if negative {
         out.push('-');

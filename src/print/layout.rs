@@ -107,18 +107,19 @@ fn has_sum_coefficient(term: &Expr) -> bool {
 }
 
 fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
-    let mut groups: Vec<Group> = Vec::new();
+    let mut groups: Vec<Group> = Vec::with_capacity(e.terms().len());
     for term in e.terms() {
         let kinematic = kinematic_part(term);
+        let key = kinematic_key(kinematic.clone());
         match groups
             .iter_mut()
-            .find(|g| kinematic_part(g.first).eq(kinematic.clone()))
+            .find(|g| g.key == key && kinematic_part(g.first).eq(kinematic.clone()))
         {
             Some(group) => group.others.push(term),
             None => groups.push(Group {
                 first: term,
                 others: Vec::new(),
-                key: kinematic_key(kinematic),
+                key,
             }),
         }
     }
@@ -267,22 +268,37 @@ fn power(base: &Expr, exponent: Q) -> Expr {
 
 /// A single term (no top-level sum) as a signed product.
 fn present_term(e: &Expr, axis: Axis) -> (bool, Layout) {
-    let (coefficient, factors) = e.coeff_and_factors();
-    let negative = coefficient.is_negative();
-    let coefficient = coefficient.abs();
+    let negative = e.coefficient().is_negative();
+    let coefficient = e.coefficient().abs();
+    let factors = e.monomial();
     let mut numerator: Vec<Layout> = Vec::new();
     let mut denominator: Vec<Layout> = Vec::new();
-    let mut ordered: Vec<&Expr> = factors.iter().collect();
+    // The factors in print order, on the stack unless there are many.
+    let mut inline: [&Expr; 8] = [e; 8];
+    let mut spilled: Vec<&Expr> = Vec::new();
+    let ordered: &mut [&Expr] = if factors.len() <= inline.len() {
+        inline
+            .iter_mut()
+            .zip(factors)
+            .for_each(|(slot, f)| *slot = f);
+        &mut inline[..factors.len()]
+    } else {
+        spilled.extend(factors);
+        &mut spilled
+    };
     ordered.sort_by(|a, b| compare_factors(a, b));
-    cyclic_pair_order(&mut ordered);
-    for f in ordered {
-        let (base, exponent) = f.base_and_exponent();
+    cyclic_pair_order(ordered);
+    for f in ordered.iter() {
+        let View::Pow(base, exponent) = f.view() else {
+            numerator.push(present_atom(f, axis));
+            continue;
+        };
         match exponent.as_num() {
             Some(q) if q.is_negative() => denominator.push(present_power(base, &q.abs(), axis)),
             Some(q) => numerator.push(present_power(base, q, axis)),
             None => numerator.push(Layout::Power(
                 Box::new(present_atom(base, axis)),
-                Box::new(present_signed_inline(&exponent, axis)),
+                Box::new(present_signed_inline(exponent, axis)),
             )),
         }
     }

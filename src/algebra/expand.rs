@@ -26,11 +26,11 @@ impl Expr {
         match self.view() {
             View::Num(_) | View::Sym(_) => Ok(self.clone()),
             View::Add(terms) => {
-                let expanded = terms
-                    .iter()
-                    .map(Expr::expand)
-                    .collect::<Result<Vec<_>, _>>()?;
-                Ok(Expr::add_all(expanded))
+                let mut expanded: Vec<Expr> = Vec::with_capacity(2 * terms.len());
+                for t in terms {
+                    expanded.extend_from_slice(t.expand()?.terms());
+                }
+                Ok(Expr::sum_of_terms(expanded))
             }
             View::Mul(factors) => {
                 let expanded = factors
@@ -103,7 +103,7 @@ fn multiply_out(a: &Expr, b: &Expr) -> Expr {
             products.push(x * y);
         }
     }
-    Expr::add_all(products)
+    Expr::sum_of_terms(products)
 }
 
 /// The number of monomials of degree `n` in `t` variables, C(t + n - 1, n), as a float

@@ -199,7 +199,8 @@ impl Expr {
 
     /// The canonical sum of the given terms.
     pub fn add_all<I: IntoIterator<Item = Expr>>(terms: I) -> Expr {
-        let mut flat: Vec<Expr> = Vec::new();
+        let terms = terms.into_iter();
+        let mut flat: Vec<Expr> = Vec::with_capacity(terms.size_hint().0);
         let mut constant = Q::ZERO;
         for t in terms {
             match &t.0 {
@@ -215,31 +216,62 @@ impl Expr {
                 _ => flat.push(t),
             }
         }
-        flat.sort_by(|a, b| cmp_slices(a.monomial(), b.monomial()));
-        let mut out: Vec<Expr> = Vec::with_capacity(flat.len() + 1);
+        Expr::sum_of_like_terms(constant, flat)
+    }
+
+    /// The canonical sum of terms that are not sums (numbers allowed), reusing the vector.
+    pub(super) fn sum_of_terms(mut terms: Vec<Expr>) -> Expr {
+        if terms.iter().any(|t| matches!(t.0, Repr::Add(_))) {
+            return Expr::add_all(terms);
+        }
+        let mut constant = Q::ZERO;
+        terms.retain(|t| match &t.0 {
+            Repr::Num(q) => {
+                constant = &constant + q;
+                false
+            }
+            _ => true,
+        });
+        Expr::sum_of_like_terms(constant, terms)
+    }
+
+    /// `constant + Σ terms` for terms that are neither numbers nor sums, in any order:
+    /// sorts them by monomial and combines like terms in place.
+    fn sum_of_like_terms(constant: Q, mut terms: Vec<Expr>) -> Expr {
+        terms.sort_by(|a, b| cmp_slices(a.monomial(), b.monomial()));
+        let mut kept = 0;
+        let mut i = 0;
+        while i < terms.len() {
+            let mut j = i + 1;
+            while j < terms.len() && terms[j].monomial() == terms[i].monomial() {
+                j += 1;
+            }
+            if j == i + 1 {
+                terms.swap(kept, i);
+                kept += 1;
+            } else {
+                let coeff = terms[i..j]
+                    .iter()
+                    .fold(Q::ZERO, |sum, t| &sum + t.coefficient());
+                if !coeff.is_zero() {
+                    terms[kept] = Expr::term(coeff, terms[i].monomial());
+                    kept += 1;
+                }
+            }
+            i = j;
+        }
+        terms.truncate(kept);
         if !constant.is_zero() {
-            out.push(Expr::num(constant));
+            terms.insert(0, Expr::num(constant));
         }
-        let mut flat = flat.into_iter().peekable();
-        while let Some(first) = flat.next() {
-            let mut coeff: Option<Q> = None;
-            while let Some(like) = flat.next_if(|t| t.monomial() == first.monomial()) {
-                let sum = coeff.as_ref().unwrap_or(first.coefficient());
-                coeff = Some(sum + like.coefficient());
-            }
-            match coeff {
-                None => out.push(first),
-                Some(c) if c.is_zero() => {}
-                Some(c) => out.push(Expr::term(c, first.monomial())),
-            }
-        }
-        Expr::sum_of_sorted(&out)
+        Expr::sum_of_sorted(&terms)
     }
 
     /// The canonical product of the given factors.
     pub fn mul_all<I: IntoIterator<Item = Expr>>(factors: I) -> Expr {
+        let factors = factors.into_iter();
         let mut coeff = Q::ONE;
-        let mut flat: Vec<Expr> = Vec::new();
+        let mut flat: Vec<Expr> = Vec::with_capacity(factors.size_hint().0);
         for f in factors {
             match &f.0 {
                 Repr::Num(q) => coeff = &coeff * q,

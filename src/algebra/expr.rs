@@ -397,6 +397,9 @@ impl Expr {
 
     /// `self / other`, or an error when `other` is zero.
     pub fn checked_div(&self, other: &Expr) -> Result<Expr, AlgebraError> {
+        if other.is_one() {
+            return Ok(self.clone());
+        }
         Ok(Expr::mul_all([
             self.clone(),
             other.checked_pow(&Expr::int(-1))?,

@@ -62,6 +62,8 @@ pub struct SymbolData {
     barred: bool,
     dots: u8,
     subscript: Box<str>,
+    /// The axis the subscript names (see [`axis_of_subscript`]).
+    axis: Option<usize>,
     role: Role,
     latex: Box<str>,
 }
@@ -165,6 +167,11 @@ impl Symbol {
         &self.0.subscript
     }
 
+    /// The axis its subscript names: 0 for `w_x` and `w_x'`, none for `I_xy` or `m`.
+    pub fn axis(self) -> Option<usize> {
+        self.0.axis
+    }
+
     /// The base name without decoration or subscript: `w` for `wdot_x`.
     pub fn base(self) -> &'static str {
         &self.0.base
@@ -255,6 +262,7 @@ impl SymbolData {
             base: head.into(),
             barred,
             dots,
+            axis: axis_of_subscript(&subscript),
             subscript: subscript.into(),
             role,
             latex: latex.into(),
@@ -270,6 +278,17 @@ fn name_prefix(name: &str) -> u64 {
     let n = name.len().min(8);
     bytes[..n].copy_from_slice(&name.as_bytes()[..n]);
     u64::from_be_bytes(bytes)
+}
+
+/// The axis a subscript names, primes ignored: `x` or `X` is 0, `y` 1, `z` 2, anything
+/// else (`xy`, `1`, empty) none.
+pub fn axis_of_subscript(subscript: &str) -> Option<usize> {
+    match subscript.trim_end_matches('\'') {
+        "x" | "X" => Some(0),
+        "y" | "Y" => Some(1),
+        "z" | "Z" => Some(2),
+        _ => None,
+    }
 }
 
 fn is_axis_subscript(subscript: &str) -> bool {

@@ -19,8 +19,9 @@
 //!    functions, kinematic symbols, unit vectors; factors with negative exponents form a
 //!    denominator.
 
-use crate::algebra::{Expr, Func, Role, Symbol, View, Q};
+use crate::algebra::{axis_of_subscript, Expr, Func, Role, Symbol, View, Q};
 use std::cmp::Ordering;
+use std::collections::HashMap;
 
 /// A node of the presented form. Numbers and coefficients here are never negative: signs
 /// live on the terms of a [`Layout::Sum`].
@@ -61,12 +62,7 @@ impl Axis {
 
     /// The axis named by a subscript such as `x` in `M_x`, if it names exactly one.
     pub fn from_subscript(subscript: &str) -> Option<Axis> {
-        match subscript.trim_end_matches('\'') {
-            "x" | "X" => Some(Axis::X),
-            "y" | "Y" => Some(Axis::Y),
-            "z" | "Z" => Some(Axis::Z),
-            _ => None,
-        }
+        axis_of_subscript(subscript).map(|k| [Axis::X, Axis::Y, Axis::Z][k])
     }
 }
 
@@ -106,21 +102,40 @@ fn has_sum_coefficient(term: &Expr) -> bool {
     )
 }
 
+/// Up to this many groups a term's group is found by linear search; beyond, by hashing.
+const LINEAR_SEARCH_GROUPS: usize = 32;
+
 fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
     let mut groups: Vec<Group> = Vec::with_capacity(e.terms().len());
+    // The groups by kinematic part, filled once there are too many to search linearly.
+    let mut index: HashMap<Vec<&Expr>, usize> = HashMap::new();
     for term in e.terms() {
         let kinematic = kinematic_part(term);
         let key = kinematic_key(kinematic.clone());
-        match groups
-            .iter_mut()
-            .find(|g| g.key == key && kinematic_part(g.first).eq(kinematic.clone()))
-        {
-            Some(group) => group.others.push(term),
-            None => groups.push(Group {
-                first: term,
-                others: Vec::new(),
-                key,
-            }),
+        let found = if groups.len() <= LINEAR_SEARCH_GROUPS {
+            groups
+                .iter()
+                .position(|g| g.key == key && kinematic_part(g.first).eq(kinematic.clone()))
+        } else {
+            if index.is_empty() {
+                for (at, g) in groups.iter().enumerate() {
+                    index.insert(kinematic_part(g.first).collect(), at);
+                }
+            }
+            index.get(&kinematic.clone().collect::<Vec<_>>()).copied()
+        };
+        match found {
+            Some(at) => groups[at].others.push(term),
+            None => {
+                if !index.is_empty() {
+                    index.insert(kinematic.collect(), groups.len());
+                }
+                groups.push(Group {
+                    first: term,
+                    others: Vec::new(),
+                    key,
+                });
+            }
         }
     }
     groups.sort_by(|a, b| {
@@ -136,8 +151,14 @@ fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
             terms.push(present_term(group.first, axis));
             continue;
         }
-        let members = std::iter::once(group.first).chain(group.others);
-        let coefficient = Expr::add_all(members.map(coefficient_of));
+        let coefficient = match group.others[..] {
+            [] => coefficient_of(group.first),
+            [second] => coefficient_of(group.first) + coefficient_of(second),
+            _ => {
+                let members = std::iter::once(group.first).chain(group.others);
+                Expr::add_all(members.map(coefficient_of))
+            }
+        };
         if coefficient.is_zero() {
             continue;
         }
@@ -398,10 +419,6 @@ fn expr_place(e: &Expr) -> u8 {
     }
 }
 
-fn axis_of(s: Symbol) -> Option<usize> {
-    Axis::from_subscript(s.subscript()).map(Axis::index)
-}
-
 /// Translational (v, a) before rotational (ω, α) before angles and others.
 fn family(s: Symbol) -> u8 {
     match s.base() {
@@ -418,7 +435,7 @@ fn compare_factors(a: &Expr, b: &Expr) -> Ordering {
             (Some(x), Some(y)) if x.role() == Role::Kinematic && y.role() == Role::Kinematic => {
                 family(x)
                     .cmp(&family(y))
-                    .then_with(|| axis_of(x).cmp(&axis_of(y)))
+                    .then_with(|| x.axis().cmp(&y.axis()))
                     .then_with(|| x.cmp(&y))
             }
             (Some(x), Some(y)) if x.role() == Role::Inertia && y.role() == Role::Inertia => {
@@ -439,7 +456,7 @@ fn cyclic_pair_order(factors: &mut [&Expr]) {
         (kinematic.next(), kinematic.next(), kinematic.next())
     };
     if let (Some(i), Some(j), None) = (first, second, third) {
-        let axis = |k: usize| factors[k].base().as_symbol().and_then(axis_of);
+        let axis = |k: usize| factors[k].base().as_symbol().and_then(Symbol::axis);
         if axis(i) == Some(0) && axis(j) == Some(2) {
             factors.swap(i, j);
         }
@@ -463,7 +480,7 @@ fn kinematic_key<'a>(factors: impl Iterator<Item = &'a Expr>) -> KinematicKey {
             count += 1;
             acceleration |= s.is_acceleration();
             lowest_family = lowest_family.min(family(s));
-            if let Some(k) = axis_of(s) {
+            if let Some(k) = s.axis() {
                 axes |= 1 << k;
             }
         }
@@ -552,4 +569,30 @@ fn compare_lexicographic(a: &[Expr], b: &[Expr]) -> Ordering {
         }
     }
     b.len().cmp(&a.len())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Σ (a + b) ω_i over more kinematic parts than a linear search handles: the groups
+    /// found through the hash index collect exactly like the first ones.
+    #[test]
+    fn many_kinematic_parts_collect_alike() {
+        let n = 2 * LINEAR_SEARCH_GROUPS;
+        let (a, b) = (Expr::symbol("a"), Expr::symbol("b"));
+        let e = Expr::add_all((1..=n).flat_map(|i| {
+            let w = Expr::symbol(&format!("w_{i}"));
+            [&a * &w, &b * &w]
+        }));
+        let printed = crate::print::text(&e);
+        for i in 1..=n {
+            assert!(
+                printed.contains(&format!("(a + b)*w_{i} "))
+                    || printed.ends_with(&format!("(a + b)*w_{i}")),
+                "w_{i} in {printed}"
+            );
+        }
+        assert_eq!(printed.matches(" + (a + b)").count(), n - 1, "{printed}");
+    }
 }

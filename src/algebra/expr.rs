@@ -346,16 +346,11 @@ impl Expr {
                     let c = Expr::num(coeff);
                     return Expr(Repr::Add(terms.iter().map(|t| &c * t).collect()));
                 }
-                Expr(Repr::Mul(Arc::new([Expr::num(coeff), only.clone()])))
+                Expr(Repr::Mul(operands(Some(Expr::num(coeff)), factors)))
             }
             _ => {
-                let rest = factors.iter().map(|f| f.borrow().clone());
-                if coeff.is_one() {
-                    Expr(Repr::Mul(rest.collect()))
-                } else {
-                    let c = std::iter::once(Expr::num(coeff));
-                    Expr(Repr::Mul(c.chain(rest).collect()))
-                }
+                let coeff = (!coeff.is_one()).then(|| Expr::num(coeff));
+                Expr(Repr::Mul(operands(coeff, factors)))
             }
         }
     }
@@ -365,9 +360,7 @@ impl Expr {
         match terms {
             [] => Expr::zero(),
             [only] => only.borrow().clone(),
-            _ => Expr(Repr::Add(
-                terms.iter().map(|t| t.borrow().clone()).collect(),
-            )),
+            _ => Expr(Repr::Add(operands(None, terms))),
         }
     }
 
@@ -467,6 +460,23 @@ impl Expr {
             Repr::Add(_) => 4,
             Repr::Func(..) => 5,
         }
+    }
+}
+
+/// The operands of a sum or product node: `first` (a coefficient), then copies of `rest`.
+/// The usual short lists are built as arrays, without an iterator.
+fn operands<T: Borrow<Expr>>(first: Option<Expr>, rest: &[T]) -> Arc<[Expr]> {
+    let at = |i: usize| rest[i].borrow().clone();
+    match (first, rest.len()) {
+        (None, 2) => Arc::new([at(0), at(1)]),
+        (None, 3) => Arc::new([at(0), at(1), at(2)]),
+        (Some(c), 1) => Arc::new([c, at(0)]),
+        (Some(c), 2) => Arc::new([c, at(0), at(1)]),
+        (Some(c), 3) => Arc::new([c, at(0), at(1), at(2)]),
+        (first, _) => first
+            .into_iter()
+            .chain(rest.iter().map(|t| t.borrow().clone()))
+            .collect(),
     }
 }
 

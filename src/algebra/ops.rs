@@ -62,15 +62,47 @@ impl Neg for Expr {
     }
 }
 
-/// The owned and mixed forms of a binary operator, all through the `&Expr` form.
+/// Owned sums and products hand back an operand that meets the identity (`0 + x`, `1 · x`)
+/// without copying it; nalgebra's matrix products are made of such steps.
+impl Add<Expr> for Expr {
+    type Output = Expr;
+    fn add(self, rhs: Expr) -> Expr {
+        match (self.is_zero(), rhs.is_zero()) {
+            (true, _) => rhs,
+            (_, true) => self,
+            _ => merge::sum(&self, &rhs),
+        }
+    }
+}
+
+impl Mul<Expr> for Expr {
+    type Output = Expr;
+    fn mul(self, rhs: Expr) -> Expr {
+        match (self.is_one(), rhs.is_one()) {
+            (true, _) => rhs,
+            (_, true) => self,
+            _ => merge::product(&self, &rhs),
+        }
+    }
+}
+
+impl Sub<Expr> for Expr {
+    type Output = Expr;
+    fn sub(self, rhs: Expr) -> Expr {
+        &self - &rhs
+    }
+}
+
+impl Div<Expr> for Expr {
+    type Output = Expr;
+    fn div(self, rhs: Expr) -> Expr {
+        &self / &rhs
+    }
+}
+
+/// The mixed and assigning forms of a binary operator, all through the `&Expr` form.
 macro_rules! forward_binary {
     ($Trait:ident, $method:ident, $AssignTrait:ident, $assign:ident) => {
-        impl $Trait<Expr> for Expr {
-            type Output = Expr;
-            fn $method(self, rhs: Expr) -> Expr {
-                (&self).$method(&rhs)
-            }
-        }
         impl $Trait<&Expr> for Expr {
             type Output = Expr;
             fn $method(self, rhs: &Expr) -> Expr {

@@ -522,10 +522,19 @@ fn power_or_unevaluated(base: &Expr, exponent: &Expr) -> Expr {
     Expr(Repr::Pow(Arc::new((base.clone(), exponent.clone()))))
 }
 
+/// `x.cmp(y)`, with the common case of two symbols decided inline.
+#[inline]
+pub(crate) fn cmp_operands(x: &Expr, y: &Expr) -> Ordering {
+    match (&x.0, &y.0) {
+        (Repr::Sym(p), Repr::Sym(q)) => p.cmp(q),
+        _ => x.cmp(y),
+    }
+}
+
 /// Lexicographic order of two slices of expressions, shorter first on a common prefix.
 pub(crate) fn cmp_slices(a: &[Expr], b: &[Expr]) -> Ordering {
     for (x, y) in a.iter().zip(b.iter()) {
-        match x.cmp(y) {
+        match cmp_operands(x, y) {
             Ordering::Equal => {}
             other => return other,
         }

@@ -7,7 +7,7 @@
 //! no sort. Whatever a merge does not cover (powers of numbers, sums or functions met on
 //! both sides) goes through [`Expr::mul_all`], which the result always equals.
 
-use super::expr::{cmp_slices, Expr};
+use super::expr::{cmp_operands, cmp_slices, Expr};
 use super::rational::Q;
 use std::cmp::Ordering;
 
@@ -73,7 +73,7 @@ pub(super) fn product(a: &Expr, b: &Expr) -> Expr {
     let (fa, fb) = (a.monomial(), b.monomial());
     if fa.len() + fb.len() <= INLINE {
         let mut merged = [a; INLINE];
-        let by_base = |x: &Expr, y: &Expr| x.base().cmp(y.base());
+        let by_base = |x: &Expr, y: &Expr| cmp_operands(x.base(), y.base());
         if let Some(n) = merge_disjoint(fa, fb, &mut merged, by_base) {
             return Expr::product_of_sorted(coeff, &merged[..n]);
         }
@@ -81,7 +81,7 @@ pub(super) fn product(a: &Expr, b: &Expr) -> Expr {
     let mut out: Vec<Expr> = Vec::with_capacity(fa.len() + fb.len());
     let (mut i, mut j) = (0, 0);
     while i < fa.len() && j < fb.len() {
-        match fa[i].base().cmp(fb[j].base()) {
+        match cmp_operands(fa[i].base(), fb[j].base()) {
             Ordering::Less => {
                 out.push(fa[i].clone());
                 i += 1;

@@ -344,6 +344,7 @@ fn latex_of(base: &str, barred: bool, dots: u8, subscript: &str) -> String {
 }
 
 impl PartialEq for Symbol {
+    #[inline]
     fn eq(&self, other: &Symbol) -> bool {
         std::ptr::eq(self.0, other.0)
     }
@@ -358,6 +359,7 @@ impl Hash for Symbol {
 }
 
 impl Ord for Symbol {
+    #[inline]
     fn cmp(&self, other: &Symbol) -> std::cmp::Ordering {
         if self == other {
             std::cmp::Ordering::Equal

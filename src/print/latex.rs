@@ -119,8 +119,13 @@ fn fraction(out: &mut String, n: &Q, d: &Q) {
 
 /// An integer-valued rational in decimal digits.
 fn integer(out: &mut String, q: &Q) {
-    // Formatting into a `String` cannot fail.
-    let _ = write!(out, "{q}");
+    match q.to_i64().and_then(|n| u8::try_from(n).ok()) {
+        Some(digit @ 0..=9) => out.push(char::from(b'0' + digit)),
+        // Formatting into a `String` cannot fail.
+        _ => {
+            let _ = write!(out, "{q}");
+        }
+    }
 }
 
 /// A factor inside a product or under an exponent: sums and products get parentheses.
@@ -174,4 +179,18 @@ fn product(out: &mut String, p: &Product) {
     }
     factors(out, !cd.is_one(), &p.denominator);
     out.push('}');
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_of_any_width() {
+        for n in [0, 7, 9, 10, 123, -4, i64::MAX] {
+            assert_eq!(render(false, &Layout::Number(Q::int(n))), n.to_string());
+        }
+        let q = Q::new(12, 7).unwrap();
+        assert_eq!(render(true, &Layout::Number(q)), r"-\frac{12}{7}");
+    }
 }

@@ -294,22 +294,23 @@ fn present_term(e: &Expr, axis: Axis) -> (bool, Layout) {
     let factors = e.monomial();
     let mut numerator: Vec<Layout> = Vec::new();
     let mut denominator: Vec<Layout> = Vec::new();
-    // The factors in print order, on the stack unless there are many.
-    let mut inline: [&Expr; 8] = [e; 8];
-    let mut spilled: Vec<&Expr> = Vec::new();
-    let ordered: &mut [&Expr] = if factors.len() <= inline.len() {
+    // The factors with their places, in print order; on the stack unless there are many.
+    let mut inline: [(u8, &Expr); 8] = [(0, e); 8];
+    let mut spilled: Vec<(u8, &Expr)> = Vec::new();
+    let placed = factors.iter().map(|f| (expr_place(f), f));
+    let ordered: &mut [(u8, &Expr)] = if factors.len() <= inline.len() {
         inline
             .iter_mut()
-            .zip(factors)
+            .zip(placed)
             .for_each(|(slot, f)| *slot = f);
         &mut inline[..factors.len()]
     } else {
-        spilled.extend(factors);
+        spilled.extend(placed);
         &mut spilled
     };
-    ordered.sort_by(|a, b| compare_factors(a, b));
+    ordered.sort_by(|(pa, a), (pb, b)| pa.cmp(pb).then_with(|| compare_in_place(a, b)));
     cyclic_pair_order(ordered);
-    for f in ordered.iter() {
+    for &(_, f) in ordered.iter() {
         let View::Pow(base, exponent) = f.view() else {
             numerator.push(present_atom(f, axis));
             continue;
@@ -428,35 +429,34 @@ fn family(s: Symbol) -> u8 {
     }
 }
 
-fn compare_factors(a: &Expr, b: &Expr) -> Ordering {
-    expr_place(a).cmp(&expr_place(b)).then_with(|| {
-        let (sa, sb) = (a.base().as_symbol(), b.base().as_symbol());
-        match (sa, sb) {
-            (Some(x), Some(y)) if x.role() == Role::Kinematic && y.role() == Role::Kinematic => {
-                family(x)
-                    .cmp(&family(y))
-                    .then_with(|| x.axis().cmp(&y.axis()))
-                    .then_with(|| x.cmp(&y))
-            }
-            (Some(x), Some(y)) if x.role() == Role::Inertia && y.role() == Role::Inertia => {
-                inertia_key(x, Axis::X).cmp(&inertia_key(y, Axis::X))
-            }
-            (Some(x), Some(y)) => (x.base() == "Dt")
-                .cmp(&(y.base() == "Dt"))
-                .then_with(|| x.cmp(&y)),
-            _ => a.cmp(b),
+/// The order of two factors with the same place in a product (rule 4).
+fn compare_in_place(a: &Expr, b: &Expr) -> Ordering {
+    let (sa, sb) = (a.base().as_symbol(), b.base().as_symbol());
+    match (sa, sb) {
+        (Some(x), Some(y)) if x.role() == Role::Kinematic && y.role() == Role::Kinematic => {
+            family(x)
+                .cmp(&family(y))
+                .then_with(|| x.axis().cmp(&y.axis()))
+                .then_with(|| x.cmp(&y))
         }
-    })
+        (Some(x), Some(y)) if x.role() == Role::Inertia && y.role() == Role::Inertia => {
+            inertia_key(x, Axis::X).cmp(&inertia_key(y, Axis::X))
+        }
+        (Some(x), Some(y)) => (x.base() == "Dt")
+            .cmp(&(y.base() == "Dt"))
+            .then_with(|| x.cmp(&y)),
+        _ => a.cmp(b),
+    }
 }
 
 /// Two kinematic factors on the axes z and x are written `ω_z ω_x` (cyclic order zx).
-fn cyclic_pair_order(factors: &mut [&Expr]) {
+fn cyclic_pair_order(factors: &mut [(u8, &Expr)]) {
     let (first, second, third) = {
-        let mut kinematic = (0..factors.len()).filter(|&i| expr_place(factors[i]) == 8);
+        let mut kinematic = (0..factors.len()).filter(|&i| factors[i].0 == 8);
         (kinematic.next(), kinematic.next(), kinematic.next())
     };
     if let (Some(i), Some(j), None) = (first, second, third) {
-        let axis = |k: usize| factors[k].base().as_symbol().and_then(Symbol::axis);
+        let axis = |k: usize| factors[k].1.base().as_symbol().and_then(Symbol::axis);
         if axis(i) == Some(0) && axis(j) == Some(2) {
             factors.swap(i, j);
         }

@@ -4,8 +4,11 @@
 //! product by base, each at most once. So `a + b` is one merge of the two term lists,
 //! adding the coefficients of a monomial found in both, and `a · b` is one merge of the two
 //! factor lists, adding the exponents of a symbol found in both: `O(n + m)` comparisons and
-//! no sort. Whatever a merge does not cover (powers of numbers, sums or functions met on
-//! both sides) goes through [`Expr::mul_all`], which the result always equals.
+//! no sort. When the lists share nothing (the usual case) the operands are gathered as
+//! references on the stack, so the new node is the only allocation. A product whose lists
+//! share a base other than a symbol to a numeric power (a power of a number, a sum or a
+//! function on both sides) goes through [`Expr::mul_all`]; the results always equal
+//! [`Expr::add_all`] and [`Expr::mul_all`] of the two operands.
 
 use super::expr::{cmp_operands, cmp_slices, Expr};
 use super::rational::Q;

@@ -20,14 +20,17 @@ impl Expr {
     /// assert!((&a + &b).powi(99_999_999).expand().is_err());
     /// ```
     pub fn expand(&self) -> Result<Expr, AlgebraError> {
+        if is_expanded(self) {
+            return Ok(self.clone());
+        }
         match self.view() {
             View::Num(_) | View::Sym(_) => Ok(self.clone()),
             View::Add(terms) => {
-                let expanded = terms
-                    .iter()
-                    .map(Expr::expand)
-                    .collect::<Result<Vec<_>, _>>()?;
-                Ok(Expr::add_all(expanded))
+                let mut expanded: Vec<Expr> = Vec::with_capacity(2 * terms.len());
+                for t in terms {
+                    expanded.extend_from_slice(t.expand()?.terms());
+                }
+                Ok(Expr::sum_of_terms(expanded))
             }
             View::Mul(factors) => {
                 let expanded = factors
@@ -64,6 +67,31 @@ impl Expr {
     }
 }
 
+/// Whether `e` is a sum of monomials in symbols (or a single one), which expands to itself.
+fn is_expanded(e: &Expr) -> bool {
+    match e.view() {
+        View::Add(terms) => terms.iter().all(is_expanded_monomial),
+        _ => is_expanded_monomial(e),
+    }
+}
+
+/// A number, or a product of a number and numeric powers of symbols.
+fn is_expanded_monomial(e: &Expr) -> bool {
+    match e.view() {
+        View::Mul(factors) => factors.iter().all(is_power_of_symbol),
+        _ => is_power_of_symbol(e),
+    }
+}
+
+/// A number, a symbol, or a symbol to a numeric power.
+fn is_power_of_symbol(e: &Expr) -> bool {
+    match e.view() {
+        View::Num(_) | View::Sym(_) => true,
+        View::Pow(base, exponent) => base.as_symbol().is_some() && exponent.as_num().is_some(),
+        _ => false,
+    }
+}
+
 /// The product of two expanded expressions, multiplied out term by term.
 fn multiply_out(a: &Expr, b: &Expr) -> Expr {
     if a.terms().len() == 1 && b.terms().len() == 1 {
@@ -75,7 +103,7 @@ fn multiply_out(a: &Expr, b: &Expr) -> Expr {
             products.push(x * y);
         }
     }
-    Expr::add_all(products)
+    Expr::sum_of_terms(products)
 }
 
 /// The number of monomials of degree `n` in `t` variables, C(t + n - 1, n), as a float

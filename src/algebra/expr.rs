@@ -27,6 +27,7 @@ use super::error::AlgebraError;
 use super::function::Func;
 use super::rational::Q;
 use super::symbol::Symbol;
+use std::borrow::Borrow;
 use std::cmp::Ordering;
 use std::hash::{Hash, Hasher};
 use std::sync::Arc;
@@ -126,14 +127,41 @@ impl Expr {
     /// Splits a term into its numeric coefficient and the remaining factors:
     /// `-3 x y` gives `(-3, [x, y])`, `x` gives `(1, [x])`, `5` gives `(5, [])`.
     pub fn coeff_and_factors(&self) -> (Q, &[Expr]) {
+        (self.coefficient().clone(), self.monomial())
+    }
+
+    /// The numeric coefficient of a term: `-3` for `-3 x y`, `1` for `x`, `5` for `5`.
+    pub fn coefficient(&self) -> &Q {
+        static ONE: Q = Q::ONE;
         match &self.0 {
-            Repr::Num(q) => (q.clone(), &[]),
+            Repr::Num(q) => q,
             Repr::Mul(f) => match &f[0].0 {
-                Repr::Num(q) => (q.clone(), &f[1..]),
-                _ => (Q::ONE, &f[..]),
+                Repr::Num(q) => q,
+                _ => &ONE,
             },
-            _ => (Q::ONE, std::slice::from_ref(self)),
+            _ => &ONE,
         }
+    }
+
+    /// The factors of a term after its numeric coefficient: `[x, y]` for `-3 x y`, `[x]`
+    /// for `x`, `[]` for a number. Like terms of a sum have equal monomials.
+    pub fn monomial(&self) -> &[Expr] {
+        match &self.0 {
+            Repr::Num(_) => &[],
+            Repr::Mul(f) => match &f[0].0 {
+                Repr::Num(_) => &f[1..],
+                _ => f,
+            },
+            _ => std::slice::from_ref(self),
+        }
+    }
+
+    /// The term with the factors for which `drop` holds taken out, its numeric coefficient
+    /// kept: `-2 I_xy w_x w_y` without its kinematic factors is `-2 I_xy`. Equal to
+    /// [`Expr::mul_all`] of the remaining factors, without sorting them again.
+    pub fn without_factors(&self, drop: impl Fn(&Expr) -> bool) -> Expr {
+        let kept: Vec<&Expr> = self.monomial().iter().filter(|f| !drop(f)).collect();
+        Expr::product_of_sorted(self.coefficient().clone(), &kept)
     }
 
     /// The terms of a sum, or the expression itself as a single term.
@@ -160,9 +188,19 @@ impl Expr {
         }
     }
 
+    /// The base of a power, or the expression itself: `x` for `x^n` and for `x`. Factors
+    /// of a product are ordered by their bases.
+    pub fn base(&self) -> &Expr {
+        match &self.0 {
+            Repr::Pow(p) => &p.0,
+            _ => self,
+        }
+    }
+
     /// The canonical sum of the given terms.
     pub fn add_all<I: IntoIterator<Item = Expr>>(terms: I) -> Expr {
-        let mut flat: Vec<Expr> = Vec::new();
+        let terms = terms.into_iter();
+        let mut flat: Vec<Expr> = Vec::with_capacity(terms.size_hint().0);
         let mut constant = Q::ZERO;
         for t in terms {
             match &t.0 {
@@ -178,42 +216,62 @@ impl Expr {
                 _ => flat.push(t),
             }
         }
-        flat.sort_by(|a, b| cmp_slices(a.coeff_and_factors().1, b.coeff_and_factors().1));
-        let mut out: Vec<Expr> = Vec::with_capacity(flat.len() + 1);
-        if !constant.is_zero() {
-            out.push(Expr::num(constant));
+        Expr::sum_of_like_terms(constant, flat)
+    }
+
+    /// The canonical sum of terms that are not sums (numbers allowed), reusing the vector.
+    pub(super) fn sum_of_terms(mut terms: Vec<Expr>) -> Expr {
+        if terms.iter().any(|t| matches!(t.0, Repr::Add(_))) {
+            return Expr::add_all(terms);
         }
+        let mut constant = Q::ZERO;
+        terms.retain(|t| match &t.0 {
+            Repr::Num(q) => {
+                constant = &constant + q;
+                false
+            }
+            _ => true,
+        });
+        Expr::sum_of_like_terms(constant, terms)
+    }
+
+    /// `constant + Σ terms` for terms that are neither numbers nor sums, in any order:
+    /// sorts them by monomial and combines like terms in place.
+    fn sum_of_like_terms(constant: Q, mut terms: Vec<Expr>) -> Expr {
+        terms.sort_by(|a, b| cmp_slices(a.monomial(), b.monomial()));
+        let mut kept = 0;
         let mut i = 0;
-        while i < flat.len() {
-            let (c0, rest) = flat[i].coeff_and_factors();
+        while i < terms.len() {
             let mut j = i + 1;
-            let mut coeff = c0;
-            while j < flat.len()
-                && cmp_slices(flat[j].coeff_and_factors().1, rest) == Ordering::Equal
-            {
-                coeff = &coeff + &flat[j].coeff_and_factors().0;
+            while j < terms.len() && terms[j].monomial() == terms[i].monomial() {
                 j += 1;
             }
-            if !coeff.is_zero() {
-                if j == i + 1 {
-                    out.push(flat[i].clone());
-                } else {
-                    out.push(term_from(coeff, rest));
+            if j == i + 1 {
+                terms.swap(kept, i);
+                kept += 1;
+            } else {
+                let coeff = terms[i..j]
+                    .iter()
+                    .fold(Q::ZERO, |sum, t| &sum + t.coefficient());
+                if !coeff.is_zero() {
+                    terms[kept] = Expr::term(coeff, terms[i].monomial());
+                    kept += 1;
                 }
             }
             i = j;
         }
-        match out.len() {
-            0 => Expr::zero(),
-            1 => out.pop().unwrap_or_else(Expr::zero),
-            _ => Expr(Repr::Add(out.into())),
+        terms.truncate(kept);
+        if !constant.is_zero() {
+            terms.insert(0, Expr::num(constant));
         }
+        Expr::sum_of_sorted(&terms)
     }
 
     /// The canonical product of the given factors.
     pub fn mul_all<I: IntoIterator<Item = Expr>>(factors: I) -> Expr {
+        let factors = factors.into_iter();
         let mut coeff = Q::ONE;
-        let mut flat: Vec<Expr> = Vec::new();
+        let mut flat: Vec<Expr> = Vec::with_capacity(factors.size_hint().0);
         for f in factors {
             match &f.0 {
                 Repr::Num(q) => coeff = &coeff * q,
@@ -231,15 +289,15 @@ impl Expr {
         if coeff.is_zero() {
             return Expr::zero();
         }
-        flat.sort_by(|a, b| a.base_and_exponent().0.cmp(b.base_and_exponent().0));
+        flat.sort_by(|a, b| a.base().cmp(b.base()));
         let mut out: Vec<Expr> = Vec::with_capacity(flat.len() + 1);
         let mut merged = false;
         let mut renormalise = false;
         let mut i = 0;
         while i < flat.len() {
-            let base = flat[i].base_and_exponent().0;
+            let base = flat[i].base();
             let mut j = i + 1;
-            while j < flat.len() && flat[j].base_and_exponent().0 == base {
+            while j < flat.len() && flat[j].base() == base {
                 j += 1;
             }
             if j == i + 1 {
@@ -260,34 +318,55 @@ impl Expr {
             i = j;
         }
         if merged {
-            out.sort_by(|a, b| a.base_and_exponent().0.cmp(b.base_and_exponent().0));
+            out.sort_by(|a, b| a.base().cmp(b.base()));
         }
         if renormalise {
             out.push(Expr::num(coeff));
             return Expr::mul_all(out);
         }
+        Expr::product_of_sorted(coeff, &out)
+    }
+
+    /// `coeff · factors` in canonical form, for factors in canonical order with distinct
+    /// bases, none of them a number or a product.
+    pub(super) fn product_of_sorted<F: Borrow<Expr>>(coeff: Q, factors: &[F]) -> Expr {
         if coeff.is_zero() {
             return Expr::zero();
         }
-        if out.is_empty() {
-            return Expr::num(coeff);
-        }
-        if out.len() == 1 {
-            let only = out.pop().unwrap_or_else(Expr::one);
-            if coeff.is_one() {
-                return only;
+        match factors {
+            [] => Expr::num(coeff),
+            [only] => {
+                let only = only.borrow();
+                if coeff.is_one() {
+                    return only.clone();
+                }
+                if let Repr::Add(terms) = &only.0 {
+                    // A number times a sum is distributed, so that sums cancel as wholes.
+                    // Scaling keeps the terms' monomials, so their order and distinctness.
+                    let c = Expr::num(coeff);
+                    return Expr(Repr::Add(terms.iter().map(|t| &c * t).collect()));
+                }
+                Expr(Repr::Mul(operands(Some(Expr::num(coeff)), factors)))
             }
-            if let Repr::Add(terms) = &only.0 {
-                // A number times a sum is distributed, so that sums cancel as wholes.
-                let c = Expr::num(coeff);
-                return Expr::add_all(terms.iter().map(|t| Expr::mul_all([c.clone(), t.clone()])));
+            _ => {
+                let coeff = (!coeff.is_one()).then(|| Expr::num(coeff));
+                Expr(Repr::Mul(operands(coeff, factors)))
             }
-            return Expr(Repr::Mul(vec![Expr::num(coeff), only].into()));
         }
-        if !coeff.is_one() {
-            out.insert(0, Expr::num(coeff));
+    }
+
+    /// The canonical sum of terms in canonical order with distinct monomials, none zero.
+    pub(super) fn sum_of_sorted<T: Borrow<Expr>>(terms: &[T]) -> Expr {
+        match terms {
+            [] => Expr::zero(),
+            [only] => only.borrow().clone(),
+            _ => Expr(Repr::Add(operands(None, terms))),
         }
-        Expr(Repr::Mul(out.into()))
+    }
+
+    /// `coeff · monomial` as a canonical term, for the monomial of a canonical term.
+    pub(super) fn term(coeff: Q, monomial: &[Expr]) -> Expr {
+        Expr::product_of_sorted(coeff, monomial)
     }
 
     /// `self^exponent`, or an error for `0` to a negative power.
@@ -311,6 +390,9 @@ impl Expr {
 
     /// `self / other`, or an error when `other` is zero.
     pub fn checked_div(&self, other: &Expr) -> Result<Expr, AlgebraError> {
+        if other.is_one() {
+            return Ok(self.clone());
+        }
         Ok(Expr::mul_all([
             self.clone(),
             other.checked_pow(&Expr::int(-1))?,
@@ -381,9 +463,21 @@ impl Expr {
     }
 }
 
-/// `coeff · rest` as a canonical term.
-fn term_from(coeff: Q, rest: &[Expr]) -> Expr {
-    Expr::mul_all(std::iter::once(Expr::num(coeff)).chain(rest.iter().cloned()))
+/// The operands of a sum or product node: `first` (a coefficient), then copies of `rest`.
+/// The usual short lists are built as arrays, without an iterator.
+fn operands<T: Borrow<Expr>>(first: Option<Expr>, rest: &[T]) -> Arc<[Expr]> {
+    let at = |i: usize| rest[i].borrow().clone();
+    match (first, rest.len()) {
+        (None, 2) => Arc::new([at(0), at(1)]),
+        (None, 3) => Arc::new([at(0), at(1), at(2)]),
+        (Some(c), 1) => Arc::new([c, at(0)]),
+        (Some(c), 2) => Arc::new([c, at(0), at(1)]),
+        (Some(c), 3) => Arc::new([c, at(0), at(1), at(2)]),
+        (first, _) => first
+            .into_iter()
+            .chain(rest.iter().map(|t| t.borrow().clone()))
+            .collect(),
+    }
 }
 
 /// `base^exponent` in canonical form; a numeric power too large to fold, or `0` to a
@@ -428,10 +522,19 @@ fn power_or_unevaluated(base: &Expr, exponent: &Expr) -> Expr {
     Expr(Repr::Pow(Arc::new((base.clone(), exponent.clone()))))
 }
 
+/// `x.cmp(y)`, with the common case of two symbols decided inline.
+#[inline]
+pub(crate) fn cmp_operands(x: &Expr, y: &Expr) -> Ordering {
+    match (&x.0, &y.0) {
+        (Repr::Sym(p), Repr::Sym(q)) => p.cmp(q),
+        _ => x.cmp(y),
+    }
+}
+
 /// Lexicographic order of two slices of expressions, shorter first on a common prefix.
 pub(crate) fn cmp_slices(a: &[Expr], b: &[Expr]) -> Ordering {
     for (x, y) in a.iter().zip(b.iter()) {
-        match x.cmp(y) {
+        match cmp_operands(x, y) {
             Ordering::Equal => {}
             other => return other,
         }

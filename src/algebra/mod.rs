@@ -13,6 +13,7 @@ mod expand;
 mod expr;
 mod function;
 pub mod linear_solve;
+mod merge;
 mod ops;
 mod rational;
 mod subs;
@@ -25,7 +26,7 @@ pub use eval::rational_to;
 pub use expr::{Expr, View};
 pub use function::Func;
 pub use rational::Q;
-pub use symbol::{Role, Symbol};
+pub use symbol::{axis_of_subscript, Role, Symbol};
 
 /// A three-vector of expressions (`i`, `j`, `k` components).
 pub type Vector = nalgebra::Vector3<Expr>;

@@ -5,6 +5,7 @@
 //! from users goes through [`Expr::checked_div`], which returns an error instead.
 
 use super::expr::Expr;
+use super::merge;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 impl Add<&Expr> for &Expr {
@@ -16,7 +17,7 @@ impl Add<&Expr> for &Expr {
         if rhs.is_zero() {
             return self.clone();
         }
-        Expr::add_all([self.clone(), rhs.clone()])
+        merge::sum(self, rhs)
     }
 }
 
@@ -29,14 +30,14 @@ impl Mul<&Expr> for &Expr {
         if rhs.is_one() {
             return self.clone();
         }
-        Expr::mul_all([self.clone(), rhs.clone()])
+        merge::product(self, rhs)
     }
 }
 
 impl Neg for &Expr {
     type Output = Expr;
     fn neg(self) -> Expr {
-        Expr::mul_all([Expr::int(-1), self.clone()])
+        merge::product(&Expr::int(-1), self)
     }
 }
 
@@ -61,15 +62,47 @@ impl Neg for Expr {
     }
 }
 
-/// The owned and mixed forms of a binary operator, all through the `&Expr` form.
+/// Owned sums and products hand back an operand that meets the identity (`0 + x`, `1 · x`)
+/// without copying it; nalgebra's matrix products are made of such steps.
+impl Add<Expr> for Expr {
+    type Output = Expr;
+    fn add(self, rhs: Expr) -> Expr {
+        match (self.is_zero(), rhs.is_zero()) {
+            (true, _) => rhs,
+            (_, true) => self,
+            _ => merge::sum(&self, &rhs),
+        }
+    }
+}
+
+impl Mul<Expr> for Expr {
+    type Output = Expr;
+    fn mul(self, rhs: Expr) -> Expr {
+        match (self.is_one(), rhs.is_one()) {
+            (true, _) => rhs,
+            (_, true) => self,
+            _ => merge::product(&self, &rhs),
+        }
+    }
+}
+
+impl Sub<Expr> for Expr {
+    type Output = Expr;
+    fn sub(self, rhs: Expr) -> Expr {
+        &self - &rhs
+    }
+}
+
+impl Div<Expr> for Expr {
+    type Output = Expr;
+    fn div(self, rhs: Expr) -> Expr {
+        &self / &rhs
+    }
+}
+
+/// The mixed and assigning forms of a binary operator, all through the `&Expr` form.
 macro_rules! forward_binary {
     ($Trait:ident, $method:ident, $AssignTrait:ident, $assign:ident) => {
-        impl $Trait<Expr> for Expr {
-            type Output = Expr;
-            fn $method(self, rhs: Expr) -> Expr {
-                (&self).$method(&rhs)
-            }
-        }
         impl $Trait<&Expr> for Expr {
             type Output = Expr;
             fn $method(self, rhs: &Expr) -> Expr {

@@ -40,7 +40,7 @@ impl Q {
         if den == 0 {
             return None;
         }
-        Some(Q::from_big(BigRational::new(num.into(), den.into())))
+        Some(Q::from_i128(num.into(), den.into()))
     }
 
     /// The exact value of a decimal literal such as `12`, `0.25`, `1.5e-3` or `.5`.
@@ -280,7 +280,11 @@ impl std::ops::Add for &Q {
                 if b == d {
                     match a.checked_add(*c) {
                         Some(n) if *b == 1 => Q::Small(n, 1),
-                        _ => Q::from_i128(*a as i128 + *c as i128, *b as i128),
+                        Some(n) => {
+                            let g = n.gcd(b);
+                            Q::Small(n / g, b / g)
+                        }
+                        None => Q::from_i128(*a as i128 + *c as i128, *b as i128),
                     }
                 } else {
                     let (a, b, c, d) = (*a as i128, *b as i128, *c as i128, *d as i128);
@@ -308,7 +312,15 @@ impl std::ops::Mul for &Q {
                 None => Q::from_i128(*a as i128 * *c as i128, 1),
             },
             (Q::Small(a, b), Q::Small(c, d)) => {
-                Q::from_i128(*a as i128 * *c as i128, *b as i128 * *d as i128)
+                // Cancelling across first leaves a reduced result: gcd(a/g, d/h) = 1 and
+                // gcd(c/h, b/g) = 1 with g = gcd(a, d), h = gcd(c, b).
+                let (g, h) = (a.gcd(d), c.gcd(b));
+                let n = (a / g).checked_mul(c / h);
+                let m = (b / h).checked_mul(d / g);
+                match (n, m) {
+                    (Some(n), Some(m)) => Q::Small(n, m),
+                    _ => Q::from_i128(*a as i128 * *c as i128, *b as i128 * *d as i128),
+                }
             }
             _ => Q::from_big(self.to_big() * other.to_big()),
         }
@@ -404,6 +416,22 @@ mod tests {
             &(&Q::int(i64::MIN) + &Q::int(-1)) - &Q::int(-1),
             Q::int(i64::MIN)
         );
+    }
+
+    #[test]
+    fn products_are_reduced() {
+        let q = |n, d| Q::new(n, d).unwrap();
+        assert_eq!(&q(2, 3) * &q(9, 4), q(3, 2));
+        assert_eq!(&q(-1, 2) * &q(2, 1), Q::MINUS_ONE);
+        assert_eq!(&Q::ZERO * &q(3, 4), Q::ZERO);
+        assert_eq!(&q(3, 4) * &Q::ZERO, Q::ZERO);
+        assert_eq!(&q(1, 2) + &q(1, 2), Q::ONE);
+        assert_eq!(&q(1, 6) + &q(1, 6), q(1, 3));
+        assert_eq!(&q(1, 6) + &q(-1, 6), Q::ZERO);
+        assert_eq!(q(i64::MIN, -2), q(i64::MIN / -2, 1));
+        let huge = &q(i64::MAX, 3) * &q(i64::MAX, 5);
+        assert!(matches!(huge, Q::Big(_)));
+        assert_eq!(huge.checked_div(&q(i64::MAX, 5)), Some(q(i64::MAX, 3)));
     }
 
     #[test]

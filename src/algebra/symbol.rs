@@ -28,9 +28,10 @@
 //! assert_eq!(Symbol::new("w1"), Symbol::new("w_1"));
 //! ```
 
+use std::cell::RefCell;
 use std::collections::HashMap;
 use std::fmt;
-use std::hash::{Hash, Hasher};
+use std::hash::{BuildHasherDefault, Hash, Hasher};
 use std::sync::{Mutex, OnceLock};
 
 /// What a symbol stands for; decides factor order in print and time dependence.
@@ -55,10 +56,15 @@ pub enum Role {
 #[derive(Debug)]
 pub struct SymbolData {
     name: Box<str>,
+    /// The first eight bytes of `name`, big-endian and zero-padded: comparing these orders
+    /// most pairs of names without reading the strings.
+    name_prefix: u64,
     base: Box<str>,
     barred: bool,
     dots: u8,
     subscript: Box<str>,
+    /// The axis the subscript names (see [`axis_of_subscript`]).
+    axis: Option<usize>,
     role: Role,
     latex: Box<str>,
 }
@@ -78,11 +84,52 @@ fn interner() -> &'static Mutex<HashMap<Box<str>, &'static SymbolData>> {
     INTERNER.get_or_init(|| Mutex::new(HashMap::new()))
 }
 
+thread_local! {
+    /// This thread's copy of the names it has looked up, in front of the shared interner,
+    /// so that a repeated `Symbol::new` takes no lock.
+    static LOOKED_UP: RefCell<HashMap<Box<str>, Symbol, BuildHasherDefault<NameHasher>>> =
+        RefCell::new(HashMap::default());
+}
+
+/// FNV-1a, a hash that is quick on the few bytes of a symbol name (the names a thread
+/// looks up are its own, so resistance to chosen collisions is not needed here).
+struct NameHasher(u64);
+
+impl Default for NameHasher {
+    fn default() -> NameHasher {
+        NameHasher(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Hasher for NameHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+
+    fn finish(&self) -> u64 {
+        self.0
+    }
+}
+
 impl Symbol {
     /// The symbol with this ASCII name (see the module documentation for the convention).
     /// The caller guarantees the name is well formed: an ASCII letter followed by letters,
     /// digits, `_` and `'` (the parser checks this for user input).
     pub fn new(name: &str) -> Symbol {
+        LOOKED_UP.with(|cache| {
+            if let Some(&symbol) = cache.borrow().get(name) {
+                return symbol;
+            }
+            let symbol = Symbol::intern(name);
+            cache.borrow_mut().insert(name.into(), symbol);
+            symbol
+        })
+    }
+
+    /// The symbol with this name from the process-wide interner, created on first use.
+    fn intern(name: &str) -> Symbol {
         let mut map = interner()
             .lock()
             .unwrap_or_else(|poisoned| poisoned.into_inner());
@@ -119,6 +166,11 @@ impl Symbol {
     /// The subscript as written (`x`, `xy`, `1`, `x'`), empty when there is none.
     pub fn subscript(self) -> &'static str {
         &self.0.subscript
+    }
+
+    /// The axis its subscript names: 0 for `w_x` and `w_x'`, none for `I_xy` or `m`.
+    pub fn axis(self) -> Option<usize> {
+        self.0.axis
     }
 
     /// The base name without decoration or subscript: `w` for `wdot_x`.
@@ -204,15 +256,39 @@ impl SymbolData {
         }
         let role = classify(head, barred, dots, &subscript);
         let latex = latex_of(head, barred, dots, &subscript);
+        let name = compose_name(head, barred, dots, &subscript);
         SymbolData {
-            name: compose_name(head, barred, dots, &subscript).into(),
+            name_prefix: name_prefix(&name),
+            name: name.into(),
             base: head.into(),
             barred,
             dots,
+            axis: axis_of_subscript(&subscript),
             subscript: subscript.into(),
             role,
             latex: latex.into(),
         }
+    }
+}
+
+/// The first eight bytes of a name as a big-endian integer, zero-padded: for names without
+/// NUL bytes, `name_prefix(a) < name_prefix(b)` implies `a < b`, and equal prefixes of
+/// distinct names leave the order to the full strings.
+fn name_prefix(name: &str) -> u64 {
+    let mut bytes = [0u8; 8];
+    let n = name.len().min(8);
+    bytes[..n].copy_from_slice(&name.as_bytes()[..n]);
+    u64::from_be_bytes(bytes)
+}
+
+/// The axis a subscript names, primes ignored: `x` or `X` is 0, `y` 1, `z` 2, anything
+/// else (`xy`, `1`, empty) none.
+pub fn axis_of_subscript(subscript: &str) -> Option<usize> {
+    match subscript.trim_end_matches('\'') {
+        "x" | "X" => Some(0),
+        "y" | "Y" => Some(1),
+        "z" | "Z" => Some(2),
+        _ => None,
     }
 }
 
@@ -273,6 +349,7 @@ fn latex_of(base: &str, barred: bool, dots: u8, subscript: &str) -> String {
 }
 
 impl PartialEq for Symbol {
+    #[inline]
     fn eq(&self, other: &Symbol) -> bool {
         std::ptr::eq(self.0, other.0)
     }
@@ -287,11 +364,15 @@ impl Hash for Symbol {
 }
 
 impl Ord for Symbol {
+    #[inline]
     fn cmp(&self, other: &Symbol) -> std::cmp::Ordering {
         if self == other {
             std::cmp::Ordering::Equal
         } else {
-            self.0.name.cmp(&other.0.name)
+            self.0
+                .name_prefix
+                .cmp(&other.0.name_prefix)
+                .then_with(|| self.0.name.cmp(&other.0.name))
         }
     }
 }
@@ -350,5 +431,41 @@ mod tests {
         assert_eq!(w.dot(), Symbol::new("wdot_1"));
         assert_eq!(w.dot().dot(), Symbol::new("wddot1"));
         assert!(!Symbol::new("L").is_time_dependent());
+    }
+
+    #[test]
+    fn order_is_the_order_of_names() {
+        let names = [
+            "I",
+            "I_x",
+            "I_xy",
+            "I_xz",
+            "I_y",
+            "alpha",
+            "alphadot",
+            "w",
+            "w_x",
+            "w_y",
+            "wdot_x",
+            "wdot_xy",
+            "wdot_xz",
+            "thetaddot_x'",
+            "a",
+        ];
+        for a in names {
+            for b in names {
+                let (sa, sb) = (Symbol::new(a), Symbol::new(b));
+                assert_eq!(sa.cmp(&sb), sa.name().cmp(sb.name()), "{a} vs {b}");
+            }
+        }
+    }
+
+    #[test]
+    fn other_threads_get_the_same_symbols() {
+        let here = Symbol::new("omega_thread");
+        let there = std::thread::spawn(|| Symbol::new("omega_thread"))
+            .join()
+            .expect("thread ran");
+        assert_eq!(here, there);
     }
 }

@@ -58,7 +58,11 @@ pub fn derive_general(name: &str, principal: bool) -> Option<Result<Derivation, 
         "T_O" => kinetic_energy(&inertia, &omega, None),
         // Plane motion: ω along the principal axis z (moment I), x along v̄.
         "T_plane" => {
-            let plane = InertiaTensor::diagonal([Expr::symbol("I_x"), Expr::symbol("I_y"), Expr::symbol("I")]);
+            let plane = InertiaTensor::diagonal([
+                Expr::symbol("I_x"),
+                Expr::symbol("I_y"),
+                Expr::symbol("I"),
+            ]);
             let spin = Vector::new(Expr::zero(), Expr::zero(), Expr::symbol("w"));
             let v = Vector::new(Expr::symbol("vbar"), Expr::zero(), Expr::zero());
             kinetic_energy(&plane, &spin, Some((&m, &v))).map(|mut d| {

@@ -4,120 +4,201 @@
 
 use super::layout::{Layout, Product};
 use crate::algebra::{Func, Q};
+use std::fmt::Write;
 
 /// Renders a signed layout.
 pub fn render(negative: bool, layout: &Layout) -> String {
-    let body = node(layout);
+    let mut out = String::with_capacity(256);
+    let grouped = negative && matches!(layout, Layout::Sum(_));
     if negative {
-        match layout {
-            Layout::Sum(_) => format!("-({body})"),
-            _ => format!("-{body}"),
-        }
-    } else {
-        body
+        out.push('-');
     }
+    if grouped {
+        out.push('(');
+    }
+    node(&mut out, layout);
+    if grouped {
+        out.push(')');
+    }
+    out
 }
 
-fn node(layout: &Layout) -> String {
+fn node(out: &mut String, layout: &Layout) {
     match layout {
-        Layout::Number(q) => number(q),
-        Layout::Symbol(s) => s.latex().to_string(),
+        Layout::Number(q) => number(out, q),
+        Layout::Symbol(s) => out.push_str(s.latex()),
         Layout::Sum(terms) => {
-            let mut out = String::new();
             for (i, (negative, term)) in terms.iter().enumerate() {
-                match (i, negative) {
-                    (0, true) => out.push('-'),
-                    (0, false) => {}
-                    (_, true) => out.push_str(" - "),
-                    (_, false) => out.push_str(" + "),
-                }
-                out.push_str(&node(term));
-            }
-            out
-        }
-        Layout::Product(p) => product(p),
-        Layout::Power(base, exponent) => {
-            let e = node(exponent);
-            let e = if e.chars().count() == 1 {
-                e
-            } else {
-                format!("{{{e}}}")
-            };
-            match &**base {
-                Layout::Function(f, arg) => {
-                    format!("{}^{e}{}", function_name(*f), function_argument(arg))
-                }
-                b => format!("{}^{e}", factor(b)),
+                out.push_str(match (i, negative) {
+                    (0, true) => "-",
+                    (0, false) => "",
+                    (_, true) => " - ",
+                    (_, false) => " + ",
+                });
+                node(out, term);
             }
         }
-        Layout::SquareRoot(inner) => format!(r"\sqrt{{{}}}", node(inner)),
-        Layout::Function(Func::Abs, arg) => format!(r"\left|{}\right|", node(arg)),
-        Layout::Function(f, arg) => format!("{}{}", function_name(*f), function_argument(arg)),
+        Layout::Product(p) => product(out, p),
+        Layout::Power(base, exponent) => match &**base {
+            Layout::Function(f, arg) => {
+                function_name(out, *f);
+                superscript(out, exponent);
+                function_argument(out, arg);
+            }
+            b => {
+                factor(out, b);
+                superscript(out, exponent);
+            }
+        },
+        Layout::SquareRoot(inner) => {
+            out.push_str(r"\sqrt{");
+            node(out, inner);
+            out.push('}');
+        }
+        Layout::Function(Func::Abs, arg) => {
+            out.push_str(r"\left|");
+            node(out, arg);
+            out.push_str(r"\right|");
+        }
+        Layout::Function(f, arg) => {
+            function_name(out, *f);
+            function_argument(out, arg);
+        }
     }
 }
 
-fn function_name(f: Func) -> String {
-    format!(r"\{}", f.name())
+/// `^e` for an exponent of one character, `^{...}` otherwise.
+fn superscript(out: &mut String, exponent: &Layout) {
+    out.push('^');
+    let start = out.len();
+    node(out, exponent);
+    if out[start..].chars().count() != 1 {
+        out.insert(start, '{');
+        out.push('}');
+    }
+}
+
+fn function_name(out: &mut String, f: Func) {
+    out.push('\\');
+    out.push_str(f.name());
 }
 
 /// `\sin\beta`, `\sin x`, `\sin(\beta + \theta)`.
-fn function_argument(arg: &Layout) -> String {
+fn function_argument(out: &mut String, arg: &Layout) {
     match arg {
-        Layout::Symbol(s) if s.latex().starts_with('\\') => s.latex().to_string(),
-        Layout::Symbol(s) => format!(" {}", s.latex()),
-        other => format!("({})", node(other)),
+        Layout::Symbol(s) => {
+            if !s.latex().starts_with('\\') {
+                out.push(' ');
+            }
+            out.push_str(s.latex());
+        }
+        other => {
+            out.push('(');
+            node(out, other);
+            out.push(')');
+        }
     }
 }
 
-fn number(q: &Q) -> String {
+fn number(out: &mut String, q: &Q) {
     if q.is_integer() {
-        q.to_string()
+        integer(out, q);
     } else {
-        format!(r"\frac{{{}}}{{{}}}", q.numer(), q.denom())
+        fraction(out, &q.numer(), &q.denom());
+    }
+}
+
+/// `\frac{n}{d}`.
+fn fraction(out: &mut String, n: &Q, d: &Q) {
+    out.push_str(r"\frac{");
+    integer(out, n);
+    out.push_str("}{");
+    integer(out, d);
+    out.push('}');
+}
+
+/// An integer-valued rational in decimal digits.
+fn integer(out: &mut String, q: &Q) {
+    match q.to_i64().and_then(|n| u8::try_from(n).ok()) {
+        Some(digit @ 0..=9) => out.push(char::from(b'0' + digit)),
+        // Formatting into a `String` cannot fail.
+        _ => {
+            let _ = write!(out, "{q}");
+        }
     }
 }
 
 /// A factor inside a product or under an exponent: sums and products get parentheses.
-fn factor(layout: &Layout) -> String {
+fn factor(out: &mut String, layout: &Layout) {
     match layout {
-        Layout::Sum(_) | Layout::Product(_) => format!("({})", node(layout)),
-        Layout::Number(q) if !q.is_integer() => format!("({})", number(q)),
-        other => node(other),
+        Layout::Sum(_) | Layout::Product(_) => {
+            out.push('(');
+            node(out, layout);
+            out.push(')');
+        }
+        Layout::Number(q) if !q.is_integer() => {
+            out.push('(');
+            number(out, q);
+            out.push(')');
+        }
+        other => node(out, other),
     }
 }
 
-fn product(p: &Product) -> String {
-    let (cn, cd) = (p.coefficient.numer(), p.coefficient.denom());
-    let numerator: Vec<String> = p.numerator.iter().map(factor).collect();
-    if p.denominator.is_empty() {
-        let mut parts = Vec::new();
-        if !cd.is_one() {
-            parts.push(format!(r"\frac{{{cn}}}{{{cd}}}"));
-        } else if !cn.is_one() || numerator.is_empty() {
-            parts.push(cn.to_string());
+/// Factors separated by spaces, after whatever `out` already holds of the same product.
+fn factors(out: &mut String, mut separate: bool, layouts: &[Layout]) {
+    for f in layouts {
+        if separate {
+            out.push(' ');
         }
-        parts.extend(numerator);
-        return parts.join(" ");
+        factor(out, f);
+        separate = true;
     }
-    let mut top = Vec::new();
-    if !cn.is_one() || numerator.is_empty() {
-        top.push(cn.to_string());
+}
+
+/// Above or below a fraction bar, which groups on its own: a lone sum needs no parentheses.
+fn fraction_part(out: &mut String, after_number: bool, layouts: &[Layout]) {
+    match layouts {
+        [alone] if !after_number => node(out, alone),
+        _ => factors(out, after_number, layouts),
     }
-    // A fraction bar groups on its own: a lone sum above or below it needs no parentheses.
-    let alone = |parts: &[Layout], number_is_one: bool| number_is_one && parts.len() == 1;
-    if alone(&p.numerator, top.is_empty()) {
-        top.push(node(&p.numerator[0]));
-    } else {
-        top.extend(numerator);
+}
+
+fn product(out: &mut String, p: &Product) {
+    let (cn, cd) = (p.coefficient.numer(), p.coefficient.denom());
+    let shown = !cn.is_one() || p.numerator.is_empty();
+    if p.denominator.is_empty() {
+        if !cd.is_one() {
+            fraction(out, &cn, &cd);
+        } else if shown {
+            integer(out, &cn);
+        }
+        factors(out, !cd.is_one() || shown, &p.numerator);
+        return;
     }
-    let mut bottom = Vec::new();
+    out.push_str(r"\frac{");
+    if shown {
+        integer(out, &cn);
+    }
+    fraction_part(out, shown, &p.numerator);
+    out.push_str("}{");
     if !cd.is_one() {
-        bottom.push(cd.to_string());
+        integer(out, &cd);
     }
-    if alone(&p.denominator, bottom.is_empty()) {
-        bottom.push(node(&p.denominator[0]));
-    } else {
-        bottom.extend(p.denominator.iter().map(factor));
+    fraction_part(out, !cd.is_one(), &p.denominator);
+    out.push('}');
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_of_any_width() {
+        for n in [0, 7, 9, 10, 123, -4, i64::MAX] {
+            assert_eq!(render(false, &Layout::Number(Q::int(n))), n.to_string());
+        }
+        let q = Q::new(12, 7).unwrap();
+        assert_eq!(render(true, &Layout::Number(q)), r"-\frac{12}{7}");
     }
-    format!(r"\frac{{{}}}{{{}}}", top.join(" "), bottom.join(" "))
 }

@@ -19,7 +19,7 @@
 //!    functions, kinematic symbols, unit vectors; factors with negative exponents form a
 //!    denominator.
 
-use crate::algebra::{Expr, Func, Role, Symbol, View, Q};
+use crate::algebra::{axis_of_subscript, Expr, Func, Role, Symbol, View, Q};
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
@@ -62,12 +62,7 @@ impl Axis {
 
     /// The axis named by a subscript such as `x` in `M_x`, if it names exactly one.
     pub fn from_subscript(subscript: &str) -> Option<Axis> {
-        match subscript.trim_end_matches('\'') {
-            "x" | "X" => Some(Axis::X),
-            "y" | "Y" => Some(Axis::Y),
-            "z" | "Z" => Some(Axis::Z),
-            _ => None,
-        }
+        axis_of_subscript(subscript).map(|k| [Axis::X, Axis::Y, Axis::Z][k])
     }
 }
 
@@ -79,33 +74,97 @@ pub fn present(e: &Expr, axis: Axis) -> (bool, Layout) {
     }
 }
 
+/// The terms of a sum that share one kinematic part (rule 1).
+struct Group<'a> {
+    /// The first term with this kinematic part, and any others.
+    first: &'a Expr,
+    others: Vec<&'a Expr>,
+    /// The ordering key of the kinematic part (rule 2).
+    key: KinematicKey,
+}
+
+/// The kinematic factors of a term, in canonical order.
+fn kinematic_part(term: &Expr) -> impl Iterator<Item = &Expr> + Clone {
+    term.factors().iter().filter(|f| is_kinematic_factor(f))
+}
+
+/// The coefficient of a term: the product of its other factors, number included.
+fn coefficient_of(term: &Expr) -> Expr {
+    term.without_factors(is_kinematic_factor)
+}
+
+/// Whether the coefficient of a term is a sum (a single non-kinematic factor that is a sum).
+fn has_sum_coefficient(term: &Expr) -> bool {
+    let mut rest = term.monomial().iter().filter(|f| !is_kinematic_factor(f));
+    matches!(
+        (rest.next().map(Expr::view), rest.next()),
+        (Some(View::Add(_)), None)
+    )
+}
+
+/// Up to this many groups a term's group is found by linear search; beyond, by hashing.
+const LINEAR_SEARCH_GROUPS: usize = 32;
+
 fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
-    // (kinematic factors, coefficient terms), found through an index by kinematic part.
-    let mut groups: Vec<(Vec<Expr>, Vec<Expr>)> = Vec::new();
-    let mut index: HashMap<Vec<Expr>, usize> = HashMap::new();
+    let mut groups: Vec<Group> = Vec::with_capacity(e.terms().len());
+    // The groups by kinematic part, filled once there are too many to search linearly.
+    let mut index: HashMap<Vec<&Expr>, usize> = HashMap::new();
     for term in e.terms() {
-        let (kinematic, coefficient): (Vec<Expr>, Vec<Expr>) = term
-            .factors()
-            .iter()
-            .cloned()
-            .partition(is_kinematic_factor);
-        let coefficient = Expr::mul_all(coefficient);
-        match index.get(&kinematic) {
-            Some(&at) => groups[at].1.push(coefficient),
+        let kinematic = kinematic_part(term);
+        let key = kinematic_key(kinematic.clone());
+        let found = if groups.len() <= LINEAR_SEARCH_GROUPS {
+            groups
+                .iter()
+                .position(|g| g.key == key && kinematic_part(g.first).eq(kinematic.clone()))
+        } else {
+            if index.is_empty() {
+                for (at, g) in groups.iter().enumerate() {
+                    index.insert(kinematic_part(g.first).collect(), at);
+                }
+            }
+            index.get(&kinematic.clone().collect::<Vec<_>>()).copied()
+        };
+        match found {
+            Some(at) => groups[at].others.push(term),
             None => {
-                index.insert(kinematic.clone(), groups.len());
-                groups.push((kinematic, vec![coefficient]));
+                if !index.is_empty() {
+                    index.insert(kinematic.collect(), groups.len());
+                }
+                groups.push(Group {
+                    first: term,
+                    others: Vec::new(),
+                    key,
+                });
             }
         }
     }
-    groups.sort_by(|a, b| compare_kinematic(&a.0, &b.0));
+    // Keys rarely tie, so the kinematic products that break ties are seldom built.
+    groups.sort_by(|a, b| {
+        a.key.cmp(&b.key).then_with(|| {
+            Expr::mul_all(kinematic_part(a.first).cloned())
+                .cmp(&Expr::mul_all(kinematic_part(b.first).cloned()))
+        })
+    });
     let only_group = groups.len() == 1;
-    let mut terms: Vec<(bool, Layout)> = Vec::new();
-    for (kinematic, coefficients) in groups {
-        let coefficient = Expr::add_all(coefficients);
+    let mut terms: Vec<(bool, Layout)> = Vec::with_capacity(groups.len());
+    for group in groups {
+        if group.others.is_empty() && !has_sum_coefficient(group.first) {
+            // A coefficient of one term times the kinematic part is the term itself.
+            terms.push(present_term(group.first, axis));
+            continue;
+        }
+        let coefficient = match group.others[..] {
+            [] => coefficient_of(group.first),
+            [second] => coefficient_of(group.first) + coefficient_of(second),
+            _ => {
+                let members = std::iter::once(group.first).chain(group.others);
+                Expr::add_all(members.map(coefficient_of))
+            }
+        };
         if coefficient.is_zero() {
             continue;
         }
+        let kinematic: Vec<Expr> = kinematic_part(group.first).cloned().collect();
         if kinematic.is_empty() && coefficient.terms().len() > 1 {
             // No kinematic part to collect by: the terms stand on their own.
             let mut plain = coefficient.terms().to_vec();
@@ -235,22 +294,38 @@ fn power(base: &Expr, exponent: Q) -> Expr {
 
 /// A single term (no top-level sum) as a signed product.
 fn present_term(e: &Expr, axis: Axis) -> (bool, Layout) {
-    let (coefficient, factors) = e.coeff_and_factors();
-    let negative = coefficient.is_negative();
-    let coefficient = coefficient.abs();
+    let negative = e.coefficient().is_negative();
+    let coefficient = e.coefficient().abs();
+    let factors = e.monomial();
     let mut numerator: Vec<Layout> = Vec::new();
     let mut denominator: Vec<Layout> = Vec::new();
-    let mut ordered: Vec<&Expr> = factors.iter().collect();
-    ordered.sort_by(|a, b| compare_factors(a, b));
-    ordered = cyclic_pair_order(ordered);
-    for f in ordered {
-        let (base, exponent) = f.base_and_exponent();
+    // The factors with their places, in print order; on the stack unless there are many.
+    let mut inline: [(u8, &Expr); 8] = [(0, e); 8];
+    let mut spilled: Vec<(u8, &Expr)> = Vec::new();
+    let placed = factors.iter().map(|f| (expr_place(f), f));
+    let ordered: &mut [(u8, &Expr)] = if factors.len() <= inline.len() {
+        inline
+            .iter_mut()
+            .zip(placed)
+            .for_each(|(slot, f)| *slot = f);
+        &mut inline[..factors.len()]
+    } else {
+        spilled.extend(placed);
+        &mut spilled
+    };
+    ordered.sort_by(|(pa, a), (pb, b)| pa.cmp(pb).then_with(|| compare_in_place(a, b)));
+    cyclic_pair_order(ordered);
+    for &(_, f) in ordered.iter() {
+        let View::Pow(base, exponent) = f.view() else {
+            numerator.push(present_atom(f, axis));
+            continue;
+        };
         match exponent.as_num() {
             Some(q) if q.is_negative() => denominator.push(present_power(base, &q.abs(), axis)),
             Some(q) => numerator.push(present_power(base, q, axis)),
             None => numerator.push(Layout::Power(
                 Box::new(present_atom(base, axis)),
-                Box::new(present_signed_inline(&exponent, axis)),
+                Box::new(present_signed_inline(exponent, axis)),
             )),
         }
     }
@@ -307,8 +382,7 @@ fn present_signed_inline(e: &Expr, axis: Axis) -> Layout {
 }
 
 fn is_kinematic_factor(f: &Expr) -> bool {
-    let (base, _) = f.base_and_exponent();
-    match base.view() {
+    match f.base().view() {
         View::Sym(s) => matches!(s.role(), Role::Kinematic | Role::UnitVector),
         View::Func(_, arg) => arg.symbols().iter().any(|s| s.role() == Role::Kinematic),
         _ => false,
@@ -342,18 +416,13 @@ fn symbol_place(s: Symbol) -> u8 {
 }
 
 fn expr_place(e: &Expr) -> u8 {
-    let (base, _) = e.base_and_exponent();
-    match base.view() {
+    match e.base().view() {
         View::Num(_) => 0,
         View::Sym(s) => symbol_place(s),
         View::Func(_, arg) if arg.symbols().iter().any(|s| s.role() == Role::Kinematic) => 8,
         View::Func(..) => 7,
         _ => GROUP_PLACE,
     }
-}
-
-fn axis_of(s: Symbol) -> Option<usize> {
-    Axis::from_subscript(s.subscript()).map(Axis::index)
 }
 
 /// Translational (v, a) before rotational (ω, α) before angles and others.
@@ -365,96 +434,98 @@ fn family(s: Symbol) -> u8 {
     }
 }
 
-fn compare_factors(a: &Expr, b: &Expr) -> Ordering {
-    expr_place(a).cmp(&expr_place(b)).then_with(|| {
-        let (sa, sb) = (
-            a.base_and_exponent().0.as_symbol(),
-            b.base_and_exponent().0.as_symbol(),
-        );
-        match (sa, sb) {
-            (Some(x), Some(y)) if x.role() == Role::Kinematic && y.role() == Role::Kinematic => {
-                family(x)
-                    .cmp(&family(y))
-                    .then_with(|| axis_of(x).cmp(&axis_of(y)))
-                    .then_with(|| x.cmp(&y))
-            }
-            (Some(x), Some(y)) if x.role() == Role::Inertia && y.role() == Role::Inertia => {
-                inertia_key(x, Axis::X).cmp(&inertia_key(y, Axis::X))
-            }
-            (Some(x), Some(y)) => (x.base() == "Dt")
-                .cmp(&(y.base() == "Dt"))
-                .then_with(|| x.cmp(&y)),
-            _ => a.cmp(b),
+/// The order of two factors with the same place in a product (rule 4).
+fn compare_in_place(a: &Expr, b: &Expr) -> Ordering {
+    let (sa, sb) = (a.base().as_symbol(), b.base().as_symbol());
+    match (sa, sb) {
+        (Some(x), Some(y)) if x.role() == Role::Kinematic && y.role() == Role::Kinematic => {
+            family(x)
+                .cmp(&family(y))
+                .then_with(|| x.axis().cmp(&y.axis()))
+                .then_with(|| x.cmp(&y))
         }
-    })
+        (Some(x), Some(y)) if x.role() == Role::Inertia && y.role() == Role::Inertia => {
+            inertia_key(x, Axis::X).cmp(&inertia_key(y, Axis::X))
+        }
+        (Some(x), Some(y)) => (x.base() == "Dt")
+            .cmp(&(y.base() == "Dt"))
+            .then_with(|| x.cmp(&y)),
+        _ => a.cmp(b),
+    }
 }
 
 /// Two kinematic factors on the axes z and x are written `ω_z ω_x` (cyclic order zx).
-fn cyclic_pair_order(mut factors: Vec<&Expr>) -> Vec<&Expr> {
-    let kinematic: Vec<usize> = (0..factors.len())
-        .filter(|&i| expr_place(factors[i]) == 8)
-        .collect();
-    if let [i, j] = kinematic[..] {
-        let axes = |k: usize| {
-            factors[k]
-                .base_and_exponent()
-                .0
-                .as_symbol()
-                .and_then(axis_of)
-        };
-        if axes(i) == Some(0) && axes(j) == Some(2) {
+fn cyclic_pair_order(factors: &mut [(u8, &Expr)]) {
+    let (first, second, third) = {
+        let mut kinematic = (0..factors.len()).filter(|&i| factors[i].0 == 8);
+        (kinematic.next(), kinematic.next(), kinematic.next())
+    };
+    if let (Some(i), Some(j), None) = (first, second, third) {
+        let axis = |k: usize| factors[k].1.base().as_symbol().and_then(Symbol::axis);
+        if axis(i) == Some(0) && axis(j) == Some(2) {
             factors.swap(i, j);
         }
     }
-    factors
 }
 
-/// Ordering key of a kinematic monomial (rule 2).
-fn kinematic_key(factors: &[Expr]) -> (u8, u8, usize, usize) {
-    let symbols: Vec<Symbol> = factors
-        .iter()
-        .flat_map(|f| f.base_and_exponent().0.symbols())
-        .filter(|s| s.role() == Role::Kinematic)
-        .collect();
-    if symbols.is_empty() {
+/// Ordering key of a kinematic monomial (rule 2): terms free of kinematic symbols, then
+/// accelerations before velocities, the family (translational first), the number of
+/// kinematic symbols, and the axis or the cyclic pair of axes.
+type KinematicKey = (u8, u8, usize, usize);
+
+fn kinematic_key<'a>(factors: impl Iterator<Item = &'a Expr>) -> KinematicKey {
+    let mut factor_count = 0usize;
+    let mut count = 0usize;
+    let mut acceleration = false;
+    let mut lowest_family = 2u8;
+    // Bit k is set when a symbol on axis k occurs.
+    let mut axes = 0u8;
+    let mut visit = |s: Symbol| {
+        if s.role() == Role::Kinematic {
+            count += 1;
+            acceleration |= s.is_acceleration();
+            lowest_family = lowest_family.min(family(s));
+            if let Some(k) = s.axis() {
+                axes |= 1 << k;
+            }
+        }
+    };
+    for f in factors {
+        factor_count += 1;
+        match f.base().as_symbol() {
+            Some(s) => visit(s),
+            None => f.base().symbols().into_iter().for_each(&mut visit),
+        }
+    }
+    if count == 0 {
         return (0, 0, 0, 0);
     }
-    let class = if symbols.iter().any(|s| s.is_acceleration()) {
-        1
-    } else {
-        2
-    };
-    let fam = symbols.iter().map(|s| family(*s)).min().unwrap_or(2);
-    let mut axes: Vec<usize> = symbols.iter().filter_map(|s| axis_of(*s)).collect();
-    axes.sort_unstable();
-    axes.dedup();
-    let axis_rank = match axes[..] {
-        [a] => a,
-        [0, 1] => 0,
-        [1, 2] => 1,
-        [0, 2] => 2,
+    let class = if acceleration { 1 } else { 2 };
+    let axis_rank = match axes {
+        0b001 | 0b011 => 0,
+        0b010 | 0b110 => 1,
+        0b100 | 0b101 => 2,
         _ => 3,
     };
-    (class, fam, symbols.len().min(factors.len()), axis_rank)
-}
-
-fn compare_kinematic(a: &[Expr], b: &[Expr]) -> Ordering {
-    kinematic_key(a).cmp(&kinematic_key(b)).then_with(|| {
-        crate::algebra::Expr::mul_all(a.iter().cloned()).cmp(&Expr::mul_all(b.iter().cloned()))
-    })
+    (class, lowest_family, count.min(factor_count), axis_rank)
 }
 
 /// Ordering key of an inertia symbol for the equation about `axis` (rule 3).
 fn inertia_key(s: Symbol, axis: Axis) -> (u8, usize, Symbol) {
     let a = axis.index();
-    let sub: Vec<usize> = s
-        .subscript()
-        .chars()
-        .filter_map(|c| Axis::from_subscript(&c.to_string()).map(Axis::index))
-        .collect();
-    match sub[..] {
-        [k] if s.subscript().len() == 1 => (0, (k + 3 - a) % 3, s),
-        [p, q] => {
+    let subscript = s.subscript();
+    // The axes the subscript names, in order: the first two and how many.
+    let mut named = [0usize; 2];
+    let mut count = 0;
+    for k in subscript.chars().filter_map(axis_of_letter) {
+        if let Some(slot) = named.get_mut(count) {
+            *slot = k;
+        }
+        count += 1;
+    }
+    match (count, named) {
+        (1, [k, _]) if subscript.len() == 1 => (0, (k + 3 - a) % 3, s),
+        (2, [p, q]) => {
             let pair = match (p.min(q), p.max(q)) {
                 (0, 1) => 0,
                 (1, 2) => 1,
@@ -466,12 +537,21 @@ fn inertia_key(s: Symbol, axis: Axis) -> (u8, usize, Symbol) {
     }
 }
 
+/// The axis index of one subscript letter: `x` or `X` is 0, `y` 1, `z` 2.
+fn axis_of_letter(c: char) -> Option<usize> {
+    match c {
+        'x' | 'X' => Some(0),
+        'y' | 'Y' => Some(1),
+        'z' | 'Z' => Some(2),
+        _ => None,
+    }
+}
+
 fn compare_coefficient_terms(a: &Expr, b: &Expr, axis: Axis) -> Ordering {
     let key = |e: &Expr| {
-        e.coeff_and_factors()
-            .1
+        e.monomial()
             .iter()
-            .filter_map(|f| f.base_and_exponent().0.as_symbol())
+            .filter_map(|f| f.base().as_symbol())
             .filter(|s| s.role() == Role::Inertia)
             .map(|s| inertia_key(s, axis))
             .min()
@@ -480,7 +560,7 @@ fn compare_coefficient_terms(a: &Expr, b: &Expr, axis: Axis) -> Ordering {
         (Some(x), Some(y)) => x.cmp(&y),
         (Some(_), None) => Ordering::Less,
         (None, Some(_)) => Ordering::Greater,
-        (None, None) => compare_lexicographic(a.coeff_and_factors().1, b.coeff_and_factors().1),
+        (None, None) => compare_lexicographic(a.monomial(), b.monomial()),
     }
 }
 
@@ -494,4 +574,30 @@ fn compare_lexicographic(a: &[Expr], b: &[Expr]) -> Ordering {
         }
     }
     b.len().cmp(&a.len())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Σ (a + b) ω_i over more kinematic parts than a linear search handles: the groups
+    /// found through the hash index collect exactly like the first ones.
+    #[test]
+    fn many_kinematic_parts_collect_alike() {
+        let n = 2 * LINEAR_SEARCH_GROUPS;
+        let (a, b) = (Expr::symbol("a"), Expr::symbol("b"));
+        let e = Expr::add_all((1..=n).flat_map(|i| {
+            let w = Expr::symbol(&format!("w_{i}"));
+            [&a * &w, &b * &w]
+        }));
+        let printed = crate::print::text(&e);
+        for i in 1..=n {
+            assert!(
+                printed.contains(&format!("(a + b)*w_{i} "))
+                    || printed.ends_with(&format!("(a + b)*w_{i}")),
+                "w_{i} in {printed}"
+            );
+        }
+        assert_eq!(printed.matches(" + (a + b)").count(), n - 1, "{printed}");
+    }
 }

@@ -2,8 +2,9 @@
 //! [--format text|latex|json]`: the chapter's equations for a general body.
 
 use kinetics::mechanics::catalogue::{derive_general, NAMES};
-use kinetics::mechanics::{Derivation, Relation};
-use kinetics::print::{self, Notation};
+use kinetics::mechanics::Derivation;
+use kinetics::print::Notation;
+use kinetics::solution::render::{relation, relations_json};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -45,13 +46,6 @@ pub fn run(args: Args) -> Result<String, String> {
         super::show::Format::Latex => render(&derivations, Notation::Latex, args.steps),
         super::show::Format::Json => json(&derivations).to_string(),
     })
-}
-
-fn relation(r: &Relation, notation: Notation) -> (String, String) {
-    (
-        print::render(&r.lhs, notation, r.axis),
-        print::render(&r.rhs, notation, r.axis),
-    )
 }
 
 /// Text: a heading per derivation and `lhs = rhs` lines. LaTeX: an `align*` block per step.
@@ -99,15 +93,7 @@ fn render(derivations: &[Derivation], notation: Notation, all_steps: bool) -> St
 }
 
 fn json(derivations: &[Derivation]) -> serde_json::Value {
-    let relations = |rs: &[Relation]| -> Vec<serde_json::Value> {
-        rs.iter()
-            .map(|r| {
-                let (lt, rt) = relation(r, Notation::Text);
-                let (ll, rl) = relation(r, Notation::Latex);
-                serde_json::json!({"text": format!("{lt} = {rt}"), "latex": format!("{ll} = {rl}")})
-            })
-            .collect()
-    };
+    let relations = relations_json;
     serde_json::Value::Array(
         derivations
             .iter()

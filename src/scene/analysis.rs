@@ -65,17 +65,7 @@ struct Analyser<'a> {
 
 /// Runs the analysis for the scene's requests.
 pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
-    let mut a = Analyser {
-        scene,
-        plan: Vec::new(),
-        body: None,
-        kinematics: None,
-        vbar: None,
-        abar: None,
-        h_g: None,
-        hdot_g: None,
-        unknowns: None,
-    };
+    let mut a = Analyser::new(scene);
     let mut results = Vec::new();
     for request in &scene.requests {
         let value = a.request(request)?;
@@ -91,17 +81,7 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
 /// The body's mass, mass centre (from O) and centroidal inertia, for callers that need the
 /// body but no derivation (the simulator).
 pub fn centroidal_body(scene: &Scene) -> Result<(Expr, Vector, InertiaTensor), Diagnostic> {
-    let mut a = Analyser {
-        scene,
-        plan: Vec::new(),
-        body: None,
-        kinematics: None,
-        vbar: None,
-        abar: None,
-        h_g: None,
-        hdot_g: None,
-        unknowns: None,
-    };
+    let mut a = Analyser::new(scene);
     let whole_file = Request::at("body", Span { start: 0, end: 0 });
     let body = a.body(&whole_file)?;
     Ok((
@@ -123,7 +103,21 @@ fn components(name: &str, v: &Vector) -> Vec<Relation> {
     Relation::components(name, v)
 }
 
-impl Analyser<'_> {
+impl<'a> Analyser<'a> {
+    fn new(scene: &'a Scene) -> Analyser<'a> {
+        Analyser {
+            scene,
+            plan: Vec::new(),
+            body: None,
+            kinematics: None,
+            vbar: None,
+            abar: None,
+            h_g: None,
+            hdot_g: None,
+            unknowns: None,
+        }
+    }
+
     fn fail(
         &self,
         request: &Request,

@@ -99,7 +99,8 @@ fn vector_unit(dims: &Dimensions, v: &Vector) -> Option<String> {
     v.iter().find(|c| !c.is_zero()).and_then(|c| unit(dims, c))
 }
 
-fn relation(r: &Relation, notation: Notation) -> (String, String) {
+/// The two sides of a relation in the chosen notation, presented about its axis.
+pub fn relation(r: &Relation, notation: Notation) -> (String, String) {
     (
         print::render(&r.lhs, notation, r.axis),
         print::render(&r.rhs, notation, r.axis),
@@ -348,16 +349,19 @@ fn markdown(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     out
 }
 
+/// Relations as JSON objects `{"text": "lhs = rhs", "latex": "lhs = rhs"}`.
+pub fn relations_json(rs: &[Relation]) -> Vec<serde_json::Value> {
+    rs.iter()
+        .map(|r| {
+            let (lt, rt) = relation(r, Notation::Text);
+            let (ll, rl) = relation(r, Notation::Latex);
+            serde_json::json!({"text": format!("{lt} = {rt}"), "latex": format!("{ll} = {rl}")})
+        })
+        .collect()
+}
+
 fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::Value {
-    let relations = |rs: &[Relation]| -> Vec<serde_json::Value> {
-        rs.iter()
-            .map(|r| {
-                let (lt, rt) = relation(r, Notation::Text);
-                let (ll, rl) = relation(r, Notation::Latex);
-                serde_json::json!({"text": format!("{lt} = {rt}"), "latex": format!("{ll} = {rl}")})
-            })
-            .collect()
-    };
+    let relations = relations_json;
     serde_json::json!({
         "title": scene.title,
         "plan": analysis.plan.iter().map(|s| s.title.clone()).collect::<Vec<_>>(),

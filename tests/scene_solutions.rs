@@ -158,12 +158,17 @@ fn json_has_the_documented_fields() {
     assert!(d_y["latex"].as_str().unwrap().contains(r"\frac{3 M}{16 c}"));
 }
 
-const EXAMPLES: [&str; 5] = [
+const EXAMPLES: [&str; 10] = [
     "sp18_1_plate_impact",
     "sp18_2_rolling_disk",
     "sp18_3_rotating_rod",
     "sp18_4_shaft_reactions",
     "sp18_5_disk_reactions",
+    "unbalanced_shaft",
+    "balanced_shaft",
+    "general_body",
+    "sliding_box",
+    "free_body",
 ];
 
 #[test]

@@ -158,7 +158,7 @@ fn json_has_the_documented_fields() {
     assert!(d_y["latex"].as_str().unwrap().contains(r"\frac{3 M}{16 c}"));
 }
 
-const EXAMPLES: [&str; 10] = [
+const EXAMPLES: [&str; 11] = [
     "sp18_1_plate_impact",
     "sp18_2_rolling_disk",
     "sp18_3_rotating_rod",
@@ -169,6 +169,7 @@ const EXAMPLES: [&str; 10] = [
     "general_body",
     "sliding_box",
     "free_body",
+    "spun_up_sphere",
 ];
 
 #[test]

@@ -129,3 +129,33 @@ fn bad_requests_are_refused() {
     ]);
     assert_eq!(code, 1, "{stderr}");
 }
+
+#[test]
+fn a_time_dependent_couple_follows_the_closed_form() {
+    // Sphere: I = 2/5 m r² = 0.02; couple M0 sin(p t) i with M0 = 0.02, p = 2, w_0 = 1:
+    // w_x(t) = w_0 + M0 (1 - cos p t)/(p I); w_y, w_z constant.
+    let times: [f64; 4] = [0.5, 1.0, 2.5, 10.0];
+    let at = times.map(|t| t.to_string()).join(",");
+    let (code, out, stderr) = kinetics(&[
+        "simulate",
+        &scene("spun_up_sphere"),
+        "--at",
+        &at,
+        "--rtol",
+        "1e-12",
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        stderr.contains("steps"),
+        "a varying couple is integrated: {stderr}"
+    );
+    for (row, t) in rows(&out).iter().zip(times) {
+        let expected = 1.0 + 0.02 * (1.0 - (2.0 * t).cos()) / (2.0 * 0.02);
+        assert!(
+            (row[1] - expected).abs() < 1e-10,
+            "t = {t}: {} vs {expected}",
+            row[1]
+        );
+        assert!((row[2] - 0.5).abs() < 1e-12 && row[3].abs() < 1e-12);
+    }
+}

@@ -12,6 +12,9 @@ use crate::parse::{parse_expression, Diagnostic};
 use pest::iterators::Pair;
 use pest::Parser;
 
+/// The name of time in scene mathematics.
+pub const TIME: &str = "t";
+
 #[derive(pest_derive::Parser)]
 #[grammar = "../grammar/scene.pest"]
 struct SceneGrammar;
@@ -64,6 +67,8 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
             reader.dims.insert(s, Dimension::NONE);
         }
     }
+    // `t` is the time, for loads that vary (`couple M0*sin(p*t)*i`), unless declared.
+    reader.dims.insert(Symbol::new(TIME), Dimension::TIME);
     let statements = pairs.next().map(Pair::into_inner).into_iter().flatten();
     for statement in statements {
         reader.statement(statement)?;
@@ -224,7 +229,9 @@ impl Reader<'_> {
                 .error(span(name), "i, j and k are the unit vectors")
                 .with_help("choose another name"));
         }
-        if self.dims.contains_key(&symbol) {
+        // `t` is the time unless the scene declares it (a thickness, say).
+        let undeclared_time = name.as_str() == TIME && self.scene.dimension(symbol).is_none();
+        if self.dims.contains_key(&symbol) && !undeclared_time {
             return Err(self
                 .error(span(name), format!("{} is declared twice", name.as_str()))
                 .with_help("declare each symbol once, with 'given' or 'unknown'"));

@@ -1,16 +1,19 @@
 //! A scene as a numerical problem for the simulator: the centroidal inertia tensor, the
 //! initial angular velocity, and the moment of the loads about G, all from the givens'
-//! values. Loads are taken as fixed in the body (constant body-frame moments).
+//! values. Loads are taken as fixed in the body; a load may vary with the time `t`.
 
 use super::analysis::centroidal_body;
 use super::model::Scene;
-use crate::algebra::{Expr, Symbol};
+use super::parse::TIME;
+use crate::algebra::{Expr, Symbol, Vector};
 use crate::numeric::body_inertia::BodyInertia;
 use crate::numeric::rigid_body_state::RigidBodyState;
 use crate::numeric::simulate::Problem;
+use crate::numeric::tape::Tape;
 use crate::numeric::torque::Torque;
 use crate::parse::Diagnostic;
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
+use std::cell::RefCell;
 
 fn whole(scene: &Scene, message: String, help: &str) -> Diagnostic {
     Diagnostic::at(&scene.source_name, &scene.source, 0, 0, message).with_help(help)
@@ -24,6 +27,66 @@ fn number(scene: &Scene, e: &Expr, what: &str) -> Result<f64, Diagnostic> {
             "give every symbol of the body, omega and the loads a value ('given m = 2 kg')",
         )
     })
+}
+
+/// The moment of the loads about G as a torque: constant when it does not depend on time,
+/// otherwise a function of `t` evaluated through a compiled tape.
+fn torque(scene: &Scene, moment: &Vector) -> Result<Torque<f64>, Diagnostic> {
+    let time = Symbol::new(TIME);
+    // A scene that declares `t` uses it as a quantity of its own, not as the time.
+    let varies = scene.dimension(time).is_none() && moment.iter().any(|m| m.contains(time));
+    if !varies {
+        let mut constant = Vector3::zeros();
+        for k in 0..3 {
+            constant[k] = number(scene, &moment[k], "the moment of the loads")?;
+        }
+        return Ok(if constant == Vector3::zeros() {
+            Torque::None
+        } else {
+            Torque::Body(constant)
+        });
+    }
+    let mut inputs = vec![time];
+    for s in moment.iter().flat_map(|m| m.symbols()) {
+        if !inputs.contains(&s) {
+            inputs.push(s);
+        }
+    }
+    let mut values = vec![0.0];
+    for s in &inputs[1..] {
+        values.push(scene.value(*s).ok_or_else(|| {
+            whole(
+                scene,
+                format!(
+                    "the moment of the loads has no numerical value: no value for {}",
+                    s.name()
+                ),
+                "give every symbol of the loads a value ('given M0 = 2 N*m')",
+            )
+        })?);
+    }
+    let outputs: Vec<Expr> = moment.iter().cloned().collect();
+    let tape = Tape::compile(&outputs, &inputs).map_err(|e| {
+        whole(
+            scene,
+            format!("the moment of the loads cannot be compiled: {e}"),
+            "simplify the loads",
+        )
+    })?;
+    let scratch = RefCell::new((values, Vec::new()));
+    Ok(Torque::Function(Box::new(
+        move |t: f64, _state: &RigidBodyState<f64>| {
+            let mut guard = scratch.borrow_mut();
+            let (inputs, registers) = &mut *guard;
+            inputs[0] = t;
+            let mut out = [0.0; 3];
+            // A non-finite moment is left as NaN; the driver stops with an error at that time.
+            if tape.eval_with(inputs, &mut out, registers).is_err() {
+                out = [f64::NAN; 3];
+            }
+            Vector3::new(out[0], out[1], out[2])
+        },
+    )))
 }
 
 /// The initial-value problem of the scene's body, starting at rest orientation at t = 0.
@@ -47,26 +110,20 @@ pub fn problem(scene: &Scene) -> Result<Problem<f64>, Diagnostic> {
     for k in 0..3 {
         omega0[k] = number(scene, &omega[k], "omega")?;
     }
-    let mut moment = Vector3::zeros();
-    for f in &scene.forces {
-        let arm = &f.point - &centroid;
-        let m = arm.cross(&f.value);
-        for k in 0..3 {
-            moment[k] += number(scene, &m[k], &format!("the moment of force {}", f.name))?;
-        }
-    }
-    for c in &scene.couples {
-        for k in 0..3 {
-            moment[k] += number(scene, &c[k], "a couple")?;
-        }
-    }
+    let arms = scene
+        .forces
+        .iter()
+        .map(|f| (&f.point - &centroid).cross(&f.value));
+    let moment = scene
+        .couples
+        .iter()
+        .cloned()
+        .chain(arms)
+        .fold(Vector::from_element(Expr::zero()), |a, b| a + b);
+    let torque = torque(scene, &moment)?;
     Ok(Problem {
         inertia: BodyInertia::Tensor(tensor),
-        torque: if moment == Vector3::zeros() {
-            Torque::None
-        } else {
-            Torque::Body(moment)
-        },
+        torque,
         initial: RigidBodyState::new(omega0, UnitQuaternion::identity()),
         start_time: 0.0,
     })

@@ -33,6 +33,23 @@ pub struct PrincipalFrame<T: RealField + Copy> {
     pub rotation: Rotation3<T>,
 }
 
+/// Euler's equations divide by the principal moments: each must be positive, above
+/// [`INERTIA_RELATIVE_TOLERANCE`] times their sum (a body on a line has no defined spin about
+/// its own axis). The moments are assumed admissible already.
+pub fn require_invertible(moments: &Vector3<f64>) -> Result<(), NumericError> {
+    let smallest = moments.min();
+    if smallest <= INERTIA_RELATIVE_TOLERANCE * moments.sum() {
+        return Err(NumericError::InvalidInput {
+            what: "inertia".to_string(),
+            reason: format!(
+                "the smallest principal moment is {smallest:e}; Euler's equations need an \
+                 invertible inertia tensor (every principal moment positive)"
+            ),
+        });
+    }
+    Ok(())
+}
+
 impl<T: RealField + Copy> BodyInertia<T> {
     /// Checks that the body can exist (finite, triangle inequality, positive semidefinite)
     /// and that `[I]` is invertible (smallest principal moment above
@@ -50,17 +67,7 @@ impl<T: RealField + Copy> BodyInertia<T> {
                 tensor.symmetric_eigenvalues()
             }
         };
-        let smallest = moments.min();
-        if smallest <= INERTIA_RELATIVE_TOLERANCE * moments.sum() {
-            return Err(NumericError::InvalidInput {
-                what: "inertia".to_string(),
-                reason: format!(
-                    "the smallest principal moment is {smallest:e}; Euler's equations need an \
-                     invertible inertia tensor (every principal moment positive)"
-                ),
-            });
-        }
-        Ok(())
+        require_invertible(&moments)
     }
 
     /// Angular momentum `H = [I] ω`, body-frame components.

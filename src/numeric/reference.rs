@@ -14,6 +14,7 @@
 //! rounding. The method shares nothing with the elliptic-function solution it checks.
 
 use crate::mechanics::validation::validate_principal_moments;
+use crate::numeric::body_inertia::require_invertible;
 use crate::numeric::double_double::DoubleDouble as Dd;
 use crate::numeric::error::NumericError;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
@@ -53,12 +54,7 @@ impl ReferenceMotion {
         q0: UnitQuaternion<f64>,
     ) -> Result<Self, NumericError> {
         validate_principal_moments(&principal_moments)?;
-        if principal_moments.iter().any(|&i| i <= 0.0) {
-            return Err(NumericError::InvalidInput {
-                what: "principal moments".into(),
-                reason: "the reference integrator needs all three moments positive".into(),
-            });
-        }
+        require_invertible(&principal_moments)?;
         if omega0.iter().any(|w| !w.is_finite()) {
             return Err(NumericError::InvalidInput {
                 what: "initial angular velocity".into(),

@@ -38,6 +38,7 @@
 //! leave the normal range.
 
 use crate::mechanics::validation::validate_principal_moments;
+use crate::numeric::body_inertia::require_invertible;
 use crate::numeric::double_double::DoubleDouble as Dd;
 use crate::numeric::elliptic::{
     complete_first_kind, complete_third_kind, first_kind_from_sines, jacobi, third_kind_from_sines,
@@ -245,12 +246,7 @@ impl TorqueFree {
         q0: UnitQuaternion<f64>,
     ) -> Result<Self, NumericError> {
         validate_principal_moments(&principal_moments)?;
-        if principal_moments.iter().any(|&i| i <= 0.0) {
-            return Err(invalid(
-                "principal moments",
-                format!("{principal_moments:?} has a zero moment; a body on a line has no defined spin about its axis"),
-            ));
-        }
+        require_invertible(&principal_moments)?;
         if omega0.iter().any(|w| !w.is_finite()) {
             return Err(invalid(
                 "initial angular velocity",

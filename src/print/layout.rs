@@ -284,7 +284,26 @@ fn common_factor(terms: &[Expr]) -> Expr {
             }
         });
     }
-    Expr::mul_all(common.into_iter().map(|(b, e)| power(&b, e)))
+    let content = Expr::num(rational_content(terms));
+    Expr::mul_all(std::iter::once(content).chain(common.into_iter().map(|(b, e)| power(&b, e))))
+}
+
+/// The largest positive rational that divides every coefficient, gcd of the numerators over
+/// lcm of the denominators: `1/12 a² + 1/12 d²` has `1/12`, `r²/(8L²) + 3/4` has `1/8`.
+fn rational_content(terms: &[Expr]) -> Q {
+    use num_integer::Integer;
+    let mut numerators = num_bigint::BigInt::from(0);
+    let mut denominators = num_bigint::BigInt::from(1);
+    for t in terms {
+        let (n, d) = t.coeff_and_factors().0.parts();
+        numerators = numerators.gcd(&n);
+        denominators = denominators.lcm(&d);
+    }
+    use num_traits::ToPrimitive;
+    match (numerators.to_i64(), denominators.to_i64()) {
+        (Some(n), Some(d)) if n > 0 => Q::new(n, d).unwrap_or(Q::ONE),
+        _ => Q::ONE,
+    }
 }
 
 fn power(base: &Expr, exponent: Q) -> Expr {

@@ -93,7 +93,6 @@ fn render(derivations: &[Derivation], notation: Notation, all_steps: bool) -> St
 }
 
 fn json(derivations: &[Derivation]) -> serde_json::Value {
-    let relations = relations_json;
     serde_json::Value::Array(
         derivations
             .iter()
@@ -101,10 +100,10 @@ fn json(derivations: &[Derivation]) -> serde_json::Value {
                 serde_json::json!({
                     "name": d.name,
                     "title": d.title,
-                    "result": relations(d.result()),
+                    "result": relations_json(d.result()),
                     "steps": d.steps.iter().map(|s| serde_json::json!({
                         "title": s.title,
-                        "relations": relations(&s.relations),
+                        "relations": relations_json(&s.relations),
                     })).collect::<Vec<_>>(),
                 })
             })

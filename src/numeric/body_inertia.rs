@@ -50,6 +50,31 @@ pub fn require_invertible(moments: &Vector3<f64>) -> Result<(), NumericError> {
     Ok(())
 }
 
+/// The initial values of a torque-free body in principal axes: admissible, invertible moments
+/// and a finite angular velocity and orientation.
+pub fn validate_free_body(
+    moments: &Vector3<f64>,
+    omega0: &Vector3<f64>,
+    q0: &nalgebra::UnitQuaternion<f64>,
+) -> Result<(), NumericError> {
+    crate::mechanics::validation::validate_principal_moments(moments)?;
+    require_invertible(moments)?;
+    let not_finite = |what: &str, value: String| NumericError::InvalidInput {
+        what: what.into(),
+        reason: format!("{value} is not finite"),
+    };
+    if omega0.iter().any(|w| !w.is_finite()) {
+        return Err(not_finite(
+            "initial angular velocity",
+            format!("{omega0:?}"),
+        ));
+    }
+    if q0.coords.iter().any(|c| !c.is_finite()) {
+        return Err(not_finite("initial orientation", format!("{q0:?}")));
+    }
+    Ok(())
+}
+
 impl<T: RealField + Copy> BodyInertia<T> {
     /// Checks that the body can exist (finite, triangle inequality, positive semidefinite)
     /// and that `[I]` is invertible (smallest principal moment above

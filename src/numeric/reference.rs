@@ -13,8 +13,7 @@
 //! `ε = 10⁻³²` relative, so the truncation error per step sits below the double-double
 //! rounding. The method shares nothing with the elliptic-function solution it checks.
 
-use crate::mechanics::validation::validate_principal_moments;
-use crate::numeric::body_inertia::require_invertible;
+use crate::numeric::body_inertia::validate_free_body;
 use crate::numeric::double_double::DoubleDouble as Dd;
 use crate::numeric::error::NumericError;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
@@ -53,14 +52,7 @@ impl ReferenceMotion {
         omega0: Vector3<f64>,
         q0: UnitQuaternion<f64>,
     ) -> Result<Self, NumericError> {
-        validate_principal_moments(&principal_moments)?;
-        require_invertible(&principal_moments)?;
-        if omega0.iter().any(|w| !w.is_finite()) {
-            return Err(NumericError::InvalidInput {
-                what: "initial angular velocity".into(),
-                reason: format!("{omega0:?} is not finite"),
-            });
-        }
+        validate_free_body(&principal_moments, &omega0, &q0)?;
         let moment = |k: usize| Dd::from_f64(principal_moments[k]);
         let euler_coefficients =
             [0, 1, 2].map(|i| (moment((i + 1) % 3) - moment((i + 2) % 3)) / moment(i));

@@ -37,8 +37,7 @@
 //! Components of ω₀ below 2⁻⁴⁸⁰ times the largest are taken as zero: their squares would
 //! leave the normal range.
 
-use crate::mechanics::validation::validate_principal_moments;
-use crate::numeric::body_inertia::require_invertible;
+use crate::numeric::body_inertia::validate_free_body;
 use crate::numeric::double_double::DoubleDouble as Dd;
 use crate::numeric::elliptic::{
     complete_first_kind, complete_third_kind, first_kind_from_sines, jacobi, third_kind_from_sines,
@@ -245,20 +244,7 @@ impl TorqueFree {
         omega0: Vector3<f64>,
         q0: UnitQuaternion<f64>,
     ) -> Result<Self, NumericError> {
-        validate_principal_moments(&principal_moments)?;
-        require_invertible(&principal_moments)?;
-        if omega0.iter().any(|w| !w.is_finite()) {
-            return Err(invalid(
-                "initial angular velocity",
-                format!("{omega0:?} is not finite"),
-            ));
-        }
-        if q0.coords.iter().any(|c| !c.is_finite()) {
-            return Err(invalid(
-                "initial orientation",
-                format!("{q0:?} is not finite"),
-            ));
-        }
+        validate_free_body(&principal_moments, &omega0, &q0)?;
         let rate_scale = power_of_two_scale(&omega0);
         let omega = (omega0 / rate_scale).map(|w| if w.abs() < UNRESOLVED { 0.0 } else { w });
         let moments = principal_moments / power_of_two_scale(&principal_moments);

@@ -69,10 +69,6 @@ impl Diagnostic {
 
     /// The multi-line display: the one-line error, the location, the line and a caret.
     pub fn render(&self) -> String {
-        self.to_string_with_caret()
-    }
-
-    fn to_string_with_caret(&self) -> String {
         let number = self.line.to_string();
         let pad = " ".repeat(number.len());
         let caret_pad = " ".repeat(self.column.saturating_sub(1).min(200));

@@ -361,7 +361,6 @@ pub fn relations_json(rs: &[Relation]) -> Vec<serde_json::Value> {
 }
 
 fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::Value {
-    let relations = relations_json;
     serde_json::json!({
         "title": scene.title,
         "plan": analysis.plan.iter().map(|s| s.title.clone()).collect::<Vec<_>>(),
@@ -373,7 +372,7 @@ fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::V
         })).collect::<Vec<_>>(),
         "steps": analysis.plan.iter().map(|s| serde_json::json!({
             "title": s.title,
-            "relations": relations(&s.relations),
+            "relations": relations_json(&s.relations),
         })).collect::<Vec<_>>(),
         "results": results.iter().map(|r| serde_json::json!({
             "name": r.name,

@@ -8,6 +8,8 @@
 
 use super::error::{AlgebraError, MAX_EXPANDED_TERMS};
 use super::expr::{Expr, View};
+use super::merge;
+use smallvec::SmallVec;
 
 impl Expr {
     /// The fully expanded form (see the module documentation).
@@ -25,26 +27,10 @@ impl Expr {
         }
         match self.view() {
             View::Num(_) | View::Sym(_) => Ok(self.clone()),
-            View::Add(terms) => {
-                let mut expanded: Vec<Expr> = Vec::with_capacity(2 * terms.len());
-                for t in terms {
-                    expanded.extend_from_slice(t.expand()?.terms());
-                }
-                Ok(Expr::sum_of_terms(expanded))
-            }
-            View::Mul(factors) => {
-                let expanded = factors
-                    .iter()
-                    .map(Expr::expand)
-                    .collect::<Result<Vec<_>, _>>()?;
-                let size = expanded
-                    .iter()
-                    .fold(1usize, |n, f| n.saturating_mul(f.terms().len()));
-                check_size("the product", size as f64)?;
-                Ok(expanded
-                    .iter()
-                    .skip(1)
-                    .fold(expanded[0].clone(), |acc, f| multiply_out(&acc, f)))
+            View::Add(_) | View::Mul(_) => {
+                let mut terms = Vec::new();
+                expand_into(self, &mut terms)?;
+                Ok(Expr::sum_of_terms(terms))
             }
             View::Pow(base, exponent) => {
                 let base = base.expand()?;
@@ -65,6 +51,72 @@ impl Expr {
             View::Func(f, arg) => Ok(Expr::func(f, arg.expand()?)),
         }
     }
+}
+
+/// Pushes the terms of the expansion of `e` onto `terms`, like terms not yet combined: the
+/// terms of a sum and of a product of sums are gathered in one list and summed once.
+fn expand_into(e: &Expr, terms: &mut Vec<Expr>) -> Result<(), AlgebraError> {
+    if is_expanded_monomial(e) {
+        terms.push(e.clone());
+        return Ok(());
+    }
+    match e.view() {
+        View::Add(xs) => xs.iter().try_for_each(|x| expand_into(x, terms)),
+        View::Mul(_) => expand_product(e, terms),
+        _ => {
+            terms.extend_from_slice(e.expand()?.terms());
+            Ok(())
+        }
+    }
+}
+
+/// Pushes the terms of the expansion of the product `p` onto `terms`. Its factors that are
+/// powers of symbols expand to themselves; they stay a sorted monomial `c · m` and are
+/// merged into each product of terms `t` of the other (expanded) factors: `c · m · t`.
+fn expand_product(p: &Expr, terms: &mut Vec<Expr>) -> Result<(), AlgebraError> {
+    let mut monomial: SmallVec<[&Expr; 8]> = SmallVec::new();
+    let mut others: SmallVec<[Expr; 4]> = SmallVec::new();
+    for f in p.monomial() {
+        if is_power_of_symbol(f) {
+            monomial.push(f);
+        } else {
+            others.push(f.expand()?);
+        }
+    }
+    let size = others
+        .iter()
+        .fold(1usize, |n, f| n.saturating_mul(f.terms().len()));
+    check_size("the product", size as f64)?;
+    let coeff = p.coefficient();
+    match others.split_last() {
+        None => terms.push(p.clone()),
+        Some((last, [])) => terms.extend(
+            last.terms()
+                .iter()
+                .map(|t| merge::scaled_product(coeff, &monomial, t)),
+        ),
+        Some((last, rest)) => {
+            let mut partial = rest[0].terms().to_vec();
+            for f in &rest[1..] {
+                partial = products_of_terms(&partial, f.terms());
+            }
+            for t in products_of_terms(&partial, last.terms()) {
+                terms.push(merge::scaled_product(coeff, &monomial, &t));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Every product `x · y` of a term `x` of `a` and a term `y` of `b`, uncombined.
+fn products_of_terms(a: &[Expr], b: &[Expr]) -> Vec<Expr> {
+    let mut products = Vec::with_capacity(a.len() * b.len());
+    for x in a {
+        for y in b {
+            products.push(x * y);
+        }
+    }
+    products
 }
 
 /// Whether `e` is a sum of monomials in symbols (or a single one), which expands to itself.
@@ -97,13 +149,7 @@ fn multiply_out(a: &Expr, b: &Expr) -> Expr {
     if a.terms().len() == 1 && b.terms().len() == 1 {
         return a * b;
     }
-    let mut products = Vec::with_capacity(a.terms().len() * b.terms().len());
-    for x in a.terms() {
-        for y in b.terms() {
-            products.push(x * y);
-        }
-    }
-    Expr::sum_of_terms(products)
+    Expr::sum_of_terms(products_of_terms(a.terms(), b.terms()))
 }
 
 /// The number of monomials of degree `n` in `t` variables, C(t + n - 1, n), as a float
@@ -127,4 +173,47 @@ fn check_size(what: &str, size: f64) -> Result<(), AlgebraError> {
         });
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::arbitrary::expr;
+    use proptest::prelude::*;
+
+    /// The definition the gathered expansion must agree with: every product multiplied out
+    /// pair by pair into a canonical sum, every sum added up with [`Expr::add_all`].
+    fn pairwise(e: &Expr) -> Expr {
+        match e.view() {
+            View::Add(terms) => Expr::add_all(terms.iter().map(pairwise)),
+            View::Mul(factors) => factors
+                .iter()
+                .map(pairwise)
+                .fold(Expr::one(), |acc, f| multiply_out(&acc, &f)),
+            _ => e.expand().expect("small"),
+        }
+    }
+
+    #[test]
+    fn common_factors_merge_into_each_term() {
+        let s = Expr::symbol;
+        let h = s("I_x") * s("w_x") - s("I_xy") * s("w_y");
+        let t = Expr::rational(1, 2) * s("w_x") * &h;
+        let expected = Expr::rational(1, 2) * s("I_x") * s("w_x").powi(2)
+            - Expr::rational(1, 2) * s("I_xy") * s("w_x") * s("w_y");
+        assert_eq!(
+            format!("{:?}", t.expand().unwrap()),
+            format!("{expected:?}")
+        );
+    }
+
+    proptest! {
+        #[test]
+        fn gathered_expansion_is_the_pairwise_expansion(e in expr()) {
+            let gathered = e.expand().expect("small");
+            let reference = pairwise(&e);
+            prop_assert_eq!(format!("{gathered:?}"), format!("{reference:?}"));
+            prop_assert_eq!(gathered, reference);
+        }
+    }
 }

@@ -5,13 +5,16 @@
 //! adding the coefficients of a monomial found in both, and `a · b` is one merge of the two
 //! factor lists, adding the exponents of a symbol found in both: `O(n + m)` comparisons and
 //! no sort. When the lists share nothing (the usual case) the operands are gathered as
-//! references on the stack, so the new node is the only allocation. A product whose lists
+//! references on the stack, so the new node is the only allocation; a product that adds
+//! exponents gathers its factors in a buffer on the stack too. A product whose lists
 //! share a base other than a symbol to a numeric power (a power of a number, a sum or a
 //! function on both sides) goes through [`Expr::mul_all`]; the results always equal
 //! [`Expr::add_all`] and [`Expr::mul_all`] of the two operands.
 
 use super::expr::{cmp_operands, cmp_slices, Expr};
 use super::rational::Q;
+use smallvec::SmallVec;
+use std::borrow::Borrow;
 use std::cmp::Ordering;
 
 /// How many operands a merge gathers on the stack; longer merges use a vector.
@@ -69,24 +72,34 @@ fn split_constant(terms: &[Expr]) -> (&Q, &[Expr]) {
 
 /// The canonical product `a · b`.
 pub(super) fn product(a: &Expr, b: &Expr) -> Expr {
-    let coeff = a.coefficient() * b.coefficient();
+    scaled_product(a.coefficient(), a.monomial(), b)
+}
+
+/// The canonical product `coeff · Π factors · b`, where `factors` are in canonical order
+/// with distinct bases, none a number or a product (the monomial of a canonical term, or
+/// part of one): `a · b` is `scaled_product(a.coefficient(), a.monomial(), b)`, and an
+/// expansion multiplies the common factors of a product into each term of a sum this way
+/// without forming their product first.
+pub(super) fn scaled_product<F: Borrow<Expr>>(coeff: &Q, factors: &[F], b: &Expr) -> Expr {
+    let coeff = coeff * b.coefficient();
     if coeff.is_zero() {
         return Expr::zero();
     }
-    let (fa, fb) = (a.monomial(), b.monomial());
+    let (fa, fb) = (factors, b.monomial());
     if fa.len() + fb.len() <= INLINE {
-        let mut merged = [a; INLINE];
+        let mut merged = [b; INLINE];
         let by_base = |x: &Expr, y: &Expr| cmp_operands(x.base(), y.base());
         if let Some(n) = merge_disjoint(fa, fb, &mut merged, by_base) {
             return Expr::product_of_sorted(coeff, &merged[..n]);
         }
     }
-    let mut out: Vec<Expr> = Vec::with_capacity(fa.len() + fb.len());
+    let mut out: SmallVec<[Expr; INLINE]> = SmallVec::with_capacity(fa.len() + fb.len());
     let (mut i, mut j) = (0, 0);
     while i < fa.len() && j < fb.len() {
-        match cmp_operands(fa[i].base(), fb[j].base()) {
+        let x = fa[i].borrow();
+        match cmp_operands(x.base(), fb[j].base()) {
             Ordering::Less => {
-                out.push(fa[i].clone());
+                out.push(x.clone());
                 i += 1;
             }
             Ordering::Greater => {
@@ -94,35 +107,40 @@ pub(super) fn product(a: &Expr, b: &Expr) -> Expr {
                 j += 1;
             }
             Ordering::Equal => {
-                match symbol_power_product(&fa[i], &fb[j]) {
+                match symbol_power_product(x, &fb[j]) {
                     Some(Some(power)) => out.push(power),
                     Some(None) => {}
-                    None => return Expr::mul_all([a.clone(), b.clone()]),
+                    None => {
+                        let all = fa.iter().map(|f| f.borrow()).chain(fb);
+                        return Expr::mul_all(
+                            std::iter::once(Expr::num(coeff)).chain(all.cloned()),
+                        );
+                    }
                 }
                 i += 1;
                 j += 1;
             }
         }
     }
-    out.extend_from_slice(&fa[i..]);
-    out.extend_from_slice(&fb[j..]);
+    out.extend(fa[i..].iter().map(|f| f.borrow().clone()));
+    out.extend(fb[j..].iter().cloned());
     Expr::product_of_sorted(coeff, &out)
 }
 
 /// Merges two lists, each strictly increasing in `order`, into `out` (long enough for
 /// both) when no element of one is equal in `order` to an element of the other: the
 /// merged length, or `None` at the first such pair.
-fn merge_disjoint<'a>(
-    a: &'a [Expr],
+fn merge_disjoint<'a, F: Borrow<Expr>>(
+    a: &'a [F],
     b: &'a [Expr],
     out: &mut [&'a Expr],
     order: impl Fn(&Expr, &Expr) -> Ordering,
 ) -> Option<usize> {
     let (mut i, mut j) = (0, 0);
     while i < a.len() && j < b.len() {
-        match order(&a[i], &b[j]) {
+        match order(a[i].borrow(), &b[j]) {
             Ordering::Less => {
-                out[i + j] = &a[i];
+                out[i + j] = a[i].borrow();
                 i += 1;
             }
             Ordering::Greater => {
@@ -132,7 +150,8 @@ fn merge_disjoint<'a>(
             Ordering::Equal => return None,
         }
     }
-    for (slot, x) in out[i + j..].iter_mut().zip(a[i..].iter().chain(&b[j..])) {
+    let rest = a[i..].iter().map(|x| x.borrow()).chain(&b[j..]);
+    for (slot, x) in out[i + j..].iter_mut().zip(rest) {
         *slot = x;
     }
     Some(a.len() + b.len())
@@ -154,30 +173,8 @@ fn symbol_power_product(x: &Expr, y: &Expr) -> Option<Option<Expr>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algebra::arbitrary::expr;
     use proptest::prelude::*;
-
-    /// Canonical expressions built through `add_all` and `mul_all` only.
-    fn expr() -> impl Strategy<Value = Expr> {
-        let leaf = prop_oneof![
-            (-3i64..4).prop_map(Expr::int),
-            (1i64..4, 2i64..4).prop_map(|(p, q)| Expr::rational(p, q)),
-            prop::sample::select(vec!["x", "y", "w_x", "I_xy", "a"]).prop_map(Expr::symbol),
-        ];
-        leaf.prop_recursive(3, 24, 4, |inner| {
-            prop_oneof![
-                prop::collection::vec(inner.clone(), 2..4).prop_map(Expr::add_all),
-                prop::collection::vec(inner.clone(), 2..4).prop_map(Expr::mul_all),
-                (inner.clone(), -2i64..4).prop_map(|(b, n)| {
-                    if b.is_zero() {
-                        b
-                    } else {
-                        b.powi(n)
-                    }
-                }),
-                inner.prop_map(|a| crate::algebra::Func::Sin.apply(a)),
-            ]
-        })
-    }
 
     #[test]
     fn long_merges_spill_to_the_heap() {

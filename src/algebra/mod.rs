@@ -5,6 +5,8 @@
 //! expressions work), [`Expr::expand`], [`Expr::subs`], [`Expr::collect`], [`Expr::d_dt`],
 //! [`Expr::diff`] and [`Expr::eval`] over any float type.
 
+#[cfg(test)]
+mod arbitrary;
 mod collect;
 mod derivative;
 mod error;

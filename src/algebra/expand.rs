@@ -7,7 +7,7 @@
 //! more than [`MAX_EXPANDED_TERMS`] terms is refused before any work is done.
 
 use super::error::{AlgebraError, MAX_EXPANDED_TERMS};
-use super::expr::{Expr, View};
+use super::expr::{Expr, Operands, View};
 use super::merge;
 use smallvec::SmallVec;
 
@@ -28,7 +28,7 @@ impl Expr {
         match self.view() {
             View::Num(_) | View::Sym(_) => Ok(self.clone()),
             View::Add(_) | View::Mul(_) => {
-                let mut terms = Vec::new();
+                let mut terms = Operands::new();
                 expand_into(self, &mut terms)?;
                 Ok(Expr::sum_of_terms(terms))
             }
@@ -55,7 +55,7 @@ impl Expr {
 
 /// Pushes the terms of the expansion of `e` onto `terms`, like terms not yet combined: the
 /// terms of a sum and of a product of sums are gathered in one list and summed once.
-fn expand_into(e: &Expr, terms: &mut Vec<Expr>) -> Result<(), AlgebraError> {
+fn expand_into(e: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
     if is_expanded_monomial(e) {
         terms.push(e.clone());
         return Ok(());
@@ -64,7 +64,7 @@ fn expand_into(e: &Expr, terms: &mut Vec<Expr>) -> Result<(), AlgebraError> {
         View::Add(xs) => xs.iter().try_for_each(|x| expand_into(x, terms)),
         View::Mul(_) => expand_product(e, terms),
         _ => {
-            terms.extend_from_slice(e.expand()?.terms());
+            terms.extend(e.expand()?.terms().iter().cloned());
             Ok(())
         }
     }
@@ -73,7 +73,7 @@ fn expand_into(e: &Expr, terms: &mut Vec<Expr>) -> Result<(), AlgebraError> {
 /// Pushes the terms of the expansion of the product `p` onto `terms`. Its factors that are
 /// powers of symbols expand to themselves; they stay a sorted monomial `c · m` and are
 /// merged into each product of terms `t` of the other (expanded) factors: `c · m · t`.
-fn expand_product(p: &Expr, terms: &mut Vec<Expr>) -> Result<(), AlgebraError> {
+fn expand_product(p: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
     let mut monomial: SmallVec<[&Expr; 8]> = SmallVec::new();
     let mut others: SmallVec<[Expr; 4]> = SmallVec::new();
     for f in p.monomial() {
@@ -96,7 +96,7 @@ fn expand_product(p: &Expr, terms: &mut Vec<Expr>) -> Result<(), AlgebraError> {
                 .map(|t| merge::scaled_product(coeff, &monomial, t)),
         ),
         Some((last, rest)) => {
-            let mut partial = rest[0].terms().to_vec();
+            let mut partial: Operands = rest[0].terms().iter().cloned().collect();
             for f in &rest[1..] {
                 partial = products_of_terms(&partial, f.terms());
             }
@@ -109,8 +109,8 @@ fn expand_product(p: &Expr, terms: &mut Vec<Expr>) -> Result<(), AlgebraError> {
 }
 
 /// Every product `x · y` of a term `x` of `a` and a term `y` of `b`, uncombined.
-fn products_of_terms(a: &[Expr], b: &[Expr]) -> Vec<Expr> {
-    let mut products = Vec::with_capacity(a.len() * b.len());
+fn products_of_terms(a: &[Expr], b: &[Expr]) -> Operands {
+    let mut products = Operands::with_capacity(a.len() * b.len());
     for x in a {
         for y in b {
             products.push(x * y);

@@ -27,10 +27,15 @@ use super::error::AlgebraError;
 use super::function::Func;
 use super::rational::Q;
 use super::symbol::Symbol;
+use smallvec::SmallVec;
 use std::borrow::Borrow;
 use std::cmp::Ordering;
 use std::hash::{Hash, Hasher};
 use std::sync::Arc;
+
+/// Operands gathered before they become one sum or product node: short lists (the usual
+/// case) stay on the stack.
+pub(super) type Operands = SmallVec<[Expr; 16]>;
 
 /// An expression in canonical form. See the module documentation.
 #[derive(Clone)]
@@ -200,7 +205,7 @@ impl Expr {
     /// The canonical sum of the given terms.
     pub fn add_all<I: IntoIterator<Item = Expr>>(terms: I) -> Expr {
         let terms = terms.into_iter();
-        let mut flat: Vec<Expr> = Vec::with_capacity(terms.size_hint().0);
+        let mut flat = Operands::with_capacity(terms.size_hint().0);
         let mut constant = Q::ZERO;
         for t in terms {
             match &t.0 {
@@ -220,7 +225,7 @@ impl Expr {
     }
 
     /// The canonical sum of terms that are not sums (numbers allowed), reusing the vector.
-    pub(super) fn sum_of_terms(mut terms: Vec<Expr>) -> Expr {
+    pub(super) fn sum_of_terms(mut terms: Operands) -> Expr {
         if terms.iter().any(|t| matches!(t.0, Repr::Add(_))) {
             return Expr::add_all(terms);
         }
@@ -237,7 +242,7 @@ impl Expr {
 
     /// `constant + Σ terms` for terms that are neither numbers nor sums, in any order:
     /// sorts them by monomial and combines like terms in place.
-    fn sum_of_like_terms(constant: Q, mut terms: Vec<Expr>) -> Expr {
+    fn sum_of_like_terms(constant: Q, mut terms: Operands) -> Expr {
         terms.sort_by(|a, b| cmp_slices(a.monomial(), b.monomial()));
         let mut kept = 0;
         let mut i = 0;

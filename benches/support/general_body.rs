@@ -8,6 +8,7 @@
 //! [`build`] forms the products, [`canonical`] expands `T` and the Euler components,
 //! [`latex`] prints each, the Euler components about their own axes.
 
+use kinetics::algebra::vector_products::{cross, dot, mat_vec};
 use kinetics::algebra::{Expr, Matrix, Vector};
 use kinetics::print::{self, Axis};
 
@@ -25,25 +26,27 @@ pub struct Canonical {
     pub euler: Vector,
 }
 
-/// Forms the inertia tensor, ω, α and the three products.
+/// Forms the inertia tensor (each product of inertia negated once, as
+/// `InertiaTensor::matrix` does), ω, α and the three products.
 pub fn build() -> Built {
     let s = Expr::symbol;
+    let [ixy, iyz, ixz] = [s("I_xy"), s("I_yz"), s("I_xz")].map(|p| -p);
     let inertia = Matrix::new(
         s("I_x"),
-        -s("I_xy"),
-        -s("I_xz"),
-        -s("I_xy"),
+        ixy.clone(),
+        ixz.clone(),
+        ixy,
         s("I_y"),
-        -s("I_yz"),
-        -s("I_xz"),
-        -s("I_yz"),
+        iyz.clone(),
+        ixz,
+        iyz,
         s("I_z"),
     );
     let omega = Vector::new(s("w_x"), s("w_y"), s("w_z"));
     let alpha = Vector::new(s("wdot_x"), s("wdot_y"), s("wdot_z"));
-    let h = &inertia * &omega;
-    let half_omega_h = omega.dot(&h) * Expr::rational(1, 2);
-    let euler = &inertia * &alpha + omega.cross(&h);
+    let h = mat_vec(&inertia, &omega);
+    let half_omega_h = dot(&omega, &h) * Expr::rational(1, 2);
+    let euler = mat_vec(&inertia, &alpha) + cross(&omega, &h);
     Built {
         h,
         half_omega_h,

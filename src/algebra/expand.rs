@@ -30,7 +30,7 @@ impl Expr {
             View::Add(_) | View::Mul(_) => {
                 let mut terms = Operands::new();
                 expand_into(self, &mut terms)?;
-                Ok(Expr::sum_of_terms(terms))
+                Ok(Expr::sum_of_terms(&mut terms))
             }
             View::Pow(base, exponent) => {
                 let base = base.expand()?;
@@ -149,7 +149,7 @@ fn multiply_out(a: &Expr, b: &Expr) -> Expr {
     if a.terms().len() == 1 && b.terms().len() == 1 {
         return a * b;
     }
-    Expr::sum_of_terms(products_of_terms(a.terms(), b.terms()))
+    Expr::sum_of_terms(&mut products_of_terms(a.terms(), b.terms()))
 }
 
 /// The number of monomials of degree `n` in `t` variables, C(t + n - 1, n), as a float

@@ -221,13 +221,13 @@ impl Expr {
                 _ => flat.push(t),
             }
         }
-        Expr::sum_of_like_terms(constant, flat)
+        Expr::sum_of_like_terms(constant, &mut flat)
     }
 
-    /// The canonical sum of terms that are not sums (numbers allowed), reusing the vector.
-    pub(super) fn sum_of_terms(mut terms: Operands) -> Expr {
+    /// The canonical sum of terms that are not sums (numbers allowed), moved out of `terms`.
+    pub(super) fn sum_of_terms(terms: &mut Operands) -> Expr {
         if terms.iter().any(|t| matches!(t.0, Repr::Add(_))) {
-            return Expr::add_all(terms);
+            return Expr::add_all(terms.drain(..));
         }
         let mut constant = Q::ZERO;
         terms.retain(|t| match &t.0 {
@@ -241,8 +241,8 @@ impl Expr {
     }
 
     /// `constant + Σ terms` for terms that are neither numbers nor sums, in any order:
-    /// sorts them by monomial and combines like terms in place.
-    fn sum_of_like_terms(constant: Q, mut terms: Operands) -> Expr {
+    /// sorts them by monomial, combines like terms in place and moves them into the sum.
+    fn sum_of_like_terms(constant: Q, terms: &mut Operands) -> Expr {
         terms.sort_by(|a, b| cmp_slices(a.monomial(), b.monomial()));
         let mut kept = 0;
         let mut i = 0;
@@ -266,10 +266,16 @@ impl Expr {
             i = j;
         }
         terms.truncate(kept);
-        if !constant.is_zero() {
-            terms.insert(0, Expr::num(constant));
+        let constant = (!constant.is_zero()).then(|| Expr::num(constant));
+        let mut take = |i: usize| std::mem::replace(&mut terms[i], Expr::zero());
+        match (constant, kept) {
+            (None, 0) => Expr::zero(),
+            (Some(c), 0) => c,
+            (None, 1) => take(0),
+            (c, _) => Expr(Repr::Add(
+                c.into_iter().chain((0..kept).map(take)).collect(),
+            )),
         }
-        Expr::sum_of_sorted(&terms)
     }
 
     /// The canonical product of the given factors.

@@ -19,8 +19,10 @@ mod merge;
 mod ops;
 mod rational;
 mod subs;
+mod sum_of_products;
 mod symbol;
 pub mod vector;
+pub mod vector_products;
 
 pub use collect::Collected;
 pub use error::{AlgebraError, MAX_EXPANDED_TERMS};

@@ -11,11 +11,12 @@
 
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
+use crate::algebra::vector_products::{cross, mat_vec};
 use crate::algebra::{Expr, Vector};
 
 /// `{H} = [I]{ω}`; `point` names the reference point (`G` or `O`).
 pub fn angular_momentum(inertia: &InertiaTensor, omega: &Vector, point: &str) -> Derivation {
-    let h = inertia.matrix() * omega;
+    let h = mat_vec(&inertia.matrix(), omega);
     Derivation {
         name: format!("H_{point}"),
         title: format!("angular momentum about {point}"),
@@ -35,7 +36,7 @@ pub fn angular_momentum_about_point(
     mass: &Expr,
     vbar: &Vector,
 ) -> Derivation {
-    let moment_of_momentum = rbar.cross(&vbar.map(|v| mass * &v));
+    let moment_of_momentum = cross(rbar, &vbar.map(|v| mass * &v));
     let h_o = h_g + &moment_of_momentum;
     Derivation {
         name: "H_O".into(),

@@ -9,6 +9,7 @@
 
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
+use crate::algebra::vector_products::{dot, mat_vec};
 use crate::algebra::{AlgebraError, Expr, Vector};
 use crate::print::Axis;
 
@@ -20,11 +21,11 @@ pub fn kinetic_energy(
     translation: Option<(&Expr, &Vector)>,
 ) -> Result<Derivation, AlgebraError> {
     let half = Expr::rational(1, 2);
-    let rotational = (&half * &omega.dot(&(inertia.matrix() * omega))).expand()?;
+    let rotational = (&half * &dot(omega, &mat_vec(&inertia.matrix(), omega))).expand()?;
     let t = Expr::symbol("T");
     let steps = match translation {
         Some((m, v)) => {
-            let translational = (&half * m * v.dot(v)).expand()?;
+            let translational = (&half * m * dot(v, v)).expand()?;
             vec![
                 Step {
                     title: "rotational part ½{ω}ᵀ[I]{ω}".into(),

@@ -11,6 +11,7 @@
 
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
+use crate::algebra::vector_products::{cross, mat_vec};
 use crate::algebra::{AlgebraError, Vector};
 
 /// `Ḣ = [I]{ω̇} + Ω × ([I]{ω})`. `omega_dot` holds the rates of the components of ω as
@@ -22,9 +23,9 @@ pub fn rate_of_angular_momentum(
     frame_rate: &Vector,
 ) -> Result<Derivation, AlgebraError> {
     let matrix = inertia.matrix();
-    let relative = &matrix * omega_dot;
-    let h = &matrix * omega;
-    let transport = frame_rate.cross(&h);
+    let relative = mat_vec(&matrix, omega_dot);
+    let h = mat_vec(&matrix, omega);
+    let transport = cross(frame_rate, &h);
     let total = expand_each(&(&relative + &transport))?;
     Ok(Derivation {
         name: "Hdot".into(),

@@ -276,6 +276,8 @@ impl std::ops::Add for &Q {
     type Output = Q;
     fn add(self, other: &Q) -> Q {
         match (self, other) {
+            // Zero, the start of every sum of coefficients, is common enough to skip the gcd.
+            (Q::Small(0, _), x) | (x, Q::Small(0, _)) => x.clone(),
             (Q::Small(a, b), Q::Small(c, d)) => {
                 if b == d {
                     match a.checked_add(*c) {
@@ -307,6 +309,8 @@ impl std::ops::Mul for &Q {
     type Output = Q;
     fn mul(self, other: &Q) -> Q {
         match (self, other) {
+            // One, the coefficient of most terms, is common enough to skip the gcds.
+            (Q::Small(1, 1), x) | (x, Q::Small(1, 1)) => x.clone(),
             (Q::Small(a, 1), Q::Small(c, 1)) => match a.checked_mul(*c) {
                 Some(n) => Q::Small(n, 1),
                 None => Q::from_i128(*a as i128 * *c as i128, 1),
@@ -432,6 +436,21 @@ mod tests {
         let huge = &q(i64::MAX, 3) * &q(i64::MAX, 5);
         assert!(matches!(huge, Q::Big(_)));
         assert_eq!(huge.checked_div(&q(i64::MAX, 5)), Some(q(i64::MAX, 3)));
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn sums_and_products_agree_with_big_rationals(
+            a in proptest::prop_oneof![-2i64..3, proptest::num::i64::ANY],
+            b in 1i64..7,
+            c in proptest::prop_oneof![-2i64..3, proptest::num::i64::ANY],
+            d in 1i64..7,
+        ) {
+            let (x, y) = (Q::new(a, b).unwrap(), Q::new(c, d).unwrap());
+            let (bx, by) = (x.to_big(), y.to_big());
+            proptest::prop_assert_eq!((&x + &y).to_big(), &bx + &by);
+            proptest::prop_assert_eq!((&x * &y).to_big(), &bx * &by);
+        }
     }
 
     #[test]

@@ -193,6 +193,16 @@ impl Expr {
         }
     }
 
+    /// The exponent when it is a number: `n` for `x^n`, 1 for anything not a power, none
+    /// for a power with a symbolic exponent.
+    pub(super) fn numeric_exponent(&self) -> Option<&Q> {
+        static ONE: Q = Q::ONE;
+        match &self.0 {
+            Repr::Pow(p) => p.1.as_num(),
+            _ => Some(&ONE),
+        }
+    }
+
     /// The base of a power, or the expression itself: `x` for `x^n` and for `x`. Factors
     /// of a product are ordered by their bases.
     pub fn base(&self) -> &Expr {

@@ -14,7 +14,7 @@
 use super::expr::{cmp_operands, cmp_slices, Expr};
 use super::rational::Q;
 use smallvec::SmallVec;
-use std::borrow::Borrow;
+use std::borrow::{Borrow, Cow};
 use std::cmp::Ordering;
 
 /// How many operands a merge gathers on the stack; longer merges use a vector.
@@ -93,22 +93,22 @@ pub(super) fn scaled_product<F: Borrow<Expr>>(coeff: &Q, factors: &[F], b: &Expr
             return Expr::product_of_sorted(coeff, &merged[..n]);
         }
     }
-    let mut out: SmallVec<[Expr; INLINE]> = SmallVec::with_capacity(fa.len() + fb.len());
+    let mut out: SmallVec<[Cow<Expr>; INLINE]> = SmallVec::with_capacity(fa.len() + fb.len());
     let (mut i, mut j) = (0, 0);
     while i < fa.len() && j < fb.len() {
         let x = fa[i].borrow();
         match cmp_operands(x.base(), fb[j].base()) {
             Ordering::Less => {
-                out.push(x.clone());
+                out.push(Cow::Borrowed(x));
                 i += 1;
             }
             Ordering::Greater => {
-                out.push(fb[j].clone());
+                out.push(Cow::Borrowed(&fb[j]));
                 j += 1;
             }
             Ordering::Equal => {
                 match symbol_power_product(x, &fb[j]) {
-                    Some(Some(power)) => out.push(power),
+                    Some(Some(power)) => out.push(Cow::Owned(power)),
                     Some(None) => {}
                     None => {
                         let all = fa.iter().map(|f| f.borrow()).chain(fb);
@@ -122,8 +122,8 @@ pub(super) fn scaled_product<F: Borrow<Expr>>(coeff: &Q, factors: &[F], b: &Expr
             }
         }
     }
-    out.extend(fa[i..].iter().map(|f| f.borrow().clone()));
-    out.extend(fb[j..].iter().cloned());
+    out.extend(fa[i..].iter().map(|f| Cow::Borrowed(f.borrow())));
+    out.extend(fb[j..].iter().map(Cow::Borrowed));
     Expr::product_of_sorted(coeff, &out)
 }
 
@@ -161,9 +161,7 @@ fn merge_disjoint<'a, F: Borrow<Expr>>(
 /// `None` when the factors are not two numeric powers of one symbol.
 fn symbol_power_product(x: &Expr, y: &Expr) -> Option<Option<Expr>> {
     x.base().as_symbol()?;
-    let (_, p) = x.base_and_exponent();
-    let (_, q) = y.base_and_exponent();
-    let exponent = p.as_num()? + q.as_num()?;
+    let exponent = x.numeric_exponent()? + y.numeric_exponent()?;
     if exponent.is_zero() {
         return Some(None);
     }

@@ -253,7 +253,8 @@ impl Expr {
     /// `constant + Σ terms` for terms that are neither numbers nor sums, in any order:
     /// sorts them by monomial, combines like terms in place and moves them into the sum.
     fn sum_of_like_terms(constant: Q, terms: &mut Operands) -> Expr {
-        terms.sort_by(|a, b| cmp_slices(a.monomial(), b.monomial()));
+        // Terms with equal monomials are combined below, so their order does not matter.
+        terms.sort_unstable_by(|a, b| cmp_slices(a.monomial(), b.monomial()));
         let mut kept = 0;
         let mut i = 0;
         while i < terms.len() {

@@ -5,6 +5,10 @@
 //! decides equality: two polynomials, or two expressions whose denominators are monomials,
 //! are equal exactly when their expansions are identical. An expansion that would produce
 //! more than [`MAX_EXPANDED_TERMS`] terms is refused before any work is done.
+//!
+//! The terms of a sum, and the products of terms of a product's sums, are gathered in one
+//! list on the stack and summed once at the end (one sort, like terms combined then), rather
+//! than each partial sum and product being made canonical on the way.
 
 use super::error::{AlgebraError, MAX_EXPANDED_TERMS};
 use super::expr::{Expr, Operands, View};
@@ -56,13 +60,13 @@ impl Expr {
 /// Pushes the terms of the expansion of `e` onto `terms`, like terms not yet combined: the
 /// terms of a sum and of a product of sums are gathered in one list and summed once.
 fn expand_into(e: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
-    if is_expanded_monomial(e) {
-        terms.push(e.clone());
-        return Ok(());
-    }
     match e.view() {
         View::Add(xs) => xs.iter().try_for_each(|x| expand_into(x, terms)),
         View::Mul(_) => expand_product(e, terms),
+        _ if is_power_of_symbol(e) => {
+            terms.push(e.clone());
+            Ok(())
+        }
         _ => {
             terms.extend(e.expand()?.terms().iter().cloned());
             Ok(())
@@ -73,6 +77,7 @@ fn expand_into(e: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
 /// Pushes the terms of the expansion of the product `p` onto `terms`. Its factors that are
 /// powers of symbols expand to themselves; they stay a sorted monomial `c · m` and are
 /// merged into each product of terms `t` of the other (expanded) factors: `c · m · t`.
+/// A product of powers of symbols alone is its own expansion.
 fn expand_product(p: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
     let mut monomial: SmallVec<[&Expr; 8]> = SmallVec::new();
     let mut others: SmallVec<[Expr; 4]> = SmallVec::new();

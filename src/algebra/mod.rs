@@ -3,7 +3,8 @@
 //! [`Expr`] is an immutable expression in canonical form with exact rational constants and
 //! interned [`Symbol`]s. It supports `+ - * /` (so nalgebra matrices and vectors of
 //! expressions work), [`Expr::expand`], [`Expr::subs`], [`Expr::collect`], [`Expr::d_dt`],
-//! [`Expr::diff`] and [`Expr::eval`] over any float type.
+//! [`Expr::diff`] and [`Expr::eval`] over any float type. [`Expr::sum_of_products`] and
+//! [`vector_products`] form `Σ aᵢbᵢ`, `[M]{v}`, `a·b` and `a×b` as one sum per component.
 
 #[cfg(test)]
 mod arbitrary;

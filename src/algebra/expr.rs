@@ -252,31 +252,16 @@ impl Expr {
 
     /// `constant + Σ terms` for terms that are neither numbers nor sums, in any order:
     /// sorts them by monomial, combines like terms in place and moves them into the sum.
+    /// Terms already in strictly increasing order (a row of a matrix product, say) have
+    /// distinct monomials, so they need neither the sort nor the combining.
     fn sum_of_like_terms(constant: Q, terms: &mut Operands) -> Expr {
-        // Terms with equal monomials are combined below, so their order does not matter.
-        terms.sort_unstable_by(|a, b| cmp_slices(a.monomial(), b.monomial()));
-        let mut kept = 0;
-        let mut i = 0;
-        while i < terms.len() {
-            let mut j = i + 1;
-            while j < terms.len() && terms[j].monomial() == terms[i].monomial() {
-                j += 1;
-            }
-            if j == i + 1 {
-                terms.swap(kept, i);
-                kept += 1;
-            } else {
-                let coeff = terms[i..j]
-                    .iter()
-                    .fold(Q::ZERO, |sum, t| &sum + t.coefficient());
-                if !coeff.is_zero() {
-                    terms[kept] = Expr::term(coeff, terms[i].monomial());
-                    kept += 1;
-                }
-            }
-            i = j;
+        let by_monomial = |a: &Expr, b: &Expr| cmp_slices(a.monomial(), b.monomial());
+        let mut kept = terms.len();
+        if !terms.windows(2).all(|w| by_monomial(&w[0], &w[1]).is_lt()) {
+            // Terms with equal monomials are combined below, so their order does not matter.
+            terms.sort_unstable_by(by_monomial);
+            kept = combine_like_terms(terms);
         }
-        terms.truncate(kept);
         let constant = (!constant.is_zero()).then(|| Expr::num(constant));
         let mut take = |i: usize| std::mem::replace(&mut terms[i], Expr::zero());
         match (constant, kept) {
@@ -483,6 +468,33 @@ impl Expr {
             Repr::Func(..) => 5,
         }
     }
+}
+
+/// Combines runs of like terms in terms sorted by monomial, moving the results to the
+/// front; returns how many there are (terms whose coefficients cancel are dropped).
+fn combine_like_terms(terms: &mut Operands) -> usize {
+    let mut kept = 0;
+    let mut i = 0;
+    while i < terms.len() {
+        let mut j = i + 1;
+        while j < terms.len() && terms[j].monomial() == terms[i].monomial() {
+            j += 1;
+        }
+        if j == i + 1 {
+            terms.swap(kept, i);
+            kept += 1;
+        } else {
+            let coeff = terms[i..j]
+                .iter()
+                .fold(Q::ZERO, |sum, t| &sum + t.coefficient());
+            if !coeff.is_zero() {
+                terms[kept] = Expr::term(coeff, terms[i].monomial());
+                kept += 1;
+            }
+        }
+        i = j;
+    }
+    kept
 }
 
 /// The operands of a sum or product node: `first` (a coefficient), then copies of `rest`.

@@ -23,27 +23,56 @@ use crate::algebra::{axis_of_subscript, Expr, Func, Role, Symbol, View, Q};
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
+/// The presented form of one expression: its nodes, stored flat so that presenting an
+/// expression allocates nothing once a [`Layout`] has grown to size (the printers keep one
+/// per thread and [`Layout::clear`] it between expressions).
+#[derive(Debug, Default)]
+pub struct Layout {
+    nodes: Vec<Node>,
+    /// The signed terms of sums and the factors of products, each node's run contiguous.
+    entries: Vec<(bool, NodeId)>,
+    /// The children of the nodes being built, innermost last (a stack; see `finish`).
+    pending: Vec<(bool, NodeId)>,
+}
+
+/// A node of a [`Layout`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct NodeId(u32);
+
+/// A run of [`Layout`] entries: the terms of a sum or one side of a product.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Span {
+    start: u32,
+    len: u32,
+}
+
+impl Span {
+    pub fn is_empty(self) -> bool {
+        self.len == 0
+    }
+}
+
 /// A node of the presented form. Numbers and coefficients here are never negative: signs
-/// live on the terms of a [`Layout::Sum`].
+/// live on the terms of a [`Node::Sum`].
 #[derive(Debug, Clone, PartialEq)]
-pub enum Layout {
+pub enum Node {
     Number(Q),
     Symbol(Symbol),
-    /// Terms with their signs (`true` = subtracted); at least two.
-    Sum(Vec<(bool, Layout)>),
+    /// Terms with their signs (`true` = subtracted); at least one, one only when subtracted.
+    Sum(Span),
     Product(Product),
     /// A base to a positive exponent other than 1/2.
-    Power(Box<Layout>, Box<Layout>),
-    SquareRoot(Box<Layout>),
-    Function(Func, Box<Layout>),
+    Power(NodeId, NodeId),
+    SquareRoot(NodeId),
+    Function(Func, NodeId),
 }
 
 /// `coefficient · numerator / denominator`, coefficient positive.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Product {
     pub coefficient: Q,
-    pub numerator: Vec<Layout>,
-    pub denominator: Vec<Layout>,
+    pub numerator: Span,
+    pub denominator: Span,
 }
 
 /// Which equation an expression belongs to, for ordering inertia symbols cyclically.
@@ -66,14 +95,6 @@ impl Axis {
     }
 }
 
-/// The presented form of `e` as a signed layout: `(negative, layout)`.
-pub fn present(e: &Expr, axis: Axis) -> (bool, Layout) {
-    match e.view() {
-        View::Add(_) => present_sum(e, axis),
-        _ => present_term(e, axis),
-    }
-}
-
 /// The terms of a sum that share one kinematic part (rule 1).
 struct Group<'a> {
     /// The first term with this kinematic part, and any others.
@@ -84,7 +105,9 @@ struct Group<'a> {
 }
 
 /// The kinematic factors of a term, in canonical order.
-fn kinematic_part(term: &Expr) -> impl Iterator<Item = &Expr> + Clone {
+type KinematicPart<'a> = std::iter::Filter<std::slice::Iter<'a, Expr>, fn(&&Expr) -> bool>;
+
+fn kinematic_part(term: &Expr) -> KinematicPart<'_> {
     term.factors().iter().filter(|f| is_kinematic_factor(f))
 }
 
@@ -105,155 +128,360 @@ fn has_sum_coefficient(term: &Expr) -> bool {
 /// Up to this many groups a term's group is found by linear search; beyond, by hashing.
 const LINEAR_SEARCH_GROUPS: usize = 32;
 
-fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
-    let mut groups: Vec<Group> = Vec::with_capacity(e.terms().len());
-    // The groups by kinematic part, filled once there are too many to search linearly.
-    let mut index: HashMap<Vec<&Expr>, usize> = HashMap::new();
-    for term in e.terms() {
-        let kinematic = kinematic_part(term);
-        let key = kinematic_key(kinematic.clone());
-        let found = if groups.len() <= LINEAR_SEARCH_GROUPS {
-            groups
-                .iter()
-                .position(|g| g.key == key && kinematic_part(g.first).eq(kinematic.clone()))
-        } else {
-            if index.is_empty() {
-                for (at, g) in groups.iter().enumerate() {
-                    index.insert(kinematic_part(g.first).collect(), at);
-                }
-            }
-            index.get(&kinematic.clone().collect::<Vec<_>>()).copied()
-        };
-        match found {
-            Some(at) => groups[at].others.push(term),
-            None => {
-                if !index.is_empty() {
-                    index.insert(kinematic.collect(), groups.len());
-                }
-                groups.push(Group {
-                    first: term,
-                    others: Vec::new(),
-                    key,
-                });
-            }
-        }
+impl Layout {
+    /// Forgets every node, keeping the storage for the next expression.
+    pub fn clear(&mut self) {
+        self.nodes.clear();
+        self.entries.clear();
+        self.pending.clear();
     }
-    // Keys rarely tie, so the kinematic products that break ties are seldom built.
-    groups.sort_by(|a, b| {
-        a.key.cmp(&b.key).then_with(|| {
-            Expr::mul_all(kinematic_part(a.first).cloned())
-                .cmp(&Expr::mul_all(kinematic_part(b.first).cloned()))
-        })
-    });
-    let only_group = groups.len() == 1;
-    let mut terms: Vec<(bool, Layout)> = Vec::with_capacity(groups.len());
-    for group in groups {
-        if group.others.is_empty() && !has_sum_coefficient(group.first) {
-            // A coefficient of one term times the kinematic part is the term itself.
-            terms.push(present_term(group.first, axis));
-            continue;
-        }
-        let coefficient = match group.others[..] {
-            [] => coefficient_of(group.first),
-            [second] => coefficient_of(group.first) + coefficient_of(second),
-            _ => {
-                let members = std::iter::once(group.first).chain(group.others);
-                Expr::add_all(members.map(coefficient_of))
-            }
-        };
-        if coefficient.is_zero() {
-            continue;
-        }
-        let kinematic: Vec<Expr> = kinematic_part(group.first).cloned().collect();
-        if kinematic.is_empty() && coefficient.terms().len() > 1 {
-            // No kinematic part to collect by: the terms stand on their own.
-            let mut plain = coefficient.terms().to_vec();
-            plain.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
-            if only_group && plain[0].coeff_and_factors().0.is_negative() {
-                // A sum of coefficients alone (a denominator, a group) starts with a
-                // positive term where it has one: `z_2 - z_1`, not `-z_1 + z_2`.
-                if let Some(at) = plain
-                    .iter()
-                    .position(|t| !t.coeff_and_factors().0.is_negative())
-                {
-                    let first = plain.remove(at);
-                    plain.insert(0, first);
-                }
-            }
-            terms.extend(plain.iter().map(|t| present_term(t, axis)));
-        } else if coefficient.terms().len() == 1 {
-            let factors = coefficient.factors().iter().cloned().chain(kinematic);
-            terms.push(present_term(&Expr::mul_all(factors), axis));
-        } else {
-            terms.push(present_group(&coefficient, &kinematic, axis));
-        }
-    }
-    match terms.len() {
-        0 => (false, Layout::Number(Q::ZERO)),
-        1 => terms.pop().unwrap_or((false, Layout::Number(Q::ZERO))),
-        _ => (false, Layout::Sum(terms)),
-    }
-}
 
-/// `± common · (group) · kinematic` for a coefficient with several terms.
-fn present_group(coefficient: &Expr, kinematic: &[Expr], axis: Axis) -> (bool, Layout) {
-    let mut inner: Vec<Expr> = coefficient.terms().to_vec();
-    inner.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
-    let common = common_factor(&inner);
-    let inner: Vec<Expr> = inner.iter().map(|t| t / &common).collect();
-    let negative = inner
-        .first()
-        .is_some_and(|t| t.coeff_and_factors().0.is_negative());
-    let group_terms: Vec<(bool, Layout)> = inner
-        .iter()
-        .map(|t| {
-            let (neg, layout) = present_term(t, axis);
-            (neg != negative, layout)
-        })
-        .collect();
-    let group = Layout::Sum(group_terms);
-    let outer = Expr::mul_all(
-        common
-            .factors()
-            .iter()
-            .cloned()
-            .chain(kinematic.iter().cloned()),
-    );
-    let (outer_negative, outer_layout) = present_term(&outer, axis);
-    let product = match outer_layout {
-        Layout::Product(mut p) => {
-            let at = p
-                .numerator
-                .iter()
-                .position(|f| placement(f) > GROUP_PLACE)
-                .unwrap_or(p.numerator.len());
-            p.numerator.insert(at, group);
-            p
+    pub fn node(&self, id: NodeId) -> &Node {
+        &self.nodes[id.0 as usize]
+    }
+
+    /// The signed entries of a run: the terms of a sum or the factors of a product.
+    pub fn entries(&self, span: Span) -> &[(bool, NodeId)] {
+        &self.entries[span.start as usize..(span.start + span.len) as usize]
+    }
+
+    fn push(&mut self, node: Node) -> NodeId {
+        self.nodes.push(node);
+        NodeId((self.nodes.len() - 1) as u32)
+    }
+
+    /// Moves the children pending since `mark` (those with `side` first, then the others)
+    /// into one run of entries.
+    fn finish(&mut self, mark: usize, side: bool) -> (Span, Span) {
+        let start = self.entries.len() as u32;
+        let pending = &self.pending[mark..];
+        self.entries
+            .extend(pending.iter().filter(|(s, _)| *s == side));
+        let first = self.entries.len() as u32 - start;
+        self.entries
+            .extend(pending.iter().filter(|(s, _)| *s != side));
+        let second = self.entries.len() as u32 - start - first;
+        self.pending.truncate(mark);
+        (
+            Span { start, len: first },
+            Span {
+                start: start + first,
+                len: second,
+            },
+        )
+    }
+
+    /// The terms pending since `mark`, with their signs, as one sum.
+    fn finish_sum(&mut self, mark: usize) -> NodeId {
+        let start = self.entries.len() as u32;
+        self.entries.extend_from_slice(&self.pending[mark..]);
+        let span = Span {
+            start,
+            len: self.entries.len() as u32 - start,
+        };
+        self.pending.truncate(mark);
+        self.push(Node::Sum(span))
+    }
+
+    /// The presented form of `e` as a signed node: `(negative, node)`.
+    pub fn present(&mut self, e: &Expr, axis: Axis) -> (bool, NodeId) {
+        match e.view() {
+            View::Add(_) => self.present_sum(e, axis),
+            _ => self.present_term(e, axis),
         }
-        Layout::Number(q) => Product {
-            coefficient: q,
-            numerator: vec![group],
-            denominator: vec![],
-        },
-        other => {
-            let mut numerator = vec![group];
-            if placement(&other) > GROUP_PLACE {
-                numerator.push(other);
+    }
+
+    fn present_sum(&mut self, e: &Expr, axis: Axis) -> (bool, NodeId) {
+        let mut groups: Vec<Group> = Vec::with_capacity(e.terms().len());
+        // The groups by kinematic part, filled once there are too many to search linearly.
+        let mut index: HashMap<Vec<&Expr>, usize> = HashMap::new();
+        for term in e.terms() {
+            let kinematic = kinematic_part(term);
+            let key = kinematic_key(kinematic.clone());
+            let found = if groups.len() <= LINEAR_SEARCH_GROUPS {
+                groups
+                    .iter()
+                    .position(|g| g.key == key && kinematic_part(g.first).eq(kinematic.clone()))
             } else {
-                numerator.insert(0, other);
-            }
-            Product {
-                coefficient: Q::ONE,
-                numerator,
-                denominator: vec![],
+                if index.is_empty() {
+                    for (at, g) in groups.iter().enumerate() {
+                        index.insert(kinematic_part(g.first).collect(), at);
+                    }
+                }
+                index.get(&kinematic.clone().collect::<Vec<_>>()).copied()
+            };
+            match found {
+                Some(at) => groups[at].others.push(term),
+                None => {
+                    if !index.is_empty() {
+                        index.insert(kinematic.collect(), groups.len());
+                    }
+                    groups.push(Group {
+                        first: term,
+                        others: Vec::new(),
+                        key,
+                    });
+                }
             }
         }
-    };
-    (negative != outer_negative, Layout::Product(product))
+        // Keys rarely tie, so the kinematic products that break ties are seldom built.
+        groups.sort_by(|a, b| {
+            a.key.cmp(&b.key).then_with(|| {
+                Expr::mul_all(kinematic_part(a.first).cloned())
+                    .cmp(&Expr::mul_all(kinematic_part(b.first).cloned()))
+            })
+        });
+        let only_group = groups.len() == 1;
+        let mark = self.pending.len();
+        for group in groups {
+            if group.others.is_empty() && !has_sum_coefficient(group.first) {
+                // A coefficient of one term times the kinematic part is the term itself.
+                let term = self.present_term(group.first, axis);
+                self.pending.push(term);
+                continue;
+            }
+            let coefficient = match group.others[..] {
+                [] => coefficient_of(group.first),
+                [second] => coefficient_of(group.first) + coefficient_of(second),
+                _ => {
+                    let members = std::iter::once(group.first).chain(group.others);
+                    Expr::add_all(members.map(coefficient_of))
+                }
+            };
+            if coefficient.is_zero() {
+                continue;
+            }
+            let kinematic = kinematic_part(group.first);
+            if kinematic.clone().next().is_none() && coefficient.terms().len() > 1 {
+                // No kinematic part to collect by: the terms stand on their own.
+                let mut plain: Vec<&Expr> = coefficient.terms().iter().collect();
+                plain.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
+                if only_group && plain[0].coefficient().is_negative() {
+                    // A sum of coefficients alone (a denominator, a group) starts with a
+                    // positive term where it has one: `z_2 - z_1`, not `-z_1 + z_2`.
+                    if let Some(at) = plain.iter().position(|t| !t.coefficient().is_negative()) {
+                        let first = plain.remove(at);
+                        plain.insert(0, first);
+                    }
+                }
+                for t in plain {
+                    let term = self.present_term(t, axis);
+                    self.pending.push(term);
+                }
+            } else if coefficient.terms().len() == 1 {
+                // The coefficient and the kinematic part have no base in common.
+                let factors = coefficient.monomial().iter().chain(kinematic);
+                let term = self.present_product(coefficient.coefficient(), factors, axis);
+                self.pending.push(term);
+            } else {
+                let term = self.present_group(&coefficient, kinematic, axis);
+                self.pending.push(term);
+            }
+        }
+        match self.pending.len() - mark {
+            0 => (false, self.push(Node::Number(Q::ZERO))),
+            1 => self.pending.pop().unwrap_or_else(|| unreachable!()),
+            _ => (false, self.finish_sum(mark)),
+        }
+    }
+
+    /// `± common · (group) · kinematic` for a coefficient with several terms.
+    fn present_group<'e>(
+        &mut self,
+        coefficient: &'e Expr,
+        kinematic: KinematicPart<'e>,
+        axis: Axis,
+    ) -> (bool, NodeId) {
+        let mut inner: Vec<&Expr> = coefficient.terms().iter().collect();
+        inner.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
+        let common = common_factor(&inner);
+        let divided: Vec<Expr> = match common.is_one() {
+            true => Vec::new(),
+            false => inner.iter().map(|&t| t / &common).collect(),
+        };
+        if !divided.is_empty() {
+            inner = divided.iter().collect();
+        }
+        let negative = inner.first().is_some_and(|t| t.coefficient().is_negative());
+        let mark = self.pending.len();
+        for t in inner {
+            let (neg, id) = self.present_term(t, axis);
+            self.pending.push((neg != negative, id));
+        }
+        let group = self.finish_sum(mark);
+        // The common factor and the kinematic part have no base in common.
+        let outer = common.monomial().iter().chain(kinematic);
+        let (outer_negative, outer_id) = self.present_product(common.coefficient(), outer, axis);
+        let mark = self.pending.len();
+        let (coefficient, denominator) = match self.node(outer_id).clone() {
+            Node::Product(p) => {
+                let start = p.numerator.start as usize;
+                self.pending
+                    .extend_from_slice(&self.entries[start..start + p.numerator.len as usize]);
+                (p.coefficient, p.denominator)
+            }
+            Node::Number(q) => (q, Span::default()),
+            _ => {
+                self.pending.push((false, outer_id));
+                (Q::ONE, Span::default())
+            }
+        };
+        // The group stands before the first factor placed after groups (rule 4).
+        let at = self.pending[mark..]
+            .iter()
+            .position(|&(_, f)| self.placement(f) > GROUP_PLACE)
+            .map_or(self.pending.len(), |k| mark + k);
+        self.pending.insert(at, (false, group));
+        let (numerator, _) = self.finish(mark, false);
+        let product = self.push(Node::Product(Product {
+            coefficient,
+            numerator,
+            denominator,
+        }));
+        (negative != outer_negative, product)
+    }
+
+    /// A single term (no top-level sum) as a signed product.
+    fn present_term(&mut self, e: &Expr, axis: Axis) -> (bool, NodeId) {
+        self.present_product(e.coefficient(), e.monomial().iter(), axis)
+    }
+
+    /// `coefficient · factors` as a signed product, the factors of distinct bases.
+    fn present_product<'e>(
+        &mut self,
+        coefficient: &Q,
+        factors: impl Iterator<Item = &'e Expr>,
+        axis: Axis,
+    ) -> (bool, NodeId) {
+        let negative = coefficient.is_negative();
+        let mut factors = factors.map(|f| (expr_place(f), f));
+        let Some(first) = factors.next() else {
+            return (negative, self.push(Node::Number(coefficient.abs())));
+        };
+        // The factors with their places, in print order; on the stack unless there are many.
+        let mut inline = [first; 8];
+        let mut spilled: Vec<(u8, &Expr)> = Vec::new();
+        let mut count = 1;
+        for placed in factors {
+            match inline.get_mut(count) {
+                Some(slot) => *slot = placed,
+                None => {
+                    if spilled.is_empty() {
+                        spilled.extend_from_slice(&inline);
+                    }
+                    spilled.push(placed);
+                }
+            }
+            count += 1;
+        }
+        let ordered: &mut [(u8, &Expr)] = match spilled.is_empty() {
+            true => &mut inline[..count],
+            false => &mut spilled,
+        };
+        ordered.sort_by(|(pa, a), (pb, b)| pa.cmp(pb).then_with(|| compare_in_place(a, b)));
+        cyclic_pair_order(ordered);
+        let mark = self.pending.len();
+        // Each factor with whether it belongs to the denominator.
+        for &(_, f) in ordered.iter() {
+            let View::Pow(base, exponent) = f.view() else {
+                let atom = self.present_atom(f, axis);
+                self.pending.push((false, atom));
+                continue;
+            };
+            let factor = match exponent.as_num() {
+                Some(q) if q.is_negative() => (true, self.present_power(base, &q.abs(), axis)),
+                Some(q) => (false, self.present_power(base, q, axis)),
+                None => {
+                    let base = self.present_atom(base, axis);
+                    let exponent = self.present_signed_inline(exponent, axis);
+                    (false, self.push(Node::Power(base, exponent)))
+                }
+            };
+            self.pending.push(factor);
+        }
+        let coefficient = coefficient.abs();
+        let node = match &self.pending[mark..] {
+            [(false, alone)] if coefficient.is_one() => {
+                let alone = *alone;
+                self.pending.truncate(mark);
+                return (negative, alone);
+            }
+            _ => {
+                let (numerator, denominator) = self.finish(mark, false);
+                Node::Product(Product {
+                    coefficient,
+                    numerator,
+                    denominator,
+                })
+            }
+        };
+        (negative, self.push(node))
+    }
+
+    fn present_power(&mut self, base: &Expr, exponent: &Q, axis: Axis) -> NodeId {
+        if *exponent == Q::Small(1, 2) {
+            let inner = self.present_signed_inline(base, axis);
+            return self.push(Node::SquareRoot(inner));
+        }
+        let base = self.present_atom(base, axis);
+        if exponent.is_one() {
+            base
+        } else {
+            let exponent = self.push(Node::Number(exponent.clone()));
+            self.push(Node::Power(base, exponent))
+        }
+    }
+
+    /// A factor or base: a symbol, a number, a function, or a parenthesised sum.
+    fn present_atom(&mut self, e: &Expr, axis: Axis) -> NodeId {
+        match e.view() {
+            View::Sym(s) => self.push(Node::Symbol(s)),
+            View::Num(q) if !q.is_negative() && q.is_integer() => {
+                self.push(Node::Number(q.clone()))
+            }
+            View::Func(f, arg) => {
+                let arg = self.present_signed_inline(arg, axis);
+                self.push(Node::Function(f, arg))
+            }
+            _ => self.present_signed_inline(e, axis),
+        }
+    }
+
+    /// An expression that must stand as one unit; a leading minus becomes part of a sum.
+    fn present_signed_inline(&mut self, e: &Expr, axis: Axis) -> NodeId {
+        match self.present(e, axis) {
+            (false, id) => id,
+            (true, id) => {
+                if let Node::Sum(span) = *self.node(id) {
+                    let start = span.start as usize;
+                    self.entries[start..start + span.len as usize]
+                        .iter_mut()
+                        .for_each(|t| t.0 = !t.0);
+                    id
+                } else {
+                    let mark = self.pending.len();
+                    self.pending.push((true, id));
+                    self.finish_sum(mark)
+                }
+            }
+        }
+    }
+
+    /// Where a node stands in a product (rule 4).
+    fn placement(&self, id: NodeId) -> u8 {
+        match self.node(id) {
+            Node::Number(_) => 0,
+            Node::Symbol(s) => symbol_place(*s),
+            Node::Power(b, _) => self.placement(*b),
+            Node::SquareRoot(b) => self.placement(*b).min(GROUP_PLACE),
+            Node::Sum(_) | Node::Product(_) => GROUP_PLACE,
+            Node::Function(..) => 7,
+        }
+    }
 }
 
 /// The monomial that divides every term (symbols to their least power), sign excluded.
-fn common_factor(terms: &[Expr]) -> Expr {
+fn common_factor(terms: &[&Expr]) -> Expr {
     let Some(first) = terms.first() else {
         return Expr::one();
     };
@@ -290,12 +518,39 @@ fn common_factor(terms: &[Expr]) -> Expr {
 
 /// The largest positive rational that divides every coefficient, gcd of the numerators over
 /// lcm of the denominators: `1/12 a² + 1/12 d²` has `1/12`, `r²/(8L²) + 3/4` has `1/8`.
-fn rational_content(terms: &[Expr]) -> Q {
+/// A content whose numerator or denominator does not fit an `i64` is taken as 1.
+fn rational_content(terms: &[&Expr]) -> Q {
+    small_rational_content(terms).unwrap_or_else(|| big_rational_content(terms))
+}
+
+/// [`rational_content`] in machine integers; `None` when a coefficient is a big rational.
+fn small_rational_content(terms: &[&Expr]) -> Option<Q> {
+    use num_integer::Integer;
+    let mut numerators = 0u64;
+    let mut denominators = 1i64;
+    for t in terms {
+        let Q::Small(n, d) = *t.coefficient() else {
+            return None;
+        };
+        numerators = numerators.gcd(&n.unsigned_abs());
+        let Some(lcm) = (denominators / denominators.gcd(&d)).checked_mul(d) else {
+            return Some(Q::ONE);
+        };
+        denominators = lcm;
+    }
+    match i64::try_from(numerators) {
+        Ok(n) if n > 0 => Some(Q::new(n, denominators).unwrap_or(Q::ONE)),
+        _ => Some(Q::ONE),
+    }
+}
+
+/// [`rational_content`] in big integers, for coefficients beyond `i64`.
+fn big_rational_content(terms: &[&Expr]) -> Q {
     use num_integer::Integer;
     let mut numerators = num_bigint::BigInt::from(0);
     let mut denominators = num_bigint::BigInt::from(1);
     for t in terms {
-        let (n, d) = t.coeff_and_factors().0.parts();
+        let (n, d) = t.coefficient().parts();
         numerators = numerators.gcd(&n);
         denominators = denominators.lcm(&d);
     }
@@ -311,95 +566,6 @@ fn power(base: &Expr, exponent: Q) -> Expr {
         .unwrap_or_else(|_| Expr::one())
 }
 
-/// A single term (no top-level sum) as a signed product.
-fn present_term(e: &Expr, axis: Axis) -> (bool, Layout) {
-    let negative = e.coefficient().is_negative();
-    let coefficient = e.coefficient().abs();
-    let factors = e.monomial();
-    let mut numerator: Vec<Layout> = Vec::new();
-    let mut denominator: Vec<Layout> = Vec::new();
-    // The factors with their places, in print order; on the stack unless there are many.
-    let mut inline: [(u8, &Expr); 8] = [(0, e); 8];
-    let mut spilled: Vec<(u8, &Expr)> = Vec::new();
-    let placed = factors.iter().map(|f| (expr_place(f), f));
-    let ordered: &mut [(u8, &Expr)] = if factors.len() <= inline.len() {
-        inline
-            .iter_mut()
-            .zip(placed)
-            .for_each(|(slot, f)| *slot = f);
-        &mut inline[..factors.len()]
-    } else {
-        spilled.extend(placed);
-        &mut spilled
-    };
-    ordered.sort_by(|(pa, a), (pb, b)| pa.cmp(pb).then_with(|| compare_in_place(a, b)));
-    cyclic_pair_order(ordered);
-    for &(_, f) in ordered.iter() {
-        let View::Pow(base, exponent) = f.view() else {
-            numerator.push(present_atom(f, axis));
-            continue;
-        };
-        match exponent.as_num() {
-            Some(q) if q.is_negative() => denominator.push(present_power(base, &q.abs(), axis)),
-            Some(q) => numerator.push(present_power(base, q, axis)),
-            None => numerator.push(Layout::Power(
-                Box::new(present_atom(base, axis)),
-                Box::new(present_signed_inline(exponent, axis)),
-            )),
-        }
-    }
-    if numerator.is_empty() && denominator.is_empty() {
-        return (negative, Layout::Number(coefficient));
-    }
-    if coefficient.is_one() && denominator.is_empty() && numerator.len() == 1 {
-        return (negative, numerator.pop().unwrap_or(Layout::Number(Q::ONE)));
-    }
-    (
-        negative,
-        Layout::Product(Product {
-            coefficient,
-            numerator,
-            denominator,
-        }),
-    )
-}
-
-fn present_power(base: &Expr, exponent: &Q, axis: Axis) -> Layout {
-    let base_layout = present_atom(base, axis);
-    if exponent.is_one() {
-        base_layout
-    } else if *exponent == Q::Small(1, 2) {
-        Layout::SquareRoot(Box::new(present_signed_inline(base, axis)))
-    } else {
-        Layout::Power(
-            Box::new(base_layout),
-            Box::new(Layout::Number(exponent.clone())),
-        )
-    }
-}
-
-/// A factor or base: a symbol, a number, a function, or a parenthesised sum.
-fn present_atom(e: &Expr, axis: Axis) -> Layout {
-    match e.view() {
-        View::Sym(s) => Layout::Symbol(s),
-        View::Num(q) if !q.is_negative() && q.is_integer() => Layout::Number(q.clone()),
-        View::Func(f, arg) => Layout::Function(f, Box::new(present_signed_inline(arg, axis))),
-        _ => present_signed_inline(e, axis),
-    }
-}
-
-/// An expression that must stand as one unit; a leading minus becomes part of a sum.
-fn present_signed_inline(e: &Expr, axis: Axis) -> Layout {
-    match present(e, axis) {
-        (false, l) => l,
-        (true, Layout::Sum(mut terms)) => {
-            terms.iter_mut().for_each(|t| t.0 = !t.0);
-            Layout::Sum(terms)
-        }
-        (true, l) => Layout::Sum(vec![(true, l)]),
-    }
-}
-
 fn is_kinematic_factor(f: &Expr) -> bool {
     match f.base().view() {
         View::Sym(s) => matches!(s.role(), Role::Kinematic | Role::UnitVector),
@@ -410,17 +576,6 @@ fn is_kinematic_factor(f: &Expr) -> bool {
 
 /// Where a factor stands in a product (rule 4).
 const GROUP_PLACE: u8 = 6;
-
-fn placement(l: &Layout) -> u8 {
-    match l {
-        Layout::Number(_) => 0,
-        Layout::Symbol(s) => symbol_place(*s),
-        Layout::Power(b, _) => placement(b),
-        Layout::SquareRoot(b) => placement(b).min(GROUP_PLACE),
-        Layout::Sum(_) | Layout::Product(_) => GROUP_PLACE,
-        Layout::Function(..) => 7,
-    }
-}
 
 fn symbol_place(s: Symbol) -> u8 {
     match s.role() {

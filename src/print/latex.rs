@@ -21,8 +21,19 @@ pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
     }
 }
 
+/// A node; symbols, the most frequent, without a call.
+#[inline]
 fn node(out: &mut String, layout: &Layout, id: NodeId) {
     match layout.node(id) {
+        Node::Symbol(s) => out.push_str(s.latex()),
+        other => compound(out, layout, other),
+    }
+}
+
+/// Kept out of line so that [`node`] stays small enough to be quick for symbols.
+#[inline(never)]
+fn compound(out: &mut String, layout: &Layout, compound: &Node) {
+    match compound {
         Node::Number(q) => number(out, q),
         Node::Symbol(s) => out.push_str(s.latex()),
         Node::Sum(terms) => {
@@ -163,7 +174,7 @@ fn fraction_part(out: &mut String, layout: &Layout, after_number: bool, span: Sp
 }
 
 fn product(out: &mut String, layout: &Layout, p: &Product) {
-    let (cn, cd) = (p.coefficient.numer(), p.coefficient.denom());
+    let (cn, cd) = p.coefficient_parts();
     let shown = !cn.is_one() || p.numerator.is_empty();
     if p.denominator.is_empty() {
         if !cd.is_one() {

@@ -33,6 +33,10 @@ pub struct Layout {
     entries: Vec<(bool, NodeId)>,
     /// The children of the nodes being built, innermost last (a stack; see `finish`).
     pending: Vec<(bool, NodeId)>,
+    /// The groups of the sums being presented, innermost last (a stack).
+    groups: Vec<Group>,
+    /// For each term of the sums being presented, the first term of its group (a stack).
+    group_of_term: Vec<u32>,
 }
 
 /// A node of a [`Layout`].
@@ -75,6 +79,16 @@ pub struct Product {
     pub denominator: Span,
 }
 
+impl Product {
+    /// The coefficient's numerator and denominator; an integer is its own numerator.
+    pub fn coefficient_parts(&self) -> (Q, Q) {
+        match self.coefficient.is_integer() {
+            true => (self.coefficient.clone(), Q::ONE),
+            false => (self.coefficient.numer(), self.coefficient.denom()),
+        }
+    }
+}
+
 /// Which equation an expression belongs to, for ordering inertia symbols cyclically.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Axis {
@@ -96,12 +110,13 @@ impl Axis {
 }
 
 /// The terms of a sum that share one kinematic part (rule 1).
-struct Group<'a> {
-    /// The first term with this kinematic part, and any others.
-    first: &'a Expr,
-    others: Vec<&'a Expr>,
+#[derive(Debug, Clone, Copy)]
+struct Group {
     /// The ordering key of the kinematic part (rule 2).
     key: KinematicKey,
+    /// The index of the first term with this kinematic part, and how many terms have it.
+    first: u32,
+    members: u32,
 }
 
 /// The kinematic factors of a term, in canonical order.
@@ -134,6 +149,8 @@ impl Layout {
         self.nodes.clear();
         self.entries.clear();
         self.pending.clear();
+        self.groups.clear();
+        self.group_of_term.clear();
     }
 
     pub fn node(&self, id: NodeId) -> &Node {
@@ -192,66 +209,75 @@ impl Layout {
     }
 
     fn present_sum(&mut self, e: &Expr, axis: Axis) -> (bool, NodeId) {
-        let mut groups: Vec<Group> = Vec::with_capacity(e.terms().len());
+        let terms = e.terms();
+        let base = self.groups.len();
+        let term_base = self.group_of_term.len();
         // The groups by kinematic part, filled once there are too many to search linearly.
         let mut index: HashMap<Vec<&Expr>, usize> = HashMap::new();
-        for term in e.terms() {
+        for (at, term) in terms.iter().enumerate() {
             let kinematic = kinematic_part(term);
             let key = kinematic_key(kinematic.clone());
+            let groups = &mut self.groups[base..];
             let found = if groups.len() <= LINEAR_SEARCH_GROUPS {
-                groups
-                    .iter()
-                    .position(|g| g.key == key && kinematic_part(g.first).eq(kinematic.clone()))
+                groups.iter().position(|g| {
+                    g.key == key && kinematic_part(&terms[g.first as usize]).eq(kinematic.clone())
+                })
             } else {
                 if index.is_empty() {
-                    for (at, g) in groups.iter().enumerate() {
-                        index.insert(kinematic_part(g.first).collect(), at);
+                    for (k, g) in groups.iter().enumerate() {
+                        index.insert(kinematic_part(&terms[g.first as usize]).collect(), k);
                     }
                 }
                 index.get(&kinematic.clone().collect::<Vec<_>>()).copied()
             };
             match found {
-                Some(at) => groups[at].others.push(term),
+                Some(k) => {
+                    groups[k].members += 1;
+                    self.group_of_term.push(groups[k].first);
+                }
                 None => {
                     if !index.is_empty() {
                         index.insert(kinematic.collect(), groups.len());
                     }
-                    groups.push(Group {
-                        first: term,
-                        others: Vec::new(),
+                    self.group_of_term.push(at as u32);
+                    self.groups.push(Group {
                         key,
+                        first: at as u32,
+                        members: 1,
                     });
                 }
             }
         }
         // Keys rarely tie, so the kinematic products that break ties are seldom built.
-        groups.sort_by(|a, b| {
-            a.key.cmp(&b.key).then_with(|| {
-                Expr::mul_all(kinematic_part(a.first).cloned())
-                    .cmp(&Expr::mul_all(kinematic_part(b.first).cloned()))
-            })
+        sort_nearly_sorted(&mut self.groups[base..], |a, b| {
+            let kinematic =
+                |g: &Group| Expr::mul_all(kinematic_part(&terms[g.first as usize]).cloned());
+            a.key
+                .cmp(&b.key)
+                .then_with(|| kinematic(a).cmp(&kinematic(b)))
         });
-        let only_group = groups.len() == 1;
+        let only_group = self.groups.len() - base == 1;
         let mark = self.pending.len();
-        for group in groups {
-            if group.others.is_empty() && !has_sum_coefficient(group.first) {
+        for g in base..self.groups.len() {
+            let group = self.groups[g];
+            let first = &terms[group.first as usize];
+            if group.members == 1 && !has_sum_coefficient(first) {
                 // A coefficient of one term times the kinematic part is the term itself.
-                let term = self.present_term(group.first, axis);
+                let term = self.present_term(first, axis);
                 self.pending.push(term);
                 continue;
             }
-            let coefficient = match group.others[..] {
-                [] => coefficient_of(group.first),
-                [second] => coefficient_of(group.first) + coefficient_of(second),
-                _ => {
-                    let members = std::iter::once(group.first).chain(group.others);
-                    Expr::add_all(members.map(coefficient_of))
-                }
-            };
+            // Summed pairwise: the merge of two sorted sums is the quick path of `+`.
+            let group_of_term = &self.group_of_term[term_base..];
+            let coefficient = (group.first as usize..terms.len())
+                .filter(|&at| group_of_term[at] == group.first)
+                .map(|at| coefficient_of(&terms[at]))
+                .reduce(|sum, c| sum + c)
+                .unwrap_or_else(Expr::zero);
             if coefficient.is_zero() {
                 continue;
             }
-            let kinematic = kinematic_part(group.first);
+            let kinematic = kinematic_part(first);
             if kinematic.clone().next().is_none() && coefficient.terms().len() > 1 {
                 // No kinematic part to collect by: the terms stand on their own.
                 let mut plain: Vec<&Expr> = coefficient.terms().iter().collect();
@@ -278,6 +304,8 @@ impl Layout {
                 self.pending.push(term);
             }
         }
+        self.groups.truncate(base);
+        self.group_of_term.truncate(term_base);
         match self.pending.len() - mark {
             0 => (false, self.push(Node::Number(Q::ZERO))),
             1 => self.pending.pop().unwrap_or_else(|| unreachable!()),
@@ -378,7 +406,9 @@ impl Layout {
             true => &mut inline[..count],
             false => &mut spilled,
         };
-        ordered.sort_by(|(pa, a), (pb, b)| pa.cmp(pb).then_with(|| compare_in_place(a, b)));
+        sort_nearly_sorted(ordered, |(pa, a), (pb, b)| {
+            pa.cmp(pb).then_with(|| compare_in_place(a, b))
+        });
         cyclic_pair_order(ordered);
         let mark = self.pending.len();
         // Each factor with whether it belongs to the denominator.
@@ -642,10 +672,31 @@ fn cyclic_pair_order(factors: &mut [(u8, &Expr)]) {
     }
 }
 
+/// Sorts a short slice that is often in order already (the factors of a term, the groups
+/// of a sum) as `sort_by` would, stably: by insertion, comparing each neighbouring pair once
+/// when nothing is out of place. Long slices go to the standard sort.
+fn sort_nearly_sorted<T: Copy>(items: &mut [T], mut order: impl FnMut(&T, &T) -> Ordering) {
+    if items.len() > 16 {
+        items.sort_by(order);
+        return;
+    }
+    for i in 1..items.len() {
+        let item = items[i];
+        let mut j = i;
+        while j > 0 && order(&items[j - 1], &item) == Ordering::Greater {
+            items[j] = items[j - 1];
+            j -= 1;
+        }
+        items[j] = item;
+    }
+}
+
 /// Ordering key of a kinematic monomial (rule 2): terms free of kinematic symbols, then
 /// accelerations before velocities, the family (translational first), the number of
-/// kinematic symbols, and the axis or the cyclic pair of axes.
-type KinematicKey = (u8, u8, usize, usize);
+/// kinematic symbols, and the axis or the cyclic pair of axes; packed into one integer in
+/// that order of significance (class and family a byte each, the count 40 bits, the axis a
+/// byte), so that comparing keys is one comparison.
+type KinematicKey = u64;
 
 fn kinematic_key<'a>(factors: impl Iterator<Item = &'a Expr>) -> KinematicKey {
     let mut factor_count = 0usize;
@@ -672,7 +723,7 @@ fn kinematic_key<'a>(factors: impl Iterator<Item = &'a Expr>) -> KinematicKey {
         }
     }
     if count == 0 {
-        return (0, 0, 0, 0);
+        return 0;
     }
     let class = if acceleration { 1 } else { 2 };
     let axis_rank = match axes {
@@ -681,7 +732,8 @@ fn kinematic_key<'a>(factors: impl Iterator<Item = &'a Expr>) -> KinematicKey {
         0b100 | 0b101 => 2,
         _ => 3,
     };
-    (class, lowest_family, count.min(factor_count), axis_rank)
+    let count = count.min(factor_count).min((1 << 40) - 1) as u64;
+    (class << 56) | (u64::from(lowest_family) << 48) | (count << 8) | axis_rank
 }
 
 /// Ordering key of an inertia symbol for the equation about `axis` (rule 3).

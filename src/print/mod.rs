@@ -86,7 +86,8 @@ pub fn text_about(e: &Expr, axis: Axis) -> String {
 
 /// An expression in the chosen notation.
 pub fn render(e: &Expr, notation: Notation, axis: Axis) -> String {
-    let mut out = String::with_capacity(128);
+    // Room for a typical term of each top-level term, so that the string rarely grows.
+    let mut out = String::with_capacity(16 + 32 * e.terms().len());
     presented(e, axis, |layout, negative, root| {
         render_into(&mut out, layout, negative, root, notation)
     });

@@ -21,8 +21,19 @@ pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
     }
 }
 
+/// A node; symbols, the most frequent, without a call.
+#[inline]
 fn node(out: &mut String, layout: &Layout, id: NodeId) {
     match layout.node(id) {
+        Node::Symbol(s) => out.push_str(s.name()),
+        other => compound(out, layout, other),
+    }
+}
+
+/// Kept out of line so that [`node`] stays small enough to be quick for symbols.
+#[inline(never)]
+fn compound(out: &mut String, layout: &Layout, compound: &Node) {
+    match compound {
         Node::Number(q) => number(out, q),
         Node::Symbol(s) => out.push_str(s.name()),
         Node::Sum(terms) => {
@@ -98,7 +109,7 @@ fn factors(out: &mut String, layout: &Layout, shown: Option<&Q>, span: Span) {
 }
 
 fn product(out: &mut String, layout: &Layout, p: &Product) {
-    let (cn, cd) = (p.coefficient.numer(), p.coefficient.denom());
+    let (cn, cd) = p.coefficient_parts();
     let shown_numerator = !cn.is_one() || p.numerator.is_empty();
     if p.denominator.is_empty() {
         let shown = (!cd.is_one() || shown_numerator).then_some(&p.coefficient);

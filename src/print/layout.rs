@@ -167,23 +167,21 @@ impl Layout {
         NodeId((self.nodes.len() - 1) as u32)
     }
 
-    /// Moves the children pending since `mark` (those with `side` first, then the others)
-    /// into one run of entries.
-    fn finish(&mut self, mark: usize, side: bool) -> (Span, Span) {
+    /// The factors pending since `mark` as a product's numerator and denominator (those
+    /// marked `true`), each in the order given.
+    fn finish_product(&mut self, mark: usize) -> (Span, Span) {
         let start = self.entries.len() as u32;
         let pending = &self.pending[mark..];
-        self.entries
-            .extend(pending.iter().filter(|(s, _)| *s == side));
-        let first = self.entries.len() as u32 - start;
-        self.entries
-            .extend(pending.iter().filter(|(s, _)| *s != side));
-        let second = self.entries.len() as u32 - start - first;
+        self.entries.extend(pending.iter().filter(|(d, _)| !d));
+        let above = self.entries.len() as u32 - start;
+        self.entries.extend(pending.iter().filter(|(d, _)| *d));
+        let below = self.entries.len() as u32 - start - above;
         self.pending.truncate(mark);
         (
-            Span { start, len: first },
+            Span { start, len: above },
             Span {
-                start: start + first,
-                len: second,
+                start: start + above,
+                len: below,
             },
         )
     }
@@ -360,7 +358,7 @@ impl Layout {
             .position(|&(_, f)| self.placement(f) > GROUP_PLACE)
             .map_or(self.pending.len(), |k| mark + k);
         self.pending.insert(at, (false, group));
-        let (numerator, _) = self.finish(mark, false);
+        let (numerator, _) = self.finish_product(mark);
         let product = self.push(Node::Product(Product {
             coefficient,
             numerator,
@@ -437,7 +435,7 @@ impl Layout {
                 return (negative, alone);
             }
             _ => {
-                let (numerator, denominator) = self.finish(mark, false);
+                let (numerator, denominator) = self.finish_product(mark);
                 Node::Product(Product {
                     coefficient,
                     numerator,
@@ -542,8 +540,13 @@ fn common_factor(terms: &[&Expr]) -> Expr {
             }
         });
     }
-    let content = Expr::num(rational_content(terms));
-    Expr::mul_all(std::iter::once(content).chain(common.into_iter().map(|(b, e)| power(&b, e))))
+    let content = rational_content(terms);
+    if common.is_empty() && content.is_one() {
+        // Nothing in common, the usual case: no product to form.
+        return Expr::one();
+    }
+    let common = common.into_iter().map(|(b, e)| power(&b, e));
+    Expr::mul_all(std::iter::once(Expr::num(content)).chain(common))
 }
 
 /// The largest positive rational that divides every coefficient, gcd of the numerators over
@@ -659,15 +662,16 @@ fn compare_in_place(a: &Expr, b: &Expr) -> Ordering {
 }
 
 /// Two kinematic factors on the axes z and x are written `ω_z ω_x` (cyclic order zx).
+/// The factors are in place order, so the kinematic ones (place 8) stand together.
 fn cyclic_pair_order(factors: &mut [(u8, &Expr)]) {
-    let (first, second, third) = {
-        let mut kinematic = (0..factors.len()).filter(|&i| factors[i].0 == 8);
-        (kinematic.next(), kinematic.next(), kinematic.next())
+    let Some(i) = factors.iter().position(|f| f.0 == 8) else {
+        return;
     };
-    if let (Some(i), Some(j), None) = (first, second, third) {
+    let place = |k: usize| factors.get(k).map(|f| f.0);
+    if place(i + 1) == Some(8) && place(i + 2) != Some(8) {
         let axis = |k: usize| factors[k].1.base().as_symbol().and_then(Symbol::axis);
-        if axis(i) == Some(0) && axis(j) == Some(2) {
-            factors.swap(i, j);
+        if axis(i) == Some(0) && axis(i + 1) == Some(2) {
+            factors.swap(i, i + 1);
         }
     }
 }

@@ -2,7 +2,7 @@
 //! `\frac{6 F \Delta t}{m b}`, `-(I_y - I_z) \omega_y \omega_z`, `\sin\beta`, `\sqrt{x}`,
 //! with no redundant parentheses or braces and never `a + -b`.
 
-use super::layout::{Layout, Node, NodeId, Product, Span};
+use super::layout::{parts, Layout, Node, NodeId, Product, Span};
 use crate::algebra::{Func, Q};
 use std::fmt::Write;
 
@@ -34,7 +34,7 @@ fn node(out: &mut String, layout: &Layout, id: NodeId) {
 #[inline(never)]
 fn compound(out: &mut String, layout: &Layout, compound: &Node) {
     match compound {
-        Node::Number(q) => number(out, q),
+        Node::Number(n) => number(out, &layout.value(*n)),
         Node::Symbol(s) => out.push_str(s.latex()),
         Node::Sum(terms) => {
             for (i, &(negative, term)) in layout.entries(*terms).iter().enumerate() {
@@ -145,9 +145,9 @@ fn factor(out: &mut String, layout: &Layout, id: NodeId) {
             node(out, layout, id);
             out.push(')');
         }
-        Node::Number(q) if !q.is_integer() => {
+        Node::Number(n) if !layout.value(*n).is_integer() => {
             out.push('(');
-            number(out, q);
+            number(out, &layout.value(*n));
             out.push(')');
         }
         _ => node(out, layout, id),
@@ -174,7 +174,8 @@ fn fraction_part(out: &mut String, layout: &Layout, after_number: bool, span: Sp
 }
 
 fn product(out: &mut String, layout: &Layout, p: &Product) {
-    let (cn, cd) = p.coefficient_parts();
+    let coefficient = layout.value(p.coefficient);
+    let (cn, cd) = parts(&coefficient);
     let shown = !cn.is_one() || p.numerator.is_empty();
     if p.denominator.is_empty() {
         if !cd.is_one() {

@@ -37,6 +37,16 @@ pub struct Layout {
     groups: Vec<Group>,
     /// For each term of the sums being presented, the first term of its group (a stack).
     group_of_term: Vec<u32>,
+    /// The numbers too big for a [`Number`] to hold in place.
+    big_numbers: Vec<Q>,
+}
+
+/// A number of a [`Layout`]: a small rational in place, a big one in the layout's table, so
+/// that nodes are plain data and forgetting them costs nothing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Number {
+    Small(i64, i64),
+    Big(u32),
 }
 
 /// A node of a [`Layout`].
@@ -58,9 +68,9 @@ impl Span {
 
 /// A node of the presented form. Numbers and coefficients here are never negative: signs
 /// live on the terms of a [`Node::Sum`].
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Node {
-    Number(Q),
+    Number(Number),
     Symbol(Symbol),
     /// Terms with their signs (`true` = subtracted); at least one, one only when subtracted.
     Sum(Span),
@@ -72,20 +82,18 @@ pub enum Node {
 }
 
 /// `coefficient · numerator / denominator`, coefficient positive.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Product {
-    pub coefficient: Q,
+    pub coefficient: Number,
     pub numerator: Span,
     pub denominator: Span,
 }
 
-impl Product {
-    /// The coefficient's numerator and denominator; an integer is its own numerator.
-    pub fn coefficient_parts(&self) -> (Q, Q) {
-        match self.coefficient.is_integer() {
-            true => (self.coefficient.clone(), Q::ONE),
-            false => (self.coefficient.numer(), self.coefficient.denom()),
-        }
+/// A rational's numerator and denominator; an integer is its own numerator.
+pub fn parts(q: &Q) -> (Q, Q) {
+    match q.is_integer() {
+        true => (q.clone(), Q::ONE),
+        false => (q.numer(), q.denom()),
     }
 }
 
@@ -120,10 +128,19 @@ struct Group {
 }
 
 /// The kinematic factors of a term, in canonical order.
-type KinematicPart<'a> = std::iter::Filter<std::slice::Iter<'a, Expr>, fn(&&Expr) -> bool>;
+#[derive(Clone)]
+struct KinematicPart<'a>(std::slice::Iter<'a, Expr>);
+
+impl<'a> Iterator for KinematicPart<'a> {
+    type Item = &'a Expr;
+
+    fn next(&mut self) -> Option<&'a Expr> {
+        self.0.by_ref().find(|f| is_kinematic_factor(f))
+    }
+}
 
 fn kinematic_part(term: &Expr) -> KinematicPart<'_> {
-    term.factors().iter().filter(|f| is_kinematic_factor(f))
+    KinematicPart(term.factors().iter())
 }
 
 /// The coefficient of a term: the product of its other factors, number included.
@@ -151,6 +168,25 @@ impl Layout {
         self.pending.clear();
         self.groups.clear();
         self.group_of_term.clear();
+        self.big_numbers.clear();
+    }
+
+    fn number(&mut self, q: &Q) -> Number {
+        match q {
+            Q::Small(n, d) => Number::Small(*n, *d),
+            Q::Big(_) => {
+                self.big_numbers.push(q.clone());
+                Number::Big((self.big_numbers.len() - 1) as u32)
+            }
+        }
+    }
+
+    /// The value of a number of this layout.
+    pub fn value(&self, n: Number) -> Q {
+        match n {
+            Number::Small(n, d) => Q::Small(n, d),
+            Number::Big(at) => self.big_numbers[at as usize].clone(),
+        }
     }
 
     pub fn node(&self, id: NodeId) -> &Node {
@@ -305,7 +341,10 @@ impl Layout {
         self.groups.truncate(base);
         self.group_of_term.truncate(term_base);
         match self.pending.len() - mark {
-            0 => (false, self.push(Node::Number(Q::ZERO))),
+            0 => {
+                let zero = self.number(&Q::ZERO);
+                (false, self.push(Node::Number(zero)))
+            }
             1 => self.pending.pop().unwrap_or_else(|| unreachable!()),
             _ => (false, self.finish_sum(mark)),
         }
@@ -339,7 +378,7 @@ impl Layout {
         let outer = common.monomial().iter().chain(kinematic);
         let (outer_negative, outer_id) = self.present_product(common.coefficient(), outer, axis);
         let mark = self.pending.len();
-        let (coefficient, denominator) = match self.node(outer_id).clone() {
+        let (coefficient, denominator) = match *self.node(outer_id) {
             Node::Product(p) => {
                 let start = p.numerator.start as usize;
                 self.pending
@@ -349,7 +388,7 @@ impl Layout {
             Node::Number(q) => (q, Span::default()),
             _ => {
                 self.pending.push((false, outer_id));
-                (Q::ONE, Span::default())
+                (self.number(&Q::ONE), Span::default())
             }
         };
         // The group stands before the first factor placed after groups (rule 4).
@@ -382,7 +421,8 @@ impl Layout {
         let negative = coefficient.is_negative();
         let mut factors = factors.map(|f| (expr_place(f), f));
         let Some(first) = factors.next() else {
-            return (negative, self.push(Node::Number(coefficient.abs())));
+            let magnitude = self.number(&coefficient.abs());
+            return (negative, self.push(Node::Number(magnitude)));
         };
         // The factors with their places, in print order; on the stack unless there are many.
         let mut inline = [first; 8];
@@ -437,7 +477,7 @@ impl Layout {
             _ => {
                 let (numerator, denominator) = self.finish_product(mark);
                 Node::Product(Product {
-                    coefficient,
+                    coefficient: self.number(&coefficient),
                     numerator,
                     denominator,
                 })
@@ -455,7 +495,8 @@ impl Layout {
         if exponent.is_one() {
             base
         } else {
-            let exponent = self.push(Node::Number(exponent.clone()));
+            let exponent = self.number(exponent);
+            let exponent = self.push(Node::Number(exponent));
             self.push(Node::Power(base, exponent))
         }
     }
@@ -465,7 +506,8 @@ impl Layout {
         match e.view() {
             View::Sym(s) => self.push(Node::Symbol(s)),
             View::Num(q) if !q.is_negative() && q.is_integer() => {
-                self.push(Node::Number(q.clone()))
+                let q = self.number(q);
+                self.push(Node::Number(q))
             }
             View::Func(f, arg) => {
                 let arg = self.present_signed_inline(arg, axis);

@@ -2,7 +2,7 @@
 //! `I_x*w_x - I_xy*w_y`, `1/2*m*v^2`, `6*F*Dt/(m*b)`, `-(I_y - I_z)*w_y*w_z`,
 //! `sin(beta)`, `sqrt(x)`.
 
-use super::layout::{Layout, Node, NodeId, Product, Span};
+use super::layout::{parts, Layout, Node, NodeId, Product, Span};
 use crate::algebra::Q;
 use std::fmt::Write;
 
@@ -34,7 +34,7 @@ fn node(out: &mut String, layout: &Layout, id: NodeId) {
 #[inline(never)]
 fn compound(out: &mut String, layout: &Layout, compound: &Node) {
     match compound {
-        Node::Number(q) => number(out, q),
+        Node::Number(n) => number(out, &layout.value(*n)),
         Node::Symbol(s) => out.push_str(s.name()),
         Node::Sum(terms) => {
             for (i, &(negative, term)) in layout.entries(*terms).iter().enumerate() {
@@ -55,7 +55,7 @@ fn compound(out: &mut String, layout: &Layout, compound: &Node) {
             }
             out.push('^');
             match layout.node(*exponent) {
-                Node::Number(q) if q.is_integer() => number(out, q),
+                Node::Number(n) if layout.value(*n).is_integer() => number(out, &layout.value(*n)),
                 _ => parenthesised(out, layout, *exponent),
             }
         }
@@ -86,9 +86,9 @@ fn number(out: &mut String, q: &Q) {
 fn factor(out: &mut String, layout: &Layout, id: NodeId) {
     match layout.node(id) {
         Node::Sum(_) | Node::Product(_) => parenthesised(out, layout, id),
-        Node::Number(q) if !q.is_integer() => {
+        Node::Number(n) if !layout.value(*n).is_integer() => {
             out.push('(');
-            number(out, q);
+            number(out, &layout.value(*n));
             out.push(')');
         }
         _ => node(out, layout, id),
@@ -109,10 +109,11 @@ fn factors(out: &mut String, layout: &Layout, shown: Option<&Q>, span: Span) {
 }
 
 fn product(out: &mut String, layout: &Layout, p: &Product) {
-    let (cn, cd) = p.coefficient_parts();
+    let coefficient = layout.value(p.coefficient);
+    let (cn, cd) = parts(&coefficient);
     let shown_numerator = !cn.is_one() || p.numerator.is_empty();
     if p.denominator.is_empty() {
-        let shown = (!cd.is_one() || shown_numerator).then_some(&p.coefficient);
+        let shown = (!cd.is_one() || shown_numerator).then_some(&coefficient);
         factors(out, layout, shown, p.numerator);
         return;
     }

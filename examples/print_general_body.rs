@@ -8,12 +8,23 @@
 //! ```
 //!
 //! `latex` (the default) canonicalises once and prints the seven expressions as LaTeX the
-//! given number of times (default 1000): the printers alone. `pipeline` runs the whole
-//! pipeline (build, canonicalise, print) each time. Subtract a run with 0 rounds for the
-//! start-up cost.
+//! given number of times (default 1000): the printers alone; `text` does the same in plain
+//! text. `pipeline` runs the whole pipeline (build, canonicalise, print) each time. Subtract
+//! a run with 0 rounds for the start-up cost.
 
 #[path = "../benches/support/general_body.rs"]
 mod general_body;
+
+use kinetics::print;
+
+/// `H_x, H_y, H_z, T, M_x, M_y, M_z` in plain text, as [`general_body::latex`] in LaTeX.
+fn text(c: &general_body::Canonical) -> Vec<String> {
+    let mut out: Vec<String> = c.h.iter().map(print::text).collect();
+    out.push(print::text(&c.t));
+    let euler = c.euler.iter().zip(general_body::AXES);
+    out.extend(euler.map(|(m, axis)| print::text_about(m, axis)));
+    out
+}
 
 fn main() {
     let mut args = std::env::args().skip(1);
@@ -24,9 +35,10 @@ fn main() {
     for _ in 0..rounds {
         let printed = match stage.as_str() {
             "pipeline" => general_body::pipeline(),
+            "text" => text(std::hint::black_box(&canonical)),
             _ => general_body::latex(std::hint::black_box(&canonical)),
         };
         bytes += printed.iter().map(String::len).sum::<usize>();
     }
-    println!("{stage}: {rounds} rounds, {bytes} bytes of LaTeX");
+    println!("{stage}: {rounds} rounds, {bytes} bytes printed");
 }

@@ -2,9 +2,9 @@
 //! `\frac{6 F \Delta t}{m b}`, `-(I_y - I_z) \omega_y \omega_z`, `\sin\beta`, `\sqrt{x}`,
 //! with no redundant parentheses or braces and never `a + -b`.
 
+use super::integer;
 use super::layout::{parts, Layout, Node, NodeId, Product, Span};
 use crate::algebra::{Func, Q};
-use std::fmt::Write;
 
 /// Appends a signed layout to `out`.
 pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
@@ -124,17 +124,6 @@ fn fraction(out: &mut String, n: &Q, d: &Q) {
     out.push_str("}{");
     integer(out, d);
     out.push('}');
-}
-
-/// An integer-valued rational in decimal digits.
-fn integer(out: &mut String, q: &Q) {
-    match q.to_i64().and_then(|n| u8::try_from(n).ok()) {
-        Some(digit @ 0..=9) => out.push(char::from(b'0' + digit)),
-        // Formatting into a `String` cannot fail.
-        _ => {
-            let _ = write!(out, "{q}");
-        }
-    }
 }
 
 /// A factor inside a product or under an exponent: sums and products get parentheses.

@@ -122,6 +122,8 @@ impl Axis {
 struct Group {
     /// The ordering key of the kinematic part (rule 2).
     key: KinematicKey,
+    /// Whether the coefficient of the first term is a sum.
+    sum_coefficient: bool,
     /// The index of the first term with this kinematic part, and how many terms have it.
     first: u32,
     members: u32,
@@ -146,15 +148,6 @@ fn kinematic_part(term: &Expr) -> KinematicPart<'_> {
 /// The coefficient of a term: the product of its other factors, number included.
 fn coefficient_of(term: &Expr) -> Expr {
     term.without_factors(is_kinematic_factor)
-}
-
-/// Whether the coefficient of a term is a sum (a single non-kinematic factor that is a sum).
-fn has_sum_coefficient(term: &Expr) -> bool {
-    let mut rest = term.monomial().iter().filter(|f| !is_kinematic_factor(f));
-    matches!(
-        (rest.next().map(Expr::view), rest.next()),
-        (Some(View::Add(_)), None)
-    )
 }
 
 /// Up to this many groups a term's group is found by linear search; beyond, by hashing.
@@ -250,7 +243,7 @@ impl Layout {
         let mut index: HashMap<Vec<&Expr>, usize> = HashMap::new();
         for (at, term) in terms.iter().enumerate() {
             let kinematic = kinematic_part(term);
-            let key = kinematic_key(kinematic.clone());
+            let (key, sum_coefficient) = term_shape(term);
             let groups = &mut self.groups[base..];
             let found = if groups.len() <= LINEAR_SEARCH_GROUPS {
                 groups.iter().position(|g| {
@@ -276,6 +269,7 @@ impl Layout {
                     self.group_of_term.push(at as u32);
                     self.groups.push(Group {
                         key,
+                        sum_coefficient,
                         first: at as u32,
                         members: 1,
                     });
@@ -295,7 +289,7 @@ impl Layout {
         for g in base..self.groups.len() {
             let group = self.groups[g];
             let first = &terms[group.first as usize];
-            if group.members == 1 && !has_sum_coefficient(first) {
+            if group.members == 1 && !group.sum_coefficient {
                 // A coefficient of one term times the kinematic part is the term itself.
                 let term = self.present_term(first, axis);
                 self.pending.push(term);
@@ -744,7 +738,11 @@ fn sort_nearly_sorted<T: Copy>(items: &mut [T], mut order: impl FnMut(&T, &T) ->
 /// byte), so that comparing keys is one comparison.
 type KinematicKey = u64;
 
-fn kinematic_key<'a>(factors: impl Iterator<Item = &'a Expr>) -> KinematicKey {
+/// A term's kinematic key, and whether its coefficient is a sum (a single non-kinematic
+/// factor that is a sum), in one pass over its factors.
+fn term_shape(term: &Expr) -> (KinematicKey, bool) {
+    let mut others = 0usize;
+    let mut other_is_sum = false;
     let mut factor_count = 0usize;
     let mut count = 0usize;
     let mut acceleration = false;
@@ -761,15 +759,23 @@ fn kinematic_key<'a>(factors: impl Iterator<Item = &'a Expr>) -> KinematicKey {
             }
         }
     };
-    for f in factors {
+    for f in term.factors() {
+        if !is_kinematic_factor(f) {
+            if f.as_num().is_none() {
+                others += 1;
+                other_is_sum = matches!(f.view(), View::Add(_));
+            }
+            continue;
+        }
         factor_count += 1;
         match f.base().as_symbol() {
             Some(s) => visit(s),
             None => f.base().symbols().into_iter().for_each(&mut visit),
         }
     }
+    let sum_coefficient = others == 1 && other_is_sum;
     if count == 0 {
-        return 0;
+        return (0, sum_coefficient);
     }
     let class = if acceleration { 1 } else { 2 };
     let axis_rank = match axes {
@@ -779,7 +785,8 @@ fn kinematic_key<'a>(factors: impl Iterator<Item = &'a Expr>) -> KinematicKey {
         _ => 3,
     };
     let count = count.min(factor_count).min((1 << 40) - 1) as u64;
-    (class << 56) | (u64::from(lowest_family) << 48) | (count << 8) | axis_rank
+    let key = (class << 56) | (u64::from(lowest_family) << 48) | (count << 8) | axis_rank;
+    (key, sum_coefficient)
 }
 
 /// Ordering key of an inertia symbol for the equation about `axis` (rule 3).

@@ -15,10 +15,11 @@ pub mod latex;
 pub mod layout;
 pub mod text;
 
-use crate::algebra::{Expr, Symbol, Vector};
+use crate::algebra::{Expr, Symbol, Vector, Q};
 pub use layout::Axis;
 use layout::{Layout, Node, NodeId};
 use std::cell::RefCell;
+use std::fmt::Write;
 
 /// The notation of a printed result.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum, serde::Serialize)]
@@ -61,6 +62,17 @@ fn render_into(
     match notation {
         Notation::Text => text::render(out, layout, negative, root),
         Notation::Latex => latex::render(out, layout, negative, root),
+    }
+}
+
+/// An integer-valued rational in decimal digits, a single digit without the formatter.
+fn integer(out: &mut String, q: &Q) {
+    match q.to_i64().and_then(|n| u8::try_from(n).ok()) {
+        Some(digit @ 0..=9) => out.push(char::from(b'0' + digit)),
+        // Formatting into a `String` cannot fail.
+        _ => {
+            let _ = write!(out, "{q}");
+        }
     }
 }
 

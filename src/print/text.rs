@@ -2,9 +2,9 @@
 //! `I_x*w_x - I_xy*w_y`, `1/2*m*v^2`, `6*F*Dt/(m*b)`, `-(I_y - I_z)*w_y*w_z`,
 //! `sin(beta)`, `sqrt(x)`.
 
+use super::integer;
 use super::layout::{parts, Layout, Node, NodeId, Product, Span};
 use crate::algebra::Q;
-use std::fmt::Write;
 
 /// Appends a signed layout to `out`.
 pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
@@ -78,8 +78,12 @@ fn parenthesised(out: &mut String, layout: &Layout, id: NodeId) {
 
 /// `p` for integers, `p/q` otherwise.
 fn number(out: &mut String, q: &Q) {
-    // Formatting into a `String` cannot fail.
-    let _ = write!(out, "{q}");
+    let (n, d) = parts(q);
+    integer(out, &n);
+    if !d.is_one() {
+        out.push('/');
+        integer(out, &d);
+    }
 }
 
 /// A factor inside a product or under an exponent.

@@ -445,10 +445,19 @@ impl Layout {
         let mark = self.pending.len();
         // Each factor with whether it belongs to the denominator.
         for &(_, f) in ordered.iter() {
-            let View::Pow(base, exponent) = f.view() else {
-                let atom = self.present_atom(f, axis);
-                self.pending.push((false, atom));
-                continue;
+            let (base, exponent) = match f.view() {
+                View::Pow(base, exponent) => (base, exponent),
+                // The most frequent factor, without the call of `present_atom`.
+                View::Sym(s) => {
+                    let symbol = self.push(Node::Symbol(s));
+                    self.pending.push((false, symbol));
+                    continue;
+                }
+                _ => {
+                    let atom = self.present_atom(f, axis);
+                    self.pending.push((false, atom));
+                    continue;
+                }
             };
             let factor = match exponent.as_num() {
                 Some(q) if q.is_negative() => (true, self.present_power(base, &q.abs(), axis)),
@@ -531,15 +540,32 @@ impl Layout {
         }
     }
 
-    /// Where a node stands in a product (rule 4).
-    fn placement(&self, id: NodeId) -> u8 {
-        match self.node(id) {
-            Node::Number(_) => 0,
-            Node::Symbol(s) => symbol_place(*s),
-            Node::Power(b, _) => self.placement(*b),
-            Node::SquareRoot(b) => self.placement(*b).min(GROUP_PLACE),
-            Node::Sum(_) | Node::Product(_) => GROUP_PLACE,
-            Node::Function(..) => 7,
+    /// Where a node stands in a product (rule 4): a power where its base does, a square
+    /// root no later than a group.
+    ///
+    /// A loop, not recursion: rustc 1.95 in release builds compiled the recursive form so
+    /// that `placement(ω) > GROUP_PLACE` was false although `placement(ω)` was 8, which put
+    /// a group after the kinematic factor (`ω_y (a + b)`) where debug builds and the
+    /// snapshots have `(a + b) ω_y`.
+    fn placement(&self, mut id: NodeId) -> u8 {
+        let mut latest = u8::MAX;
+        loop {
+            let place = match *self.node(id) {
+                Node::Power(base, _) => {
+                    id = base;
+                    continue;
+                }
+                Node::SquareRoot(inner) => {
+                    latest = GROUP_PLACE;
+                    id = inner;
+                    continue;
+                }
+                Node::Number(_) => 0,
+                Node::Symbol(s) => symbol_place(s),
+                Node::Sum(_) | Node::Product(_) => GROUP_PLACE,
+                Node::Function(..) => 7,
+            };
+            return place.min(latest);
         }
     }
 }
@@ -878,5 +904,39 @@ mod tests {
             );
         }
         assert_eq!(printed.matches(" + (a + b)").count(), n - 1, "{printed}");
+    }
+
+    /// The machine-integer content agrees with the big-integer one wherever it answers,
+    /// including denominators whose lcm overflows an `i64` (content 1 in both).
+    #[test]
+    fn small_rational_content_agrees_with_big() {
+        let q = |n: i64, d: i64| Expr::num(Q::new(n, d).unwrap()) * Expr::symbol("a");
+        let sets = [
+            vec![q(1, 12), q(1, 12)],
+            vec![q(1, 8), q(3, 4)],
+            vec![q(-6, 1), q(4, 1), q(10, 3)],
+            vec![q(i64::MIN, 1), q(i64::MIN, 1)],
+            vec![q(1, 1 << 40), q(1, (1 << 40) - 1)],
+            vec![q(1, i64::MAX), q(1, i64::MAX - 1)],
+        ];
+        for terms in &sets {
+            let terms: Vec<&Expr> = terms.iter().collect();
+            let small = small_rational_content(&terms).expect("small coefficients");
+            assert_eq!(small, big_rational_content(&terms), "{terms:?}");
+        }
+    }
+
+    /// Numbers beyond `i64` go to the layout's side table and print in full.
+    #[test]
+    fn big_numbers_print_in_full() {
+        let big = Expr::int(1 << 35).powi(2);
+        assert_eq!(
+            crate::print::text(&(Expr::symbol("m") * &big)),
+            "1180591620717411303424*m"
+        );
+        assert_eq!(
+            crate::print::latex(&(Expr::rational(1, 3) / &big)),
+            r"\frac{1}{3541774862152233910272}"
+        );
     }
 }

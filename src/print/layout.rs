@@ -18,6 +18,11 @@
 //! 4. In a product: the number, then inertia and mass, other quantities, lengths, groups,
 //!    functions, kinematic symbols, unit vectors; factors with negative exponents form a
 //!    denominator.
+//!
+//! The form is built bottom-up into a [`Layout`]: nodes in one vector, the terms of each sum
+//! and the factors of each product as a contiguous run in another, children collected on a
+//! stack until their parent is made. The rules read the expression through borrowed views;
+//! only collecting a group forms new expressions (its coefficient, a common factor).
 
 use crate::algebra::{axis_of_subscript, Expr, Func, Role, Symbol, View, Q};
 use std::cmp::Ordering;
@@ -31,7 +36,7 @@ pub struct Layout {
     nodes: Vec<Node>,
     /// The signed terms of sums and the factors of products, each node's run contiguous.
     entries: Vec<(bool, NodeId)>,
-    /// The children of the nodes being built, innermost last (a stack; see `finish`).
+    /// The children of the nodes being built, innermost last (a stack).
     pending: Vec<(bool, NodeId)>,
     /// The groups of the sums being presented, innermost last (a stack).
     groups: Vec<Group>,

@@ -1,7 +1,8 @@
 //! Printers: LaTeX in textbook form and plain text the parser reads back.
 //!
-//! Both render the same presented form ([`layout::present`]), so they always agree on
-//! order and grouping; only the notation differs.
+//! Both render the same presented form ([`layout::Layout::present`]), so they always agree
+//! on order and grouping; only the notation differs. Each thread keeps one layout and reuses
+//! it, and a renderer appends to one string, so printing allocates no node of its own.
 //!
 //! ```
 //! use kinetics::algebra::Expr;

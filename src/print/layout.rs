@@ -40,8 +40,9 @@ pub struct Layout {
     pending: Vec<(bool, NodeId)>,
     /// The groups of the sums being presented, innermost last (a stack).
     groups: Vec<Group>,
-    /// For each term of the sums being presented, the first term of its group (a stack).
-    group_of_term: Vec<u32>,
+    /// For each term of the sums being presented, the next term of its group, or
+    /// [`NO_MEMBER`] (a stack).
+    next_member: Vec<u32>,
     /// The numbers too big for a [`Number`] to hold in place.
     big_numbers: Vec<Q>,
 }
@@ -129,10 +130,15 @@ struct Group {
     key: KinematicKey,
     /// Whether the coefficient of the first term is a sum.
     sum_coefficient: bool,
-    /// The index of the first term with this kinematic part, and how many terms have it.
+    /// The indices of the first and the last term with this kinematic part, and how many
+    /// terms have it.
     first: u32,
+    last: u32,
     members: u32,
 }
+
+/// The end of a group's list of members.
+const NO_MEMBER: u32 = u32::MAX;
 
 /// The kinematic factors of a term, in canonical order.
 #[derive(Clone)]
@@ -165,7 +171,7 @@ impl Layout {
         self.entries.clear();
         self.pending.clear();
         self.groups.clear();
-        self.group_of_term.clear();
+        self.next_member.clear();
         self.big_numbers.clear();
     }
 
@@ -243,7 +249,7 @@ impl Layout {
     fn present_sum(&mut self, e: &Expr, axis: Axis) -> (bool, NodeId) {
         let terms = e.terms();
         let base = self.groups.len();
-        let term_base = self.group_of_term.len();
+        let term_base = self.next_member.len();
         // The groups by kinematic part, filled once there are too many to search linearly.
         let mut index: HashMap<Vec<&Expr>, usize> = HashMap::new();
         for (at, term) in terms.iter().enumerate() {
@@ -262,20 +268,22 @@ impl Layout {
                 }
                 index.get(&kinematic.clone().collect::<Vec<_>>()).copied()
             };
+            self.next_member.push(NO_MEMBER);
             match found {
                 Some(k) => {
+                    self.next_member[term_base + groups[k].last as usize] = at as u32;
+                    groups[k].last = at as u32;
                     groups[k].members += 1;
-                    self.group_of_term.push(groups[k].first);
                 }
                 None => {
                     if !index.is_empty() {
                         index.insert(kinematic.collect(), groups.len());
                     }
-                    self.group_of_term.push(at as u32);
                     self.groups.push(Group {
                         key,
                         sum_coefficient,
                         first: at as u32,
+                        last: at as u32,
                         members: 1,
                     });
                 }
@@ -300,13 +308,16 @@ impl Layout {
                 self.pending.push(term);
                 continue;
             }
-            // Summed pairwise: the merge of two sorted sums is the quick path of `+`.
-            let group_of_term = &self.group_of_term[term_base..];
-            let coefficient = (group.first as usize..terms.len())
-                .filter(|&at| group_of_term[at] == group.first)
-                .map(|at| coefficient_of(&terms[at]))
-                .reduce(|sum, c| sum + c)
-                .unwrap_or_else(Expr::zero);
+            let next_member = &self.next_member[term_base..];
+            let members = std::iter::successors(Some(group.first), |&at| {
+                Some(next_member[at as usize]).filter(|&next| next != NO_MEMBER)
+            })
+            .map(|at| coefficient_of(&terms[at as usize]));
+            // Two coefficients by `+`, the quick merge of two sorted operands; more at once.
+            let coefficient = match group.members {
+                1 | 2 => members.reduce(|sum, c| sum + c).unwrap_or_else(Expr::zero),
+                _ => Expr::add_all(members),
+            };
             if coefficient.is_zero() {
                 continue;
             }
@@ -338,7 +349,7 @@ impl Layout {
             }
         }
         self.groups.truncate(base);
-        self.group_of_term.truncate(term_base);
+        self.next_member.truncate(term_base);
         match self.pending.len() - mark {
             0 => {
                 let zero = self.number(&Q::ZERO);

@@ -350,12 +350,15 @@ impl Layout {
         }
         self.groups.truncate(base);
         self.next_member.truncate(term_base);
-        match self.pending.len() - mark {
-            0 => {
+        match self.pending[mark..] {
+            [] => {
                 let zero = self.number(&Q::ZERO);
                 (false, self.push(Node::Number(zero)))
             }
-            1 => self.pending.pop().unwrap_or_else(|| unreachable!()),
+            [term] => {
+                self.pending.truncate(mark);
+                term
+            }
             _ => (false, self.finish_sum(mark)),
         }
     }

@@ -2,76 +2,85 @@
 //! `\frac{6 F \Delta t}{m b}`, `-(I_y - I_z) \omega_y \omega_z`, `\sin\beta`, `\sqrt{x}`,
 //! with no redundant parentheses or braces and never `a + -b`.
 
-use super::layout::{Layout, Product};
+use super::integer;
+use super::layout::{parts, Layout, Node, NodeId, Product, Span};
 use crate::algebra::{Func, Q};
-use std::fmt::Write;
 
-/// Renders a signed layout.
-pub fn render(negative: bool, layout: &Layout) -> String {
-    let mut out = String::with_capacity(256);
-    let grouped = negative && matches!(layout, Layout::Sum(_));
+/// Appends a signed layout to `out`.
+pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
+    let grouped = negative && matches!(layout.node(root), Node::Sum(_));
     if negative {
         out.push('-');
     }
     if grouped {
         out.push('(');
     }
-    node(&mut out, layout);
+    node(out, layout, root);
     if grouped {
         out.push(')');
     }
-    out
 }
 
-fn node(out: &mut String, layout: &Layout) {
-    match layout {
-        Layout::Number(q) => number(out, q),
-        Layout::Symbol(s) => out.push_str(s.latex()),
-        Layout::Sum(terms) => {
-            for (i, (negative, term)) in terms.iter().enumerate() {
+/// A node; symbols, the most frequent, without a call.
+#[inline]
+fn node(out: &mut String, layout: &Layout, id: NodeId) {
+    match layout.node(id) {
+        Node::Symbol(s) => out.push_str(s.latex()),
+        other => compound(out, layout, other),
+    }
+}
+
+/// Kept out of line so that [`node`] stays small enough to be quick for symbols.
+#[inline(never)]
+fn compound(out: &mut String, layout: &Layout, compound: &Node) {
+    match compound {
+        Node::Number(n) => number(out, &layout.value(*n)),
+        Node::Symbol(s) => out.push_str(s.latex()),
+        Node::Sum(terms) => {
+            for (i, &(negative, term)) in layout.entries(*terms).iter().enumerate() {
                 out.push_str(match (i, negative) {
                     (0, true) => "-",
                     (0, false) => "",
                     (_, true) => " - ",
                     (_, false) => " + ",
                 });
-                node(out, term);
+                node(out, layout, term);
             }
         }
-        Layout::Product(p) => product(out, p),
-        Layout::Power(base, exponent) => match &**base {
-            Layout::Function(f, arg) => {
+        Node::Product(p) => product(out, layout, p),
+        Node::Power(base, exponent) => match layout.node(*base) {
+            Node::Function(f, arg) => {
                 function_name(out, *f);
-                superscript(out, exponent);
-                function_argument(out, arg);
+                superscript(out, layout, *exponent);
+                function_argument(out, layout, *arg);
             }
-            b => {
-                factor(out, b);
-                superscript(out, exponent);
+            _ => {
+                factor(out, layout, *base);
+                superscript(out, layout, *exponent);
             }
         },
-        Layout::SquareRoot(inner) => {
+        Node::SquareRoot(inner) => {
             out.push_str(r"\sqrt{");
-            node(out, inner);
+            node(out, layout, *inner);
             out.push('}');
         }
-        Layout::Function(Func::Abs, arg) => {
+        Node::Function(Func::Abs, arg) => {
             out.push_str(r"\left|");
-            node(out, arg);
+            node(out, layout, *arg);
             out.push_str(r"\right|");
         }
-        Layout::Function(f, arg) => {
+        Node::Function(f, arg) => {
             function_name(out, *f);
-            function_argument(out, arg);
+            function_argument(out, layout, *arg);
         }
     }
 }
 
 /// `^e` for an exponent of one character, `^{...}` otherwise.
-fn superscript(out: &mut String, exponent: &Layout) {
+fn superscript(out: &mut String, layout: &Layout, exponent: NodeId) {
     out.push('^');
     let start = out.len();
-    node(out, exponent);
+    node(out, layout, exponent);
     if out[start..].chars().count() != 1 {
         out.insert(start, '{');
         out.push('}');
@@ -84,17 +93,17 @@ fn function_name(out: &mut String, f: Func) {
 }
 
 /// `\sin\beta`, `\sin x`, `\sin(\beta + \theta)`.
-fn function_argument(out: &mut String, arg: &Layout) {
-    match arg {
-        Layout::Symbol(s) => {
+fn function_argument(out: &mut String, layout: &Layout, arg: NodeId) {
+    match layout.node(arg) {
+        Node::Symbol(s) => {
             if !s.latex().starts_with('\\') {
                 out.push(' ');
             }
             out.push_str(s.latex());
         }
-        other => {
+        _ => {
             out.push('(');
-            node(out, other);
+            node(out, layout, arg);
             out.push(')');
         }
     }
@@ -117,55 +126,45 @@ fn fraction(out: &mut String, n: &Q, d: &Q) {
     out.push('}');
 }
 
-/// An integer-valued rational in decimal digits.
-fn integer(out: &mut String, q: &Q) {
-    match q.to_i64().and_then(|n| u8::try_from(n).ok()) {
-        Some(digit @ 0..=9) => out.push(char::from(b'0' + digit)),
-        // Formatting into a `String` cannot fail.
-        _ => {
-            let _ = write!(out, "{q}");
-        }
-    }
-}
-
 /// A factor inside a product or under an exponent: sums and products get parentheses.
-fn factor(out: &mut String, layout: &Layout) {
-    match layout {
-        Layout::Sum(_) | Layout::Product(_) => {
+fn factor(out: &mut String, layout: &Layout, id: NodeId) {
+    match layout.node(id) {
+        Node::Sum(_) | Node::Product(_) => {
             out.push('(');
-            node(out, layout);
+            node(out, layout, id);
             out.push(')');
         }
-        Layout::Number(q) if !q.is_integer() => {
+        Node::Number(n) if !layout.value(*n).is_integer() => {
             out.push('(');
-            number(out, q);
+            number(out, &layout.value(*n));
             out.push(')');
         }
-        other => node(out, other),
+        _ => node(out, layout, id),
     }
 }
 
 /// Factors separated by spaces, after whatever `out` already holds of the same product.
-fn factors(out: &mut String, mut separate: bool, layouts: &[Layout]) {
-    for f in layouts {
+fn factors(out: &mut String, layout: &Layout, mut separate: bool, span: Span) {
+    for &(_, f) in layout.entries(span) {
         if separate {
             out.push(' ');
         }
-        factor(out, f);
+        factor(out, layout, f);
         separate = true;
     }
 }
 
 /// Above or below a fraction bar, which groups on its own: a lone sum needs no parentheses.
-fn fraction_part(out: &mut String, after_number: bool, layouts: &[Layout]) {
-    match layouts {
-        [alone] if !after_number => node(out, alone),
-        _ => factors(out, after_number, layouts),
+fn fraction_part(out: &mut String, layout: &Layout, after_number: bool, span: Span) {
+    match layout.entries(span) {
+        [(_, alone)] if !after_number => node(out, layout, *alone),
+        _ => factors(out, layout, after_number, span),
     }
 }
 
-fn product(out: &mut String, p: &Product) {
-    let (cn, cd) = (p.coefficient.numer(), p.coefficient.denom());
+fn product(out: &mut String, layout: &Layout, p: &Product) {
+    let coefficient = layout.value(p.coefficient);
+    let (cn, cd) = parts(&coefficient);
     let shown = !cn.is_one() || p.numerator.is_empty();
     if p.denominator.is_empty() {
         if !cd.is_one() {
@@ -173,32 +172,41 @@ fn product(out: &mut String, p: &Product) {
         } else if shown {
             integer(out, &cn);
         }
-        factors(out, !cd.is_one() || shown, &p.numerator);
+        factors(out, layout, !cd.is_one() || shown, p.numerator);
         return;
     }
     out.push_str(r"\frac{");
     if shown {
         integer(out, &cn);
     }
-    fraction_part(out, shown, &p.numerator);
+    fraction_part(out, layout, shown, p.numerator);
     out.push_str("}{");
     if !cd.is_one() {
         integer(out, &cd);
     }
-    fraction_part(out, !cd.is_one(), &p.denominator);
+    fraction_part(out, layout, !cd.is_one(), p.denominator);
     out.push('}');
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algebra::Expr;
+    use crate::print::Axis;
+
+    fn printed(q: Q) -> String {
+        let mut layout = Layout::default();
+        let (negative, root) = layout.present(&Expr::num(q), Axis::X);
+        let mut out = String::new();
+        render(&mut out, &layout, negative, root);
+        out
+    }
 
     #[test]
     fn numbers_of_any_width() {
         for n in [0, 7, 9, 10, 123, -4, i64::MAX] {
-            assert_eq!(render(false, &Layout::Number(Q::int(n))), n.to_string());
+            assert_eq!(printed(Q::int(n)), n.to_string());
         }
-        let q = Q::new(12, 7).unwrap();
-        assert_eq!(render(true, &Layout::Number(q)), r"-\frac{12}{7}");
+        assert_eq!(printed(Q::new(-12, 7).unwrap()), r"-\frac{12}{7}");
     }
 }

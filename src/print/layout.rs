@@ -18,32 +18,89 @@
 //! 4. In a product: the number, then inertia and mass, other quantities, lengths, groups,
 //!    functions, kinematic symbols, unit vectors; factors with negative exponents form a
 //!    denominator.
+//!
+//! The form is built bottom-up into a [`Layout`]: nodes in one vector, the terms of each sum
+//! and the factors of each product as a contiguous run in another, children collected on a
+//! stack until their parent is made. The rules read the expression through borrowed views;
+//! only collecting a group forms new expressions (its coefficient, a common factor).
 
 use crate::algebra::{axis_of_subscript, Expr, Func, Role, Symbol, View, Q};
 use std::cmp::Ordering;
 use std::collections::HashMap;
 
+/// The presented form of one expression: its nodes, stored flat so that presenting an
+/// expression allocates nothing once a [`Layout`] has grown to size (the printers keep one
+/// per thread and [`Layout::clear`] it between expressions).
+#[derive(Debug, Default)]
+pub struct Layout {
+    nodes: Vec<Node>,
+    /// The signed terms of sums and the factors of products, each node's run contiguous.
+    entries: Vec<(bool, NodeId)>,
+    /// The children of the nodes being built, innermost last (a stack).
+    pending: Vec<(bool, NodeId)>,
+    /// The groups of the sums being presented, innermost last (a stack).
+    groups: Vec<Group>,
+    /// For each term of the sums being presented, the next term of its group, or
+    /// [`NO_MEMBER`] (a stack).
+    next_member: Vec<u32>,
+    /// The numbers too big for a [`Number`] to hold in place.
+    big_numbers: Vec<Q>,
+}
+
+/// A number of a [`Layout`]: a small rational in place, a big one in the layout's table, so
+/// that nodes are plain data and forgetting them costs nothing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Number {
+    Small(i64, i64),
+    Big(u32),
+}
+
+/// A node of a [`Layout`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct NodeId(u32);
+
+/// A run of [`Layout`] entries: the terms of a sum or one side of a product.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Span {
+    start: u32,
+    len: u32,
+}
+
+impl Span {
+    pub fn is_empty(self) -> bool {
+        self.len == 0
+    }
+}
+
 /// A node of the presented form. Numbers and coefficients here are never negative: signs
-/// live on the terms of a [`Layout::Sum`].
-#[derive(Debug, Clone, PartialEq)]
-pub enum Layout {
-    Number(Q),
+/// live on the terms of a [`Node::Sum`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Node {
+    Number(Number),
     Symbol(Symbol),
-    /// Terms with their signs (`true` = subtracted); at least two.
-    Sum(Vec<(bool, Layout)>),
+    /// Terms with their signs (`true` = subtracted); at least one, one only when subtracted.
+    Sum(Span),
     Product(Product),
     /// A base to a positive exponent other than 1/2.
-    Power(Box<Layout>, Box<Layout>),
-    SquareRoot(Box<Layout>),
-    Function(Func, Box<Layout>),
+    Power(NodeId, NodeId),
+    SquareRoot(NodeId),
+    Function(Func, NodeId),
 }
 
 /// `coefficient · numerator / denominator`, coefficient positive.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Product {
-    pub coefficient: Q,
-    pub numerator: Vec<Layout>,
-    pub denominator: Vec<Layout>,
+    pub coefficient: Number,
+    pub numerator: Span,
+    pub denominator: Span,
+}
+
+/// A rational's numerator and denominator; an integer is its own numerator.
+pub fn parts(q: &Q) -> (Q, Q) {
+    match q.is_integer() {
+        true => (q.clone(), Q::ONE),
+        false => (q.numer(), q.denom()),
+    }
 }
 
 /// Which equation an expression belongs to, for ordering inertia symbols cyclically.
@@ -66,26 +123,37 @@ impl Axis {
     }
 }
 
-/// The presented form of `e` as a signed layout: `(negative, layout)`.
-pub fn present(e: &Expr, axis: Axis) -> (bool, Layout) {
-    match e.view() {
-        View::Add(_) => present_sum(e, axis),
-        _ => present_term(e, axis),
+/// The terms of a sum that share one kinematic part (rule 1).
+#[derive(Debug, Clone, Copy)]
+struct Group {
+    /// The ordering key of the kinematic part (rule 2).
+    key: KinematicKey,
+    /// Whether the coefficient of the first term is a sum.
+    sum_coefficient: bool,
+    /// The indices of the first and the last term with this kinematic part, and how many
+    /// terms have it.
+    first: u32,
+    last: u32,
+    members: u32,
+}
+
+/// The end of a group's list of members.
+const NO_MEMBER: u32 = u32::MAX;
+
+/// The kinematic factors of a term, in canonical order.
+#[derive(Clone)]
+struct KinematicPart<'a>(std::slice::Iter<'a, Expr>);
+
+impl<'a> Iterator for KinematicPart<'a> {
+    type Item = &'a Expr;
+
+    fn next(&mut self) -> Option<&'a Expr> {
+        self.0.by_ref().find(|f| is_kinematic_factor(f))
     }
 }
 
-/// The terms of a sum that share one kinematic part (rule 1).
-struct Group<'a> {
-    /// The first term with this kinematic part, and any others.
-    first: &'a Expr,
-    others: Vec<&'a Expr>,
-    /// The ordering key of the kinematic part (rule 2).
-    key: KinematicKey,
-}
-
-/// The kinematic factors of a term, in canonical order.
-fn kinematic_part(term: &Expr) -> impl Iterator<Item = &Expr> + Clone {
-    term.factors().iter().filter(|f| is_kinematic_factor(f))
+fn kinematic_part(term: &Expr) -> KinematicPart<'_> {
+    KinematicPart(term.factors().iter())
 }
 
 /// The coefficient of a term: the product of its other factors, number included.
@@ -93,167 +161,436 @@ fn coefficient_of(term: &Expr) -> Expr {
     term.without_factors(is_kinematic_factor)
 }
 
-/// Whether the coefficient of a term is a sum (a single non-kinematic factor that is a sum).
-fn has_sum_coefficient(term: &Expr) -> bool {
-    let mut rest = term.monomial().iter().filter(|f| !is_kinematic_factor(f));
-    matches!(
-        (rest.next().map(Expr::view), rest.next()),
-        (Some(View::Add(_)), None)
-    )
-}
-
 /// Up to this many groups a term's group is found by linear search; beyond, by hashing.
 const LINEAR_SEARCH_GROUPS: usize = 32;
 
-fn present_sum(e: &Expr, axis: Axis) -> (bool, Layout) {
-    let mut groups: Vec<Group> = Vec::with_capacity(e.terms().len());
-    // The groups by kinematic part, filled once there are too many to search linearly.
-    let mut index: HashMap<Vec<&Expr>, usize> = HashMap::new();
-    for term in e.terms() {
-        let kinematic = kinematic_part(term);
-        let key = kinematic_key(kinematic.clone());
-        let found = if groups.len() <= LINEAR_SEARCH_GROUPS {
-            groups
-                .iter()
-                .position(|g| g.key == key && kinematic_part(g.first).eq(kinematic.clone()))
-        } else {
-            if index.is_empty() {
-                for (at, g) in groups.iter().enumerate() {
-                    index.insert(kinematic_part(g.first).collect(), at);
-                }
-            }
-            index.get(&kinematic.clone().collect::<Vec<_>>()).copied()
-        };
-        match found {
-            Some(at) => groups[at].others.push(term),
-            None => {
-                if !index.is_empty() {
-                    index.insert(kinematic.collect(), groups.len());
-                }
-                groups.push(Group {
-                    first: term,
-                    others: Vec::new(),
-                    key,
-                });
-            }
-        }
+impl Layout {
+    /// Forgets every node, keeping the storage for the next expression.
+    pub fn clear(&mut self) {
+        self.nodes.clear();
+        self.entries.clear();
+        self.pending.clear();
+        self.groups.clear();
+        self.next_member.clear();
+        self.big_numbers.clear();
     }
-    // Keys rarely tie, so the kinematic products that break ties are seldom built.
-    groups.sort_by(|a, b| {
-        a.key.cmp(&b.key).then_with(|| {
-            Expr::mul_all(kinematic_part(a.first).cloned())
-                .cmp(&Expr::mul_all(kinematic_part(b.first).cloned()))
-        })
-    });
-    let only_group = groups.len() == 1;
-    let mut terms: Vec<(bool, Layout)> = Vec::with_capacity(groups.len());
-    for group in groups {
-        if group.others.is_empty() && !has_sum_coefficient(group.first) {
-            // A coefficient of one term times the kinematic part is the term itself.
-            terms.push(present_term(group.first, axis));
-            continue;
-        }
-        let coefficient = match group.others[..] {
-            [] => coefficient_of(group.first),
-            [second] => coefficient_of(group.first) + coefficient_of(second),
-            _ => {
-                let members = std::iter::once(group.first).chain(group.others);
-                Expr::add_all(members.map(coefficient_of))
-            }
-        };
-        if coefficient.is_zero() {
-            continue;
-        }
-        let kinematic: Vec<Expr> = kinematic_part(group.first).cloned().collect();
-        if kinematic.is_empty() && coefficient.terms().len() > 1 {
-            // No kinematic part to collect by: the terms stand on their own.
-            let mut plain = coefficient.terms().to_vec();
-            plain.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
-            if only_group && plain[0].coeff_and_factors().0.is_negative() {
-                // A sum of coefficients alone (a denominator, a group) starts with a
-                // positive term where it has one: `z_2 - z_1`, not `-z_1 + z_2`.
-                if let Some(at) = plain
-                    .iter()
-                    .position(|t| !t.coeff_and_factors().0.is_negative())
-                {
-                    let first = plain.remove(at);
-                    plain.insert(0, first);
-                }
-            }
-            terms.extend(plain.iter().map(|t| present_term(t, axis)));
-        } else if coefficient.terms().len() == 1 {
-            let factors = coefficient.factors().iter().cloned().chain(kinematic);
-            terms.push(present_term(&Expr::mul_all(factors), axis));
-        } else {
-            terms.push(present_group(&coefficient, &kinematic, axis));
-        }
-    }
-    match terms.len() {
-        0 => (false, Layout::Number(Q::ZERO)),
-        1 => terms.pop().unwrap_or((false, Layout::Number(Q::ZERO))),
-        _ => (false, Layout::Sum(terms)),
-    }
-}
 
-/// `± common · (group) · kinematic` for a coefficient with several terms.
-fn present_group(coefficient: &Expr, kinematic: &[Expr], axis: Axis) -> (bool, Layout) {
-    let mut inner: Vec<Expr> = coefficient.terms().to_vec();
-    inner.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
-    let common = common_factor(&inner);
-    let inner: Vec<Expr> = inner.iter().map(|t| t / &common).collect();
-    let negative = inner
-        .first()
-        .is_some_and(|t| t.coeff_and_factors().0.is_negative());
-    let group_terms: Vec<(bool, Layout)> = inner
-        .iter()
-        .map(|t| {
-            let (neg, layout) = present_term(t, axis);
-            (neg != negative, layout)
-        })
-        .collect();
-    let group = Layout::Sum(group_terms);
-    let outer = Expr::mul_all(
-        common
-            .factors()
-            .iter()
-            .cloned()
-            .chain(kinematic.iter().cloned()),
-    );
-    let (outer_negative, outer_layout) = present_term(&outer, axis);
-    let product = match outer_layout {
-        Layout::Product(mut p) => {
-            let at = p
-                .numerator
-                .iter()
-                .position(|f| placement(f) > GROUP_PLACE)
-                .unwrap_or(p.numerator.len());
-            p.numerator.insert(at, group);
-            p
+    fn number(&mut self, q: &Q) -> Number {
+        match q {
+            Q::Small(n, d) => Number::Small(*n, *d),
+            Q::Big(_) => {
+                self.big_numbers.push(q.clone());
+                Number::Big((self.big_numbers.len() - 1) as u32)
+            }
         }
-        Layout::Number(q) => Product {
-            coefficient: q,
-            numerator: vec![group],
-            denominator: vec![],
-        },
-        other => {
-            let mut numerator = vec![group];
-            if placement(&other) > GROUP_PLACE {
-                numerator.push(other);
+    }
+
+    /// The value of a number of this layout.
+    pub fn value(&self, n: Number) -> Q {
+        match n {
+            Number::Small(n, d) => Q::Small(n, d),
+            Number::Big(at) => self.big_numbers[at as usize].clone(),
+        }
+    }
+
+    pub fn node(&self, id: NodeId) -> &Node {
+        &self.nodes[id.0 as usize]
+    }
+
+    /// The signed entries of a run: the terms of a sum or the factors of a product.
+    pub fn entries(&self, span: Span) -> &[(bool, NodeId)] {
+        &self.entries[span.start as usize..(span.start + span.len) as usize]
+    }
+
+    fn push(&mut self, node: Node) -> NodeId {
+        self.nodes.push(node);
+        NodeId((self.nodes.len() - 1) as u32)
+    }
+
+    /// The factors pending since `mark` as a product's numerator and denominator (those
+    /// marked `true`), each in the order given.
+    fn finish_product(&mut self, mark: usize) -> (Span, Span) {
+        let start = self.entries.len() as u32;
+        let pending = &self.pending[mark..];
+        self.entries.extend(pending.iter().filter(|(d, _)| !d));
+        let above = self.entries.len() as u32 - start;
+        self.entries.extend(pending.iter().filter(|(d, _)| *d));
+        let below = self.entries.len() as u32 - start - above;
+        self.pending.truncate(mark);
+        (
+            Span { start, len: above },
+            Span {
+                start: start + above,
+                len: below,
+            },
+        )
+    }
+
+    /// The terms pending since `mark`, with their signs, as one sum.
+    fn finish_sum(&mut self, mark: usize) -> NodeId {
+        let start = self.entries.len() as u32;
+        self.entries.extend_from_slice(&self.pending[mark..]);
+        let span = Span {
+            start,
+            len: self.entries.len() as u32 - start,
+        };
+        self.pending.truncate(mark);
+        self.push(Node::Sum(span))
+    }
+
+    /// The presented form of `e` as a signed node: `(negative, node)`.
+    pub fn present(&mut self, e: &Expr, axis: Axis) -> (bool, NodeId) {
+        match e.view() {
+            View::Add(_) => self.present_sum(e, axis),
+            _ => self.present_term(e, axis),
+        }
+    }
+
+    fn present_sum(&mut self, e: &Expr, axis: Axis) -> (bool, NodeId) {
+        let terms = e.terms();
+        let base = self.groups.len();
+        let term_base = self.next_member.len();
+        // The groups by kinematic part, filled once there are too many to search linearly.
+        let mut index: HashMap<Vec<&Expr>, usize> = HashMap::new();
+        for (at, term) in terms.iter().enumerate() {
+            let kinematic = kinematic_part(term);
+            let (key, sum_coefficient) = term_shape(term);
+            let groups = &mut self.groups[base..];
+            let found = if groups.len() <= LINEAR_SEARCH_GROUPS {
+                groups.iter().position(|g| {
+                    g.key == key && kinematic_part(&terms[g.first as usize]).eq(kinematic.clone())
+                })
             } else {
-                numerator.insert(0, other);
-            }
-            Product {
-                coefficient: Q::ONE,
-                numerator,
-                denominator: vec![],
+                if index.is_empty() {
+                    for (k, g) in groups.iter().enumerate() {
+                        index.insert(kinematic_part(&terms[g.first as usize]).collect(), k);
+                    }
+                }
+                index.get(&kinematic.clone().collect::<Vec<_>>()).copied()
+            };
+            self.next_member.push(NO_MEMBER);
+            match found {
+                Some(k) => {
+                    self.next_member[term_base + groups[k].last as usize] = at as u32;
+                    groups[k].last = at as u32;
+                    groups[k].members += 1;
+                }
+                None => {
+                    if !index.is_empty() {
+                        index.insert(kinematic.collect(), groups.len());
+                    }
+                    self.groups.push(Group {
+                        key,
+                        sum_coefficient,
+                        first: at as u32,
+                        last: at as u32,
+                        members: 1,
+                    });
+                }
             }
         }
-    };
-    (negative != outer_negative, Layout::Product(product))
+        // Keys rarely tie, so the kinematic products that break ties are seldom built.
+        sort_nearly_sorted(&mut self.groups[base..], |a, b| {
+            let kinematic =
+                |g: &Group| Expr::mul_all(kinematic_part(&terms[g.first as usize]).cloned());
+            a.key
+                .cmp(&b.key)
+                .then_with(|| kinematic(a).cmp(&kinematic(b)))
+        });
+        let only_group = self.groups.len() - base == 1;
+        let mark = self.pending.len();
+        for g in base..self.groups.len() {
+            let group = self.groups[g];
+            let first = &terms[group.first as usize];
+            if group.members == 1 && !group.sum_coefficient {
+                // A coefficient of one term times the kinematic part is the term itself.
+                let term = self.present_term(first, axis);
+                self.pending.push(term);
+                continue;
+            }
+            let next_member = &self.next_member[term_base..];
+            let members = std::iter::successors(Some(group.first), |&at| {
+                Some(next_member[at as usize]).filter(|&next| next != NO_MEMBER)
+            })
+            .map(|at| coefficient_of(&terms[at as usize]));
+            // Two coefficients by `+`, the quick merge of two sorted operands; more at once.
+            let coefficient = match group.members {
+                1 | 2 => members.reduce(|sum, c| sum + c).unwrap_or_else(Expr::zero),
+                _ => Expr::add_all(members),
+            };
+            if coefficient.is_zero() {
+                continue;
+            }
+            let kinematic = kinematic_part(first);
+            if kinematic.clone().next().is_none() && coefficient.terms().len() > 1 {
+                // No kinematic part to collect by: the terms stand on their own.
+                let mut plain: Vec<&Expr> = coefficient.terms().iter().collect();
+                plain.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
+                if only_group && plain[0].coefficient().is_negative() {
+                    // A sum of coefficients alone (a denominator, a group) starts with a
+                    // positive term where it has one: `z_2 - z_1`, not `-z_1 + z_2`.
+                    if let Some(at) = plain.iter().position(|t| !t.coefficient().is_negative()) {
+                        let first = plain.remove(at);
+                        plain.insert(0, first);
+                    }
+                }
+                for t in plain {
+                    let term = self.present_term(t, axis);
+                    self.pending.push(term);
+                }
+            } else if coefficient.terms().len() == 1 {
+                // The coefficient and the kinematic part have no base in common.
+                let factors = coefficient.monomial().iter().chain(kinematic);
+                let term = self.present_product(coefficient.coefficient(), factors, axis);
+                self.pending.push(term);
+            } else {
+                let term = self.present_group(&coefficient, kinematic, axis);
+                self.pending.push(term);
+            }
+        }
+        self.groups.truncate(base);
+        self.next_member.truncate(term_base);
+        match self.pending[mark..] {
+            [] => {
+                let zero = self.number(&Q::ZERO);
+                (false, self.push(Node::Number(zero)))
+            }
+            [term] => {
+                self.pending.truncate(mark);
+                term
+            }
+            _ => (false, self.finish_sum(mark)),
+        }
+    }
+
+    /// `± common · (group) · kinematic` for a coefficient with several terms.
+    fn present_group<'e>(
+        &mut self,
+        coefficient: &'e Expr,
+        kinematic: KinematicPart<'e>,
+        axis: Axis,
+    ) -> (bool, NodeId) {
+        let mut inner: Vec<&Expr> = coefficient.terms().iter().collect();
+        inner.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
+        let common = common_factor(&inner);
+        let divided: Vec<Expr> = match common.is_one() {
+            true => Vec::new(),
+            false => inner.iter().map(|&t| t / &common).collect(),
+        };
+        if !divided.is_empty() {
+            inner = divided.iter().collect();
+        }
+        let negative = inner.first().is_some_and(|t| t.coefficient().is_negative());
+        let mark = self.pending.len();
+        for t in inner {
+            let (neg, id) = self.present_term(t, axis);
+            self.pending.push((neg != negative, id));
+        }
+        let group = self.finish_sum(mark);
+        // The common factor and the kinematic part have no base in common.
+        let outer = common.monomial().iter().chain(kinematic);
+        let (outer_negative, outer_id) = self.present_product(common.coefficient(), outer, axis);
+        let mark = self.pending.len();
+        let (coefficient, denominator) = match *self.node(outer_id) {
+            Node::Product(p) => {
+                let start = p.numerator.start as usize;
+                self.pending
+                    .extend_from_slice(&self.entries[start..start + p.numerator.len as usize]);
+                (p.coefficient, p.denominator)
+            }
+            Node::Number(q) => (q, Span::default()),
+            _ => {
+                self.pending.push((false, outer_id));
+                (self.number(&Q::ONE), Span::default())
+            }
+        };
+        // The group stands before the first factor placed after groups (rule 4).
+        let at = self.pending[mark..]
+            .iter()
+            .position(|&(_, f)| self.placement(f) > GROUP_PLACE)
+            .map_or(self.pending.len(), |k| mark + k);
+        self.pending.insert(at, (false, group));
+        let (numerator, _) = self.finish_product(mark);
+        let product = self.push(Node::Product(Product {
+            coefficient,
+            numerator,
+            denominator,
+        }));
+        (negative != outer_negative, product)
+    }
+
+    /// A single term (no top-level sum) as a signed product.
+    fn present_term(&mut self, e: &Expr, axis: Axis) -> (bool, NodeId) {
+        self.present_product(e.coefficient(), e.monomial().iter(), axis)
+    }
+
+    /// `coefficient · factors` as a signed product, the factors of distinct bases.
+    fn present_product<'e>(
+        &mut self,
+        coefficient: &Q,
+        factors: impl Iterator<Item = &'e Expr>,
+        axis: Axis,
+    ) -> (bool, NodeId) {
+        let negative = coefficient.is_negative();
+        let mut factors = factors.map(|f| (expr_place(f), f));
+        let Some(first) = factors.next() else {
+            let magnitude = self.number(&coefficient.abs());
+            return (negative, self.push(Node::Number(magnitude)));
+        };
+        // The factors with their places, in print order; on the stack unless there are many.
+        let mut inline = [first; 8];
+        let mut spilled: Vec<(u8, &Expr)> = Vec::new();
+        let mut count = 1;
+        for placed in factors {
+            match inline.get_mut(count) {
+                Some(slot) => *slot = placed,
+                None => {
+                    if spilled.is_empty() {
+                        spilled.extend_from_slice(&inline);
+                    }
+                    spilled.push(placed);
+                }
+            }
+            count += 1;
+        }
+        let ordered: &mut [(u8, &Expr)] = match spilled.is_empty() {
+            true => &mut inline[..count],
+            false => &mut spilled,
+        };
+        sort_nearly_sorted(ordered, |(pa, a), (pb, b)| {
+            pa.cmp(pb).then_with(|| compare_in_place(a, b))
+        });
+        cyclic_pair_order(ordered);
+        let mark = self.pending.len();
+        // Each factor with whether it belongs to the denominator.
+        for &(_, f) in ordered.iter() {
+            let (base, exponent) = match f.view() {
+                View::Pow(base, exponent) => (base, exponent),
+                // The most frequent factor, without the call of `present_atom`.
+                View::Sym(s) => {
+                    let symbol = self.push(Node::Symbol(s));
+                    self.pending.push((false, symbol));
+                    continue;
+                }
+                _ => {
+                    let atom = self.present_atom(f, axis);
+                    self.pending.push((false, atom));
+                    continue;
+                }
+            };
+            let factor = match exponent.as_num() {
+                Some(q) if q.is_negative() => (true, self.present_power(base, &q.abs(), axis)),
+                Some(q) => (false, self.present_power(base, q, axis)),
+                None => {
+                    let base = self.present_atom(base, axis);
+                    let exponent = self.present_signed_inline(exponent, axis);
+                    (false, self.push(Node::Power(base, exponent)))
+                }
+            };
+            self.pending.push(factor);
+        }
+        let coefficient = coefficient.abs();
+        let node = match &self.pending[mark..] {
+            [(false, alone)] if coefficient.is_one() => {
+                let alone = *alone;
+                self.pending.truncate(mark);
+                return (negative, alone);
+            }
+            _ => {
+                let (numerator, denominator) = self.finish_product(mark);
+                Node::Product(Product {
+                    coefficient: self.number(&coefficient),
+                    numerator,
+                    denominator,
+                })
+            }
+        };
+        (negative, self.push(node))
+    }
+
+    fn present_power(&mut self, base: &Expr, exponent: &Q, axis: Axis) -> NodeId {
+        if *exponent == Q::Small(1, 2) {
+            let inner = self.present_signed_inline(base, axis);
+            return self.push(Node::SquareRoot(inner));
+        }
+        let base = self.present_atom(base, axis);
+        if exponent.is_one() {
+            base
+        } else {
+            let exponent = self.number(exponent);
+            let exponent = self.push(Node::Number(exponent));
+            self.push(Node::Power(base, exponent))
+        }
+    }
+
+    /// A factor or base: a symbol, a number, a function, or a parenthesised sum.
+    fn present_atom(&mut self, e: &Expr, axis: Axis) -> NodeId {
+        match e.view() {
+            View::Sym(s) => self.push(Node::Symbol(s)),
+            View::Num(q) if !q.is_negative() && q.is_integer() => {
+                let q = self.number(q);
+                self.push(Node::Number(q))
+            }
+            View::Func(f, arg) => {
+                let arg = self.present_signed_inline(arg, axis);
+                self.push(Node::Function(f, arg))
+            }
+            _ => self.present_signed_inline(e, axis),
+        }
+    }
+
+    /// An expression that must stand as one unit; a leading minus becomes part of a sum.
+    fn present_signed_inline(&mut self, e: &Expr, axis: Axis) -> NodeId {
+        match self.present(e, axis) {
+            (false, id) => id,
+            (true, id) => {
+                if let Node::Sum(span) = *self.node(id) {
+                    let start = span.start as usize;
+                    self.entries[start..start + span.len as usize]
+                        .iter_mut()
+                        .for_each(|t| t.0 = !t.0);
+                    id
+                } else {
+                    let mark = self.pending.len();
+                    self.pending.push((true, id));
+                    self.finish_sum(mark)
+                }
+            }
+        }
+    }
+
+    /// Where a node stands in a product (rule 4): a power where its base does, a square
+    /// root no later than a group.
+    ///
+    /// A loop, not recursion: rustc 1.95 in release builds compiled the recursive form so
+    /// that `placement(ω) > GROUP_PLACE` was false although `placement(ω)` was 8, which put
+    /// a group after the kinematic factor (`ω_y (a + b)`) where debug builds and the
+    /// snapshots have `(a + b) ω_y`.
+    fn placement(&self, mut id: NodeId) -> u8 {
+        let mut latest = u8::MAX;
+        loop {
+            let place = match *self.node(id) {
+                Node::Power(base, _) => {
+                    id = base;
+                    continue;
+                }
+                Node::SquareRoot(inner) => {
+                    latest = GROUP_PLACE;
+                    id = inner;
+                    continue;
+                }
+                Node::Number(_) => 0,
+                Node::Symbol(s) => symbol_place(s),
+                Node::Sum(_) | Node::Product(_) => GROUP_PLACE,
+                Node::Function(..) => 7,
+            };
+            return place.min(latest);
+        }
+    }
 }
 
 /// The monomial that divides every term (symbols to their least power), sign excluded.
-fn common_factor(terms: &[Expr]) -> Expr {
+fn common_factor(terms: &[&Expr]) -> Expr {
     let Some(first) = terms.first() else {
         return Expr::one();
     };
@@ -284,18 +621,50 @@ fn common_factor(terms: &[Expr]) -> Expr {
             }
         });
     }
-    let content = Expr::num(rational_content(terms));
-    Expr::mul_all(std::iter::once(content).chain(common.into_iter().map(|(b, e)| power(&b, e))))
+    let content = rational_content(terms);
+    if common.is_empty() && content.is_one() {
+        // Nothing in common, the usual case: no product to form.
+        return Expr::one();
+    }
+    let common = common.into_iter().map(|(b, e)| power(&b, e));
+    Expr::mul_all(std::iter::once(Expr::num(content)).chain(common))
 }
 
 /// The largest positive rational that divides every coefficient, gcd of the numerators over
 /// lcm of the denominators: `1/12 a² + 1/12 d²` has `1/12`, `r²/(8L²) + 3/4` has `1/8`.
-fn rational_content(terms: &[Expr]) -> Q {
+/// A content whose numerator or denominator does not fit an `i64` is taken as 1.
+fn rational_content(terms: &[&Expr]) -> Q {
+    small_rational_content(terms).unwrap_or_else(|| big_rational_content(terms))
+}
+
+/// [`rational_content`] in machine integers; `None` when a coefficient is a big rational.
+fn small_rational_content(terms: &[&Expr]) -> Option<Q> {
+    use num_integer::Integer;
+    let mut numerators = 0u64;
+    let mut denominators = 1i64;
+    for t in terms {
+        let Q::Small(n, d) = *t.coefficient() else {
+            return None;
+        };
+        numerators = numerators.gcd(&n.unsigned_abs());
+        let Some(lcm) = (denominators / denominators.gcd(&d)).checked_mul(d) else {
+            return Some(Q::ONE);
+        };
+        denominators = lcm;
+    }
+    match i64::try_from(numerators) {
+        Ok(n) if n > 0 => Some(Q::new(n, denominators).unwrap_or(Q::ONE)),
+        _ => Some(Q::ONE),
+    }
+}
+
+/// [`rational_content`] in big integers, for coefficients beyond `i64`.
+fn big_rational_content(terms: &[&Expr]) -> Q {
     use num_integer::Integer;
     let mut numerators = num_bigint::BigInt::from(0);
     let mut denominators = num_bigint::BigInt::from(1);
     for t in terms {
-        let (n, d) = t.coeff_and_factors().0.parts();
+        let (n, d) = t.coefficient().parts();
         numerators = numerators.gcd(&n);
         denominators = denominators.lcm(&d);
     }
@@ -311,95 +680,6 @@ fn power(base: &Expr, exponent: Q) -> Expr {
         .unwrap_or_else(|_| Expr::one())
 }
 
-/// A single term (no top-level sum) as a signed product.
-fn present_term(e: &Expr, axis: Axis) -> (bool, Layout) {
-    let negative = e.coefficient().is_negative();
-    let coefficient = e.coefficient().abs();
-    let factors = e.monomial();
-    let mut numerator: Vec<Layout> = Vec::new();
-    let mut denominator: Vec<Layout> = Vec::new();
-    // The factors with their places, in print order; on the stack unless there are many.
-    let mut inline: [(u8, &Expr); 8] = [(0, e); 8];
-    let mut spilled: Vec<(u8, &Expr)> = Vec::new();
-    let placed = factors.iter().map(|f| (expr_place(f), f));
-    let ordered: &mut [(u8, &Expr)] = if factors.len() <= inline.len() {
-        inline
-            .iter_mut()
-            .zip(placed)
-            .for_each(|(slot, f)| *slot = f);
-        &mut inline[..factors.len()]
-    } else {
-        spilled.extend(placed);
-        &mut spilled
-    };
-    ordered.sort_by(|(pa, a), (pb, b)| pa.cmp(pb).then_with(|| compare_in_place(a, b)));
-    cyclic_pair_order(ordered);
-    for &(_, f) in ordered.iter() {
-        let View::Pow(base, exponent) = f.view() else {
-            numerator.push(present_atom(f, axis));
-            continue;
-        };
-        match exponent.as_num() {
-            Some(q) if q.is_negative() => denominator.push(present_power(base, &q.abs(), axis)),
-            Some(q) => numerator.push(present_power(base, q, axis)),
-            None => numerator.push(Layout::Power(
-                Box::new(present_atom(base, axis)),
-                Box::new(present_signed_inline(exponent, axis)),
-            )),
-        }
-    }
-    if numerator.is_empty() && denominator.is_empty() {
-        return (negative, Layout::Number(coefficient));
-    }
-    if coefficient.is_one() && denominator.is_empty() && numerator.len() == 1 {
-        return (negative, numerator.pop().unwrap_or(Layout::Number(Q::ONE)));
-    }
-    (
-        negative,
-        Layout::Product(Product {
-            coefficient,
-            numerator,
-            denominator,
-        }),
-    )
-}
-
-fn present_power(base: &Expr, exponent: &Q, axis: Axis) -> Layout {
-    let base_layout = present_atom(base, axis);
-    if exponent.is_one() {
-        base_layout
-    } else if *exponent == Q::Small(1, 2) {
-        Layout::SquareRoot(Box::new(present_signed_inline(base, axis)))
-    } else {
-        Layout::Power(
-            Box::new(base_layout),
-            Box::new(Layout::Number(exponent.clone())),
-        )
-    }
-}
-
-/// A factor or base: a symbol, a number, a function, or a parenthesised sum.
-fn present_atom(e: &Expr, axis: Axis) -> Layout {
-    match e.view() {
-        View::Sym(s) => Layout::Symbol(s),
-        View::Num(q) if !q.is_negative() && q.is_integer() => Layout::Number(q.clone()),
-        View::Func(f, arg) => Layout::Function(f, Box::new(present_signed_inline(arg, axis))),
-        _ => present_signed_inline(e, axis),
-    }
-}
-
-/// An expression that must stand as one unit; a leading minus becomes part of a sum.
-fn present_signed_inline(e: &Expr, axis: Axis) -> Layout {
-    match present(e, axis) {
-        (false, l) => l,
-        (true, Layout::Sum(mut terms)) => {
-            terms.iter_mut().for_each(|t| t.0 = !t.0);
-            Layout::Sum(terms)
-        }
-        (true, l) => Layout::Sum(vec![(true, l)]),
-    }
-}
-
 fn is_kinematic_factor(f: &Expr) -> bool {
     match f.base().view() {
         View::Sym(s) => matches!(s.role(), Role::Kinematic | Role::UnitVector),
@@ -410,17 +690,6 @@ fn is_kinematic_factor(f: &Expr) -> bool {
 
 /// Where a factor stands in a product (rule 4).
 const GROUP_PLACE: u8 = 6;
-
-fn placement(l: &Layout) -> u8 {
-    match l {
-        Layout::Number(_) => 0,
-        Layout::Symbol(s) => symbol_place(*s),
-        Layout::Power(b, _) => placement(b),
-        Layout::SquareRoot(b) => placement(b).min(GROUP_PLACE),
-        Layout::Sum(_) | Layout::Product(_) => GROUP_PLACE,
-        Layout::Function(..) => 7,
-    }
-}
 
 fn symbol_place(s: Symbol) -> u8 {
     match s.role() {
@@ -474,25 +743,51 @@ fn compare_in_place(a: &Expr, b: &Expr) -> Ordering {
 }
 
 /// Two kinematic factors on the axes z and x are written `ω_z ω_x` (cyclic order zx).
+/// The factors are in place order, so the kinematic ones (place 8) stand together.
 fn cyclic_pair_order(factors: &mut [(u8, &Expr)]) {
-    let (first, second, third) = {
-        let mut kinematic = (0..factors.len()).filter(|&i| factors[i].0 == 8);
-        (kinematic.next(), kinematic.next(), kinematic.next())
+    let Some(i) = factors.iter().position(|f| f.0 == 8) else {
+        return;
     };
-    if let (Some(i), Some(j), None) = (first, second, third) {
+    let place = |k: usize| factors.get(k).map(|f| f.0);
+    if place(i + 1) == Some(8) && place(i + 2) != Some(8) {
         let axis = |k: usize| factors[k].1.base().as_symbol().and_then(Symbol::axis);
-        if axis(i) == Some(0) && axis(j) == Some(2) {
-            factors.swap(i, j);
+        if axis(i) == Some(0) && axis(i + 1) == Some(2) {
+            factors.swap(i, i + 1);
         }
+    }
+}
+
+/// Sorts a short slice that is often in order already (the factors of a term, the groups
+/// of a sum) as `sort_by` would, stably: by insertion, comparing each neighbouring pair once
+/// when nothing is out of place. Long slices go to the standard sort.
+fn sort_nearly_sorted<T: Copy>(items: &mut [T], mut order: impl FnMut(&T, &T) -> Ordering) {
+    if items.len() > 16 {
+        items.sort_by(order);
+        return;
+    }
+    for i in 1..items.len() {
+        let item = items[i];
+        let mut j = i;
+        while j > 0 && order(&items[j - 1], &item) == Ordering::Greater {
+            items[j] = items[j - 1];
+            j -= 1;
+        }
+        items[j] = item;
     }
 }
 
 /// Ordering key of a kinematic monomial (rule 2): terms free of kinematic symbols, then
 /// accelerations before velocities, the family (translational first), the number of
-/// kinematic symbols, and the axis or the cyclic pair of axes.
-type KinematicKey = (u8, u8, usize, usize);
+/// kinematic symbols, and the axis or the cyclic pair of axes; packed into one integer in
+/// that order of significance (class and family a byte each, the count 40 bits, the axis a
+/// byte), so that comparing keys is one comparison.
+type KinematicKey = u64;
 
-fn kinematic_key<'a>(factors: impl Iterator<Item = &'a Expr>) -> KinematicKey {
+/// A term's kinematic key, and whether its coefficient is a sum (a single non-kinematic
+/// factor that is a sum), in one pass over its factors.
+fn term_shape(term: &Expr) -> (KinematicKey, bool) {
+    let mut others = 0usize;
+    let mut other_is_sum = false;
     let mut factor_count = 0usize;
     let mut count = 0usize;
     let mut acceleration = false;
@@ -509,15 +804,23 @@ fn kinematic_key<'a>(factors: impl Iterator<Item = &'a Expr>) -> KinematicKey {
             }
         }
     };
-    for f in factors {
+    for f in term.factors() {
+        if !is_kinematic_factor(f) {
+            if f.as_num().is_none() {
+                others += 1;
+                other_is_sum = matches!(f.view(), View::Add(_));
+            }
+            continue;
+        }
         factor_count += 1;
         match f.base().as_symbol() {
             Some(s) => visit(s),
             None => f.base().symbols().into_iter().for_each(&mut visit),
         }
     }
+    let sum_coefficient = others == 1 && other_is_sum;
     if count == 0 {
-        return (0, 0, 0, 0);
+        return (0, sum_coefficient);
     }
     let class = if acceleration { 1 } else { 2 };
     let axis_rank = match axes {
@@ -526,7 +829,9 @@ fn kinematic_key<'a>(factors: impl Iterator<Item = &'a Expr>) -> KinematicKey {
         0b100 | 0b101 => 2,
         _ => 3,
     };
-    (class, lowest_family, count.min(factor_count), axis_rank)
+    let count = count.min(factor_count).min((1 << 40) - 1) as u64;
+    let key = (class << 56) | (u64::from(lowest_family) << 48) | (count << 8) | axis_rank;
+    (key, sum_coefficient)
 }
 
 /// Ordering key of an inertia symbol for the equation about `axis` (rule 3).
@@ -618,5 +923,39 @@ mod tests {
             );
         }
         assert_eq!(printed.matches(" + (a + b)").count(), n - 1, "{printed}");
+    }
+
+    /// The machine-integer content agrees with the big-integer one wherever it answers,
+    /// including denominators whose lcm overflows an `i64` (content 1 in both).
+    #[test]
+    fn small_rational_content_agrees_with_big() {
+        let q = |n: i64, d: i64| Expr::num(Q::new(n, d).unwrap()) * Expr::symbol("a");
+        let sets = [
+            vec![q(1, 12), q(1, 12)],
+            vec![q(1, 8), q(3, 4)],
+            vec![q(-6, 1), q(4, 1), q(10, 3)],
+            vec![q(i64::MIN, 1), q(i64::MIN, 1)],
+            vec![q(1, 1 << 40), q(1, (1 << 40) - 1)],
+            vec![q(1, i64::MAX), q(1, i64::MAX - 1)],
+        ];
+        for terms in &sets {
+            let terms: Vec<&Expr> = terms.iter().collect();
+            let small = small_rational_content(&terms).expect("small coefficients");
+            assert_eq!(small, big_rational_content(&terms), "{terms:?}");
+        }
+    }
+
+    /// Numbers beyond `i64` go to the layout's side table and print in full.
+    #[test]
+    fn big_numbers_print_in_full() {
+        let big = Expr::int(1 << 35).powi(2);
+        assert_eq!(
+            crate::print::text(&(Expr::symbol("m") * &big)),
+            "1180591620717411303424*m"
+        );
+        assert_eq!(
+            crate::print::latex(&(Expr::rational(1, 3) / &big)),
+            r"\frac{1}{3541774862152233910272}"
+        );
     }
 }

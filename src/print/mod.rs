@@ -1,7 +1,8 @@
 //! Printers: LaTeX in textbook form and plain text the parser reads back.
 //!
-//! Both render the same presented form ([`layout::present`]), so they always agree on
-//! order and grouping; only the notation differs.
+//! Both render the same presented form ([`layout::Layout::present`]), so they always agree
+//! on order and grouping; only the notation differs. Each thread keeps one layout and reuses
+//! it, and a renderer appends to one string, so printing allocates no node of its own.
 //!
 //! ```
 //! use kinetics::algebra::Expr;
@@ -15,9 +16,11 @@ pub mod latex;
 pub mod layout;
 pub mod text;
 
-use crate::algebra::{Expr, Symbol, Vector};
+use crate::algebra::{Expr, Symbol, Vector, Q};
 pub use layout::Axis;
-use layout::{present, Layout};
+use layout::{Layout, Node, NodeId};
+use std::cell::RefCell;
+use std::fmt::Write;
 
 /// The notation of a printed result.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum, serde::Serialize)]
@@ -28,6 +31,52 @@ pub enum Notation {
     Latex,
 }
 
+thread_local! {
+    /// This thread's layout, reused so that printing allocates only the printed string.
+    static LAYOUT: RefCell<Layout> = RefCell::new(Layout::default());
+}
+
+/// Presents `e` about `axis` and hands the layout, the sign and the root to `render`.
+fn presented<R>(e: &Expr, axis: Axis, render: impl FnOnce(&Layout, bool, NodeId) -> R) -> R {
+    LAYOUT.with(|cell| {
+        let mut fresh = Layout::default();
+        // A printer that runs while another is rendering takes a layout of its own.
+        let mut shared = cell.try_borrow_mut();
+        let layout = match shared.as_deref_mut() {
+            Ok(layout) => layout,
+            Err(_) => &mut fresh,
+        };
+        layout.clear();
+        let (negative, root) = layout.present(e, axis);
+        render(layout, negative, root)
+    })
+}
+
+/// The printed form of `e` about `axis` in `notation`, appended to `out`.
+fn render_into(
+    out: &mut String,
+    layout: &Layout,
+    negative: bool,
+    root: NodeId,
+    notation: Notation,
+) {
+    match notation {
+        Notation::Text => text::render(out, layout, negative, root),
+        Notation::Latex => latex::render(out, layout, negative, root),
+    }
+}
+
+/// An integer-valued rational in decimal digits, a single digit without the formatter.
+fn integer(out: &mut String, q: &Q) {
+    match q.to_i64().and_then(|n| u8::try_from(n).ok()) {
+        Some(digit @ 0..=9) => out.push(char::from(b'0' + digit)),
+        // Formatting into a `String` cannot fail.
+        _ => {
+            let _ = write!(out, "{q}");
+        }
+    }
+}
+
 /// LaTeX of an expression, inertia groups ordered as for the x-equation.
 pub fn latex(e: &Expr) -> String {
     latex_about(e, Axis::X)
@@ -35,8 +84,7 @@ pub fn latex(e: &Expr) -> String {
 
 /// LaTeX of an expression that belongs to the equation about `axis`.
 pub fn latex_about(e: &Expr, axis: Axis) -> String {
-    let (negative, layout) = present(e, axis);
-    latex::render(negative, &layout)
+    render(e, Notation::Latex, axis)
 }
 
 /// Plain text of an expression.
@@ -46,16 +94,17 @@ pub fn text(e: &Expr) -> String {
 
 /// Plain text of an expression that belongs to the equation about `axis`.
 pub fn text_about(e: &Expr, axis: Axis) -> String {
-    let (negative, layout) = present(e, axis);
-    text::render(negative, &layout)
+    render(e, Notation::Text, axis)
 }
 
 /// An expression in the chosen notation.
 pub fn render(e: &Expr, notation: Notation, axis: Axis) -> String {
-    match notation {
-        Notation::Text => text_about(e, axis),
-        Notation::Latex => latex_about(e, axis),
-    }
+    // Room for a typical term of each top-level term, so that the string rarely grows.
+    let mut out = String::with_capacity(16 + 32 * e.terms().len());
+    presented(e, axis, |layout, negative, root| {
+        render_into(&mut out, layout, negative, root, notation)
+    });
+    out
 }
 
 /// A vector `a i + b j + c k`; a component with several terms is parenthesised:
@@ -67,33 +116,37 @@ pub fn vector(v: &Vector, notation: Notation) -> String {
         if component.is_zero() {
             continue;
         }
-        let (negative, layout) = present(component, Axis::X);
-        let body = match notation {
-            Notation::Text => text::render(false, &layout),
-            Notation::Latex => latex::render(false, &layout),
-        };
-        let grouped = matches!(layout, Layout::Sum(_));
         let unit = match notation {
             Notation::Text => unit.name(),
             Notation::Latex => unit.latex(),
         };
-        let body = match (grouped, notation, body.as_str()) {
-            (true, _, _) => format!("({body})"),
-            (false, _, "1") => String::new(),
-            _ => body,
-        };
-        let joined = match (body.is_empty(), notation) {
-            (true, _) => unit.to_string(),
-            (false, Notation::Text) => format!("{body}*{unit}"),
-            (false, Notation::Latex) => format!("{body} {unit}"),
-        };
-        match (out.is_empty(), negative) {
-            (true, true) => out.push('-'),
-            (true, false) => {}
-            (false, true) => out.push_str(" - "),
-            (false, false) => out.push_str(" + "),
-        }
-        out.push_str(&joined);
+        presented(component, Axis::X, |layout, negative, root| {
+            match (out.is_empty(), negative) {
+                (true, true) => out.push('-'),
+                (true, false) => {}
+                (false, true) => out.push_str(" - "),
+                (false, false) => out.push_str(" + "),
+            }
+            let grouped = matches!(layout.node(root), Node::Sum(_));
+            if grouped {
+                out.push('(');
+            }
+            let body = out.len();
+            render_into(&mut out, layout, false, root, notation);
+            if grouped {
+                out.push(')');
+            } else if &out[body..] == "1" {
+                // A unit coefficient is not written: `\mathbf{i}`, not `1 \mathbf{i}`.
+                out.truncate(body);
+            }
+            if out.len() > body {
+                out.push_str(match notation {
+                    Notation::Text => "*",
+                    Notation::Latex => " ",
+                });
+            }
+            out.push_str(unit);
+        });
     }
     if out.is_empty() {
         out.push('0');

@@ -2,89 +2,134 @@
 //! `I_x*w_x - I_xy*w_y`, `1/2*m*v^2`, `6*F*Dt/(m*b)`, `-(I_y - I_z)*w_y*w_z`,
 //! `sin(beta)`, `sqrt(x)`.
 
-use super::layout::{Layout, Product};
+use super::integer;
+use super::layout::{parts, Layout, Node, NodeId, Product, Span};
+use crate::algebra::Q;
 
-/// Renders a signed layout.
-pub fn render(negative: bool, layout: &Layout) -> String {
-    let body = node(layout);
+/// Appends a signed layout to `out`.
+pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
+    let grouped = negative && matches!(layout.node(root), Node::Sum(_));
     if negative {
-        match layout {
-            Layout::Sum(_) => format!("-({body})"),
-            _ => format!("-{body}"),
-        }
-    } else {
-        body
+        out.push('-');
+    }
+    if grouped {
+        out.push('(');
+    }
+    node(out, layout, root);
+    if grouped {
+        out.push(')');
     }
 }
 
-fn node(layout: &Layout) -> String {
-    match layout {
-        Layout::Number(q) => q.to_string(),
-        Layout::Symbol(s) => s.name().to_string(),
-        Layout::Sum(terms) => {
-            let mut out = String::new();
-            for (i, (negative, term)) in terms.iter().enumerate() {
-                match (i, negative) {
-                    (0, true) => out.push('-'),
-                    (0, false) => {}
-                    (_, true) => out.push_str(" - "),
-                    (_, false) => out.push_str(" + "),
-                }
-                out.push_str(&node(term));
+/// A node; symbols, the most frequent, without a call.
+#[inline]
+fn node(out: &mut String, layout: &Layout, id: NodeId) {
+    match layout.node(id) {
+        Node::Symbol(s) => out.push_str(s.name()),
+        other => compound(out, layout, other),
+    }
+}
+
+/// Kept out of line so that [`node`] stays small enough to be quick for symbols.
+#[inline(never)]
+fn compound(out: &mut String, layout: &Layout, compound: &Node) {
+    match compound {
+        Node::Number(n) => number(out, &layout.value(*n)),
+        Node::Symbol(s) => out.push_str(s.name()),
+        Node::Sum(terms) => {
+            for (i, &(negative, term)) in layout.entries(*terms).iter().enumerate() {
+                out.push_str(match (i, negative) {
+                    (0, true) => "-",
+                    (0, false) => "",
+                    (_, true) => " - ",
+                    (_, false) => " + ",
+                });
+                node(out, layout, term);
             }
-            out
         }
-        Layout::Product(p) => product(p),
-        Layout::Power(base, exponent) => {
-            let e = match &**exponent {
-                Layout::Number(q) if q.is_integer() => q.to_string(),
-                other => format!("({})", node(other)),
-            };
-            let base = match &**base {
-                Layout::Power(..) => format!("({})", node(base)),
-                other => factor(other),
-            };
-            format!("{base}^{e}")
+        Node::Product(p) => product(out, layout, p),
+        Node::Power(base, exponent) => {
+            match layout.node(*base) {
+                Node::Power(..) => parenthesised(out, layout, *base),
+                _ => factor(out, layout, *base),
+            }
+            out.push('^');
+            match layout.node(*exponent) {
+                Node::Number(n) if layout.value(*n).is_integer() => number(out, &layout.value(*n)),
+                _ => parenthesised(out, layout, *exponent),
+            }
         }
-        Layout::SquareRoot(inner) => format!("sqrt({})", node(inner)),
-        Layout::Function(f, arg) => format!("{}({})", f.name(), node(arg)),
+        Node::SquareRoot(inner) => {
+            out.push_str("sqrt");
+            parenthesised(out, layout, *inner);
+        }
+        Node::Function(f, arg) => {
+            out.push_str(f.name());
+            parenthesised(out, layout, *arg);
+        }
+    }
+}
+
+fn parenthesised(out: &mut String, layout: &Layout, id: NodeId) {
+    out.push('(');
+    node(out, layout, id);
+    out.push(')');
+}
+
+/// `p` for integers, `p/q` otherwise.
+fn number(out: &mut String, q: &Q) {
+    let (n, d) = parts(q);
+    integer(out, &n);
+    if !d.is_one() {
+        out.push('/');
+        integer(out, &d);
     }
 }
 
 /// A factor inside a product or under an exponent.
-fn factor(layout: &Layout) -> String {
-    match layout {
-        Layout::Sum(_) | Layout::Product(_) => format!("({})", node(layout)),
-        Layout::Number(q) if !q.is_integer() => format!("({q})"),
-        other => node(other),
+fn factor(out: &mut String, layout: &Layout, id: NodeId) {
+    match layout.node(id) {
+        Node::Sum(_) | Node::Product(_) => parenthesised(out, layout, id),
+        Node::Number(n) if !layout.value(*n).is_integer() => {
+            out.push('(');
+            number(out, &layout.value(*n));
+            out.push(')');
+        }
+        _ => node(out, layout, id),
     }
 }
 
-fn product(p: &Product) -> String {
-    let (cn, cd) = (p.coefficient.numer(), p.coefficient.denom());
-    let mut top: Vec<String> = Vec::new();
-    if p.denominator.is_empty() {
-        if !cd.is_one() {
-            top.push(format!("{cn}/{cd}"));
-        } else if !cn.is_one() || p.numerator.is_empty() {
-            top.push(cn.to_string());
+/// The factors of one side of a product joined by `*`, after the number `shown` (if any).
+fn factors(out: &mut String, layout: &Layout, shown: Option<&Q>, span: Span) {
+    if let Some(q) = shown {
+        number(out, q);
+    }
+    for (i, &(_, f)) in layout.entries(span).iter().enumerate() {
+        if i > 0 || shown.is_some() {
+            out.push('*');
         }
-        top.extend(p.numerator.iter().map(factor));
-        return top.join("*");
+        factor(out, layout, f);
     }
-    if !cn.is_one() || p.numerator.is_empty() {
-        top.push(cn.to_string());
+}
+
+fn product(out: &mut String, layout: &Layout, p: &Product) {
+    let coefficient = layout.value(p.coefficient);
+    let (cn, cd) = parts(&coefficient);
+    let shown_numerator = !cn.is_one() || p.numerator.is_empty();
+    if p.denominator.is_empty() {
+        let shown = (!cd.is_one() || shown_numerator).then_some(&coefficient);
+        factors(out, layout, shown, p.numerator);
+        return;
     }
-    top.extend(p.numerator.iter().map(factor));
-    let mut bottom: Vec<String> = Vec::new();
-    if !cd.is_one() {
-        bottom.push(cd.to_string());
+    factors(out, layout, shown_numerator.then_some(&cn), p.numerator);
+    out.push('/');
+    let shown = (!cd.is_one()).then_some(&cd);
+    let grouped = usize::from(shown.is_some()) + layout.entries(p.denominator).len() > 1;
+    if grouped {
+        out.push('(');
     }
-    bottom.extend(p.denominator.iter().map(factor));
-    let bottom = if bottom.len() == 1 {
-        bottom.remove(0)
-    } else {
-        format!("({})", bottom.join("*"))
-    };
-    format!("{}/{}", top.join("*"), bottom)
+    factors(out, layout, shown, p.denominator);
+    if grouped {
+        out.push(')');
+    }
 }

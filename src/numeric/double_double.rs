@@ -16,12 +16,12 @@ use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
 /// A double-double number `hi + lo`.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct DoubleDouble {
-    hi: f64,
-    lo: f64,
+    pub(super) hi: f64,
+    pub(super) lo: f64,
 }
 
 /// `a + b = s + e` exactly (Knuth).
-fn two_sum(a: f64, b: f64) -> (f64, f64) {
+pub(super) fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bb = s - a;
     let e = (a - (s - bb)) + (b - bb);
@@ -29,13 +29,13 @@ fn two_sum(a: f64, b: f64) -> (f64, f64) {
 }
 
 /// `a + b = s + e` exactly, provided `|a| >= |b|` (Dekker).
-fn quick_two_sum(a: f64, b: f64) -> (f64, f64) {
+pub(super) fn quick_two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     (s, b - (s - a))
 }
 
 /// `a * b = p + e` exactly (fused multiply-add).
-fn two_prod(a: f64, b: f64) -> (f64, f64) {
+pub(super) fn two_prod(a: f64, b: f64) -> (f64, f64) {
     let p = a * b;
     (p, a.mul_add(b, -p))
 }
@@ -87,17 +87,18 @@ impl DoubleDouble {
 
     /// Absolute value.
     pub fn abs(self) -> Self {
-        if self.hi < 0.0 {
+        if self.hi.is_sign_negative() {
             -self
         } else {
             self
         }
     }
 
-    /// Square root by one Newton step on the `f64` root; `sqrt(0) = 0`, negative input gives NaN.
+    /// Square root by one Newton step on the `f64` root; `sqrt(±0) = ±0`, `sqrt(∞) = ∞`,
+    /// negative input gives NaN.
     pub fn sqrt(self) -> Self {
-        if self.hi == 0.0 {
-            return Self::ZERO;
+        if self.hi == 0.0 || !self.hi.is_finite() || self.hi < 0.0 {
+            return Self::from_f64(self.hi.sqrt());
         }
         let x = self.hi.sqrt();
         let residual = self - Self::product(x, x);
@@ -115,14 +116,22 @@ impl DoubleDouble {
         }
     }
 
-    /// Nearest integer, halves rounded up.
+    /// Nearest integer, halves rounded away from zero (as `f64::round`).
     pub fn round(self) -> Self {
-        (self + Self::from_f64(0.5)).floor()
+        let half = Self::from_f64(0.5);
+        if self.hi.is_sign_negative() {
+            -(half - self).floor()
+        } else {
+            (self + half).floor()
+        }
     }
 
     /// Multiplication by an `f64`.
     pub fn mul_f64(self, b: f64) -> Self {
         let (p, e) = two_prod(self.hi, b);
+        if !p.is_finite() {
+            return Self::from_f64(p);
+        }
         let e = e + self.lo * b;
         let (hi, lo) = quick_two_sum(p, e);
         Self { hi, lo }
@@ -149,6 +158,10 @@ impl Add for DoubleDouble {
     type Output = Self;
     fn add(self, b: Self) -> Self {
         let (s, e) = two_sum(self.hi, b.hi);
+        if !s.is_finite() {
+            // An infinite or NaN operand, or overflow: the f64 sum says which.
+            return Self::from_f64(s);
+        }
         let (t, f) = two_sum(self.lo, b.lo);
         let (s, e) = quick_two_sum(s, e + t);
         let (hi, lo) = quick_two_sum(s, e + f);
@@ -168,6 +181,9 @@ impl Mul for DoubleDouble {
     type Output = Self;
     fn mul(self, b: Self) -> Self {
         let (p, e) = two_prod(self.hi, b.hi);
+        if !p.is_finite() {
+            return Self::from_f64(p);
+        }
         let e = e + (self.hi * b.lo + self.lo * b.hi);
         let (hi, lo) = quick_two_sum(p, e);
         Self { hi, lo }
@@ -178,6 +194,10 @@ impl Div for DoubleDouble {
     type Output = Self;
     fn div(self, b: Self) -> Self {
         let q1 = self.hi / b.hi;
+        if !q1.is_finite() || b.hi.is_infinite() {
+            // Division by zero or by infinity, an infinite or NaN operand, or overflow.
+            return Self::from_f64(q1);
+        }
         let r = self - b.mul_f64(q1);
         let q2 = r.hi / b.hi;
         let r = r - b.mul_f64(q2);

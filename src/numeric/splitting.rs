@@ -104,6 +104,8 @@ pub struct LiePoissonSplitting<'a, T: RealField + Copy> {
     coefficients: Vector3<T>,
     kick: Kick<'a, T>,
     order: SplittingOrder,
+    /// Yoshida's weights `(w₁, w₀)` (computed once: `cbrt` costs as much as a turn).
+    triple_jump: (T, T),
 }
 
 impl<'a, T: RealField + Copy> LiePoissonSplitting<'a, T> {
@@ -140,6 +142,9 @@ impl<'a, T: RealField + Copy> LiePoissonSplitting<'a, T> {
             .sort_by(|&a, &b| m[a].partial_cmp(&m[b]).unwrap_or(std::cmp::Ordering::Equal));
         let reference = axes_by_moment[1];
         let coefficients = m.map(|moment| moment.recip() - m[reference].recip());
+        let cube_root_of_two = constant::<T>(2.0).cbrt();
+        let outer = T::one() / (constant::<T>(2.0) - cube_root_of_two);
+        let inner = T::one() - constant::<T>(2.0) * outer;
         Ok(Self {
             frame,
             frame_rotation,
@@ -147,6 +152,7 @@ impl<'a, T: RealField + Copy> LiePoissonSplitting<'a, T> {
             coefficients,
             kick,
             order,
+            triple_jump: (outer, inner),
         })
     }
 
@@ -175,9 +181,7 @@ impl<'a, T: RealField + Copy> LiePoissonSplitting<'a, T> {
         match self.order {
             SplittingOrder::Second => self.strang_step(state, h),
             SplittingOrder::Fourth => {
-                let cube_root_of_two = constant::<T>(2.0).cbrt();
-                let outer = T::one() / (constant::<T>(2.0) - cube_root_of_two);
-                let inner = T::one() - constant::<T>(2.0) * outer;
+                let (outer, inner) = self.triple_jump;
                 self.strang_step(state, outer * h);
                 self.strang_step(state, inner * h);
                 self.strang_step(state, outer * h);
@@ -226,6 +230,7 @@ impl<'a, T: RealField + Copy> LiePoissonSplitting<'a, T> {
 
     /// Exact flow of `Ḣ = M(t, q)` (time and attitude frozen) over `h`, in principal-frame
     /// components.
+    #[inline(always)]
     fn apply_kick(&self, state: &mut SplittingState<T>, h: T) {
         let moment = match self.kick {
             Kick::None => return,

@@ -292,13 +292,23 @@ proptest! {
     }
 
     #[test]
-    fn powers_agree(x in (0.01f64..100.0).prop_map(|v| dd(v) / dd(1.7)), n in -20i32..20) {
-        let by_multiplication = (0..n.abs()).fold(Dd::ONE, |p, _| p * x);
-        let expected = if n < 0 { Dd::ONE / by_multiplication } else { by_multiplication };
-        prop_assert!(close(x.powi(n), expected, 1e-30));
-        let half = x.powf(dd(0.5));
-        prop_assert!(close(half, x.sqrt(), 2e-31 * (1.0 + x.ln().abs().to_f64())));
-        prop_assert!(close(x.powf(dd(n as f64)), expected, 1e-30));
+    fn powers_match_exact_rational_powers(x in (0.01f64..100.0).prop_map(|v| dd(v) / dd(1.7)), n in -20i32..20) {
+        let q = exact(x);
+        let truth = if n < 0 {
+            BigRational::one() / num_traits::pow(q.clone(), n.unsigned_abs() as usize)
+        } else {
+            num_traits::pow(q.clone(), n as usize)
+        };
+        // Binary powering: a partial power's rounding is raised with it, so the relative
+        // error grows like |n| roundings of about 2^-105.
+        let bound_of_powi = (n.abs() as f64 + 2.0) * 2f64.powi(-105);
+        prop_assert!(error_of(x.powi(n), &truth) < bound_of_powi);
+        prop_assert!(error_of(x.powf(dd(n as f64)), &truth) < bound_of_powi);
+        // A non-integer exponent: (x^(n/3))³ = xⁿ, through exp(y ln x).
+        let third = x.powf(dd(n as f64) / dd(3.0));
+        let bound = 2e-31 * (1.0 + (x.ln().to_f64() * n as f64).abs());
+        prop_assert!(relative_error(&exact(third * third * third), &truth) < bound);
+        prop_assert!(close(x.powf(dd(0.5)), x.sqrt(), 2e-31 * (1.0 + x.ln().abs().to_f64())));
     }
 
     #[test]
@@ -411,18 +421,27 @@ fn rational_polynomials_evaluate_to_the_exact_rational() {
             let truth = exact_q(exact_value.as_num().unwrap());
             let inputs: Vec<Dd> = values.iter().map(rational_to).collect();
             let by_tree: Dd = e.eval(&|s| value_of(s).map(|k| inputs[k])).unwrap();
+            let mut by_tape = [Dd::ZERO];
+            Tape::compile(std::slice::from_ref(&e), &names)
+                .unwrap()
+                .eval(&inputs, &mut by_tape)
+                .unwrap();
             // Rounding errors are relative to the terms, not to a cancelled total.
             let scale = e
                 .terms()
                 .iter()
                 .map(|t| t.eval(&|s| value_of(s).map(|k| inputs[k])).unwrap().abs())
                 .fold(Dd::ZERO, |a, b| a + b);
-            let error = (exact(by_tree) - &truth).abs().to_f64().unwrap() / scale.to_f64();
-            worst = worst.max(error);
-            assert!(error < 1e-30, "{e} at {values:?}: {error:e}");
+            for value in [by_tree, by_tape[0]] {
+                let error = (exact(value) - &truth).abs().to_f64().unwrap() / scale.to_f64();
+                worst = worst.max(error);
+                assert!(error < 1e-30, "{e} at {values:?}: {error:e}");
+            }
         }
     }
-    println!("largest error of Expr::eval::<DoubleDouble> relative to the terms: {worst:e}");
+    println!(
+        "largest error of the tree and the tape in DoubleDouble relative to the terms: {worst:e}"
+    );
 }
 
 #[test]

@@ -19,7 +19,8 @@
 //! * `atan2(y, x)`: `z₀` = the `f64` `atan2`, then one Newton step on `sin z = y/ρ` (or on
 //!   `cos z = x/ρ`, whichever is better conditioned), `ρ = √(x² + y²)`.
 //! * `sqrt`: one Newton step (see [`DoubleDouble::sqrt`]); `cbrt` likewise.
-//! * `powi`: binary powering, relative error about `2·log₂|n|` units of 2^-106.
+//! * `powi`: binary powering; the rounding of a partial power is raised with it, so the
+//!   relative error grows like `|n|` roundings, about `(|n| + 2)·2^-105`.
 //! * `powf(x, y) = exp(y ln x)`: the absolute error of `y ln x` becomes a relative error, so
 //!   the accuracy is about `(1 + |y ln x|)·2^-105` (1e-29 for a result near 1e300).
 //! * `sinh`, `cosh`, `tanh`, `asinh`, `acosh`, `atanh`, `asin`, `acos`, `atan`, `exp2`, `log2`,

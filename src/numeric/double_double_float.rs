@@ -91,10 +91,11 @@ impl Num for DoubleDouble {
 
     /// Parses `[+-]digits[.digits]` in `radix` (2 to 36), with an exponent `e±n` in radix
     /// 10, or `inf`, `infinity`, `nan`. The digits are accumulated exactly while they fit 106
-    /// bits and the result is scaled by one power of the radix `r^n` (binary powering), so
-    /// a decimal of up to 31 significant digits is read to within about
-    /// `(2 + 2 log₂|n|)·2^-106` relative (exact powers up to 10^45); below 2^-969 the
-    /// trailing part is subnormal and precision is lost.
+    /// bits and the result is scaled by one power of the radix `r^n` (binary powering). The
+    /// powers of ten are exact up to 10^45 (`2^n 5^n`, with `5^45 < 2^106`), so a decimal of
+    /// up to 31 significant digits with such an exponent is read to a few units of 2^-106;
+    /// larger powers add their own rounding (12 units of 2^-106 measured at 10^-280). Below
+    /// 2^-969 the trailing part is subnormal and precision is lost.
     fn from_str_radix(text: &str, radix: u32) -> Result<Self, NumericError> {
         let refuse = |reason: &str| NumericError::InvalidInput {
             what: format!("double-double literal '{text}'"),

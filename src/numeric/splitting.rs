@@ -33,11 +33,13 @@
 //! `C`, `τ` with `A`: second order.
 //! [`SplittingOrder::Fourth`] chains three such steps of sizes `w₁h, w₀h, w₁h` (Yoshida's
 //! triple jump, `w₁ = 1/(2 − 2^⅓)`, `w₀ = 1 − 2w₁`), fourth order as a symmetric
-//! composition of a symmetric method; its middle step runs backward (`w₀ < 0`), so a moment
-//! of time is also evaluated at `t + (1 − w₁)h`, slightly before `t`. For an axisymmetric body (`κ_a = 0` or `κ_b = 0`)
-//! and torque-free motion the pieces commute and the step is exact. `|H|` is conserved by every torque-free
-//! sub-flow, and so is the fixed-frame momentum `q H q⁻¹`. A body given by its full tensor is
-//! integrated in its principal frame ([`BodyInertia::principal_frame`]).
+//! composition of a symmetric method. Its middle step runs backward (`w₀ < 0`), so a moment
+//! of time is evaluated at `t + w₁h` (beyond `t + h`) and `t + (1 − w₁)h` (before `t`) too.
+//! For an axisymmetric body (`κ_a = 0` or `κ_b = 0`) and torque-free motion the pieces
+//! commute and the step is exact. `|H|` is conserved by every torque-free sub-flow, and so is
+//! the fixed-frame momentum `q H q⁻¹`: under a moment both change only in the kicks. A body
+//! given by its full tensor is integrated in its principal frame
+//! ([`BodyInertia::principal_frame`]).
 
 use super::body_inertia::{BodyInertia, PrincipalFrame};
 use super::error::NumericError;

@@ -139,7 +139,7 @@ fn exp_of_a_large_argument_matches_the_exact_power_of_e() {
 fn reduction_of_large_angles_keeps_sin_and_cos_accurate() {
     // sin(x + 2πm) = sin x with 2πm formed in double-double: the only difference is the
     // rounding of x + 2πm, about |x + 2πm|·2^-106 absolute.
-    for m in [1.0, 10.0, 1e3, 1e6] {
+    for m in [1.0, 10.0, 1e3, 1e6, 1e15] {
         let x = dd(1.0) / dd(3.0);
         let shifted = x + Dd::TAU.mul_f64(m);
         let expected_error = (shifted.hi().abs() * 2f64.powi(-105)).max(1e-31);
@@ -500,5 +500,66 @@ fn the_tape_in_double_double_estimates_the_f64_error() {
     println!("estimated / true f64 error: {ratios:?}");
     for r in ratios {
         assert!((r - 1.0).abs() < 1e-6, "{r}");
+    }
+}
+
+type Pair = (&'static str, fn(Dd) -> Dd, fn(f64) -> f64);
+
+#[test]
+fn special_and_extreme_arguments_behave_as_in_f64() {
+    let functions: [Pair; 22] = [
+        ("sqrt", Float::sqrt, f64::sqrt),
+        ("cbrt", Float::cbrt, f64::cbrt),
+        ("exp", Float::exp, f64::exp),
+        ("exp2", Float::exp2, f64::exp2),
+        ("exp_m1", Float::exp_m1, f64::exp_m1),
+        ("ln", Float::ln, f64::ln),
+        ("log2", Float::log2, f64::log2),
+        ("log10", Float::log10, f64::log10),
+        ("ln_1p", Float::ln_1p, f64::ln_1p),
+        ("sin", Float::sin, f64::sin),
+        ("cos", Float::cos, f64::cos),
+        ("tan", Float::tan, f64::tan),
+        ("asin", Float::asin, f64::asin),
+        ("acos", Float::acos, f64::acos),
+        ("atan", Float::atan, f64::atan),
+        ("sinh", Float::sinh, f64::sinh),
+        ("cosh", Float::cosh, f64::cosh),
+        ("tanh", Float::tanh, f64::tanh),
+        ("asinh", Float::asinh, f64::asinh),
+        ("acosh", Float::acosh, f64::acosh),
+        ("atanh", Float::atanh, f64::atanh),
+        ("abs", Float::abs, f64::abs),
+    ];
+    let arguments = [
+        f64::NAN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        2.0,
+        -2.0,
+        0.5,
+        -0.7,
+        1e-300,
+        -1e-300,
+        1e300,
+        -1e300,
+        800.0,
+        -800.0,
+    ];
+    for (name, double_double, float) in functions {
+        for x in arguments {
+            let (d, f) = (double_double(dd(x)), float(x));
+            let what = format!("{name}({x:e}) = {d:?}, f64 says {f:e}");
+            assert_eq!(d.is_nan(), f.is_nan(), "{what}");
+            if f.is_infinite() || f == 0.0 {
+                assert_eq!(d.to_f64(), f, "{what}");
+            } else if !f.is_nan() {
+                assert!(((d.to_f64() - f) / f).abs() < 1e-14, "{what}");
+            }
+        }
     }
 }

@@ -12,10 +12,11 @@
 //!   `u = x/(2 + x)` directly for `|x| < 0.4` (`|u| < 0.25`), so it keeps relative accuracy.
 //! * `sin`, `cos`: `k = round(x / (π/2))` (a double-double integer), `r = x − k π/2` with
 //!   π/2 in three parts, then the Taylor series of `sin r` and `cos r` for `|r| ≤ π/4` and
-//!   the quadrant's signs. The reduction's absolute error is about `2^-106|r| + |x|·2^-160`:
-//!   full accuracy for `|x| < 2^50 ≈ 1e15`, then degrading (absolute error about `|x|·2^-160`,
-//!   so `sin` of `|x| > 2^160` is meaningless, where `f64::sin` would still be exact).
-//!   Relative accuracy holds near the zeros of `sin` and `cos` too.
+//!   the quadrant's signs. The reduction's absolute error is about `2^-106|r| + |x|·2^-160`,
+//!   below 2^-100 for `|x| < 2^60 ≈ 1.2e18`. Beyond, the pair falls back to the `f64`
+//!   functions of `hi` with the first-order correction for `lo` (`sin hi + lo cos hi`):
+//!   finite, but accurate only to about 1e-16. Relative accuracy holds near the zeros of
+//!   `sin` and `cos` too.
 //! * `atan2(y, x)`: `z₀` = the `f64` `atan2`, then one Newton step on `sin z = y/ρ` (or on
 //!   `cos z = x/ρ`, whichever is better conditioned), `ρ = √(x² + y²)`.
 //! * `sqrt`: one Newton step (see [`DoubleDouble::sqrt`]); `cbrt` likewise.
@@ -43,6 +44,12 @@ const EXP_OVERFLOW: f64 = 709.79;
 const EXP_UNDERFLOW: f64 = -745.2;
 /// A series stops when its term is below this fraction of the sum (2^-110).
 const SERIES_TOLERANCE: f64 = 7.7e-34;
+/// No series here needs more terms (atanh at |u| = 0.25 needs 27); the bound only makes
+/// termination certain.
+const MAX_SERIES_TERMS: usize = 64;
+/// Beyond this `|x|` the reduction of `sin`, `cos` by three-part π/2 is no longer exact
+/// enough (2^60).
+const TRIGONOMETRIC_LARGE: f64 = (1u64 << 60) as f64;
 /// Beyond this `sinh`, `cosh` drop `e^-|x|` (below 2^-110 relative of `e^|x|`) and `tanh` is ±1.
 const HYPERBOLIC_LARGE: f64 = 40.0;
 /// Beyond this `asinh` and `acosh` use `ln(2x)` (the next term, `1/(4x²)`, is below 2^-500).
@@ -81,7 +88,7 @@ fn atanh_series(u: Dd) -> Dd {
     let u2 = u * u;
     let mut power = u;
     let mut sum = u;
-    for n in 1.. {
+    for n in 1..MAX_SERIES_TERMS {
         power = power * u2;
         let term = power / Dd::from_f64((2 * n + 1) as f64);
         sum += term;
@@ -97,7 +104,7 @@ fn sin_cos_series(r: Dd) -> (Dd, Dd) {
     let r2 = r * r;
     let (mut sin, mut sin_term) = (r, r);
     let (mut cos, mut cos_term) = (Dd::ONE, Dd::ONE);
-    for n in 1.. {
+    for n in 1..MAX_SERIES_TERMS {
         let k = (2 * n) as f64;
         cos_term = -(cos_term * r2) / Dd::from_f64((k - 1.0) * k);
         sin_term = -(sin_term * r2) / Dd::from_f64(k * (k + 1.0));
@@ -121,7 +128,7 @@ impl DoubleDouble {
         let small = Dd::from_parts(r.hi / 512.0, r.lo / 512.0);
         let mut term = small;
         let mut s = small;
-        for n in 2.. {
+        for n in 2..MAX_SERIES_TERMS {
             term = term * small / Dd::from_f64(n as f64);
             s += term;
             if term.hi.abs() <= SERIES_TOLERANCE * s.hi.abs() {
@@ -187,6 +194,13 @@ impl DoubleDouble {
         }
         if self.hi.abs() <= std::f64::consts::FRAC_PI_4 {
             return sin_cos_series(self);
+        }
+        if self.hi.abs() >= TRIGONOMETRIC_LARGE {
+            let (sin, cos) = self.hi.sin_cos();
+            return (
+                Dd::from_f64(sin) + Dd::from_f64(cos * self.lo),
+                Dd::from_f64(cos) - Dd::from_f64(sin * self.lo),
+            );
         }
         // k = k_hi + k_lo, both integer-valued f64 (the floor of a double-double is).
         let k = (self * Dd::FRAC_2_PI).round();

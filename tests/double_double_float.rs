@@ -3,9 +3,9 @@
 //! conversions, exact evaluation of rational polynomials through `Expr::eval` and the tape,
 //! and the double-double tape as an estimate of the f64 rounding error.
 
-use kinetics::algebra::{rational_to, Expr, Symbol, Q};
+use kinetics::algebra::{rational_to, Expr, Func, Symbol, Q};
 use kinetics::numeric::double_double::DoubleDouble;
-use kinetics::numeric::Tape;
+use kinetics::numeric::{Instruction, Tape};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Float, FloatConst, Num, NumCast, One, Signed, ToPrimitive, Zero};
@@ -561,5 +561,42 @@ fn special_and_extreme_arguments_behave_as_in_f64() {
                 assert!(((d.to_f64() - f) / f).abs() < 1e-14, "{what}");
             }
         }
+    }
+}
+
+#[test]
+fn the_tape_runs_its_elementary_instructions_in_double_double() {
+    // Outputs that use Sin, Cos, Tan, Sqrt and Powf; identities check them to ~1e-31.
+    let x = Expr::symbol("x");
+    let (sin, cos, tan) = (
+        Expr::func(Func::Sin, x.clone()),
+        Expr::func(Func::Cos, x.clone()),
+        Expr::func(Func::Tan, x.clone()),
+    );
+    let outputs = [
+        sin.powi(2) + cos.powi(2),
+        tan * &cos - &sin,
+        x.checked_pow(&Expr::rational(1, 2)).unwrap(),
+        x.checked_pow(&Expr::rational(1, 3)).unwrap(),
+    ];
+    let tape = Tape::compile(&outputs, &[Symbol::new("x")]).unwrap();
+    let uses = |wanted: fn(&Instruction) -> bool| tape.instructions().iter().any(wanted);
+    assert!(
+        uses(|i| matches!(i, Instruction::Sin(_))) && uses(|i| matches!(i, Instruction::Tan(_)))
+    );
+    assert!(
+        uses(|i| matches!(i, Instruction::Sqrt(_))) && uses(|i| matches!(i, Instruction::Powf(..)))
+    );
+    for k in 1..=30 {
+        let x = dd(k as f64) / dd(3.7);
+        let mut out = [Dd::ZERO; 4];
+        tape.eval(&[x], &mut out).unwrap();
+        assert!((out[0] - Dd::ONE).abs().to_f64() < 2e-31, "{out:?}");
+        assert!(
+            (out[1]).abs().to_f64() < 1e-31 * (1.0 + x.tan().abs().to_f64()),
+            "{out:?}"
+        );
+        assert!(close(out[2] * out[2], x, 1e-31));
+        assert!(close(out[3] * out[3] * out[3], x, 2e-31));
     }
 }

@@ -30,10 +30,12 @@
 //!   cannot hold more): `sign · mantissa · 2^exponent`, exact for zero, subnormal and `f64`
 //!   values.
 //! * `mul_add(a, b)` is `self·a + b`, two roundings of 2^-106 rather than one.
-//! * `%` is `a − b·trunc(a/b)`, exact when the quotient is below 2^53, otherwise with an
-//!   absolute error of about `|a|·2^-105`.
-//! * Conversions (`NumCast::from`) are exact from integers up to 128 bits and from `f32`
-//!   and `f64`; `to_i64` and the other integer conversions truncate toward zero exactly.
+//! * `%` is `a − b·trunc(a/b)` with the sign of `a`: exact when `b` is an `f64` and the
+//!   quotient below 2^53, otherwise with an absolute error of about `|a|·2^-105`.
+//! * Conversions (`NumCast::from`) are exact from `f32`, `f64` and integers below 2^106 in
+//!   magnitude (larger `i128`/`u128` are rounded to about 2^-106); from another
+//!   double-double they go through `f64` (or an integer when the `f64` is one above 2^53).
+//!   `to_i64` and the other integer conversions truncate toward zero exactly.
 
 use super::double_double::{quick_two_sum, DoubleDouble};
 use super::error::NumericError;

@@ -3,6 +3,9 @@
 pub mod body_inertia;
 pub mod dop853;
 pub mod double_double;
+pub mod double_double_constants;
+pub mod double_double_elementary;
+pub mod double_double_float;
 pub mod dual;
 pub mod elliptic;
 pub mod error;

@@ -13,8 +13,9 @@
 //!   no longer than `step`, landing on each sample time.
 //! * [`Method::Dop853`]: adaptive Dormand–Prince 8(5,3); samples come from its dense output,
 //!   so the step sequence does not depend on the sampling.
-//! * [`Method::Splitting`]: the structure-preserving Lie–Poisson splitting (torque-free or a
-//!   constant moment), second or fourth order, equal steps like `Rk4`.
+//! * [`Method::Splitting`]: the structure-preserving Lie–Poisson splitting (torque-free, or a
+//!   moment that does not depend on `ω`: constant, or a function of time or attitude), second
+//!   or fourth order, equal steps like `Rk4`.
 
 use super::body_inertia::BodyInertia;
 use super::dop853::{Dop853, Dop853Settings, DEFAULT_MAX_STEPS};
@@ -359,7 +360,7 @@ fn propagator<'a, T: RealField + Copy>(
             validate_fixed_step(step, end - start)?;
             let splitting = LiePoissonSplitting::new(&problem.inertia, &problem.torque, order)?;
             Ok(Box::new(SplittingPropagator {
-                state: splitting.to_splitting_state(&initial),
+                state: splitting.to_splitting_state(start, &initial),
                 splitting,
                 t: start,
                 max_step: step,
@@ -453,18 +454,20 @@ impl<T: RealField + Copy> Propagator<T> for Rk4Propagator<'_, T> {
     }
 }
 
-struct SplittingPropagator<T: RealField + Copy> {
-    splitting: LiePoissonSplitting<T>,
+struct SplittingPropagator<'a, T: RealField + Copy> {
+    splitting: LiePoissonSplitting<'a, T>,
     state: SplittingState<T>,
     t: T,
     max_step: T,
     steps: usize,
 }
 
-impl<T: RealField + Copy> Propagator<T> for SplittingPropagator<T> {
+impl<T: RealField + Copy> Propagator<T> for SplittingPropagator<'_, T> {
     fn advance_to(&mut self, t: T) -> Result<RigidBodyState<T>, NumericError> {
         let (count, h) = equal_steps(self.t, t, self.max_step);
-        for _ in 0..count {
+        for k in 0..count {
+            // The clock restarts from the exact step time, as Rk4's does.
+            self.state.time = self.t + h * constant::<T>(k as f64);
             self.splitting.step(&mut self.state, h);
         }
         self.steps += count;

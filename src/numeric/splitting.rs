@@ -16,46 +16,73 @@
 //!   `H` by `|H| h / I_r`. This piece commutes with the other two (`|H|²` is invariant under
 //!   every turn about a body axis).
 //!
-//! A constant moment adds the flow `Ḣ = M_body` with `q` frozen, exact as a kick
-//! `H ← H + h M_body` (for a moment fixed in space `M_body = q⁻¹ M_fixed`, constant while `q`
-//! is frozen). With `A`, `B` the flows of the `a` and `b` pieces, `C` that of the `|H|²`
-//! piece and `K` the kick, one step applies, in this order,
+//! A moment adds the flow `Ḣ = M_body(t, q)` with `q` and the time frozen, exact as a kick
+//! `H ← H + h M_body(t, q)` (for a moment fixed in space `M_body = q⁻¹ M_fixed`). The time is
+//! a variable of the extended, autonomous system with `ṫ = 1` in the drift (the torque-free
+//! pieces, which do not depend on `t`), so a moment that varies with time or attitude
+//! ([`Torque::Time`], [`Torque::Attitude`]) is kicked exactly too. A moment that depends on
+//! `ω` changes along its own kick and has no such exact flow: [`Torque::Function`] is
+//! refused. With `A`, `B` the flows of the `a` and `b` pieces, `C` that of the `|H|²` piece,
+//! `τ` the clock and `K` the kick, one step from `t` applies, in this order,
 //!
 //! ```text
-//! K(h/2), A(h/2), B(h), A(h/2), C(h), K(h/2)
+//! K(h/2) at t, A(h/2), B(h), A(h/2), C(h), τ(h), K(h/2) at t + h
 //! ```
 //!
-//! a symmetric (Strang) composition, since `C` commutes with `A` and `B`: second order.
+//! a symmetric (Strang) composition, since `B`, `C` and `τ` commute with one another and
+//! `C`, `τ` with `A`: second order.
 //! [`SplittingOrder::Fourth`] chains three such steps of sizes `w₁h, w₀h, w₁h` (Yoshida's
 //! triple jump, `w₁ = 1/(2 − 2^⅓)`, `w₀ = 1 − 2w₁`), fourth order as a symmetric
-//! composition of a symmetric method. For an axisymmetric body (`κ_a = 0` or `κ_b = 0`)
-//! and torque-free motion the pieces commute and the step is exact. `|H|` is conserved by every torque-free
-//! sub-flow, and so is the fixed-frame momentum `q H q⁻¹`. A body given by its full tensor is
-//! integrated in its principal frame ([`BodyInertia::principal_frame`]).
+//! composition of a symmetric method. Its middle step runs backward (`w₀ < 0`), so a moment
+//! of time is evaluated at `t + w₁h` (beyond `t + h`) and `t + (1 − w₁)h` (before `t`) too.
+//! For an axisymmetric body (`κ_a = 0` or `κ_b = 0`) and torque-free motion the pieces
+//! commute and the step is exact. `|H|` is conserved by every torque-free sub-flow, and so is
+//! the fixed-frame momentum `q H q⁻¹`: under a moment both change only in the kicks. A body
+//! given by its full tensor is integrated in its principal frame
+//! ([`BodyInertia::principal_frame`]).
 
 use super::body_inertia::{BodyInertia, PrincipalFrame};
 use super::error::NumericError;
 use super::ode::constant;
 use super::rigid_body_state::RigidBodyState;
-use super::torque::Torque;
+use super::torque::{AttitudeTorqueFunction, TimeTorqueFunction, Torque};
 use nalgebra::{Quaternion, RealField, UnitQuaternion, Vector3};
 
-/// The moment the splitting can integrate exactly: constant in the body or in space.
-#[derive(Debug, Clone, Copy)]
-enum Kick<T: RealField + Copy> {
+/// A moment the splitting can kick exactly: one that does not depend on `ω`.
+#[derive(Clone, Copy)]
+enum Kick<'a, T: RealField + Copy> {
     None,
-    /// Principal-frame components.
+    /// Constant principal-frame components.
     Body(Vector3<T>),
+    /// Constant fixed-frame components.
     Fixed(Vector3<T>),
+    /// Body-frame components as a function of time.
+    Time(&'a TimeTorqueFunction<T>),
+    /// Body-frame components as a function of time and the body's attitude.
+    Attitude(&'a AttitudeTorqueFunction<T>),
 }
 
-/// Angular momentum in the principal frame and the attitude of the principal frame.
+impl<T: RealField + Copy> std::fmt::Debug for Kick<'_, T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Kick::None => write!(f, "None"),
+            Kick::Body(moment) => write!(f, "Body({moment:?})"),
+            Kick::Fixed(moment) => write!(f, "Fixed({moment:?})"),
+            Kick::Time(_) => write!(f, "Time(..)"),
+            Kick::Attitude(_) => write!(f, "Attitude(..)"),
+        }
+    }
+}
+
+/// Angular momentum in the principal frame, the attitude of the principal frame and the time.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SplittingState<T: RealField + Copy> {
     /// `H` in principal-frame components.
     pub momentum: Vector3<T>,
     /// Maps principal-frame components to fixed-frame ones.
     pub orientation: UnitQuaternion<T>,
+    /// The time `t` (the clock of the drift).
+    pub time: T,
 }
 
 /// Order of the composition.
@@ -69,7 +96,7 @@ pub enum SplittingOrder {
 
 /// The splitting integrator of one body under one moment.
 #[derive(Debug, Clone)]
-pub struct LiePoissonSplitting<T: RealField + Copy> {
+pub struct LiePoissonSplitting<'a, T: RealField + Copy> {
     frame: PrincipalFrame<T>,
     /// Rotation principal frame → body frame as a quaternion.
     frame_rotation: UnitQuaternion<T>,
@@ -77,16 +104,18 @@ pub struct LiePoissonSplitting<T: RealField + Copy> {
     reference: usize,
     /// `κ_i = 1/I_i − 1/I_r` (zero on the reference axis).
     coefficients: Vector3<T>,
-    kick: Kick<T>,
+    kick: Kick<'a, T>,
     order: SplittingOrder,
+    /// Yoshida's weights `(w₁, w₀)` (computed once: `cbrt` costs as much as a turn).
+    triple_jump: (T, T),
 }
 
-impl<T: RealField + Copy> LiePoissonSplitting<T> {
-    /// Validates the inertia and sets up the principal frame. A torque given as a function
-    /// is refused: its flow has no exact sub-step.
+impl<'a, T: RealField + Copy> LiePoissonSplitting<'a, T> {
+    /// Validates the inertia and sets up the principal frame. A [`Torque::Function`] is
+    /// refused: it may depend on `ω`, and then its kick has no exact flow.
     pub fn new(
         inertia: &BodyInertia<T>,
-        torque: &Torque<T>,
+        torque: &'a Torque<T>,
         order: SplittingOrder,
     ) -> Result<Self, NumericError> {
         inertia.validate()?;
@@ -96,12 +125,15 @@ impl<T: RealField + Copy> LiePoissonSplitting<T> {
             Torque::None => Kick::None,
             Torque::Body(moment) => Kick::Body(frame.rotation.inverse_transform_vector(moment)),
             Torque::Fixed(moment) => Kick::Fixed(*moment),
+            Torque::Time(function) => Kick::Time(function.as_ref()),
+            Torque::Attitude(function) => Kick::Attitude(function.as_ref()),
             Torque::Function(_) => {
                 return Err(NumericError::InvalidInput {
                     what: "torque".to_string(),
-                    reason: "the splitting method integrates only torque-free motion or a \
-                             moment constant in the body or in space; use Rk4 or Dop853 for \
-                             a torque function"
+                    reason: "the splitting applies a moment as an exact kick H ← H + h·M with \
+                             ω frozen, which a moment depending on ω (a torque function of the \
+                             whole state) does not allow; give a moment of time or attitude \
+                             alone (Torque::Time, Torque::Attitude) or use Rk4 or Dop853"
                         .to_string(),
                 })
             }
@@ -112,6 +144,9 @@ impl<T: RealField + Copy> LiePoissonSplitting<T> {
             .sort_by(|&a, &b| m[a].partial_cmp(&m[b]).unwrap_or(std::cmp::Ordering::Equal));
         let reference = axes_by_moment[1];
         let coefficients = m.map(|moment| moment.recip() - m[reference].recip());
+        let cube_root_of_two = constant::<T>(2.0).cbrt();
+        let outer = T::one() / (constant::<T>(2.0) - cube_root_of_two);
+        let inner = T::one() - constant::<T>(2.0) * outer;
         Ok(Self {
             frame,
             frame_rotation,
@@ -119,15 +154,17 @@ impl<T: RealField + Copy> LiePoissonSplitting<T> {
             coefficients,
             kick,
             order,
+            triple_jump: (outer, inner),
         })
     }
 
-    /// The splitting's variables for a body-frame state.
-    pub fn to_splitting_state(&self, state: &RigidBodyState<T>) -> SplittingState<T> {
+    /// The splitting's variables for a body-frame state at time `time`.
+    pub fn to_splitting_state(&self, time: T, state: &RigidBodyState<T>) -> SplittingState<T> {
         let omega = self.frame.rotation.inverse_transform_vector(&state.omega);
         SplittingState {
             momentum: omega.component_mul(&self.frame.moments),
             orientation: state.orientation * self.frame_rotation,
+            time,
         }
     }
 
@@ -140,19 +177,20 @@ impl<T: RealField + Copy> LiePoissonSplitting<T> {
         }
     }
 
-    /// One step of size `h` of the chosen order.
+    /// One step of size `h` of the chosen order; the state's time ends at `time + h`.
     pub fn step(&self, state: &mut SplittingState<T>, h: T) {
+        let start = state.time;
         match self.order {
             SplittingOrder::Second => self.strang_step(state, h),
             SplittingOrder::Fourth => {
-                let cube_root_of_two = constant::<T>(2.0).cbrt();
-                let outer = T::one() / (constant::<T>(2.0) - cube_root_of_two);
-                let inner = T::one() - constant::<T>(2.0) * outer;
+                let (outer, inner) = self.triple_jump;
                 self.strang_step(state, outer * h);
                 self.strang_step(state, inner * h);
                 self.strang_step(state, outer * h);
             }
         }
+        // The sub-steps' times add up to h only to rounding.
+        state.time = start + h;
     }
 
     /// One Strang step of size `h`.
@@ -164,6 +202,7 @@ impl<T: RealField + Copy> LiePoissonSplitting<T> {
         self.turn_about_axis(state, b, h);
         self.turn_about_axis(state, a, half);
         self.turn_about_momentum(state, h);
+        state.time += h;
         self.apply_kick(state, half);
         state.orientation.renormalize();
     }
@@ -191,12 +230,24 @@ impl<T: RealField + Copy> LiePoissonSplitting<T> {
         state.orientation *= UnitQuaternion::from_scaled_axis(turn);
     }
 
-    /// Exact flow of `Ḣ = M_body` (attitude frozen) over `h`.
+    /// Exact flow of `Ḣ = M(t, q)` (time and attitude frozen) over `h`, in principal-frame
+    /// components.
+    #[inline(always)]
     fn apply_kick(&self, state: &mut SplittingState<T>, h: T) {
         let moment = match self.kick {
             Kick::None => return,
             Kick::Body(moment) => moment,
             Kick::Fixed(moment) => state.orientation.inverse_transform_vector(&moment),
+            Kick::Time(function) => self
+                .frame
+                .rotation
+                .inverse_transform_vector(&function(state.time)),
+            Kick::Attitude(function) => {
+                let body_attitude = state.orientation * self.frame_rotation.inverse();
+                self.frame
+                    .rotation
+                    .inverse_transform_vector(&function(state.time, &body_attitude))
+            }
         };
         state.momentum += moment * h;
     }

@@ -3,12 +3,21 @@
 //!
 //! A moment fixed in the body (a thruster) is used as is; a moment fixed in space (a
 //! constant field) is rotated into the body frame, `M_body = q⁻¹ M_fixed q`.
+//!
+//! A moment given as a function says what it depends on, because the splitting integrator
+//! can apply a moment exactly only while it is constant along the kick `Ḣ = M` (attitude
+//! and time frozen): [`Torque::Time`] and [`Torque::Attitude`] qualify, a general
+//! [`Torque::Function`] of `ω` does not.
 
 use super::rigid_body_state::RigidBodyState;
-use nalgebra::{RealField, Vector3};
+use nalgebra::{RealField, UnitQuaternion, Vector3};
 
 /// Body-frame moment as a function of time and state, supplied by the caller.
 pub type TorqueFunction<T> = dyn Fn(T, &RigidBodyState<T>) -> Vector3<T>;
+/// Body-frame moment as a function of time alone.
+pub type TimeTorqueFunction<T> = dyn Fn(T) -> Vector3<T>;
+/// Body-frame moment as a function of time and attitude `q` (body → fixed), not of `ω`.
+pub type AttitudeTorqueFunction<T> = dyn Fn(T, &UnitQuaternion<T>) -> Vector3<T>;
 
 /// The moment applied to the body.
 pub enum Torque<T: RealField + Copy> {
@@ -18,7 +27,13 @@ pub enum Torque<T: RealField + Copy> {
     Body(Vector3<T>),
     /// Constant moment with constant fixed-frame components.
     Fixed(Vector3<T>),
-    /// Any moment: body-frame components as a function of `t` and the state.
+    /// Body-frame components as a function of `t` alone (a programmed thruster, a
+    /// time-varying couple carried by the body).
+    Time(Box<TimeTorqueFunction<T>>),
+    /// Body-frame components as a function of `t` and the attitude, not of `ω` (a moment
+    /// fixed in space that varies in time, a gravity-gradient moment).
+    Attitude(Box<AttitudeTorqueFunction<T>>),
+    /// Any moment: body-frame components as a function of `t` and the state, `ω` included.
     Function(Box<TorqueFunction<T>>),
 }
 
@@ -39,6 +54,8 @@ impl<T: RealField + Copy> Torque<T> {
             Torque::None => Vector3::zeros(),
             Torque::Body(moment) => *moment,
             Torque::Fixed(moment) => state().orientation.inverse_transform_vector(moment),
+            Torque::Time(function) => function(t),
+            Torque::Attitude(function) => function(t, &state().orientation),
             Torque::Function(function) => function(t, &state()),
         }
     }
@@ -47,7 +64,7 @@ impl<T: RealField + Copy> Torque<T> {
     /// evaluated).
     pub fn is_finite(&self) -> bool {
         match self {
-            Torque::None | Torque::Function(_) => true,
+            Torque::None | Torque::Time(_) | Torque::Attitude(_) | Torque::Function(_) => true,
             Torque::Body(moment) | Torque::Fixed(moment) => moment.iter().all(|v| v.is_finite()),
         }
     }
@@ -59,6 +76,8 @@ impl<T: RealField + Copy> std::fmt::Debug for Torque<T> {
             Torque::None => write!(f, "Torque::None"),
             Torque::Body(moment) => write!(f, "Torque::Body({moment:?})"),
             Torque::Fixed(moment) => write!(f, "Torque::Fixed({moment:?})"),
+            Torque::Time(_) => write!(f, "Torque::Time(..)"),
+            Torque::Attitude(_) => write!(f, "Torque::Attitude(..)"),
             Torque::Function(_) => write!(f, "Torque::Function(..)"),
         }
     }

@@ -1,6 +1,8 @@
 //! A scene as a numerical problem for the simulator: the centroidal inertia tensor, the
 //! initial angular velocity, and the moment of the loads about G, all from the givens'
-//! values. Loads are taken as fixed in the body; a load may vary with the time `t`.
+//! values. Loads are taken as fixed in the body; a load may vary with the time `t`, and then
+//! the moment is a [`Torque::Time`] (a function of time alone, so every method, the
+//! splitting included, can integrate it).
 
 use super::analysis::centroidal_body;
 use super::model::Scene;
@@ -30,7 +32,7 @@ fn number(scene: &Scene, e: &Expr, what: &str) -> Result<f64, Diagnostic> {
 }
 
 /// The moment of the loads about G as a torque: constant when it does not depend on time,
-/// otherwise a function of `t` evaluated through a compiled tape.
+/// otherwise a function of `t` alone evaluated through a compiled tape.
 fn torque(scene: &Scene, moment: &Vector) -> Result<Torque<f64>, Diagnostic> {
     let time = Symbol::new(TIME);
     // A scene that declares `t` uses it as a quantity of its own, not as the time.
@@ -74,19 +76,17 @@ fn torque(scene: &Scene, moment: &Vector) -> Result<Torque<f64>, Diagnostic> {
         )
     })?;
     let scratch = RefCell::new((values, Vec::new()));
-    Ok(Torque::Function(Box::new(
-        move |t: f64, _state: &RigidBodyState<f64>| {
-            let mut guard = scratch.borrow_mut();
-            let (inputs, registers) = &mut *guard;
-            inputs[0] = t;
-            let mut out = [0.0; 3];
-            // A non-finite moment is left as NaN; the driver stops with an error at that time.
-            if tape.eval_with(inputs, &mut out, registers).is_err() {
-                out = [f64::NAN; 3];
-            }
-            Vector3::new(out[0], out[1], out[2])
-        },
-    )))
+    Ok(Torque::Time(Box::new(move |t: f64| {
+        let mut guard = scratch.borrow_mut();
+        let (inputs, registers) = &mut *guard;
+        inputs[0] = t;
+        let mut out = [0.0; 3];
+        // A non-finite moment is left as NaN; the driver stops with an error at that time.
+        if tape.eval_with(inputs, &mut out, registers).is_err() {
+            out = [f64::NAN; 3];
+        }
+        Vector3::new(out[0], out[1], out[2])
+    })))
 }
 
 /// The initial-value problem of the scene's body, starting at rest orientation at t = 0.

@@ -117,6 +117,11 @@ impl Tape {
         self.outputs.len()
     }
 
+    /// The register holding each output, in output order.
+    pub(super) fn output_registers(&self) -> &[u32] {
+        &self.outputs
+    }
+
     /// Whether any instruction loads input `k`.
     pub fn reads_input(&self, k: usize) -> bool {
         self.instructions.contains(&Instruction::Input(k))
@@ -216,17 +221,7 @@ impl Tape {
         let lanes = outputs.chunks_exact_mut(self.outputs.len()).take(L);
         for (l, set_outputs) in lanes.enumerate() {
             for (k, (out, &reg)) in set_outputs.iter_mut().zip(&self.outputs).enumerate() {
-                let v = registers[reg as usize][l];
-                if !v.is_finite() {
-                    return Err(NumericError::InvalidInput {
-                        what: format!("tape output {k} of parameter set {}", first_set + l),
-                        reason: format!(
-                            "is {} (a singular or non-finite input)",
-                            if v.is_nan() { "NaN" } else { "infinite" }
-                        ),
-                    });
-                }
-                *out = v;
+                *out = finite_output(registers[reg as usize][l], k, first_set + l)?;
             }
         }
         Ok(())
@@ -260,6 +255,25 @@ fn lanes3<T: Copy, const L: usize>(
     for (((o, &a), &b), &c) in out.iter_mut().zip(x).zip(y).zip(z) {
         *o = f(a, b, c);
     }
+}
+
+/// `value` if it is finite, else the error naming output `output` of parameter set `set`
+/// (shared by every evaluator of a tape, so they refuse the same values alike).
+pub(super) fn finite_output<T: Float>(
+    value: T,
+    output: usize,
+    set: usize,
+) -> Result<T, NumericError> {
+    if value.is_finite() {
+        return Ok(value);
+    }
+    Err(NumericError::InvalidInput {
+        what: format!("tape output {output} of parameter set {set}"),
+        reason: format!(
+            "is {} (a singular or non-finite input)",
+            if value.is_nan() { "NaN" } else { "infinite" }
+        ),
+    })
 }
 
 pub(super) fn length_error(what: &str, expected: usize, got: usize) -> NumericError {

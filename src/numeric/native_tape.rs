@@ -14,7 +14,7 @@
 //! the interpreter bit for bit (see `native_tape_compile` for why).
 
 use super::error::NumericError;
-use super::tape::{finite_output, length_error};
+use super::tape::{length_error, non_finite_output};
 use cranelift_jit::JITModule;
 use std::fmt;
 use std::sync::Mutex;
@@ -91,10 +91,10 @@ impl NativeTape {
         // aliases it. The code it points into is owned by `self.module`, alive while `self`
         // is borrowed.
         unsafe { (self.function)(inputs.as_ptr(), outputs.as_mut_ptr()) };
-        for (k, out) in outputs.iter().enumerate() {
-            finite_output(*out, k, set)?;
+        match outputs.iter().position(|v| !v.is_finite()) {
+            None => Ok(()),
+            Some(k) => Err(non_finite_output(outputs[k], k, set)),
         }
-        Ok(())
     }
 }
 

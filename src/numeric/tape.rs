@@ -221,7 +221,11 @@ impl Tape {
         let lanes = outputs.chunks_exact_mut(self.outputs.len()).take(L);
         for (l, set_outputs) in lanes.enumerate() {
             for (k, (out, &reg)) in set_outputs.iter_mut().zip(&self.outputs).enumerate() {
-                *out = finite_output(registers[reg as usize][l], k, first_set + l)?;
+                let value = registers[reg as usize][l];
+                if !value.is_finite() {
+                    return Err(non_finite_output(value, k, first_set + l));
+                }
+                *out = value;
             }
         }
         Ok(())
@@ -257,25 +261,20 @@ fn lanes3<T: Copy, const L: usize>(
     }
 }
 
-/// `value` if it is finite, else the error naming output `output` of parameter set `set`
+/// The error for output `output` of parameter set `set` being the non-finite `value`
 /// (shared by every evaluator of a tape, so they refuse the same values alike).
-pub(super) fn finite_output<T: Float>(
-    value: T,
-    output: usize,
-    set: usize,
-) -> Result<T, NumericError> {
-    if value.is_finite() {
-        return Ok(value);
-    }
-    Err(NumericError::InvalidInput {
+#[cold]
+pub(super) fn non_finite_output<T: Float>(value: T, output: usize, set: usize) -> NumericError {
+    NumericError::InvalidInput {
         what: format!("tape output {output} of parameter set {set}"),
         reason: format!(
             "is {} (a singular or non-finite input)",
             if value.is_nan() { "NaN" } else { "infinite" }
         ),
-    })
+    }
 }
 
+#[cold]
 pub(super) fn length_error(what: &str, expected: usize, got: usize) -> NumericError {
     NumericError::InvalidInput {
         what: what.into(),

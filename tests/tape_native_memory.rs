@@ -1,29 +1,40 @@
 //! Dropping a [`NativeTape`] frees its machine code: a counting global allocator (the JIT
-//! takes its code pages from the global allocator) sees the live heap return to the same
-//! size after each compile–evaluate–drop cycle. Alone in its test binary so that no other
-//! test allocates meanwhile.
+//! takes its code pages from the global allocator) sees the bytes the test's thread holds
+//! return to the same count after each compile–evaluate–drop cycle. The count is per
+//! thread because the test harness's own thread allocates at times of its choosing.
 
 use kinetics::algebra::{Expr, Func, Symbol};
 use kinetics::numeric::Tape;
 use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::cell::Cell;
 
-/// The system allocator, counting the bytes currently allocated.
+/// The system allocator, counting per thread the bytes allocated minus those freed.
 struct Counting;
 
-static LIVE_BYTES: AtomicUsize = AtomicUsize::new(0);
+thread_local! {
+    static HELD_BYTES: Cell<isize> = const { Cell::new(0) };
+}
+
+fn count(bytes: isize) {
+    // Fails only while the thread is being torn down, after the test.
+    let _ = HELD_BYTES.try_with(|held| held.set(held.get() + bytes));
+}
+
+fn held_bytes() -> isize {
+    HELD_BYTES.with(Cell::get)
+}
 
 // SAFETY: every call is forwarded unchanged to the system allocator; the counter only
-// observes sizes.
+// observes sizes (and does not allocate).
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        LIVE_BYTES.fetch_add(layout.size(), Ordering::SeqCst);
+        count(layout.size() as isize);
         // SAFETY: forwarded with the caller's guarantees.
         unsafe { System.alloc(layout) }
     }
 
     unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        LIVE_BYTES.fetch_sub(layout.size(), Ordering::SeqCst);
+        count(-(layout.size() as isize));
         // SAFETY: forwarded with the caller's guarantees.
         unsafe { System.dealloc(ptr, layout) }
     }
@@ -40,12 +51,12 @@ fn dropping_a_native_tape_frees_its_code() {
     let mut out = [0.0];
     // The first compilation sets up the process-wide code generator; count after it.
     drop(tape.compile_native().unwrap());
-    let before = LIVE_BYTES.load(Ordering::SeqCst);
+    let before = held_bytes();
     for _ in 0..100 {
         let compiled = tape.compile_native().unwrap();
         compiled.eval(&[1.01], &mut out).unwrap();
     }
-    let after = LIVE_BYTES.load(Ordering::SeqCst);
+    let after = held_bytes();
     assert_eq!(
         after, before,
         "bytes still allocated after 100 tapes were dropped"
@@ -56,8 +67,8 @@ fn dropping_a_native_tape_frees_its_code() {
 
     // The counter does see the JIT's memory: a live tape holds at least a page of code.
     let held = tape.compile_native().unwrap();
-    let holding = LIVE_BYTES.load(Ordering::SeqCst) - after;
+    let holding = held_bytes() - after;
     assert!(holding >= 4096, "a live tape holds {holding} bytes");
     drop(held);
-    assert_eq!(LIVE_BYTES.load(Ordering::SeqCst), after);
+    assert_eq!(held_bytes(), after);
 }

@@ -66,11 +66,13 @@ impl NativeTape {
 
     /// Evaluates every output for one parameter set. Fails when the slices have the wrong
     /// lengths or an output is not finite.
+    #[inline]
     pub fn eval(&self, inputs: &[f64], outputs: &mut [f64]) -> Result<(), NumericError> {
         self.eval_set(inputs, outputs, 0)
     }
 
     /// [`NativeTape::eval`] for parameter set number `set` (named in the error).
+    #[inline]
     pub(super) fn eval_set(
         &self,
         inputs: &[f64],

@@ -8,7 +8,8 @@
 //! with 9 kinematic inputs (ω, ω̇, Ω) and 6 inertia components → 3 moments; then a batch of
 //! 10⁵ parameter sets: a loop of single evaluations, the blocked serial batch, the rayon
 //! batch, and the hand-written formula in a loop. "tape native" is the same tape compiled
-//! to machine code (`Tape::compile_native`), one point and the rayon batch.
+//! to machine code (`Tape::compile_native`), one point and the rayon batch, and the cost of
+//! compiling it.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use kinetics::algebra::{Expr, Symbol, Vector};
@@ -114,6 +115,9 @@ fn bench(c: &mut Criterion) {
                 .expect("finite");
             native_out
         })
+    });
+    single.bench_function("compile_native (once per tape)", |b| {
+        b.iter(|| tape.compile_native().expect("the host is supported"))
     });
     let value = |s: Symbol| symbols.iter().position(|&x| x == s).map(|k| point[k]);
     single.bench_function("Expr::eval (tree walking)", |b| {

@@ -7,7 +7,9 @@
 //!
 //! with 9 kinematic inputs (ω, ω̇, Ω) and 6 inertia components → 3 moments; then a batch of
 //! 10⁵ parameter sets: a loop of single evaluations, the blocked serial batch, the rayon
-//! batch, and the hand-written formula in a loop.
+//! batch, and the hand-written formula in a loop. "tape native" is the same tape compiled
+//! to machine code (`Tape::compile_native`), one point and the rayon batch, and the cost of
+//! compiling it.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use kinetics::algebra::{Expr, Symbol, Vector};
@@ -72,11 +74,15 @@ fn bench(c: &mut Criterion) {
     let outputs = moments();
     let symbols: Vec<Symbol> = INPUTS.iter().map(|n| Symbol::new(n)).collect();
     let tape = Tape::compile(&outputs, &symbols).expect("every symbol is an input");
+    let native = tape.compile_native().expect("the host is supported");
     let point = table(1);
     let mut out = [0.0; 3];
     let mut scratch = Vec::new();
     tape.eval_with(&point, &mut out, &mut scratch)
         .expect("finite");
+    let mut native_out = [0.0; 3];
+    native.eval(&point, &mut native_out).expect("finite");
+    assert_eq!(out, native_out, "native and interpreted tapes agree");
     let hand = hand_written(&point);
     for (t, h) in out.iter().zip(hand) {
         assert!(
@@ -101,6 +107,17 @@ fn bench(c: &mut Criterion) {
                 .expect("finite");
             out
         })
+    });
+    single.bench_function("tape native", |b| {
+        b.iter(|| {
+            native
+                .eval(black_box(&point), &mut native_out)
+                .expect("finite");
+            native_out
+        })
+    });
+    single.bench_function("compile_native (once per tape)", |b| {
+        b.iter(|| tape.compile_native().expect("the host is supported"))
     });
     let value = |s: Symbol| symbols.iter().position(|&x| x == s).map(|k| point[k]);
     single.bench_function("Expr::eval (tree walking)", |b| {
@@ -140,6 +157,10 @@ fn bench(c: &mut Criterion) {
     batch.bench_function(BenchmarkId::new("tape eval_batch (rayon)", BATCH), |b| {
         b.iter(|| tape.eval_batch(black_box(&rows), n).expect("finite"))
     });
+    batch.bench_function(
+        BenchmarkId::new("tape native eval_batch (rayon)", BATCH),
+        |b| b.iter(|| native.eval_batch(black_box(&rows), n).expect("finite")),
+    );
     batch.finish();
 }
 

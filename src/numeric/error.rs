@@ -30,4 +30,8 @@ pub enum NumericError {
     /// A sample sink refused a sample (for instance it could not write it).
     #[error("the sample sink failed: {reason}")]
     Sink { reason: String },
+    /// A tape could not be compiled to machine code (an unsupported host, or a code
+    /// generator failure).
+    #[error("native compilation of the tape failed: {reason}")]
+    NativeCode { reason: String },
 }

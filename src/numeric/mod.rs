@@ -11,6 +11,9 @@ pub mod elliptic;
 pub mod error;
 pub mod euler_rhs;
 pub mod exact_propagation;
+pub mod native_tape;
+pub mod native_tape_batch;
+pub mod native_tape_compile;
 pub mod ode;
 pub mod plot;
 pub mod reference;
@@ -28,4 +31,5 @@ pub mod work_precision;
 
 pub use dual::Dual;
 pub use error::NumericError;
+pub use native_tape::NativeTape;
 pub use tape::{Instruction, Tape};

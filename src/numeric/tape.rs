@@ -117,6 +117,11 @@ impl Tape {
         self.outputs.len()
     }
 
+    /// The register holding each output, in output order.
+    pub(super) fn output_registers(&self) -> &[u32] {
+        &self.outputs
+    }
+
     /// Whether any instruction loads input `k`.
     pub fn reads_input(&self, k: usize) -> bool {
         self.instructions.contains(&Instruction::Input(k))
@@ -216,17 +221,11 @@ impl Tape {
         let lanes = outputs.chunks_exact_mut(self.outputs.len()).take(L);
         for (l, set_outputs) in lanes.enumerate() {
             for (k, (out, &reg)) in set_outputs.iter_mut().zip(&self.outputs).enumerate() {
-                let v = registers[reg as usize][l];
-                if !v.is_finite() {
-                    return Err(NumericError::InvalidInput {
-                        what: format!("tape output {k} of parameter set {}", first_set + l),
-                        reason: format!(
-                            "is {} (a singular or non-finite input)",
-                            if v.is_nan() { "NaN" } else { "infinite" }
-                        ),
-                    });
+                let value = registers[reg as usize][l];
+                if !value.is_finite() {
+                    return Err(non_finite_output(value, k, first_set + l));
                 }
-                *out = v;
+                *out = value;
             }
         }
         Ok(())
@@ -262,6 +261,20 @@ fn lanes3<T: Copy, const L: usize>(
     }
 }
 
+/// The error for output `output` of parameter set `set` being the non-finite `value`
+/// (shared by every evaluator of a tape, so they refuse the same values alike).
+#[cold]
+pub(super) fn non_finite_output<T: Float>(value: T, output: usize, set: usize) -> NumericError {
+    NumericError::InvalidInput {
+        what: format!("tape output {output} of parameter set {set}"),
+        reason: format!(
+            "is {} (a singular or non-finite input)",
+            if value.is_nan() { "NaN" } else { "infinite" }
+        ),
+    }
+}
+
+#[cold]
 pub(super) fn length_error(what: &str, expected: usize, got: usize) -> NumericError {
     NumericError::InvalidInput {
         what: what.into(),

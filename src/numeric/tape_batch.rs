@@ -24,7 +24,7 @@ impl Tape {
         inputs: &[T],
         stride: usize,
     ) -> Result<Vec<T>, NumericError> {
-        let sets = self.count_sets(inputs.len(), stride)?;
+        let sets = count_sets(self.n_inputs(), inputs.len(), stride)?;
         let n_outputs = self.n_outputs();
         let mut outputs = vec![T::zero(); sets * n_outputs];
         inputs
@@ -43,31 +43,10 @@ impl Tape {
         inputs: &[T],
         stride: usize,
     ) -> Result<Vec<T>, NumericError> {
-        let sets = self.count_sets(inputs.len(), stride)?;
+        let sets = count_sets(self.n_inputs(), inputs.len(), stride)?;
         let mut outputs = vec![T::zero(); sets * self.n_outputs()];
         self.eval_rows(inputs, stride, &mut outputs, 0, &mut Vec::new())?;
         Ok(outputs)
-    }
-
-    /// Number of parameter sets in a flat table, or why the table is malformed.
-    fn count_sets(&self, len: usize, stride: usize) -> Result<usize, NumericError> {
-        if stride == 0 || stride < self.n_inputs() {
-            return Err(NumericError::InvalidInput {
-                what: "batch stride".into(),
-                reason: format!(
-                    "{stride} is smaller than the {} inputs (or zero)",
-                    self.n_inputs()
-                ),
-            });
-        }
-        if !len.is_multiple_of(stride) {
-            return Err(length_error(
-                "batch inputs (a whole number of rows)",
-                len.next_multiple_of(stride),
-                len,
-            ));
-        }
-        Ok(len / stride)
     }
 
     /// Evaluates consecutive rows, `LANES` at a time and the remainder one by one.
@@ -102,4 +81,27 @@ impl Tape {
         }
         Ok(())
     }
+}
+
+/// Number of parameter sets in a flat table of `len` values with rows of `stride` values
+/// for a tape of `n_inputs` inputs, or why the table is malformed.
+pub(super) fn count_sets(
+    n_inputs: usize,
+    len: usize,
+    stride: usize,
+) -> Result<usize, NumericError> {
+    if stride == 0 || stride < n_inputs {
+        return Err(NumericError::InvalidInput {
+            what: "batch stride".into(),
+            reason: format!("{stride} is smaller than the {n_inputs} inputs (or zero)"),
+        });
+    }
+    if !len.is_multiple_of(stride) {
+        return Err(length_error(
+            "batch inputs (a whole number of rows)",
+            len.next_multiple_of(stride),
+            len,
+        ));
+    }
+    Ok(len / stride)
 }

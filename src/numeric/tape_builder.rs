@@ -12,6 +12,11 @@
 //! - Sums are factored greedily (`f·a + f·b + c = f·(a + b) + c`, the most common factor
 //!   first), which turns the expanded `Ω × ([I]ω)` back into products with `H` and shares
 //!   `H` between components; a cofactor and its negation share one register.
+//! - The parts of a sum are combined shallowest first: the two partial sums with the
+//!   shortest chains of instructions behind them are added (or subtracted) first, as in
+//!   Huffman coding. Terms ready together form a balanced tree and a term at the end of a
+//!   long chain is added last, which shortens the critical path of compiled code (the
+//!   native tape) without adding instructions beyond a chain's.
 //! - Constants are folded exactly by the algebra; a term with a negative coefficient is
 //!   subtracted, `-1·x` is a negation and factors with negative exponents go to one
 //!   denominator (`a b / (c d²)`).
@@ -59,6 +64,7 @@ impl Tape {
         let mut builder = Builder {
             inputs,
             instructions: Vec::new(),
+            depths: Vec::new(),
             by_expr: HashMap::new(),
             by_instruction: HashMap::new(),
         };
@@ -249,6 +255,9 @@ fn key(instruction: Instruction) -> InstructionKey {
 struct Builder<'a> {
     inputs: &'a [Symbol],
     instructions: Vec<Instruction>,
+    /// The length of the longest chain of instructions ending in each register (inputs and
+    /// constants have depth 0).
+    depths: Vec<u32>,
     by_expr: HashMap<Expr, u32>,
     by_instruction: HashMap<InstructionKey, u32>,
 }
@@ -264,7 +273,13 @@ impl Builder<'_> {
         let next = self.instructions.len() as u32;
         let register = *self.by_instruction.entry(key(instruction)).or_insert(next);
         if register == next {
+            let mut depth = 0;
+            instruction.map_registers(|r| {
+                depth = depth.max(self.depths[r as usize] + 1);
+                r
+            });
             self.instructions.push(instruction);
+            self.depths.push(depth);
         }
         register
     }
@@ -325,29 +340,30 @@ impl Builder<'_> {
     }
 
     /// A sum: common factors pulled out greedily (see [`Builder::sum_parts`]), then the
-    /// parts with a plus sign added and those with a minus sign subtracted.
+    /// two shallowest signed parts combined until one is left (`a + b`, `a - b`, or
+    /// `-(a + b)` kept as a negative part), negated at the end only if every part is.
     fn sum(&mut self, terms: &[Expr]) -> Result<u32, NumericError> {
         let mut parts = Vec::new();
         self.sum_parts(terms, &mut parts)?;
-        let (positive, negative): (Vec<_>, Vec<_>) = parts.into_iter().partition(|p| !p.1);
-        let negate_all = positive.is_empty();
-        let (first, added, subtracted) = if negate_all {
-            (negative[0].0, &negative[1..], &[][..])
-        } else {
-            (positive[0].0, &positive[1..], &negative[..])
-        };
-        let mut acc = first;
-        for &(t, _) in added {
-            acc = self.emit(Instruction::Add(acc, t));
+        while parts.len() > 1 {
+            // The deepest first (stable, so ties keep the order of the terms): the two
+            // shallowest are at the end.
+            parts.sort_by_key(|&(r, _)| std::cmp::Reverse(self.depths[r as usize]));
+            let (Some((a, a_negative)), Some((b, b_negative))) = (parts.pop(), parts.pop()) else {
+                break;
+            };
+            parts.push(match (a_negative, b_negative) {
+                (false, false) => (self.emit(Instruction::Add(b, a)), false),
+                (true, true) => (self.emit(Instruction::Add(b, a)), true),
+                (false, true) => (self.emit(Instruction::Sub(a, b)), false),
+                (true, false) => (self.emit(Instruction::Sub(b, a)), false),
+            });
         }
-        for &(t, _) in subtracted {
-            acc = self.emit(Instruction::Sub(acc, t));
+        match parts.pop() {
+            Some((sum, false)) => Ok(sum),
+            Some((negated_sum, true)) => Ok(self.emit(Instruction::Neg(negated_sum))),
+            None => self.constant(&Q::ZERO),
         }
-        Ok(if negate_all {
-            self.emit(Instruction::Neg(acc))
-        } else {
-            acc
-        })
     }
 
     /// Signed registers (`true` for minus) adding up to the sum of `terms`: the factor

@@ -32,7 +32,8 @@ fn number(scene: &Scene, e: &Expr, what: &str) -> Result<f64, Diagnostic> {
 }
 
 /// The moment of the loads about G as a torque: constant when it does not depend on time,
-/// otherwise a function of `t` alone evaluated through a compiled tape.
+/// otherwise a function of `t` alone evaluated through a compiled tape (as machine code where
+/// the host allows).
 fn torque(scene: &Scene, moment: &Vector) -> Result<Torque<f64>, Diagnostic> {
     let time = Symbol::new(TIME);
     // A scene that declares `t` uses it as a quantity of its own, not as the time.
@@ -75,14 +76,21 @@ fn torque(scene: &Scene, moment: &Vector) -> Result<Torque<f64>, Diagnostic> {
             "simplify the loads",
         )
     })?;
+    // Machine code where Cranelift has a backend (it halves the instructions of an rk4 run
+    // with a time-varying couple); the interpreter elsewhere. Both give the same values.
+    let native = tape.compile_native().ok();
     let scratch = RefCell::new((values, Vec::new()));
     Ok(Torque::Time(Box::new(move |t: f64| {
         let mut guard = scratch.borrow_mut();
         let (inputs, registers) = &mut *guard;
         inputs[0] = t;
         let mut out = [0.0; 3];
+        let evaluated = match &native {
+            Some(native) => native.eval(inputs, &mut out),
+            None => tape.eval_with(inputs, &mut out, registers),
+        };
         // A non-finite moment is left as NaN; the driver stops with an error at that time.
-        if tape.eval_with(inputs, &mut out, registers).is_err() {
+        if evaluated.is_err() {
             out = [f64::NAN; 3];
         }
         Vector3::new(out[0], out[1], out[2])

@@ -1,0 +1,74 @@
+//! Dropping a [`NativeTape`] frees its machine code: a counting global allocator (the JIT
+//! takes its code pages from the global allocator) sees the bytes the test's thread holds
+//! return to the same count after each compile–evaluate–drop cycle. The count is per
+//! thread because the test harness's own thread allocates at times of its choosing.
+
+use kinetics::algebra::{Expr, Func, Symbol};
+use kinetics::numeric::Tape;
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+/// The system allocator, counting per thread the bytes allocated minus those freed.
+struct Counting;
+
+thread_local! {
+    static HELD_BYTES: Cell<isize> = const { Cell::new(0) };
+}
+
+fn count(bytes: isize) {
+    // Fails only while the thread is being torn down, after the test.
+    let _ = HELD_BYTES.try_with(|held| held.set(held.get() + bytes));
+}
+
+fn held_bytes() -> isize {
+    HELD_BYTES.with(Cell::get)
+}
+
+// SAFETY: every call is forwarded unchanged to the system allocator; the counter only
+// observes sizes (and does not allocate).
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        count(layout.size() as isize);
+        // SAFETY: forwarded with the caller's guarantees.
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        count(-(layout.size() as isize));
+        // SAFETY: forwarded with the caller's guarantees.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
+
+#[test]
+fn dropping_a_native_tape_frees_its_code() {
+    let x = Symbol::new("x");
+    let e = Expr::sym(x).powi(40) + Expr::func(Func::Sin, Expr::sym(x));
+    let tape = Tape::compile(&[e], &[x]).unwrap();
+    let mut out = [0.0];
+    // The first compilation sets up the process-wide code generator; count after it.
+    drop(tape.compile_native().unwrap());
+    let before = held_bytes();
+    for _ in 0..100 {
+        let compiled = tape.compile_native().unwrap();
+        compiled.eval(&[1.01], &mut out).unwrap();
+    }
+    let after = held_bytes();
+    assert_eq!(
+        after, before,
+        "bytes still allocated after 100 tapes were dropped"
+    );
+    let mut interpreted = [0.0];
+    tape.eval(&[1.01], &mut interpreted).unwrap();
+    assert_eq!(out, interpreted);
+
+    // The counter does see the JIT's memory: a live tape holds at least a page of code.
+    let held = tape.compile_native().unwrap();
+    let holding = held_bytes() - after;
+    assert!(holding >= 4096, "a live tape holds {holding} bytes");
+    drop(held);
+    assert_eq!(held_bytes(), after);
+}

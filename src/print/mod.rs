@@ -18,7 +18,7 @@ pub mod text;
 
 use crate::algebra::{Expr, Symbol, Vector, Q};
 pub use layout::Axis;
-use layout::{Layout, Node, NodeId};
+use layout::{Layout, Node, NodeId, Span};
 use std::cell::RefCell;
 use std::fmt::Write;
 
@@ -63,6 +63,46 @@ fn render_into(
     match notation {
         Notation::Text => text::render(out, layout, negative, root),
         Notation::Latex => latex::render(out, layout, negative, root),
+    }
+}
+
+/// Appends a signed root in either notation: `-x`, and `-(a + b)` for a sum; `node` writes a
+/// node in the notation.
+fn signed(
+    out: &mut String,
+    layout: &Layout,
+    negative: bool,
+    root: NodeId,
+    node: impl Fn(&mut String, &Layout, NodeId),
+) {
+    let grouped = negative && matches!(layout.node(root), Node::Sum(_));
+    if negative {
+        out.push('-');
+    }
+    if grouped {
+        out.push('(');
+    }
+    node(out, layout, root);
+    if grouped {
+        out.push(')');
+    }
+}
+
+/// Appends the terms of a sum in either notation, `a - b + c`, never `a + -b`.
+fn sum(
+    out: &mut String,
+    layout: &Layout,
+    terms: Span,
+    node: impl Fn(&mut String, &Layout, NodeId),
+) {
+    for (i, &(negative, term)) in layout.entries(terms).iter().enumerate() {
+        out.push_str(match (i, negative) {
+            (0, true) => "-",
+            (0, false) => "",
+            (_, true) => " - ",
+            (_, false) => " + ",
+        });
+        node(out, layout, term);
     }
 }
 

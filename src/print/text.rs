@@ -8,17 +8,7 @@ use crate::algebra::Q;
 
 /// Appends a signed layout to `out`.
 pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
-    let grouped = negative && matches!(layout.node(root), Node::Sum(_));
-    if negative {
-        out.push('-');
-    }
-    if grouped {
-        out.push('(');
-    }
-    node(out, layout, root);
-    if grouped {
-        out.push(')');
-    }
+    super::signed(out, layout, negative, root, node);
 }
 
 /// A node; symbols, the most frequent, without a call.
@@ -36,17 +26,7 @@ fn compound(out: &mut String, layout: &Layout, compound: &Node) {
     match compound {
         Node::Number(n) => number(out, &layout.value(*n)),
         Node::Symbol(s) => out.push_str(s.name()),
-        Node::Sum(terms) => {
-            for (i, &(negative, term)) in layout.entries(*terms).iter().enumerate() {
-                out.push_str(match (i, negative) {
-                    (0, true) => "-",
-                    (0, false) => "",
-                    (_, true) => " - ",
-                    (_, false) => " + ",
-                });
-                node(out, layout, term);
-            }
-        }
+        Node::Sum(terms) => super::sum(out, layout, *terms, node),
         Node::Product(p) => product(out, layout, p),
         Node::Power(base, exponent) => {
             match layout.node(*base) {

@@ -4,14 +4,15 @@
 //! Calling convention of the compiled function (the platform's C convention):
 //!
 //! ```text
-//! extern "C" fn(inputs: *const f64, outputs: *mut f64)
+//! extern "C" fn(inputs: *const f64, outputs: *mut f64) -> u8
 //! ```
 //!
-//! It reads `inputs[0..n_inputs]`, writes `outputs[0..n_outputs]` and touches no other
-//! memory and no state, so it may run on many threads at once. [`NativeTape::eval`] is the
-//! safe entry: it checks the slice lengths before the call and refuses a non-finite output
-//! afterwards, exactly as the interpreter (`Tape::eval_with`) does; the values are those of
-//! the interpreter bit for bit (see `native_tape_compile` for why).
+//! It reads `inputs[0..n_inputs]`, writes `outputs[0..n_outputs]`, returns 1 when every
+//! output is finite and 0 otherwise, and touches no other memory and no state, so it may run
+//! on many threads at once. [`NativeTape::eval`] is the safe entry: it checks the slice
+//! lengths before the call and refuses a non-finite output afterwards, exactly as the
+//! interpreter (`Tape::eval_with`) does; the values are those of the interpreter bit for
+//! bit (see `native_tape_compile` for why).
 
 use super::error::NumericError;
 use super::tape::{length_error, non_finite_output};
@@ -20,7 +21,11 @@ use std::fmt;
 use std::sync::Mutex;
 
 /// The compiled function: see the calling convention at the top of this file.
-pub(super) type NativeFunction = unsafe extern "C" fn(inputs: *const f64, outputs: *mut f64);
+pub(super) type NativeFunction =
+    unsafe extern "C" fn(inputs: *const f64, outputs: *mut f64) -> AllFinite;
+
+/// What the compiled function returns: 1 when every output it wrote is finite, else 0.
+pub(super) type AllFinite = u8;
 
 /// A tape compiled to machine code for `f64`. Its executable memory is freed on drop.
 pub struct NativeTape {
@@ -92,10 +97,15 @@ impl NativeTape {
         // non-null even when empty), and `outputs` is borrowed mutably so nothing else
         // aliases it. The code it points into is owned by `self.module`, alive while `self`
         // is borrowed.
-        unsafe { (self.function)(inputs.as_ptr(), outputs.as_mut_ptr()) };
+        let all_finite = unsafe { (self.function)(inputs.as_ptr(), outputs.as_mut_ptr()) };
+        if all_finite != 0 {
+            return Ok(());
+        }
+        // Only now, on the way to an error, are the outputs read back to name the first
+        // non-finite one.
         match outputs.iter().position(|v| !v.is_finite()) {
-            None => Ok(()),
             Some(k) => Err(non_finite_output(outputs[k], k, set)),
+            None => unreachable!("the compiled code flags a non-finite output only if one is"),
         }
     }
 }

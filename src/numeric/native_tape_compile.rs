@@ -1,13 +1,19 @@
 //! Compiling a [`Tape`] to machine code with Cranelift (a JIT): one function per tape,
 //!
 //! ```text
-//! extern "C" fn(inputs: *const f64, outputs: *mut f64)
+//! extern "C" fn(inputs: *const f64, outputs: *mut f64) -> u8   // 1: every output finite
 //! ```
 //!
-//! in a single basic block. Register `i` of the tape becomes SSA value `i`: `Input(k)` loads
-//! `inputs[k]`, each arithmetic instruction is the matching Cranelift float instruction
-//! (`fadd`, `fsub`, `fmul`, `fdiv`, `fneg`, `fabs`, `sqrt`), and output `k` is stored to
-//! `outputs[k]` at the end.
+//! in a single basic block, in the tape's order. Each arithmetic instruction is the matching
+//! Cranelift float instruction (`fadd`, `fsub`, `fmul`, `fdiv`, `fneg`, `fabs`, `sqrt`);
+//! `Input(k)` loads `inputs[k]` where it is first used; output `k` is stored to
+//! `outputs[k]` at the end, and the function returns whether `Σ (o_k − o_k)` is a number,
+//! that is whether every output is finite (`o − o` is 0 for a finite `o` and NaN for ±∞ or
+//! NaN), so the caller need not read the outputs back to check them.
+//!
+//! Cranelift's optimiser is off (`opt_level = none`): the tape is already free of common
+//! subexpressions and constant-folded, and the optimiser's only effect on these bodies was
+//! to merge and hoist the input loads to the top, where their long lives spilled registers.
 //!
 //! Rounding contract: the compiled code computes the interpreter's `f64` values bit for
 //! bit. `MulAdd(a, b, c)` is `fmul` then `fadd` and `MulSub` is `fmul` then `fsub` (two
@@ -19,6 +25,7 @@
 use super::error::NumericError;
 use super::native_tape::{NativeFunction, NativeTape};
 use super::tape::{Instruction, Tape};
+use cranelift_codegen::ir::condcodes::FloatCC;
 use cranelift_codegen::ir::{types, AbiParam, FuncRef, InstBuilder, MemFlags, Value};
 use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_codegen::settings::{self, Configurable};
@@ -114,6 +121,7 @@ impl Tape {
         let mut context = module.make_context();
         let pointer = module.target_config().pointer_type();
         context.func.signature.params = vec![AbiParam::new(pointer), AbiParam::new(pointer)];
+        context.func.signature.returns = vec![AbiParam::new(types::I8)];
         let function = module
             .declare_function("tape", Linkage::Local, &context.func.signature)
             .map_err(codegen_error)?;
@@ -129,22 +137,33 @@ impl Tape {
             module: &mut module,
             body,
             helpers: &helpers,
+            inputs,
             imported: [None; Helper::ALL.len()],
             registers: Vec::with_capacity(self.instruction_count()),
         };
         for &instruction in self.instructions() {
-            let value = lowering.instruction(instruction, inputs)?;
-            lowering.registers.push(value);
+            let register = lowering.instruction(instruction)?;
+            lowering.registers.push(register);
         }
+        // Σ (o − o) over the outputs is 0 when every output is finite and NaN otherwise.
+        let mut non_finite_sum = None;
         for (k, &register) in self.output_registers().iter().enumerate() {
-            let value = lowering.registers[register as usize];
+            let value = lowering.operand(register);
             let offset = byte_offset(k)?;
-            lowering
-                .body
-                .ins()
+            let body = &mut lowering.body;
+            body.ins()
                 .store(MemFlags::trusted(), value, outputs, offset);
+            let zero_if_finite = body.ins().fsub(value, value);
+            non_finite_sum = Some(match non_finite_sum {
+                None => zero_if_finite,
+                Some(sum) => body.ins().fadd(sum, zero_if_finite),
+            });
         }
-        lowering.body.ins().return_(&[]);
+        let all_finite = match non_finite_sum {
+            Some(sum) => lowering.body.ins().fcmp(FloatCC::Ordered, sum, sum),
+            None => lowering.body.ins().iconst(types::I8, 1),
+        };
+        lowering.body.ins().return_(&[all_finite]);
         lowering.body.finalize();
 
         module
@@ -171,7 +190,7 @@ fn host_isa() -> Result<OwnedTargetIsa, NumericError> {
     ISA.get_or_init(|| {
         let mut flags = settings::builder();
         for (name, value) in [
-            ("opt_level", "speed"),
+            ("opt_level", "none"),
             // The JIT patches absolute addresses of the helpers into the code.
             ("use_colocated_libcalls", "false"),
             ("is_pic", "false"),
@@ -222,75 +241,109 @@ struct Lowering<'a> {
     helpers: &'a [FuncId],
     /// The helpers imported into this function so far, by the same index.
     imported: [Option<FuncRef>; Helper::ALL.len()],
-    /// The SSA value of each register lowered so far.
-    registers: Vec<Value>,
+    /// The pointer to the inputs (the function's first parameter).
+    inputs: Value,
+    /// Each register lowered so far.
+    registers: Vec<Register>,
+}
+
+/// A register of the tape as lowered: a value, or an input not used yet. An input is loaded
+/// where it is first used rather than all at the top, so that the 15 or so inputs of a
+/// typical tape do not all hold a register from the start (on x86-64, 16 of them: loading
+/// everything first spilled a quarter of the inputs of the general Euler tape to the stack).
+#[derive(Debug, Clone, Copy)]
+enum Register {
+    Value(Value),
+    /// The byte offset of the input in the input array.
+    Input(i32),
 }
 
 impl Lowering<'_> {
-    /// The SSA value of `instruction`, whose operands are all lowered already.
-    fn instruction(
-        &mut self,
-        instruction: Instruction,
-        inputs: Value,
-    ) -> Result<Value, NumericError> {
-        use Instruction::*;
-        let r = |a: u32| self.registers[a as usize];
-        Ok(match instruction {
-            Input(k) => {
-                let offset = byte_offset(k)?;
-                self.body
-                    .ins()
-                    .load(types::F64, MemFlags::trusted(), inputs, offset)
+    /// The SSA value of register `a`; an input is loaded here on its first use (see
+    /// [`Register::Input`]).
+    fn operand(&mut self, a: u32) -> Value {
+        match self.registers[a as usize] {
+            Register::Value(value) => value,
+            Register::Input(offset) => {
+                let value =
+                    self.body
+                        .ins()
+                        .load(types::F64, MemFlags::trusted(), self.inputs, offset);
+                self.registers[a as usize] = Register::Value(value);
+                value
             }
+        }
+    }
+
+    /// The register `instruction` defines, whose operands are all lowered already.
+    fn instruction(&mut self, instruction: Instruction) -> Result<Register, NumericError> {
+        use Instruction::*;
+        let value = match instruction {
+            Input(k) => return Ok(Register::Input(byte_offset(k)?)),
             Const(c) => self.body.ins().f64const(c),
             Add(a, b) => {
-                let (a, b) = (r(a), r(b));
+                let (a, b) = (self.operand(a), self.operand(b));
                 self.body.ins().fadd(a, b)
             }
             Sub(a, b) => {
-                let (a, b) = (r(a), r(b));
+                let (a, b) = (self.operand(a), self.operand(b));
                 self.body.ins().fsub(a, b)
             }
             Mul(a, b) => {
-                let (a, b) = (r(a), r(b));
+                let (a, b) = (self.operand(a), self.operand(b));
                 self.body.ins().fmul(a, b)
             }
             Div(a, b) => {
-                let (a, b) = (r(a), r(b));
+                let (a, b) = (self.operand(a), self.operand(b));
                 self.body.ins().fdiv(a, b)
             }
             MulAdd(a, b, c) => {
-                let (a, b, c) = (r(a), r(b), r(c));
+                let (a, b) = (self.operand(a), self.operand(b));
                 let product = self.body.ins().fmul(a, b);
+                let c = self.operand(c);
                 self.body.ins().fadd(product, c)
             }
             MulSub(a, b, c) => {
-                let (a, b, c) = (r(a), r(b), r(c));
+                let (a, b) = (self.operand(a), self.operand(b));
                 let product = self.body.ins().fmul(a, b);
+                let c = self.operand(c);
                 self.body.ins().fsub(c, product)
             }
             Neg(a) => {
-                let a = r(a);
+                let a = self.operand(a);
                 self.body.ins().fneg(a)
             }
             Abs(a) => {
-                let a = r(a);
+                let a = self.operand(a);
                 self.body.ins().fabs(a)
             }
             Sqrt(a) => {
-                let a = r(a);
+                let a = self.operand(a);
                 self.body.ins().sqrt(a)
             }
-            Sin(a) => self.call(Helper::Sin, &[r(a)]),
-            Cos(a) => self.call(Helper::Cos, &[r(a)]),
-            Tan(a) => self.call(Helper::Tan, &[r(a)]),
-            Powf(a, b) => self.call(Helper::Powf, &[r(a), r(b)]),
+            Sin(a) => {
+                let a = self.operand(a);
+                self.call(Helper::Sin, &[a])
+            }
+            Cos(a) => {
+                let a = self.operand(a);
+                self.call(Helper::Cos, &[a])
+            }
+            Tan(a) => {
+                let a = self.operand(a);
+                self.call(Helper::Tan, &[a])
+            }
+            Powf(a, b) => {
+                let (a, b) = (self.operand(a), self.operand(b));
+                self.call(Helper::Powf, &[a, b])
+            }
             Powi(a, n) => {
-                let a = r(a);
+                let a = self.operand(a);
                 let n = self.body.ins().iconst(types::I32, i64::from(n));
                 self.call(Helper::Powi, &[a, n])
             }
-        })
+        };
+        Ok(Register::Value(value))
     }
 
     /// The result of calling `helper`, imported into the function on first use.

@@ -107,6 +107,24 @@ extern "C" fn tape_powi(x: f64, n: i32) -> f64 {
 impl Tape {
     /// Compiles the tape to machine code for `f64` (see [`NativeTape`]). Fails on a host
     /// Cranelift does not support or when code generation fails.
+    ///
+    /// ```
+    /// use kinetics::algebra::{Expr, Symbol};
+    /// use kinetics::numeric::Tape;
+    ///
+    /// // ΣM_x = I_x ω̇_x − (I_y − I_z) ω_y ω_z
+    /// let s = Expr::symbol;
+    /// let m_x = s("I_x") * s("wdot_x") - (s("I_y") - s("I_z")) * s("w_y") * s("w_z");
+    /// let inputs = ["I_x", "I_y", "I_z", "wdot_x", "w_y", "w_z"].map(Symbol::new);
+    /// let tape = Tape::compile(&[m_x], &inputs)?;
+    /// let native = tape.compile_native()?;
+    /// let mut out = [0.0];
+    /// native.eval(&[1.0, 2.0, 3.0, 0.5, 2.0, 4.0], &mut out)?;
+    /// assert_eq!(out[0], 1.0 * 0.5 - (2.0 - 3.0) * 2.0 * 4.0);
+    /// // A non-finite result is an error, as in the interpreter.
+    /// assert!(native.eval(&[f64::INFINITY, 2.0, 3.0, 0.5, 2.0, 4.0], &mut out).is_err());
+    /// # Ok::<(), kinetics::numeric::NumericError>(())
+    /// ```
     pub fn compile_native(&self) -> Result<NativeTape, NumericError> {
         let mut builder = JITBuilder::with_isa(host_isa()?, default_libcall_names());
         for helper in Helper::ALL {

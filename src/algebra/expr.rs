@@ -515,7 +515,8 @@ fn operands<T: Borrow<Expr>>(first: Option<Expr>, rest: &[T]) -> Arc<[Expr]> {
 }
 
 /// `base^exponent` in canonical form; a numeric power too large to fold, or `0` to a
-/// negative power, stays as an unevaluated power node.
+/// negative power, stays as an unevaluated power node. A symbol to a small integer power
+/// is the symbol's shared node (see `symbol_powers`).
 fn power_or_unevaluated(base: &Expr, exponent: &Expr) -> Expr {
     if exponent.is_zero() {
         return Expr::one();
@@ -551,8 +552,20 @@ fn power_or_unevaluated(base: &Expr, exponent: &Expr) -> Expr {
         (Repr::Mul(factors), _) if int_exp.is_some() => {
             return Expr::mul_all(factors.iter().map(|f| power_or_unevaluated(f, exponent)));
         }
+        (Repr::Sym(s), _) => {
+            if let Some(power) =
+                int_exp.and_then(|n| s.small_power(n, || power_node(base, exponent)))
+            {
+                return power;
+            }
+        }
         _ => {}
     }
+    power_node(base, exponent)
+}
+
+/// The unevaluated node `base^exponent`.
+fn power_node(base: &Expr, exponent: &Expr) -> Expr {
     Expr(Repr::Pow(Arc::new((base.clone(), exponent.clone()))))
 }
 

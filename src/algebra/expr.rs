@@ -236,17 +236,24 @@ impl Expr {
 
     /// The canonical sum of terms that are not sums (numbers allowed), moved out of `terms`.
     pub(super) fn sum_of_terms(terms: &mut Operands) -> Expr {
-        if terms.iter().any(|t| matches!(t.0, Repr::Add(_))) {
+        let (mut sums, mut numbers) = (false, false);
+        for t in terms.iter() {
+            sums |= matches!(t.0, Repr::Add(_));
+            numbers |= matches!(t.0, Repr::Num(_));
+        }
+        if sums {
             return Expr::add_all(terms.drain(..));
         }
         let mut constant = Q::ZERO;
-        terms.retain(|t| match &t.0 {
-            Repr::Num(q) => {
-                constant = &constant + q;
-                false
-            }
-            _ => true,
-        });
+        if numbers {
+            terms.retain(|t| match &t.0 {
+                Repr::Num(q) => {
+                    constant = &constant + q;
+                    false
+                }
+                _ => true,
+            });
+        }
         Expr::sum_of_like_terms(constant, terms)
     }
 
@@ -477,7 +484,7 @@ fn combine_like_terms(terms: &mut Operands) -> usize {
     let mut i = 0;
     while i < terms.len() {
         let mut j = i + 1;
-        while j < terms.len() && terms[j].monomial() == terms[i].monomial() {
+        while j < terms.len() && cmp_slices(terms[j].monomial(), terms[i].monomial()).is_eq() {
             j += 1;
         }
         if j == i + 1 {
@@ -552,21 +559,29 @@ fn power_or_unevaluated(base: &Expr, exponent: &Expr) -> Expr {
         (Repr::Mul(factors), _) if int_exp.is_some() => {
             return Expr::mul_all(factors.iter().map(|f| power_or_unevaluated(f, exponent)));
         }
-        (Repr::Sym(s), _) => {
-            if let Some(power) =
-                int_exp.and_then(|n| s.small_power(n, || power_node(base, exponent)))
-            {
-                return power;
-            }
-        }
+        (Repr::Sym(s), Some(e)) => return Expr::symbol_power(*s, e),
         _ => {}
     }
-    power_node(base, exponent)
+    power_node(base.clone(), exponent.clone())
+}
+
+impl Expr {
+    /// `s^e` in canonical form for a symbol `s` and a number `e`: `1` for `e = 0`, `s` for
+    /// `e = 1`, the symbol's shared node for a small integer `e` (see `symbol_powers`).
+    pub(super) fn symbol_power(s: Symbol, e: &Q) -> Expr {
+        let node = || power_node(Expr::sym(s), Expr::num(e.clone()));
+        match e.to_i64() {
+            Some(0) => Expr::one(),
+            Some(1) => Expr::sym(s),
+            Some(n) => s.small_power(n, node).unwrap_or_else(node),
+            None => node(),
+        }
+    }
 }
 
 /// The unevaluated node `base^exponent`.
-fn power_node(base: &Expr, exponent: &Expr) -> Expr {
-    Expr(Repr::Pow(Arc::new((base.clone(), exponent.clone()))))
+fn power_node(base: Expr, exponent: Expr) -> Expr {
+    Expr(Repr::Pow(Arc::new((base, exponent))))
 }
 
 /// `x.cmp(y)`, with the common case of two symbols decided inline.
@@ -601,7 +616,13 @@ impl Ord for Expr {
                     cmp_slices(a, b)
                 }
             }
-            (Repr::Pow(a), Repr::Pow(b)) => a.0.cmp(&b.0).then_with(|| a.1.cmp(&b.1)),
+            (Repr::Pow(a), Repr::Pow(b)) => {
+                if Arc::ptr_eq(a, b) {
+                    Ordering::Equal
+                } else {
+                    cmp_operands(&a.0, &b.0).then_with(|| a.1.cmp(&b.1))
+                }
+            }
             (Repr::Func(f, a), Repr::Func(g, b)) => f.cmp(g).then_with(|| a.cmp(b)),
             _ => self.rank().cmp(&other.rank()),
         }

@@ -275,9 +275,7 @@ impl Expr {
             (None, 0) => Expr::zero(),
             (Some(c), 0) => c,
             (None, 1) => take(0),
-            (c, _) => Expr(Repr::Add(
-                c.into_iter().chain((0..kept).map(take)).collect(),
-            )),
+            (c, _) => Expr(Repr::Add(node_operands(c, kept, take))),
         }
     }
 
@@ -505,19 +503,28 @@ fn combine_like_terms(terms: &mut Operands) -> usize {
 }
 
 /// The operands of a sum or product node: `first` (a coefficient), then copies of `rest`.
-/// The usual short lists are built as arrays, without an iterator.
+#[inline]
 fn operands<T: Borrow<Expr>>(first: Option<Expr>, rest: &[T]) -> Arc<[Expr]> {
-    let at = |i: usize| rest[i].borrow().clone();
-    match (first, rest.len()) {
+    node_operands(first, rest.len(), |i| rest[i].borrow().clone())
+}
+
+/// The operands of a sum or product node: `first` (a coefficient), then `at(0)`, …,
+/// `at(len - 1)`. The usual short lists are built as arrays, without an iterator.
+#[inline(always)]
+fn node_operands(
+    first: Option<Expr>,
+    len: usize,
+    mut at: impl FnMut(usize) -> Expr,
+) -> Arc<[Expr]> {
+    match (first, len) {
         (None, 2) => Arc::new([at(0), at(1)]),
         (None, 3) => Arc::new([at(0), at(1), at(2)]),
+        (None, 4) => Arc::new([at(0), at(1), at(2), at(3)]),
+        (None, 5) => Arc::new([at(0), at(1), at(2), at(3), at(4)]),
         (Some(c), 1) => Arc::new([c, at(0)]),
         (Some(c), 2) => Arc::new([c, at(0), at(1)]),
         (Some(c), 3) => Arc::new([c, at(0), at(1), at(2)]),
-        (first, _) => first
-            .into_iter()
-            .chain(rest.iter().map(|t| t.borrow().clone()))
-            .collect(),
+        (first, _) => first.into_iter().chain((0..len).map(at)).collect(),
     }
 }
 

@@ -122,8 +122,12 @@ pub(super) fn scaled_product<F: Borrow<Expr>>(coeff: &Q, factors: &[F], b: &Expr
             }
         }
     }
-    out.extend(fa[i..].iter().map(|f| Cow::Borrowed(f.borrow())));
-    out.extend(fb[j..].iter().map(Cow::Borrowed));
+    for f in &fa[i..] {
+        out.push(Cow::Borrowed(f.borrow()));
+    }
+    for f in &fb[j..] {
+        out.push(Cow::Borrowed(f));
+    }
     Expr::product_of_sorted(coeff, &out)
 }
 

@@ -529,8 +529,7 @@ fn node_operands(
 }
 
 /// `base^exponent` in canonical form; a numeric power too large to fold, or `0` to a
-/// negative power, stays as an unevaluated power node. A symbol to a small integer power
-/// is the symbol's shared node (see `symbol_powers`).
+/// negative power, stays as an unevaluated power node.
 fn power_or_unevaluated(base: &Expr, exponent: &Expr) -> Expr {
     if exponent.is_zero() {
         return Expr::one();
@@ -574,14 +573,14 @@ fn power_or_unevaluated(base: &Expr, exponent: &Expr) -> Expr {
 
 impl Expr {
     /// `s^e` in canonical form for a symbol `s` and a number `e`: `1` for `e = 0`, `s` for
-    /// `e = 1`, the symbol's shared node for a small integer `e` (see `symbol_powers`).
+    /// `e = 1`, the power node otherwise.
     pub(super) fn symbol_power(s: Symbol, e: &Q) -> Expr {
-        let node = || power_node(Expr::sym(s), Expr::num(e.clone()));
-        match e.to_i64() {
-            Some(0) => Expr::one(),
-            Some(1) => Expr::sym(s),
-            Some(n) => s.small_power(n, node).unwrap_or_else(node),
-            None => node(),
+        if e.is_zero() {
+            Expr::one()
+        } else if e.is_one() {
+            Expr::sym(s)
+        } else {
+            power_node(Expr::sym(s), Expr::num(e.clone()))
         }
     }
 }

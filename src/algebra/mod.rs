@@ -22,7 +22,6 @@ mod rational;
 mod subs;
 mod sum_of_products;
 mod symbol;
-mod symbol_powers;
 pub mod vector;
 pub mod vector_products;
 

@@ -28,8 +28,6 @@
 //! assert_eq!(Symbol::new("w1"), Symbol::new("w_1"));
 //! ```
 
-use super::expr::Expr;
-use super::symbol_powers::SymbolPowers;
 use std::cell::{Cell, RefCell};
 use std::collections::HashMap;
 use std::fmt;
@@ -69,8 +67,6 @@ pub struct SymbolData {
     axis: Option<usize>,
     role: Role,
     latex: Box<str>,
-    /// The shared nodes of this symbol's small integer powers.
-    powers: SymbolPowers,
 }
 
 /// An interned symbol; copying and comparing for equality are pointer operations.
@@ -224,12 +220,6 @@ impl Symbol {
         self.0.role == Role::Kinematic
     }
 
-    /// The shared node `self^n` for a small integer `n` other than 0 and 1, made by `make`
-    /// the first time (see `symbol_powers`); `None` for other exponents.
-    pub(super) fn small_power(self, n: i64, make: impl FnOnce() -> Expr) -> Option<Expr> {
-        self.0.powers.get(n, make)
-    }
-
     /// The time derivative `ẋ` of this symbol.
     pub fn dot(self) -> Symbol {
         let d = self.0;
@@ -309,7 +299,6 @@ impl SymbolData {
             subscript: subscript.into(),
             role,
             latex: latex.into(),
-            powers: SymbolPowers::default(),
         }
     }
 }

@@ -14,6 +14,7 @@ use super::error::{AlgebraError, MAX_EXPANDED_TERMS};
 use super::expr::{Expr, Operands, View};
 use super::merge;
 use smallvec::SmallVec;
+use std::borrow::Cow;
 
 impl Expr {
     /// The fully expanded form (see the module documentation).
@@ -80,12 +81,14 @@ fn expand_into(e: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
 /// A product of powers of symbols alone is its own expansion.
 fn expand_product(p: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
     let mut monomial: SmallVec<[&Expr; 8]> = SmallVec::new();
-    let mut others: SmallVec<[Expr; 4]> = SmallVec::new();
+    let mut others: SmallVec<[Cow<Expr>; 4]> = SmallVec::new();
     for f in p.monomial() {
         if is_power_of_symbol(f) {
             monomial.push(f);
+        } else if is_expanded(f) {
+            others.push(Cow::Borrowed(f));
         } else {
-            others.push(f.expand()?);
+            others.push(Cow::Owned(f.expand()?));
         }
     }
     let size = others
@@ -95,11 +98,11 @@ fn expand_product(p: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
     let coeff = p.coefficient();
     match others.split_last() {
         None => terms.push(p.clone()),
-        Some((last, [])) => terms.extend(
-            last.terms()
-                .iter()
-                .map(|t| merge::scaled_product(coeff, &monomial, t)),
-        ),
+        Some((last, [])) => {
+            for t in last.terms() {
+                terms.push(merge::scaled_product(coeff, &monomial, t));
+            }
+        }
         Some((last, rest)) => {
             let mut partial: Operands = rest[0].terms().iter().cloned().collect();
             for f in &rest[1..] {

@@ -236,17 +236,24 @@ impl Expr {
 
     /// The canonical sum of terms that are not sums (numbers allowed), moved out of `terms`.
     pub(super) fn sum_of_terms(terms: &mut Operands) -> Expr {
-        if terms.iter().any(|t| matches!(t.0, Repr::Add(_))) {
+        let (mut sums, mut numbers) = (false, false);
+        for t in terms.iter() {
+            sums |= matches!(t.0, Repr::Add(_));
+            numbers |= matches!(t.0, Repr::Num(_));
+        }
+        if sums {
             return Expr::add_all(terms.drain(..));
         }
         let mut constant = Q::ZERO;
-        terms.retain(|t| match &t.0 {
-            Repr::Num(q) => {
-                constant = &constant + q;
-                false
-            }
-            _ => true,
-        });
+        if numbers {
+            terms.retain(|t| match &t.0 {
+                Repr::Num(q) => {
+                    constant = &constant + q;
+                    false
+                }
+                _ => true,
+            });
+        }
         Expr::sum_of_like_terms(constant, terms)
     }
 
@@ -268,9 +275,7 @@ impl Expr {
             (None, 0) => Expr::zero(),
             (Some(c), 0) => c,
             (None, 1) => take(0),
-            (c, _) => Expr(Repr::Add(
-                c.into_iter().chain((0..kept).map(take)).collect(),
-            )),
+            (c, _) => Expr(Repr::Add(node_operands(c, kept, take))),
         }
     }
 
@@ -477,7 +482,7 @@ fn combine_like_terms(terms: &mut Operands) -> usize {
     let mut i = 0;
     while i < terms.len() {
         let mut j = i + 1;
-        while j < terms.len() && terms[j].monomial() == terms[i].monomial() {
+        while j < terms.len() && cmp_slices(terms[j].monomial(), terms[i].monomial()).is_eq() {
             j += 1;
         }
         if j == i + 1 {
@@ -498,19 +503,28 @@ fn combine_like_terms(terms: &mut Operands) -> usize {
 }
 
 /// The operands of a sum or product node: `first` (a coefficient), then copies of `rest`.
-/// The usual short lists are built as arrays, without an iterator.
+#[inline]
 fn operands<T: Borrow<Expr>>(first: Option<Expr>, rest: &[T]) -> Arc<[Expr]> {
-    let at = |i: usize| rest[i].borrow().clone();
-    match (first, rest.len()) {
+    node_operands(first, rest.len(), |i| rest[i].borrow().clone())
+}
+
+/// The operands of a sum or product node: `first` (a coefficient), then `at(0)`, …,
+/// `at(len - 1)`. The usual short lists are built as arrays, without an iterator.
+#[inline(always)]
+fn node_operands(
+    first: Option<Expr>,
+    len: usize,
+    mut at: impl FnMut(usize) -> Expr,
+) -> Arc<[Expr]> {
+    match (first, len) {
         (None, 2) => Arc::new([at(0), at(1)]),
         (None, 3) => Arc::new([at(0), at(1), at(2)]),
+        (None, 4) => Arc::new([at(0), at(1), at(2), at(3)]),
+        (None, 5) => Arc::new([at(0), at(1), at(2), at(3), at(4)]),
         (Some(c), 1) => Arc::new([c, at(0)]),
         (Some(c), 2) => Arc::new([c, at(0), at(1)]),
         (Some(c), 3) => Arc::new([c, at(0), at(1), at(2)]),
-        (first, _) => first
-            .into_iter()
-            .chain(rest.iter().map(|t| t.borrow().clone()))
-            .collect(),
+        (first, _) => first.into_iter().chain((0..len).map(at)).collect(),
     }
 }
 
@@ -551,9 +565,29 @@ fn power_or_unevaluated(base: &Expr, exponent: &Expr) -> Expr {
         (Repr::Mul(factors), _) if int_exp.is_some() => {
             return Expr::mul_all(factors.iter().map(|f| power_or_unevaluated(f, exponent)));
         }
+        (Repr::Sym(s), Some(e)) => return Expr::symbol_power(*s, e),
         _ => {}
     }
-    Expr(Repr::Pow(Arc::new((base.clone(), exponent.clone()))))
+    power_node(base.clone(), exponent.clone())
+}
+
+impl Expr {
+    /// `s^e` in canonical form for a symbol `s` and a number `e`: `1` for `e = 0`, `s` for
+    /// `e = 1`, the power node otherwise.
+    pub(super) fn symbol_power(s: Symbol, e: &Q) -> Expr {
+        if e.is_zero() {
+            Expr::one()
+        } else if e.is_one() {
+            Expr::sym(s)
+        } else {
+            power_node(Expr::sym(s), Expr::num(e.clone()))
+        }
+    }
+}
+
+/// The unevaluated node `base^exponent`.
+fn power_node(base: Expr, exponent: Expr) -> Expr {
+    Expr(Repr::Pow(Arc::new((base, exponent))))
 }
 
 /// `x.cmp(y)`, with the common case of two symbols decided inline.
@@ -588,7 +622,13 @@ impl Ord for Expr {
                     cmp_slices(a, b)
                 }
             }
-            (Repr::Pow(a), Repr::Pow(b)) => a.0.cmp(&b.0).then_with(|| a.1.cmp(&b.1)),
+            (Repr::Pow(a), Repr::Pow(b)) => {
+                if Arc::ptr_eq(a, b) {
+                    Ordering::Equal
+                } else {
+                    cmp_operands(&a.0, &b.0).then_with(|| a.1.cmp(&b.1))
+                }
+            }
             (Repr::Func(f, a), Repr::Func(g, b)) => f.cmp(g).then_with(|| a.cmp(b)),
             _ => self.rank().cmp(&other.rank()),
         }

@@ -122,8 +122,12 @@ pub(super) fn scaled_product<F: Borrow<Expr>>(coeff: &Q, factors: &[F], b: &Expr
             }
         }
     }
-    out.extend(fa[i..].iter().map(|f| Cow::Borrowed(f.borrow())));
-    out.extend(fb[j..].iter().map(Cow::Borrowed));
+    for f in &fa[i..] {
+        out.push(Cow::Borrowed(f.borrow()));
+    }
+    for f in &fb[j..] {
+        out.push(Cow::Borrowed(f));
+    }
     Expr::product_of_sorted(coeff, &out)
 }
 
@@ -157,15 +161,12 @@ fn merge_disjoint<'a, F: Borrow<Expr>>(
     Some(a.len() + b.len())
 }
 
-/// `s^p · s^q` for a symbol `s` and numbers `p`, `q`: `Some(None)` when the powers cancel,
-/// `None` when the factors are not two numeric powers of one symbol.
+/// `s^p · s^q = s^(p+q)` for a symbol `s` and numbers `p`, `q`: `Some(None)` when the
+/// powers cancel, `None` when the factors are not two numeric powers of one symbol.
 fn symbol_power_product(x: &Expr, y: &Expr) -> Option<Option<Expr>> {
-    x.base().as_symbol()?;
+    let s = x.base().as_symbol()?;
     let exponent = x.numeric_exponent()? + y.numeric_exponent()?;
-    if exponent.is_zero() {
-        return Some(None);
-    }
-    Some(x.base().checked_pow(&Expr::num(exponent)).ok())
+    Some((!exponent.is_zero()).then(|| Expr::symbol_power(s, &exponent)))
 }
 
 #[cfg(test)]

@@ -307,27 +307,41 @@ impl std::ops::Sub for &Q {
 
 impl std::ops::Mul for &Q {
     type Output = Q;
+    #[inline(always)]
     fn mul(self, other: &Q) -> Q {
         match (self, other) {
-            // One, the coefficient of most terms, is common enough to skip the gcds.
-            (Q::Small(1, 1), x) | (x, Q::Small(1, 1)) => x.clone(),
-            (Q::Small(a, 1), Q::Small(c, 1)) => match a.checked_mul(*c) {
-                Some(n) => Q::Small(n, 1),
-                None => Q::from_i128(*a as i128 * *c as i128, 1),
-            },
-            (Q::Small(a, b), Q::Small(c, d)) => {
-                // Cancelling across first leaves a reduced result: gcd(a/g, d/h) = 1 and
-                // gcd(c/h, b/g) = 1 with g = gcd(a, d), h = gcd(c, b).
-                let (g, h) = (a.gcd(d), c.gcd(b));
-                let n = (a / g).checked_mul(c / h);
-                let m = (b / h).checked_mul(d / g);
-                match (n, m) {
-                    (Some(n), Some(m)) => Q::Small(n, m),
-                    _ => Q::from_i128(*a as i128 * *c as i128, *b as i128 * *d as i128),
-                }
-            }
+            (Q::Small(a, b), Q::Small(c, d)) => small_product(*a, *b, *c, *d),
             _ => Q::from_big(self.to_big() * other.to_big()),
         }
+    }
+}
+
+/// `(a/b)(c/d)` for reduced fractions. The products of the usual coefficients (integers,
+/// `±1` times a fraction) are decided inline, without a gcd.
+#[inline(always)]
+fn small_product(a: i64, b: i64, c: i64, d: i64) -> Q {
+    match (a, b, c, d) {
+        (a, 1, c, 1) => match a.checked_mul(c) {
+            Some(n) => Q::Small(n, 1),
+            None => Q::from_i128(a as i128 * c as i128, 1),
+        },
+        // ±1 times p/q is ±p/q, already reduced (-p overflows only for i64::MIN).
+        (1, 1, n, d) | (n, d, 1, 1) => Q::Small(n, d),
+        (-1, 1, n, d) | (n, d, -1, 1) if n != i64::MIN => Q::Small(-n, d),
+        _ => reduced_product(a, b, c, d),
+    }
+}
+
+/// `(a/b)(c/d)` for reduced fractions: cancelling across first leaves a reduced result,
+/// since `gcd(a/g, d/g) = 1` and `gcd(c/h, b/h) = 1` with `g = gcd(a, d)`, `h = gcd(c, b)`.
+#[inline(never)]
+fn reduced_product(a: i64, b: i64, c: i64, d: i64) -> Q {
+    let (g, h) = (a.gcd(&d), c.gcd(&b));
+    let n = (a / g).checked_mul(c / h);
+    let m = (b / h).checked_mul(d / g);
+    match (n, m) {
+        (Some(n), Some(m)) => Q::Small(n, m),
+        _ => Q::from_i128(a as i128 * c as i128, b as i128 * d as i128),
     }
 }
 

@@ -28,7 +28,7 @@
 //! assert_eq!(Symbol::new("w1"), Symbol::new("w_1"));
 //! ```
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::collections::HashMap;
 use std::fmt;
 use std::hash::{BuildHasherDefault, Hash, Hasher};
@@ -113,11 +113,43 @@ impl Hasher for NameHasher {
     }
 }
 
+/// How many symbols [`RECENT`] holds (a power of two).
+const RECENT_SLOTS: usize = 128;
+
+thread_local! {
+    /// Symbols this thread looked up by their canonical names, at most one in each slot,
+    /// the slot chosen by the name's hash: in front of [`LOOKED_UP`], a hit costs a hash
+    /// and one comparison of the name.
+    static RECENT: [Cell<Option<Symbol>>; RECENT_SLOTS] =
+        const { [const { Cell::new(None) }; RECENT_SLOTS] };
+}
+
 impl Symbol {
     /// The symbol with this ASCII name (see the module documentation for the convention).
     /// The caller guarantees the name is well formed: an ASCII letter followed by letters,
     /// digits, `_` and `'` (the parser checks this for user input).
     pub fn new(name: &str) -> Symbol {
+        let mut hasher = NameHasher::default();
+        hasher.write(name.as_bytes());
+        // Fibonacci hashing: the multiplication carries every bit of the hash into the top
+        // bits, which pick the slot (FNV's own top bits hardly depend on the last bytes).
+        let mixed = hasher.finish().wrapping_mul(0x9e37_79b9_7f4a_7c15);
+        let slot = (mixed >> (64 - RECENT_SLOTS.trailing_zeros())) as usize;
+        RECENT.with(|recent| match recent[slot].get() {
+            Some(symbol) if symbol.name() == name => symbol,
+            _ => {
+                let symbol = Symbol::looked_up(name);
+                if symbol.name() == name {
+                    recent[slot].set(Some(symbol));
+                }
+                symbol
+            }
+        })
+    }
+
+    /// The symbol with this name from this thread's names looked up, else from the shared
+    /// interner.
+    fn looked_up(name: &str) -> Symbol {
         LOOKED_UP.with(|cache| {
             if let Some(&symbol) = cache.borrow().get(name) {
                 return symbol;
@@ -398,6 +430,22 @@ impl fmt::Display for Symbol {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// More names than the recent-symbol slots, so that names share slots and evict each
+    /// other: every lookup, hit or miss, alias or canonical name, gives the right symbol.
+    #[test]
+    fn recent_symbols_agree_with_the_interner() {
+        let names: Vec<String> = (0..3 * RECENT_SLOTS).map(|i| format!("q{i}")).collect();
+        for round in 0..3 {
+            for name in names.iter().rev().skip(round) {
+                let symbol = Symbol::new(name);
+                assert_eq!(symbol.base(), "q");
+                assert_eq!(symbol.subscript(), &name[1..]);
+                assert_eq!(symbol, Symbol::new(&format!("q_{}", &name[1..])));
+                assert_eq!(symbol, Symbol::new(name));
+            }
+        }
+    }
 
     #[test]
     fn names_latex_and_roles() {

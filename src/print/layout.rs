@@ -26,9 +26,13 @@
 
 use super::coefficient::{self, inertia_key, CoefficientTerm};
 use crate::algebra::{axis_of_subscript, Expr, Func, Role, Symbol, View, Q};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::One;
 use smallvec::SmallVec;
 use std::cmp::Ordering;
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// The presented form of one expression: its nodes, stored flat so that presenting an
 /// expression allocates nothing once a [`Layout`] has grown to size (the printers keep one
@@ -46,7 +50,7 @@ pub struct Layout {
     /// [`NO_MEMBER`] (a stack).
     next_member: Vec<u32>,
     /// The numbers too big for a [`Number`] to hold in place.
-    big_numbers: Vec<Q>,
+    big_numbers: Vec<Arc<BigRational>>,
 }
 
 /// A number of a [`Layout`]: a small rational in place, a big one in the layout's table, so
@@ -97,11 +101,19 @@ pub struct Product {
     pub denominator: Span,
 }
 
-/// A rational's numerator and denominator; an integer is its own numerator.
-pub fn parts(q: &Q) -> (Q, Q) {
-    match q.is_integer() {
-        true => (q.clone(), Q::ONE),
-        false => (q.numer(), q.denom()),
+/// The numerator or the denominator of a [`Number`], as the renderers write it.
+#[derive(Debug, Clone, Copy)]
+pub enum Integer<'a> {
+    Small(i64),
+    Big(&'a BigInt),
+}
+
+impl Integer<'_> {
+    pub fn is_one(self) -> bool {
+        match self {
+            Integer::Small(n) => n == 1,
+            Integer::Big(n) => n.is_one(),
+        }
     }
 }
 
@@ -177,18 +189,21 @@ impl Layout {
     fn number(&mut self, q: &Q) -> Number {
         match q {
             Q::Small(n, d) => Number::Small(*n, *d),
-            Q::Big(_) => {
-                self.big_numbers.push(q.clone());
+            Q::Big(b) => {
+                self.big_numbers.push(b.clone());
                 Number::Big((self.big_numbers.len() - 1) as u32)
             }
         }
     }
 
-    /// The value of a number of this layout.
-    pub fn value(&self, n: Number) -> Q {
+    /// The numerator and the denominator of a number of this layout (an integer's is one).
+    pub fn parts(&self, n: Number) -> (Integer<'_>, Integer<'_>) {
         match n {
-            Number::Small(n, d) => Q::Small(n, d),
-            Number::Big(at) => self.big_numbers[at as usize].clone(),
+            Number::Small(n, d) => (Integer::Small(n), Integer::Small(d)),
+            Number::Big(at) => {
+                let b = &self.big_numbers[at as usize];
+                (Integer::Big(b.numer()), Integer::Big(b.denom()))
+            }
         }
     }
 

@@ -17,9 +17,9 @@ pub mod latex;
 pub mod layout;
 pub mod text;
 
-use crate::algebra::{Expr, Symbol, Vector, Q};
+use crate::algebra::{Expr, Symbol, Vector};
 pub use layout::Axis;
-use layout::{Layout, Node, NodeId, Span};
+use layout::{Integer, Layout, Node, NodeId, Span};
 use std::cell::RefCell;
 use std::fmt::Write;
 
@@ -107,13 +107,16 @@ fn sum(
     }
 }
 
-/// An integer-valued rational in decimal digits, a single digit without the formatter.
-fn integer(out: &mut String, q: &Q) {
-    match q.to_i64().and_then(|n| u8::try_from(n).ok()) {
-        Some(digit @ 0..=9) => out.push(char::from(b'0' + digit)),
+/// An integer in decimal digits, a single digit without the formatter.
+fn integer(out: &mut String, n: Integer) {
+    match n {
+        Integer::Small(digit @ 0..=9) => out.push(char::from(b'0' + digit as u8)),
         // Formatting into a `String` cannot fail.
-        _ => {
-            let _ = write!(out, "{q}");
+        Integer::Small(n) => {
+            let _ = write!(out, "{n}");
+        }
+        Integer::Big(n) => {
+            let _ = write!(out, "{n}");
         }
     }
 }

@@ -196,6 +196,14 @@ impl Layout {
         }
     }
 
+    /// The absolute value of `q` as a number of this layout.
+    fn magnitude(&mut self, q: &Q) -> Number {
+        match *q {
+            Q::Small(n, d) if n != i64::MIN => Number::Small(n.abs(), d),
+            _ => self.number(&q.abs()),
+        }
+    }
+
     /// The numerator and the denominator of a number of this layout (an integer's is one).
     pub fn parts(&self, n: Number) -> (Integer<'_>, Integer<'_>) {
         match n {
@@ -226,10 +234,22 @@ impl Layout {
     fn finish_product(&mut self, mark: usize) -> (Span, Span) {
         let start = self.entries.len() as u32;
         let pending = &self.pending[mark..];
-        self.entries.extend(pending.iter().filter(|(d, _)| !d));
+        if pending.iter().any(|(d, _)| *d) {
+            self.entries.extend(pending.iter().filter(|(d, _)| !d));
+            let above = self.entries.len() as u32 - start;
+            self.entries.extend(pending.iter().filter(|(d, _)| *d));
+            self.pending.truncate(mark);
+            let below = self.entries.len() as u32 - start - above;
+            let denominator = Span {
+                start: start + above,
+                len: below,
+            };
+            return (Span { start, len: above }, denominator);
+        }
+        // No denominator, the usual case: the factors in one copy.
+        self.entries.extend_from_slice(pending);
         let above = self.entries.len() as u32 - start;
-        self.entries.extend(pending.iter().filter(|(d, _)| *d));
-        let below = self.entries.len() as u32 - start - above;
+        let below = 0;
         self.pending.truncate(mark);
         (
             Span { start, len: above },
@@ -467,12 +487,12 @@ impl Layout {
         axis: Axis,
     ) -> (bool, NodeId) {
         let negative = coefficient.is_negative();
+        let magnitude = self.magnitude(coefficient);
+        // The factors with their places, in print order; on the stack unless there are many.
         let mut factors = factors.map(|f| (expr_place(f), f));
         let Some(first) = factors.next() else {
-            let magnitude = self.number(&coefficient.abs());
             return (negative, self.push(Node::Number(magnitude)));
         };
-        // The factors with their places, in print order; on the stack unless there are many.
         let mut inline = [first; 8];
         let mut spilled: Vec<(u8, &Expr)> = Vec::new();
         let mut count = 1;
@@ -524,9 +544,8 @@ impl Layout {
             };
             self.pending.push(factor);
         }
-        let coefficient = coefficient.abs();
         let node = match &self.pending[mark..] {
-            [(false, alone)] if coefficient.is_one() => {
+            [(false, alone)] if magnitude == Number::Small(1, 1) => {
                 let alone = *alone;
                 self.pending.truncate(mark);
                 return (negative, alone);
@@ -534,7 +553,7 @@ impl Layout {
             _ => {
                 let (numerator, denominator) = self.finish_product(mark);
                 Node::Product(Product {
-                    coefficient: self.number(&coefficient),
+                    coefficient: magnitude,
                     numerator,
                     denominator,
                 })
@@ -723,8 +742,12 @@ fn sort_nearly_sorted<T: Copy>(items: &mut [T], mut order: impl FnMut(&T, &T) ->
         return;
     }
     for i in 1..items.len() {
+        if order(&items[i - 1], &items[i]) != Ordering::Greater {
+            continue;
+        }
         let item = items[i];
-        let mut j = i;
+        let mut j = i - 1;
+        items[i] = items[j];
         while j > 0 && order(&items[j - 1], &item) == Ordering::Greater {
             items[j] = items[j - 1];
             j -= 1;
@@ -770,18 +793,24 @@ fn term_shape(term: &Expr) -> TermShape {
         }
     };
     for f in term.factors() {
-        if !is_kinematic_factor(f) {
-            if f.as_num().is_none() {
-                others += 1;
-                other_is_sum = matches!(f.view(), View::Add(_));
-                sum_in_coefficient |= other_is_sum;
+        // As `is_kinematic_factor`, visiting the kinematic symbols on the way.
+        let kinematic = match f.base().view() {
+            View::Sym(s) => {
+                visit(s);
+                matches!(s.role(), Role::Kinematic | Role::UnitVector)
             }
-            continue;
-        }
-        factor_count += 1;
-        match f.base().as_symbol() {
-            Some(s) => visit(s),
-            None => f.base().symbols().into_iter().for_each(&mut visit),
+            View::Func(_, arg) if mentions_kinematic(arg) => {
+                f.base().symbols().into_iter().for_each(&mut visit);
+                true
+            }
+            _ => false,
+        };
+        if kinematic {
+            factor_count += 1;
+        } else if f.as_num().is_none() {
+            others += 1;
+            other_is_sum = matches!(f.view(), View::Add(_));
+            sum_in_coefficient |= other_is_sum;
         }
     }
     let mut shape = TermShape {

@@ -39,17 +39,15 @@ thread_local! {
 
 /// Presents `e` about `axis` and hands the layout, the sign and the root to `render`.
 fn presented<R>(e: &Expr, axis: Axis, render: impl FnOnce(&Layout, bool, NodeId) -> R) -> R {
-    LAYOUT.with(|cell| {
-        let mut fresh = Layout::default();
-        // A printer that runs while another is rendering takes a layout of its own.
-        let mut shared = cell.try_borrow_mut();
-        let layout = match shared.as_deref_mut() {
-            Ok(layout) => layout,
-            Err(_) => &mut fresh,
-        };
+    let present = |layout: &mut Layout| {
         layout.clear();
         let (negative, root) = layout.present(e, axis);
         render(layout, negative, root)
+    };
+    LAYOUT.with(|cell| match cell.try_borrow_mut() {
+        Ok(mut shared) => present(&mut shared),
+        // A printer that runs while another is rendering takes a layout of its own.
+        Err(_) => present(&mut Layout::default()),
     })
 }
 

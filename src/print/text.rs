@@ -105,7 +105,12 @@ fn product(out: &mut String, layout: &Layout, p: &Product) {
         factors(out, layout, shown, p.numerator);
         return;
     }
-    factors(out, layout, shown_numerator.then_some((cn, one)), p.numerator);
+    factors(
+        out,
+        layout,
+        shown_numerator.then_some((cn, one)),
+        p.numerator,
+    );
     out.push('/');
     let shown = (!cd.is_one()).then_some((cd, one));
     let grouped = usize::from(shown.is_some()) + layout.entries(p.denominator).len() > 1;

@@ -59,6 +59,11 @@ fn compound(out: &mut String, layout: &Layout, compound: &Node) {
 /// `^e` for an exponent of one character, `^{...}` otherwise.
 fn superscript(out: &mut String, layout: &Layout, exponent: NodeId) {
     out.push('^');
+    // A digit, the usual exponent, without measuring what was written.
+    if let Node::Number(Number::Small(digit @ 0..=9, 1)) = *layout.node(exponent) {
+        out.push(char::from(b'0' + digit as u8));
+        return;
+    }
     let start = out.len();
     node(out, layout, exponent);
     if out[start..].chars().count() != 1 {
@@ -108,6 +113,7 @@ fn fraction(out: &mut String, n: Integer, d: Integer) {
 /// A factor inside a product or under an exponent: sums and products get parentheses.
 fn factor(out: &mut String, layout: &Layout, id: NodeId) {
     match layout.node(id) {
+        Node::Symbol(s) => out.push_str(s.latex()),
         Node::Sum(_) | Node::Product(_) => {
             out.push('(');
             node(out, layout, id);
@@ -118,7 +124,7 @@ fn factor(out: &mut String, layout: &Layout, id: NodeId) {
             number(out, layout, *n);
             out.push(')');
         }
-        _ => node(out, layout, id),
+        other => compound(out, layout, other),
     }
 }
 

@@ -72,13 +72,14 @@ fn ratio(out: &mut String, n: Integer, d: Integer) {
 /// A factor inside a product or under an exponent.
 fn factor(out: &mut String, layout: &Layout, id: NodeId) {
     match layout.node(id) {
+        Node::Symbol(s) => out.push_str(s.name()),
         Node::Sum(_) | Node::Product(_) => parenthesised(out, layout, id),
         Node::Number(n) if !layout.parts(*n).1.is_one() => {
             out.push('(');
             number(out, layout, *n);
             out.push(')');
         }
-        _ => node(out, layout, id),
+        other => compound(out, layout, other),
     }
 }
 

@@ -109,7 +109,7 @@ pub fn inertia_key(s: Symbol, axis: Axis) -> (u8, usize, Symbol) {
     // The axes the subscript names, in order: the first two and how many.
     let mut named = [0usize; 2];
     let mut count = 0;
-    for k in subscript.chars().filter_map(axis_of_letter) {
+    for k in subscript.bytes().filter_map(axis_of_letter) {
         if let Some(slot) = named.get_mut(count) {
             *slot = k;
         }
@@ -130,11 +130,11 @@ pub fn inertia_key(s: Symbol, axis: Axis) -> (u8, usize, Symbol) {
 }
 
 /// The axis index of one subscript letter: `x` or `X` is 0, `y` 1, `z` 2.
-fn axis_of_letter(c: char) -> Option<usize> {
+fn axis_of_letter(c: u8) -> Option<usize> {
     match c {
-        'x' | 'X' => Some(0),
-        'y' | 'Y' => Some(1),
-        'z' | 'Z' => Some(2),
+        b'x' | b'X' => Some(0),
+        b'y' | b'Y' => Some(1),
+        b'z' | b'Z' => Some(2),
         _ => None,
     }
 }
@@ -210,6 +210,7 @@ fn small_rational_content(terms: &[CoefficientTerm]) -> Option<Q> {
         denominators = lcm;
     }
     match i64::try_from(numerators) {
+        Ok(1) if denominators == 1 => Some(Q::ONE),
         Ok(n) if n > 0 => Some(Q::new(n, denominators).unwrap_or(Q::ONE)),
         _ => Some(Q::ONE),
     }

@@ -800,7 +800,9 @@ fn term_shape(term: &Expr) -> TermShape {
                 matches!(s.role(), Role::Kinematic | Role::UnitVector)
             }
             View::Func(_, arg) if mentions_kinematic(arg) => {
-                f.base().symbols().into_iter().for_each(&mut visit);
+                for s in f.base().symbols() {
+                    visit(s);
+                }
                 true
             }
             _ => false,

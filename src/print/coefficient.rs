@@ -142,34 +142,42 @@ fn axis_of_letter(c: u8) -> Option<usize> {
 /// The monomial that divides every term (bases to their least power) times the rational
 /// content, sign excluded; `None` when it is one.
 pub fn common_factor(terms: &[CoefficientTerm]) -> Option<Expr> {
-    let first = terms.first()?;
-    let mut common: smallvec::SmallVec<[(&Expr, &Q); 4]> =
-        first.factors().filter_map(numeric_power).collect();
-    for term in &terms[1..] {
-        common.retain_mut(|(base, exp)| {
-            let found = term.factors().find_map(|f| match numeric_power(f) {
-                Some((b, e)) if b == *base => Some(e),
-                _ => None,
-            });
-            match found {
-                Some(e) if e.is_negative() == exp.is_negative() => {
-                    if (e < *exp) != exp.is_negative() {
-                        *exp = e;
-                    }
-                    true
-                }
-                _ => false,
-            }
-        });
-    }
+    let (first, others) = terms.split_first()?;
     let content = rational_content(terms);
-    if common.is_empty() && content.is_one() {
+    let mut common = first
+        .factors()
+        .filter_map(numeric_power)
+        .filter_map(|(base, exponent)| least_power(others, base, exponent))
+        .peekable();
+    if content.is_one() && common.peek().is_none() {
         return None;
     }
-    let common = common.into_iter().map(|(b, e)| power(b, e));
+    let common = common.map(|(base, exponent)| power(base, exponent));
     Some(Expr::mul_all(
         std::iter::once(Expr::num(content)).chain(common),
     ))
+}
+
+/// `base` to the exponent of least magnitude among `exponent` and its exponents in `terms`,
+/// if every term has it to an exponent of the same sign.
+fn least_power<'e>(
+    terms: &[CoefficientTerm<'e>],
+    base: &'e Expr,
+    mut exponent: &'e Q,
+) -> Option<(&'e Expr, &'e Q)> {
+    for term in terms {
+        let e = term.factors().find_map(|f| match numeric_power(f) {
+            Some((b, e)) if b == base => Some(e),
+            _ => None,
+        })?;
+        if e.is_negative() != exponent.is_negative() {
+            return None;
+        }
+        if (e < exponent) != exponent.is_negative() {
+            exponent = e;
+        }
+    }
+    Some((base, exponent))
 }
 
 /// A factor as a base to a numeric exponent (1 for a factor that is not a power); `None`

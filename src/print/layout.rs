@@ -420,12 +420,11 @@ impl Layout {
         axis: Axis,
     ) -> (bool, NodeId) {
         let common = coefficient::common_factor(terms);
-        let divided: SmallVec<[Expr; 8]> = match &common {
+        let divided: Vec<Expr> = match &common {
             Some(common) => terms.iter().map(|t| t.to_expr() / common).collect(),
-            None => SmallVec::new(),
+            None => Vec::new(),
         };
-        let divided: SmallVec<[CoefficientTerm; 8]> =
-            divided.iter().map(CoefficientTerm::whole).collect();
+        let divided: Vec<CoefficientTerm> = divided.iter().map(CoefficientTerm::whole).collect();
         let inner = match common {
             Some(_) => &divided[..],
             None => terms,

@@ -244,6 +244,63 @@ fn big_rational_content(terms: &[CoefficientTerm]) -> Q {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algebra::Func;
+
+    /// Members whose coefficients hold no sum, read in place and put in order, are the terms
+    /// of the coefficient the algebra forms, in the same order: the reading in place is the
+    /// sum without forming it.
+    #[test]
+    fn coefficients_read_in_place_are_the_formed_sum() {
+        let s = Expr::symbol;
+        let w = s("w_y") * s("w_z");
+        let members = [
+            vec![-s("I_y") * &w, s("I_z") * &w],
+            vec![
+                Expr::rational(1, 2) * s("m") * s("r").powi(2) * &w,
+                Expr::int(3) * &w,
+            ],
+            vec![
+                s("I_xz") * s("L").powi(-1) * &w,
+                Expr::int(-2) * s("I_x") * &w,
+                s("a").powi(2) * s("b") * &w,
+                s("a") * s("b").powi(2) * &w,
+                Func::Sin.apply(s("beta")) * s("h") * &w,
+            ],
+            vec![s("a"), Expr::int(-4), s("m") * s("g")],
+            vec![
+                s("I_x") * s("r") * &w,
+                -s("I_x") * s("m") * &w,
+                s("I_y") * &w,
+            ],
+            vec![
+                s("a").powi(2) * s("b") * &w,
+                Expr::int(3) * s("a") * s("b").powi(2) * &w,
+            ],
+        ];
+        for terms in &members {
+            let sum = Expr::add_all(terms.iter().cloned());
+            let axis = Axis::Y;
+            let mut in_place: Vec<CoefficientTerm> =
+                sum.terms().iter().map(CoefficientTerm::in_place).collect();
+            in_place.sort_by(|&a, &b| compare(a, b, axis));
+            let formed = Expr::add_all(
+                sum.terms()
+                    .iter()
+                    .map(|t| t.without_factors(is_kinematic_factor)),
+            );
+            let mut whole: Vec<CoefficientTerm> =
+                formed.terms().iter().map(CoefficientTerm::whole).collect();
+            whole.sort_by(|&a, &b| compare(a, b, axis));
+            let read: Vec<Expr> = in_place.iter().map(|t| t.to_expr()).collect();
+            let expected: Vec<Expr> = whole.iter().map(|t| t.to_expr()).collect();
+            assert_eq!(read, expected, "{sum}");
+            assert_eq!(
+                common_factor(&in_place).map(|c| c.to_string()),
+                common_factor(&whole).map(|c| c.to_string()),
+                "{sum}"
+            );
+        }
+    }
 
     /// The machine-integer content agrees with the big-integer one wherever it answers,
     /// including denominators whose lcm overflows an `i64` (content 1 in both).

@@ -22,7 +22,9 @@
 //! The form is built bottom-up into a [`Layout`]: nodes in one vector, the terms of each sum
 //! and the factors of each product as a contiguous run in another, children collected on a
 //! stack until their parent is made. The rules read the expression through borrowed views;
-//! only collecting a group forms new expressions (its coefficient, a common factor).
+//! a group's coefficient is read in place from its members (`coefficient.rs`), and
+//! only a coefficient whose members hold sums, or a common factor other than one, is formed
+//! as a new expression.
 
 use super::coefficient::{self, inertia_key, CoefficientTerm};
 use crate::algebra::{axis_of_subscript, Expr, Func, Role, Symbol, View, Q};

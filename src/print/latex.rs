@@ -3,8 +3,8 @@
 //! with no redundant parentheses or braces and never `a + -b`.
 
 use super::integer;
-use super::layout::{parts, Layout, Node, NodeId, Product, Span};
-use crate::algebra::{Func, Q};
+use super::layout::{Integer, Layout, Node, NodeId, Number, Product, Span};
+use crate::algebra::Func;
 
 /// Appends a signed layout to `out`.
 pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
@@ -24,7 +24,7 @@ fn node(out: &mut String, layout: &Layout, id: NodeId) {
 #[inline(never)]
 fn compound(out: &mut String, layout: &Layout, compound: &Node) {
     match compound {
-        Node::Number(n) => number(out, &layout.value(*n)),
+        Node::Number(n) => number(out, layout, *n),
         Node::Symbol(s) => out.push_str(s.latex()),
         Node::Sum(terms) => super::sum(out, layout, *terms, node),
         Node::Product(p) => product(out, layout, p),
@@ -59,6 +59,11 @@ fn compound(out: &mut String, layout: &Layout, compound: &Node) {
 /// `^e` for an exponent of one character, `^{...}` otherwise.
 fn superscript(out: &mut String, layout: &Layout, exponent: NodeId) {
     out.push('^');
+    // A digit, the usual exponent, without measuring what was written.
+    if let Node::Number(Number::Small(digit @ 0..=9, 1)) = *layout.node(exponent) {
+        out.push(char::from(b'0' + digit as u8));
+        return;
+    }
     let start = out.len();
     node(out, layout, exponent);
     if out[start..].chars().count() != 1 {
@@ -89,16 +94,15 @@ fn function_argument(out: &mut String, layout: &Layout, arg: NodeId) {
     }
 }
 
-fn number(out: &mut String, q: &Q) {
-    if q.is_integer() {
-        integer(out, q);
-    } else {
-        fraction(out, &q.numer(), &q.denom());
+fn number(out: &mut String, layout: &Layout, n: Number) {
+    match layout.parts(n) {
+        (n, d) if d.is_one() => integer(out, n),
+        (n, d) => fraction(out, n, d),
     }
 }
 
 /// `\frac{n}{d}`.
-fn fraction(out: &mut String, n: &Q, d: &Q) {
+fn fraction(out: &mut String, n: Integer, d: Integer) {
     out.push_str(r"\frac{");
     integer(out, n);
     out.push_str("}{");
@@ -109,17 +113,18 @@ fn fraction(out: &mut String, n: &Q, d: &Q) {
 /// A factor inside a product or under an exponent: sums and products get parentheses.
 fn factor(out: &mut String, layout: &Layout, id: NodeId) {
     match layout.node(id) {
+        Node::Symbol(s) => out.push_str(s.latex()),
         Node::Sum(_) | Node::Product(_) => {
             out.push('(');
             node(out, layout, id);
             out.push(')');
         }
-        Node::Number(n) if !layout.value(*n).is_integer() => {
+        Node::Number(n) if !layout.parts(*n).1.is_one() => {
             out.push('(');
-            number(out, &layout.value(*n));
+            number(out, layout, *n);
             out.push(')');
         }
-        _ => node(out, layout, id),
+        other => compound(out, layout, other),
     }
 }
 
@@ -143,26 +148,25 @@ fn fraction_part(out: &mut String, layout: &Layout, after_number: bool, span: Sp
 }
 
 fn product(out: &mut String, layout: &Layout, p: &Product) {
-    let coefficient = layout.value(p.coefficient);
-    let (cn, cd) = parts(&coefficient);
+    let (cn, cd) = layout.parts(p.coefficient);
     let shown = !cn.is_one() || p.numerator.is_empty();
     if p.denominator.is_empty() {
         if !cd.is_one() {
-            fraction(out, &cn, &cd);
+            fraction(out, cn, cd);
         } else if shown {
-            integer(out, &cn);
+            integer(out, cn);
         }
         factors(out, layout, !cd.is_one() || shown, p.numerator);
         return;
     }
     out.push_str(r"\frac{");
     if shown {
-        integer(out, &cn);
+        integer(out, cn);
     }
     fraction_part(out, layout, shown, p.numerator);
     out.push_str("}{");
     if !cd.is_one() {
-        integer(out, &cd);
+        integer(out, cd);
     }
     fraction_part(out, layout, !cd.is_one(), p.denominator);
     out.push('}');
@@ -171,7 +175,7 @@ fn product(out: &mut String, layout: &Layout, p: &Product) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::algebra::Expr;
+    use crate::algebra::{Expr, Q};
     use crate::print::Axis;
 
     fn printed(q: Q) -> String {

@@ -22,11 +22,19 @@
 //! The form is built bottom-up into a [`Layout`]: nodes in one vector, the terms of each sum
 //! and the factors of each product as a contiguous run in another, children collected on a
 //! stack until their parent is made. The rules read the expression through borrowed views;
-//! only collecting a group forms new expressions (its coefficient, a common factor).
+//! a group's coefficient is read in place from its members (`coefficient.rs`), and
+//! only a coefficient whose members hold sums, or a common factor other than one, is formed
+//! as a new expression.
 
+use super::coefficient::{self, inertia_key, CoefficientTerm};
 use crate::algebra::{axis_of_subscript, Expr, Func, Role, Symbol, View, Q};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::One;
+use smallvec::SmallVec;
 use std::cmp::Ordering;
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// The presented form of one expression: its nodes, stored flat so that presenting an
 /// expression allocates nothing once a [`Layout`] has grown to size (the printers keep one
@@ -44,7 +52,7 @@ pub struct Layout {
     /// [`NO_MEMBER`] (a stack).
     next_member: Vec<u32>,
     /// The numbers too big for a [`Number`] to hold in place.
-    big_numbers: Vec<Q>,
+    big_numbers: Vec<Arc<BigRational>>,
 }
 
 /// A number of a [`Layout`]: a small rational in place, a big one in the layout's table, so
@@ -95,11 +103,19 @@ pub struct Product {
     pub denominator: Span,
 }
 
-/// A rational's numerator and denominator; an integer is its own numerator.
-pub fn parts(q: &Q) -> (Q, Q) {
-    match q.is_integer() {
-        true => (q.clone(), Q::ONE),
-        false => (q.numer(), q.denom()),
+/// The numerator or the denominator of a [`Number`], as the renderers write it.
+#[derive(Debug, Clone, Copy)]
+pub enum Integer<'a> {
+    Small(i64),
+    Big(&'a BigInt),
+}
+
+impl Integer<'_> {
+    pub fn is_one(self) -> bool {
+        match self {
+            Integer::Small(n) => n == 1,
+            Integer::Big(n) => n.is_one(),
+        }
     }
 }
 
@@ -113,7 +129,7 @@ pub enum Axis {
 }
 
 impl Axis {
-    fn index(self) -> usize {
+    pub(super) fn index(self) -> usize {
         self as usize
     }
 
@@ -130,6 +146,8 @@ struct Group {
     key: KinematicKey,
     /// Whether the coefficient of the first term is a sum.
     sum_coefficient: bool,
+    /// Whether the coefficient of any member has a sum among its factors.
+    sum_in_coefficient: bool,
     /// The indices of the first and the last term with this kinematic part, and how many
     /// terms have it.
     first: u32,
@@ -156,11 +174,6 @@ fn kinematic_part(term: &Expr) -> KinematicPart<'_> {
     KinematicPart(term.factors().iter())
 }
 
-/// The coefficient of a term: the product of its other factors, number included.
-fn coefficient_of(term: &Expr) -> Expr {
-    term.without_factors(is_kinematic_factor)
-}
-
 /// Up to this many groups a term's group is found by linear search; beyond, by hashing.
 const LINEAR_SEARCH_GROUPS: usize = 32;
 
@@ -178,18 +191,29 @@ impl Layout {
     fn number(&mut self, q: &Q) -> Number {
         match q {
             Q::Small(n, d) => Number::Small(*n, *d),
-            Q::Big(_) => {
-                self.big_numbers.push(q.clone());
+            Q::Big(b) => {
+                self.big_numbers.push(b.clone());
                 Number::Big((self.big_numbers.len() - 1) as u32)
             }
         }
     }
 
-    /// The value of a number of this layout.
-    pub fn value(&self, n: Number) -> Q {
+    /// The absolute value of `q` as a number of this layout.
+    fn magnitude(&mut self, q: &Q) -> Number {
+        match *q {
+            Q::Small(n, d) if n != i64::MIN => Number::Small(n.abs(), d),
+            _ => self.number(&q.abs()),
+        }
+    }
+
+    /// The numerator and the denominator of a number of this layout (an integer's is one).
+    pub fn parts(&self, n: Number) -> (Integer<'_>, Integer<'_>) {
         match n {
-            Number::Small(n, d) => Q::Small(n, d),
-            Number::Big(at) => self.big_numbers[at as usize].clone(),
+            Number::Small(n, d) => (Integer::Small(n), Integer::Small(d)),
+            Number::Big(at) => {
+                let b = &self.big_numbers[at as usize];
+                (Integer::Big(b.numer()), Integer::Big(b.denom()))
+            }
         }
     }
 
@@ -212,10 +236,22 @@ impl Layout {
     fn finish_product(&mut self, mark: usize) -> (Span, Span) {
         let start = self.entries.len() as u32;
         let pending = &self.pending[mark..];
-        self.entries.extend(pending.iter().filter(|(d, _)| !d));
+        if pending.iter().any(|(d, _)| *d) {
+            self.entries.extend(pending.iter().filter(|(d, _)| !d));
+            let above = self.entries.len() as u32 - start;
+            self.entries.extend(pending.iter().filter(|(d, _)| *d));
+            self.pending.truncate(mark);
+            let below = self.entries.len() as u32 - start - above;
+            let denominator = Span {
+                start: start + above,
+                len: below,
+            };
+            return (Span { start, len: above }, denominator);
+        }
+        // No denominator, the usual case: the factors in one copy.
+        self.entries.extend_from_slice(pending);
         let above = self.entries.len() as u32 - start;
-        self.entries.extend(pending.iter().filter(|(d, _)| *d));
-        let below = self.entries.len() as u32 - start - above;
+        let below = 0;
         self.pending.truncate(mark);
         (
             Span { start, len: above },
@@ -254,11 +290,12 @@ impl Layout {
         let mut index: HashMap<Vec<&Expr>, usize> = HashMap::new();
         for (at, term) in terms.iter().enumerate() {
             let kinematic = kinematic_part(term);
-            let (key, sum_coefficient) = term_shape(term);
+            let shape = term_shape(term);
             let groups = &mut self.groups[base..];
             let found = if groups.len() <= LINEAR_SEARCH_GROUPS {
                 groups.iter().position(|g| {
-                    g.key == key && kinematic_part(&terms[g.first as usize]).eq(kinematic.clone())
+                    g.key == shape.key
+                        && kinematic_part(&terms[g.first as usize]).eq(kinematic.clone())
                 })
             } else {
                 if index.is_empty() {
@@ -271,17 +308,20 @@ impl Layout {
             self.next_member.push(NO_MEMBER);
             match found {
                 Some(k) => {
-                    self.next_member[term_base + groups[k].last as usize] = at as u32;
-                    groups[k].last = at as u32;
-                    groups[k].members += 1;
+                    let group = &mut groups[k];
+                    self.next_member[term_base + group.last as usize] = at as u32;
+                    group.last = at as u32;
+                    group.members += 1;
+                    group.sum_in_coefficient |= shape.sum_in_coefficient;
                 }
                 None => {
                     if !index.is_empty() {
                         index.insert(kinematic.collect(), groups.len());
                     }
                     self.groups.push(Group {
-                        key,
-                        sum_coefficient,
+                        key: shape.key,
+                        sum_coefficient: shape.sum_coefficient,
+                        sum_in_coefficient: shape.sum_in_coefficient,
                         first: at as u32,
                         last: at as u32,
                         members: 1,
@@ -289,13 +329,12 @@ impl Layout {
                 }
             }
         }
-        // Keys rarely tie, so the kinematic products that break ties are seldom built.
+        // Keys rarely tie; then the kinematic parts decide.
         sort_nearly_sorted(&mut self.groups[base..], |a, b| {
-            let kinematic =
-                |g: &Group| Expr::mul_all(kinematic_part(&terms[g.first as usize]).cloned());
-            a.key
-                .cmp(&b.key)
-                .then_with(|| kinematic(a).cmp(&kinematic(b)))
+            a.key.cmp(&b.key).then_with(|| {
+                let part = |g: &Group| kinematic_part(&terms[g.first as usize]);
+                compare_kinematic_parts(part(a), part(b))
+            })
         });
         let only_group = self.groups.len() - base == 1;
         let mark = self.pending.len();
@@ -312,36 +351,48 @@ impl Layout {
             let members = std::iter::successors(Some(group.first), |&at| {
                 Some(next_member[at as usize]).filter(|&next| next != NO_MEMBER)
             })
-            .map(|at| coefficient_of(&terms[at as usize]));
-            // Two coefficients by `+`, the quick merge of two sorted operands; more at once.
-            let coefficient = match group.members {
-                1 | 2 => members.reduce(|sum, c| sum + c).unwrap_or_else(Expr::zero),
-                _ => Expr::add_all(members),
+            .map(|at| &terms[at as usize]);
+            // The coefficient's terms: the members themselves where no coefficient holds a
+            // sum (their monomials are distinct), otherwise the terms of their formed sum.
+            let formed: Expr;
+            let mut coefficient: SmallVec<[CoefficientTerm; 8]> = if group.sum_in_coefficient {
+                let coefficients = members.map(|t| t.without_factors(is_kinematic_factor));
+                // Two coefficients by `+`, the quick merge of two sorted operands; more at once.
+                formed = match group.members {
+                    1 | 2 => coefficients
+                        .reduce(|sum, c| sum + c)
+                        .unwrap_or_else(Expr::zero),
+                    _ => Expr::add_all(coefficients),
+                };
+                if formed.is_zero() {
+                    continue;
+                }
+                formed.terms().iter().map(CoefficientTerm::whole).collect()
+            } else {
+                members.map(CoefficientTerm::in_place).collect()
             };
-            if coefficient.is_zero() {
-                continue;
-            }
+            sort_nearly_sorted(&mut coefficient, |&a, &b| coefficient::compare(a, b, axis));
             let kinematic = kinematic_part(first);
-            if kinematic.clone().next().is_none() && coefficient.terms().len() > 1 {
+            if kinematic.clone().next().is_none() && coefficient.len() > 1 {
                 // No kinematic part to collect by: the terms stand on their own.
-                let mut plain: Vec<&Expr> = coefficient.terms().iter().collect();
-                plain.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
-                if only_group && plain[0].coefficient().is_negative() {
+                if only_group && coefficient[0].coefficient().is_negative() {
                     // A sum of coefficients alone (a denominator, a group) starts with a
                     // positive term where it has one: `z_2 - z_1`, not `-z_1 + z_2`.
-                    if let Some(at) = plain.iter().position(|t| !t.coefficient().is_negative()) {
-                        let first = plain.remove(at);
-                        plain.insert(0, first);
+                    if let Some(at) = coefficient
+                        .iter()
+                        .position(|t| !t.coefficient().is_negative())
+                    {
+                        coefficient[..=at].rotate_right(1);
                     }
                 }
-                for t in plain {
-                    let term = self.present_term(t, axis);
+                for t in coefficient {
+                    let term = self.present_product(t.coefficient(), t.factors(), axis);
                     self.pending.push(term);
                 }
-            } else if coefficient.terms().len() == 1 {
+            } else if let [only] = coefficient[..] {
                 // The coefficient and the kinematic part have no base in common.
-                let factors = coefficient.monomial().iter().chain(kinematic);
-                let term = self.present_product(coefficient.coefficient(), factors, axis);
+                let factors = only.factors().chain(kinematic);
+                let term = self.present_product(only.coefficient(), factors, axis);
                 self.pending.push(term);
             } else {
                 let term = self.present_group(&coefficient, kinematic, axis);
@@ -363,33 +414,38 @@ impl Layout {
         }
     }
 
-    /// `± common · (group) · kinematic` for a coefficient with several terms.
+    /// `± common · (group) · kinematic` for a coefficient of several terms, in order.
     fn present_group<'e>(
         &mut self,
-        coefficient: &'e Expr,
+        terms: &[CoefficientTerm<'e>],
         kinematic: KinematicPart<'e>,
         axis: Axis,
     ) -> (bool, NodeId) {
-        let mut inner: Vec<&Expr> = coefficient.terms().iter().collect();
-        inner.sort_by(|a, b| compare_coefficient_terms(a, b, axis));
-        let common = common_factor(&inner);
-        let divided: Vec<Expr> = match common.is_one() {
-            true => Vec::new(),
-            false => inner.iter().map(|&t| t / &common).collect(),
+        let common = coefficient::common_factor(terms);
+        let divided: Vec<Expr> = match &common {
+            Some(common) => terms.iter().map(|t| t.to_expr() / common).collect(),
+            None => Vec::new(),
         };
-        if !divided.is_empty() {
-            inner = divided.iter().collect();
-        }
-        let negative = inner.first().is_some_and(|t| t.coefficient().is_negative());
+        let divided: Vec<CoefficientTerm> = divided.iter().map(CoefficientTerm::whole).collect();
+        let inner = match common {
+            Some(_) => &divided[..],
+            None => terms,
+        };
+        let negative = inner[0].coefficient().is_negative();
         let mark = self.pending.len();
         for t in inner {
-            let (neg, id) = self.present_term(t, axis);
+            let (neg, id) = self.present_product(t.coefficient(), t.factors(), axis);
             self.pending.push((neg != negative, id));
         }
         let group = self.finish_sum(mark);
         // The common factor and the kinematic part have no base in common.
-        let outer = common.monomial().iter().chain(kinematic);
-        let (outer_negative, outer_id) = self.present_product(common.coefficient(), outer, axis);
+        let (outer_negative, outer_id) = match &common {
+            Some(common) => {
+                let outer = common.monomial().iter().chain(kinematic);
+                self.present_product(common.coefficient(), outer, axis)
+            }
+            None => self.present_product(&Q::ONE, kinematic, axis),
+        };
         let mark = self.pending.len();
         let (coefficient, denominator) = match *self.node(outer_id) {
             Node::Product(p) => {
@@ -432,12 +488,12 @@ impl Layout {
         axis: Axis,
     ) -> (bool, NodeId) {
         let negative = coefficient.is_negative();
+        let magnitude = self.magnitude(coefficient);
+        // The factors with their places, in print order; on the stack unless there are many.
         let mut factors = factors.map(|f| (expr_place(f), f));
         let Some(first) = factors.next() else {
-            let magnitude = self.number(&coefficient.abs());
             return (negative, self.push(Node::Number(magnitude)));
         };
-        // The factors with their places, in print order; on the stack unless there are many.
         let mut inline = [first; 8];
         let mut spilled: Vec<(u8, &Expr)> = Vec::new();
         let mut count = 1;
@@ -489,9 +545,8 @@ impl Layout {
             };
             self.pending.push(factor);
         }
-        let coefficient = coefficient.abs();
         let node = match &self.pending[mark..] {
-            [(false, alone)] if coefficient.is_one() => {
+            [(false, alone)] if magnitude == Number::Small(1, 1) => {
                 let alone = *alone;
                 self.pending.truncate(mark);
                 return (negative, alone);
@@ -499,7 +554,7 @@ impl Layout {
             _ => {
                 let (numerator, denominator) = self.finish_product(mark);
                 Node::Product(Product {
-                    coefficient: self.number(&coefficient),
+                    coefficient: magnitude,
                     numerator,
                     denominator,
                 })
@@ -589,102 +644,24 @@ impl Layout {
     }
 }
 
-/// The monomial that divides every term (symbols to their least power), sign excluded.
-fn common_factor(terms: &[&Expr]) -> Expr {
-    let Some(first) = terms.first() else {
-        return Expr::one();
-    };
-    let mut common: Vec<(Expr, Q)> = first
-        .coeff_and_factors()
-        .1
-        .iter()
-        .filter_map(|f| {
-            let (base, exp) = f.base_and_exponent();
-            exp.as_num().map(|q| (base.clone(), q.clone()))
-        })
-        .collect();
-    for term in &terms[1..] {
-        let factors = term.coeff_and_factors().1;
-        common.retain_mut(|(base, exp)| {
-            let found = factors.iter().find_map(|f| {
-                let (b, e) = f.base_and_exponent();
-                (b == base).then(|| e.as_num().cloned()).flatten()
-            });
-            match found {
-                Some(e) if e.is_negative() == exp.is_negative() => {
-                    if (e < *exp) != exp.is_negative() {
-                        *exp = e;
-                    }
-                    true
-                }
-                _ => false,
-            }
-        });
-    }
-    let content = rational_content(terms);
-    if common.is_empty() && content.is_one() {
-        // Nothing in common, the usual case: no product to form.
-        return Expr::one();
-    }
-    let common = common.into_iter().map(|(b, e)| power(&b, e));
-    Expr::mul_all(std::iter::once(Expr::num(content)).chain(common))
-}
-
-/// The largest positive rational that divides every coefficient, gcd of the numerators over
-/// lcm of the denominators: `1/12 a² + 1/12 d²` has `1/12`, `r²/(8L²) + 3/4` has `1/8`.
-/// A content whose numerator or denominator does not fit an `i64` is taken as 1.
-fn rational_content(terms: &[&Expr]) -> Q {
-    small_rational_content(terms).unwrap_or_else(|| big_rational_content(terms))
-}
-
-/// [`rational_content`] in machine integers; `None` when a coefficient is a big rational.
-fn small_rational_content(terms: &[&Expr]) -> Option<Q> {
-    use num_integer::Integer;
-    let mut numerators = 0u64;
-    let mut denominators = 1i64;
-    for t in terms {
-        let Q::Small(n, d) = *t.coefficient() else {
-            return None;
-        };
-        numerators = numerators.gcd(&n.unsigned_abs());
-        let Some(lcm) = (denominators / denominators.gcd(&d)).checked_mul(d) else {
-            return Some(Q::ONE);
-        };
-        denominators = lcm;
-    }
-    match i64::try_from(numerators) {
-        Ok(n) if n > 0 => Some(Q::new(n, denominators).unwrap_or(Q::ONE)),
-        _ => Some(Q::ONE),
-    }
-}
-
-/// [`rational_content`] in big integers, for coefficients beyond `i64`.
-fn big_rational_content(terms: &[&Expr]) -> Q {
-    use num_integer::Integer;
-    let mut numerators = num_bigint::BigInt::from(0);
-    let mut denominators = num_bigint::BigInt::from(1);
-    for t in terms {
-        let (n, d) = t.coefficient().parts();
-        numerators = numerators.gcd(&n);
-        denominators = denominators.lcm(&d);
-    }
-    use num_traits::ToPrimitive;
-    match (numerators.to_i64(), denominators.to_i64()) {
-        (Some(n), Some(d)) if n > 0 => Q::new(n, d).unwrap_or(Q::ONE),
-        _ => Q::ONE,
-    }
-}
-
-fn power(base: &Expr, exponent: Q) -> Expr {
-    base.checked_pow(&Expr::num(exponent))
-        .unwrap_or_else(|_| Expr::one())
-}
-
-fn is_kinematic_factor(f: &Expr) -> bool {
+/// Whether a factor belongs to a term's kinematic part (rule 1): a kinematic symbol or unit
+/// vector, a power of one, or a function of an argument that mentions a kinematic symbol.
+pub(super) fn is_kinematic_factor(f: &Expr) -> bool {
     match f.base().view() {
         View::Sym(s) => matches!(s.role(), Role::Kinematic | Role::UnitVector),
-        View::Func(_, arg) => arg.symbols().iter().any(|s| s.role() == Role::Kinematic),
+        View::Func(_, arg) => mentions_kinematic(arg),
         _ => false,
+    }
+}
+
+/// Whether a kinematic symbol occurs anywhere in `e`.
+fn mentions_kinematic(e: &Expr) -> bool {
+    match e.view() {
+        View::Num(_) => false,
+        View::Sym(s) => s.role() == Role::Kinematic,
+        View::Add(xs) | View::Mul(xs) => xs.iter().any(mentions_kinematic),
+        View::Pow(b, x) => mentions_kinematic(b) || mentions_kinematic(x),
+        View::Func(_, a) => mentions_kinematic(a),
     }
 }
 
@@ -707,7 +684,7 @@ fn expr_place(e: &Expr) -> u8 {
     match e.base().view() {
         View::Num(_) => 0,
         View::Sym(s) => symbol_place(s),
-        View::Func(_, arg) if arg.symbols().iter().any(|s| s.role() == Role::Kinematic) => 8,
+        View::Func(_, arg) if mentions_kinematic(arg) => 8,
         View::Func(..) => 7,
         _ => GROUP_PLACE,
     }
@@ -766,8 +743,12 @@ fn sort_nearly_sorted<T: Copy>(items: &mut [T], mut order: impl FnMut(&T, &T) ->
         return;
     }
     for i in 1..items.len() {
+        if order(&items[i - 1], &items[i]) != Ordering::Greater {
+            continue;
+        }
         let item = items[i];
-        let mut j = i;
+        let mut j = i - 1;
+        items[i] = items[j];
         while j > 0 && order(&items[j - 1], &item) == Ordering::Greater {
             items[j] = items[j - 1];
             j -= 1;
@@ -783,11 +764,19 @@ fn sort_nearly_sorted<T: Copy>(items: &mut [T], mut order: impl FnMut(&T, &T) ->
 /// byte), so that comparing keys is one comparison.
 type KinematicKey = u64;
 
-/// A term's kinematic key, and whether its coefficient is a sum (a single non-kinematic
-/// factor that is a sum), in one pass over its factors.
-fn term_shape(term: &Expr) -> (KinematicKey, bool) {
+/// What grouping needs to know of a term, found in one pass over its factors.
+struct TermShape {
+    key: KinematicKey,
+    /// Whether the coefficient is a sum: a single non-kinematic factor that is a sum.
+    sum_coefficient: bool,
+    /// Whether any non-kinematic factor is a sum.
+    sum_in_coefficient: bool,
+}
+
+fn term_shape(term: &Expr) -> TermShape {
     let mut others = 0usize;
     let mut other_is_sum = false;
+    let mut sum_in_coefficient = false;
     let mut factor_count = 0usize;
     let mut count = 0usize;
     let mut acceleration = false;
@@ -805,22 +794,35 @@ fn term_shape(term: &Expr) -> (KinematicKey, bool) {
         }
     };
     for f in term.factors() {
-        if !is_kinematic_factor(f) {
-            if f.as_num().is_none() {
-                others += 1;
-                other_is_sum = matches!(f.view(), View::Add(_));
+        // As `is_kinematic_factor`, visiting the kinematic symbols on the way.
+        let kinematic = match f.base().view() {
+            View::Sym(s) => {
+                visit(s);
+                matches!(s.role(), Role::Kinematic | Role::UnitVector)
             }
-            continue;
-        }
-        factor_count += 1;
-        match f.base().as_symbol() {
-            Some(s) => visit(s),
-            None => f.base().symbols().into_iter().for_each(&mut visit),
+            View::Func(_, arg) if mentions_kinematic(arg) => {
+                for s in f.base().symbols() {
+                    visit(s);
+                }
+                true
+            }
+            _ => false,
+        };
+        if kinematic {
+            factor_count += 1;
+        } else if f.as_num().is_none() {
+            others += 1;
+            other_is_sum = matches!(f.view(), View::Add(_));
+            sum_in_coefficient |= other_is_sum;
         }
     }
-    let sum_coefficient = others == 1 && other_is_sum;
+    let mut shape = TermShape {
+        key: 0,
+        sum_coefficient: others == 1 && other_is_sum,
+        sum_in_coefficient,
+    };
     if count == 0 {
-        return (0, sum_coefficient);
+        return shape;
     }
     let class = if acceleration { 1 } else { 2 };
     let axis_rank = match axes {
@@ -830,74 +832,20 @@ fn term_shape(term: &Expr) -> (KinematicKey, bool) {
         _ => 3,
     };
     let count = count.min(factor_count).min((1 << 40) - 1) as u64;
-    let key = (class << 56) | (u64::from(lowest_family) << 48) | (count << 8) | axis_rank;
-    (key, sum_coefficient)
+    shape.key = (class << 56) | (u64::from(lowest_family) << 48) | (count << 8) | axis_rank;
+    shape
 }
 
-/// Ordering key of an inertia symbol for the equation about `axis` (rule 3).
-fn inertia_key(s: Symbol, axis: Axis) -> (u8, usize, Symbol) {
-    let a = axis.index();
-    let subscript = s.subscript();
-    // The axes the subscript names, in order: the first two and how many.
-    let mut named = [0usize; 2];
-    let mut count = 0;
-    for k in subscript.chars().filter_map(axis_of_letter) {
-        if let Some(slot) = named.get_mut(count) {
-            *slot = k;
-        }
-        count += 1;
+/// The order of two kinematic parts whose keys tie: the order of their products, without
+/// forming them where the order of the factor lists is the same (both empty, both a single
+/// factor, or both several factors, whose products are compared factor by factor).
+fn compare_kinematic_parts(a: KinematicPart, b: KinematicPart) -> Ordering {
+    let size = |p: &KinematicPart| p.clone().take(2).count();
+    if size(&a) == size(&b) {
+        a.cmp(b)
+    } else {
+        Expr::mul_all(a.cloned()).cmp(&Expr::mul_all(b.cloned()))
     }
-    match (count, named) {
-        (1, [k, _]) if subscript.len() == 1 => (0, (k + 3 - a) % 3, s),
-        (2, [p, q]) => {
-            let pair = match (p.min(q), p.max(q)) {
-                (0, 1) => 0,
-                (1, 2) => 1,
-                _ => 2,
-            };
-            (1, (pair + 3 - a) % 3, s)
-        }
-        _ => (2, 0, s),
-    }
-}
-
-/// The axis index of one subscript letter: `x` or `X` is 0, `y` 1, `z` 2.
-fn axis_of_letter(c: char) -> Option<usize> {
-    match c {
-        'x' | 'X' => Some(0),
-        'y' | 'Y' => Some(1),
-        'z' | 'Z' => Some(2),
-        _ => None,
-    }
-}
-
-fn compare_coefficient_terms(a: &Expr, b: &Expr, axis: Axis) -> Ordering {
-    let key = |e: &Expr| {
-        e.monomial()
-            .iter()
-            .filter_map(|f| f.base().as_symbol())
-            .filter(|s| s.role() == Role::Inertia)
-            .map(|s| inertia_key(s, axis))
-            .min()
-    };
-    match (key(a), key(b)) {
-        (Some(x), Some(y)) => x.cmp(&y),
-        (Some(_), None) => Ordering::Less,
-        (None, Some(_)) => Ordering::Greater,
-        (None, None) => compare_lexicographic(a.monomial(), b.monomial()),
-    }
-}
-
-/// Lexicographic order of monomials, higher powers first: `a^3, a^2 b, a b^2, b^3`.
-fn compare_lexicographic(a: &[Expr], b: &[Expr]) -> Ordering {
-    for (x, y) in a.iter().zip(b.iter()) {
-        let ((bx, ex), (by, ey)) = (x.base_and_exponent(), y.base_and_exponent());
-        let order = bx.cmp(by).then_with(|| ey.cmp(&ex));
-        if order != Ordering::Equal {
-            return order;
-        }
-    }
-    b.len().cmp(&a.len())
 }
 
 #[cfg(test)]
@@ -923,26 +871,6 @@ mod tests {
             );
         }
         assert_eq!(printed.matches(" + (a + b)").count(), n - 1, "{printed}");
-    }
-
-    /// The machine-integer content agrees with the big-integer one wherever it answers,
-    /// including denominators whose lcm overflows an `i64` (content 1 in both).
-    #[test]
-    fn small_rational_content_agrees_with_big() {
-        let q = |n: i64, d: i64| Expr::num(Q::new(n, d).unwrap()) * Expr::symbol("a");
-        let sets = [
-            vec![q(1, 12), q(1, 12)],
-            vec![q(1, 8), q(3, 4)],
-            vec![q(-6, 1), q(4, 1), q(10, 3)],
-            vec![q(i64::MIN, 1), q(i64::MIN, 1)],
-            vec![q(1, 1 << 40), q(1, (1 << 40) - 1)],
-            vec![q(1, i64::MAX), q(1, i64::MAX - 1)],
-        ];
-        for terms in &sets {
-            let terms: Vec<&Expr> = terms.iter().collect();
-            let small = small_rational_content(&terms).expect("small coefficients");
-            assert_eq!(small, big_rational_content(&terms), "{terms:?}");
-        }
     }
 
     /// Numbers beyond `i64` go to the layout's side table and print in full.

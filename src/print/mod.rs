@@ -12,13 +12,14 @@
 //! assert_eq!(print::text(&h), "I_x*w_x - I_xy*w_y");
 //! ```
 
+mod coefficient;
 pub mod latex;
 pub mod layout;
 pub mod text;
 
-use crate::algebra::{Expr, Symbol, Vector, Q};
+use crate::algebra::{Expr, Symbol, Vector};
 pub use layout::Axis;
-use layout::{Layout, Node, NodeId, Span};
+use layout::{Integer, Layout, Node, NodeId, Span};
 use std::cell::RefCell;
 use std::fmt::Write;
 
@@ -38,17 +39,15 @@ thread_local! {
 
 /// Presents `e` about `axis` and hands the layout, the sign and the root to `render`.
 fn presented<R>(e: &Expr, axis: Axis, render: impl FnOnce(&Layout, bool, NodeId) -> R) -> R {
-    LAYOUT.with(|cell| {
-        let mut fresh = Layout::default();
-        // A printer that runs while another is rendering takes a layout of its own.
-        let mut shared = cell.try_borrow_mut();
-        let layout = match shared.as_deref_mut() {
-            Ok(layout) => layout,
-            Err(_) => &mut fresh,
-        };
+    let present = |layout: &mut Layout| {
         layout.clear();
         let (negative, root) = layout.present(e, axis);
         render(layout, negative, root)
+    };
+    LAYOUT.with(|cell| match cell.try_borrow_mut() {
+        Ok(mut shared) => present(&mut shared),
+        // A printer that runs while another is rendering takes a layout of its own.
+        Err(_) => present(&mut Layout::default()),
     })
 }
 
@@ -106,13 +105,16 @@ fn sum(
     }
 }
 
-/// An integer-valued rational in decimal digits, a single digit without the formatter.
-fn integer(out: &mut String, q: &Q) {
-    match q.to_i64().and_then(|n| u8::try_from(n).ok()) {
-        Some(digit @ 0..=9) => out.push(char::from(b'0' + digit)),
+/// An integer in decimal digits, a single digit without the formatter.
+fn integer(out: &mut String, n: Integer) {
+    match n {
+        Integer::Small(digit @ 0..=9) => out.push(char::from(b'0' + digit as u8)),
         // Formatting into a `String` cannot fail.
-        _ => {
-            let _ = write!(out, "{q}");
+        Integer::Small(n) => {
+            let _ = write!(out, "{n}");
+        }
+        Integer::Big(n) => {
+            let _ = write!(out, "{n}");
         }
     }
 }

@@ -3,8 +3,7 @@
 //! `sin(beta)`, `sqrt(x)`.
 
 use super::integer;
-use super::layout::{parts, Layout, Node, NodeId, Product, Span};
-use crate::algebra::Q;
+use super::layout::{Integer, Layout, Node, NodeId, Number, Product, Span};
 
 /// Appends a signed layout to `out`.
 pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
@@ -24,7 +23,7 @@ fn node(out: &mut String, layout: &Layout, id: NodeId) {
 #[inline(never)]
 fn compound(out: &mut String, layout: &Layout, compound: &Node) {
     match compound {
-        Node::Number(n) => number(out, &layout.value(*n)),
+        Node::Number(n) => number(out, layout, *n),
         Node::Symbol(s) => out.push_str(s.name()),
         Node::Sum(terms) => super::sum(out, layout, *terms, node),
         Node::Product(p) => product(out, layout, p),
@@ -35,7 +34,7 @@ fn compound(out: &mut String, layout: &Layout, compound: &Node) {
             }
             out.push('^');
             match layout.node(*exponent) {
-                Node::Number(n) if layout.value(*n).is_integer() => number(out, &layout.value(*n)),
+                Node::Number(n) if layout.parts(*n).1.is_one() => number(out, layout, *n),
                 _ => parenthesised(out, layout, *exponent),
             }
         }
@@ -56,33 +55,39 @@ fn parenthesised(out: &mut String, layout: &Layout, id: NodeId) {
     out.push(')');
 }
 
+fn number(out: &mut String, layout: &Layout, n: Number) {
+    let (n, d) = layout.parts(n);
+    ratio(out, n, d);
+}
+
 /// `p` for integers, `p/q` otherwise.
-fn number(out: &mut String, q: &Q) {
-    let (n, d) = parts(q);
-    integer(out, &n);
+fn ratio(out: &mut String, n: Integer, d: Integer) {
+    integer(out, n);
     if !d.is_one() {
         out.push('/');
-        integer(out, &d);
+        integer(out, d);
     }
 }
 
 /// A factor inside a product or under an exponent.
 fn factor(out: &mut String, layout: &Layout, id: NodeId) {
     match layout.node(id) {
+        Node::Symbol(s) => out.push_str(s.name()),
         Node::Sum(_) | Node::Product(_) => parenthesised(out, layout, id),
-        Node::Number(n) if !layout.value(*n).is_integer() => {
+        Node::Number(n) if !layout.parts(*n).1.is_one() => {
             out.push('(');
-            number(out, &layout.value(*n));
+            number(out, layout, *n);
             out.push(')');
         }
-        _ => node(out, layout, id),
+        other => compound(out, layout, other),
     }
 }
 
-/// The factors of one side of a product joined by `*`, after the number `shown` (if any).
-fn factors(out: &mut String, layout: &Layout, shown: Option<&Q>, span: Span) {
-    if let Some(q) = shown {
-        number(out, q);
+/// The factors of one side of a product joined by `*`, after the number `shown` (if any,
+/// as numerator and denominator).
+fn factors(out: &mut String, layout: &Layout, shown: Option<(Integer, Integer)>, span: Span) {
+    if let Some((n, d)) = shown {
+        ratio(out, n, d);
     }
     for (i, &(_, f)) in layout.entries(span).iter().enumerate() {
         if i > 0 || shown.is_some() {
@@ -93,17 +98,22 @@ fn factors(out: &mut String, layout: &Layout, shown: Option<&Q>, span: Span) {
 }
 
 fn product(out: &mut String, layout: &Layout, p: &Product) {
-    let coefficient = layout.value(p.coefficient);
-    let (cn, cd) = parts(&coefficient);
+    let (cn, cd) = layout.parts(p.coefficient);
+    let one = Integer::Small(1);
     let shown_numerator = !cn.is_one() || p.numerator.is_empty();
     if p.denominator.is_empty() {
-        let shown = (!cd.is_one() || shown_numerator).then_some(&coefficient);
+        let shown = (!cd.is_one() || shown_numerator).then_some((cn, cd));
         factors(out, layout, shown, p.numerator);
         return;
     }
-    factors(out, layout, shown_numerator.then_some(&cn), p.numerator);
+    factors(
+        out,
+        layout,
+        shown_numerator.then_some((cn, one)),
+        p.numerator,
+    );
     out.push('/');
-    let shown = (!cd.is_one()).then_some(&cd);
+    let shown = (!cd.is_one()).then_some((cd, one));
     let grouped = usize::from(shown.is_some()) + layout.entries(p.denominator).len() > 1;
     if grouped {
         out.push('(');

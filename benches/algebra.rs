@@ -5,6 +5,12 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 
+/// The allocator the `kinetics` binary ships with (`src/main.rs`), so that the figures are
+/// the command's. `examples/print_general_body.rs` keeps the system allocator, as a library
+/// user's program has by default.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 #[path = "support/general_body.rs"]
 mod general_body;
 

@@ -1,8 +1,8 @@
 //! The tape compiled to machine code (`Tape::compile_native`) against the interpreter
 //! (`Tape::eval`), which it must match bit for bit: every instruction kind, the general Euler
 //! equations in a rotating frame at random points (also against tree-walking `Expr::eval`),
-//! bad lengths, non-finite outputs, tapes without inputs or with constant outputs, the
-//! parallel batch, sharing between threads, and many tapes compiled and dropped.
+//! bad lengths, non-finite outputs, tapes without inputs or with constant outputs, a tape
+//! thousands of instructions deep, the parallel batch, sharing between threads, and many tapes compiled and dropped.
 
 use kinetics::algebra::{Expr, Func, Symbol, Vector, Q};
 use kinetics::mechanics::euler::body_angular_velocity;
@@ -233,6 +233,26 @@ fn tapes_of_no_inputs_and_constant_outputs() {
     let got = native(&compiled, &[f64::NAN, 1.5]).unwrap();
     assert_eq!(got, [1.0 / 3.0, 3.0]);
     assert_identical(Ok(got), interpreted(&tape, &[f64::NAN, 1.5]), &[]);
+}
+
+/// A polynomial of high degree: greedy factoring makes it a Horner chain thousands of
+/// instructions deep, which the native code's depth-first order walks without recursion.
+#[test]
+fn a_deep_tape_matches_the_interpreter() {
+    let x = Expr::symbol("x");
+    let degree = 3000;
+    let polynomial = Expr::add_all((1..=degree).map(|k| Expr::rational(1, k) * x.powi(k)));
+    let tape = Tape::compile(&[polynomial], &symbols(&["x"])).unwrap();
+    let depth = tape
+        .instructions()
+        .iter()
+        .filter(|i| matches!(i, Instruction::MulAdd(..)))
+        .count();
+    assert!(depth > 1000, "a chain of {depth} multiply-adds");
+    let compiled = tape.compile_native().unwrap();
+    for at in [0.0, 0.5, -0.75, 0.999] {
+        assert_identical(native(&compiled, &[at]), interpreted(&tape, &[at]), &[at]);
+    }
 }
 
 #[test]

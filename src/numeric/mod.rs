@@ -11,6 +11,7 @@ pub mod elliptic;
 pub mod error;
 pub mod euler_rhs;
 pub mod exact_propagation;
+mod native_schedule;
 pub mod native_tape;
 pub mod native_tape_batch;
 pub mod native_tape_compile;

@@ -4,11 +4,14 @@
 //! extern "C" fn(inputs: *const f64, outputs: *mut f64) -> u8   // 1: every output finite
 //! ```
 //!
-//! in a single basic block, in the tape's order. Each arithmetic instruction is the matching
-//! Cranelift float instruction (`fadd`, `fsub`, `fmul`, `fdiv`, `fneg`, `fabs`, `sqrt`);
-//! `Input(k)` loads `inputs[k]` where it is first used; output `k` is stored to
-//! `outputs[k]` at the end, and the function returns whether `Σ (o_k − o_k)` is a number,
-//! that is whether every output is finite (`o − o` is 0 for a finite `o` and NaN for ±∞ or
+//! in a single basic block, its registers computed depth first from each output in turn
+//! (`native_schedule`, which keeps few values live). Each arithmetic instruction is the
+//! matching Cranelift float instruction (`fadd`, `fsub`, `fmul`, `fdiv`, `fneg`, `fabs`,
+//! `sqrt`); `Input(k)` loads `inputs[k]` where it is first used. Output `k` is stored to
+//! `outputs[k]` at the end, after every load: a load that follows a store the processor
+//! cannot yet tell apart from it waits (storing each output as soon as it was known, before
+//! the next output's loads, took the general Euler tape from 4.4 to 6.6 ns). The function
+//! returns whether `Σ (o_k − o_k)` is a number, that is whether every output is finite (`o − o` is 0 for a finite `o` and NaN for ±∞ or
 //! NaN), so the caller need not read the outputs back to check them.
 //!
 //! Cranelift's optimiser is off (`opt_level = none`): the tape is already free of common
@@ -23,6 +26,7 @@
 //! `extern "C"` helpers below, registered with the JIT as symbols.
 
 use super::error::NumericError;
+use super::native_schedule::depth_first_order;
 use super::native_tape::{NativeFunction, NativeTape};
 use super::tape::{Instruction, Tape};
 use cranelift_codegen::ir::condcodes::FloatCC;
@@ -157,16 +161,16 @@ impl Tape {
             helpers: &helpers,
             inputs,
             imported: [None; Helper::ALL.len()],
-            registers: Vec::with_capacity(self.instruction_count()),
+            registers: vec![Register::NotYet; self.instruction_count()],
         };
-        for &instruction in self.instructions() {
-            let register = lowering.instruction(instruction)?;
-            lowering.registers.push(register);
+        for r in depth_first_order(self) {
+            lowering.registers[r as usize] =
+                lowering.instruction(self.instructions()[r as usize])?;
         }
         // Σ (o − o) over the outputs is 0 when every output is finite and NaN otherwise.
         let mut non_finite_sum = None;
-        for (k, &register) in self.output_registers().iter().enumerate() {
-            let value = lowering.operand(register);
+        for (k, &output) in self.output_registers().iter().enumerate() {
+            let value = lowering.operand(output);
             let offset = byte_offset(k)?;
             let body = &mut lowering.body;
             body.ins()
@@ -261,7 +265,7 @@ struct Lowering<'a> {
     imported: [Option<FuncRef>; Helper::ALL.len()],
     /// The pointer to the inputs (the function's first parameter).
     inputs: Value,
-    /// Each register lowered so far.
+    /// Each register of the tape as lowered so far.
     registers: Vec<Register>,
 }
 
@@ -271,6 +275,9 @@ struct Lowering<'a> {
 /// everything first spilled a quarter of the inputs of the general Euler tape to the stack).
 #[derive(Debug, Clone, Copy)]
 enum Register {
+    /// Not lowered yet: the order of `native_schedule` lowers every register before its
+    /// first use.
+    NotYet,
     Value(Value),
     /// The byte offset of the input in the input array.
     Input(i32),
@@ -290,6 +297,7 @@ impl Lowering<'_> {
                 self.registers[a as usize] = Register::Value(value);
                 value
             }
+            Register::NotYet => unreachable!("register {a} is used before it is computed"),
         }
     }
 

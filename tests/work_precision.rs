@@ -169,7 +169,7 @@ fn errors_are_finite_and_fall_as_settings_tighten_down_to_round_off() {
                         let gain = e_loose / e_tight;
                         assert!(
                             gain >= shrink.powf(p - 0.5),
-                            "{}: {what} of {f} falls only {gain}-fold from {} to {} (steps {shrink}× shorter, order {p})",
+                            "{}: {what} falls {gain}-fold from {} to {} (steps {shrink}× shorter)",
                             case.name,
                             loose.method,
                             tight.method

@@ -225,7 +225,7 @@ fn the_forced_truth_agrees_with_an_independent_double_double_rk4_extrapolated() 
             .fold(0.0, f64::max);
         assert!(
             omega < TRUTH_BOUND && attitude < TRUTH_BOUND,
-            "{}: {source} differs from the extrapolated RK4 by {omega:e} in ω, {attitude:e} in attitude",
+            "{}: {source} is off the extrapolated RK4 by {omega:e} (ω), {attitude:e} (attitude)",
             case.name
         );
     }

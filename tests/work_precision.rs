@@ -4,8 +4,8 @@
 //! shrinks, at each fixed-step method's order, down to round-off; the tightest settings reach
 //! stated errors; and the command prints the study's table and writes one SVG chart per body.
 //!
-//! The forced bodies' errors are measured against DOP853 at `rtol = 1e-14`; that truth is
-//! checked independently in `work_precision_forced_truth.rs`. No test here looks at run times.
+//! Every body's errors are measured against the double-double Taylor reference; for the
+//! forced bodies that truth is checked independently in `work_precision_forced_truth.rs`. No test here looks at run times.
 
 use kinetics::numeric::work_precision::{cases, study, Load, Row};
 use nalgebra::Vector3;

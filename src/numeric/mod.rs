@@ -11,6 +11,7 @@ pub mod elliptic;
 pub mod error;
 pub mod euler_rhs;
 pub mod exact_propagation;
+pub mod harmonic_moment;
 mod native_schedule;
 pub mod native_tape;
 pub mod native_tape_batch;

@@ -1,19 +1,20 @@
 //! Work against precision: for a set of bodies, every method at several tolerances or
 //! steps, timed, with its error against ground truth.
 //!
-//! Ground truth for torque-free bodies is the double-double Taylor integration
+//! Ground truth for every body is the double-double Taylor integration
 //! ([`super::reference`]), which shares no code with the closed form or the integrators;
-//! for the forced bodies (a constant moment, and a moment varying in time as a scene's
-//! couples do) it is DOP853 at `rtol = 1e-14` (stated in the table). That agrees with an
-//! independent double-double RK4 to about 1e-12 over 100 s
-//! (`tests/work_precision_forced_truth.rs`), so forced-body errors near 1e-12 are not
-//! resolved. Every method, the splitting included, runs on every body.
+//! the forced bodies (a constant moment, and a moment varying in time as a scene's couples
+//! do) carry a [`HarmonicMoment`], whose Taylor series the reference sums exactly. An
+//! independent double-double RK4 with Richardson extrapolation checks the forced truth
+//! (`tests/work_precision_forced_truth.rs`). Every method, the splitting included, runs on
+//! every body.
 //! Error = max over the sample times of `|Δω|` and of the attitude angle between the
 //! computed and the true orientation.
 
 use super::body_inertia::BodyInertia;
 use super::error::NumericError;
 use super::exact_propagation::{simulate_choice, Choice};
+use super::harmonic_moment::HarmonicMoment;
 use super::reference::ReferenceMotion;
 use super::rigid_body_state::RigidBodyState;
 use super::sample_sink::Sample;
@@ -28,8 +29,8 @@ use std::time::{Duration, Instant};
 pub enum Load {
     None,
     Constant(Vector3<f64>),
-    /// A function of time alone.
-    Programme(fn(f64) -> Vector3<f64>),
+    /// A function of time alone, as a scene's couple `M_0 sin(p t)`.
+    Harmonic(HarmonicMoment),
 }
 
 /// A test body.
@@ -40,9 +41,14 @@ pub struct Case {
     pub load: Load,
 }
 
-/// The moment of the time-forced body: a couple that oscillates, as a scene's `M_0 sin(p t)`.
-fn oscillating_couple(t: f64) -> Vector3<f64> {
-    Vector3::new(0.1 * t.cos(), -0.2, 0.05 * (2.0 * t).sin())
+/// The moment of the time-forced body: `(0.1 cos t, −0.2, 0.05 sin 2t)`.
+fn oscillating_couple() -> HarmonicMoment {
+    HarmonicMoment {
+        constant: Vector3::new(0.0, -0.2, 0.0),
+        cosine: Vector3::new(0.1, 0.0, 0.0),
+        sine: Vector3::new(0.0, 0.0, 0.05),
+        frequency: Vector3::new(1.0, 0.0, 2.0),
+    }
 }
 
 /// The five bodies of the work-precision study.
@@ -79,7 +85,7 @@ pub fn cases() -> Vec<Case> {
             name: "time-forced",
             moments: Vector3::new(1.0, 2.0, 3.0),
             omega0: Vector3::new(1.0, 1.0, 1.0),
-            load: Load::Programme(oscillating_couple),
+            load: Load::Harmonic(oscillating_couple()),
         },
     ]
 }
@@ -127,34 +133,33 @@ pub struct Row {
 }
 
 /// The true states of `case` at `times`, and what they come from: the double-double Taylor
-/// reference for a torque-free body, DOP853 at `rtol = 1e-14` (`atol = 1e-17`) for a forced one.
+/// reference, under the body's moment when it is forced.
 pub fn truth(
     case: &Case,
     times: &[f64],
 ) -> Result<(Vec<RigidBodyState<f64>>, &'static str), NumericError> {
-    match case.load {
-        Load::None => {
-            let mut reference =
-                ReferenceMotion::new(case.moments, case.omega0, UnitQuaternion::identity())?;
-            let states = times
-                .iter()
-                .map(|&t| {
-                    reference
-                        .advance_to(t)
-                        .map(|s| RigidBodyState::new(s.omega, s.orientation))
-                })
-                .collect::<Result<Vec<_>, _>>()?;
-            Ok((states, "double-double Taylor reference"))
+    let start = UnitQuaternion::identity();
+    let mut reference = match case.load {
+        Load::None => ReferenceMotion::new(case.moments, case.omega0, start)?,
+        Load::Constant(moment) => ReferenceMotion::forced(
+            case.moments,
+            case.omega0,
+            start,
+            HarmonicMoment::steady(moment),
+        )?,
+        Load::Harmonic(moment) => {
+            ReferenceMotion::forced(case.moments, case.omega0, start, moment)?
         }
-        Load::Constant(_) | Load::Programme(_) => {
-            let states = run(
-                case,
-                &Choice::Integrate(Method::dop853(1e-14, 1e-17)),
-                times,
-            )?;
-            Ok((states, "DOP853 at rtol 1e-14"))
-        }
-    }
+    };
+    let states = times
+        .iter()
+        .map(|&t| {
+            reference
+                .advance_to(t)
+                .map(|s| RigidBodyState::new(s.omega, s.orientation))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok((states, "double-double Taylor reference"))
 }
 
 fn problem(case: &Case) -> Problem<f64> {
@@ -163,7 +168,7 @@ fn problem(case: &Case) -> Problem<f64> {
         torque: match case.load {
             Load::None => Torque::None,
             Load::Constant(moment) => Torque::Body(moment),
-            Load::Programme(moment) => Torque::Time(Box::new(moment)),
+            Load::Harmonic(moment) => Torque::Time(Box::new(move |t| moment.at(t))),
         },
         initial: RigidBodyState::new(case.omega0, UnitQuaternion::identity()),
         start_time: 0.0,

@@ -1,6 +1,11 @@
 //! `kinetics simulate SCENE (--until T [--every dt] | --at t1,t2,...) [--method ...]
 //! [--rtol R | --step h] [--format csv|json] [--plot out.svg]`: integrate Euler's equations
 //! and the orientation for the scene's body, streaming the samples (memory stays flat).
+//!
+//! Each row is formatted and written as its sample arrives; only the plot keeps points, at
+//! most `PLOT_POINTS` of them. `--rtol` belongs to dop853 (and to auto, which may integrate
+//! with it) and `--step` to rk4 and splitting: a flag the chosen method does not use is
+//! refused with the reason, not ignored.
 
 use kinetics::numeric::exact_propagation::{simulate_choice, Choice, MethodUsed};
 use kinetics::numeric::plot::{line_chart, Series};
@@ -39,12 +44,13 @@ pub struct Args {
     /// Sample at these times (s), comma-separated and increasing.
     #[arg(long, value_delimiter = ',')]
     pub at: Option<Vec<f64>>,
+    /// auto: the closed form when the body is torque-free, dop853 otherwise.
     #[arg(long, value_enum, default_value_t = MethodName::Auto)]
     pub method: MethodName,
-    /// Relative tolerance of dop853 (and of auto when it integrates).
-    #[arg(long, default_value_t = 1e-10, conflicts_with = "step")]
-    pub rtol: f64,
-    /// Step of rk4 and splitting (s).
+    /// Relative tolerance of dop853 (and of auto when it integrates); default 1e-10.
+    #[arg(long, conflicts_with = "step")]
+    pub rtol: Option<f64>,
+    /// Step of rk4 and splitting (s); default 1e-3.
     #[arg(long)]
     pub step: Option<f64>,
     #[arg(long, value_enum, default_value_t = Output::Csv)]
@@ -59,8 +65,78 @@ pub struct Args {
 
 /// Most points kept for the plot; longer runs are thinned evenly.
 const PLOT_POINTS: usize = 20_000;
+/// Relative tolerance of dop853 (and of auto) without `--rtol`.
+const DEFAULT_RTOL: f64 = 1e-10;
+/// Step of rk4 and splitting without `--step` (s).
+const DEFAULT_STEP: f64 = 1e-3;
+
+/// The method with its parameter. A parameter the method does not use is an error rather
+/// than ignored: `--method dop853 --step 1e-4` would otherwise run at the default tolerance
+/// while the user believes the step was set.
+fn method_choice(
+    method: MethodName,
+    rtol: Option<f64>,
+    step: Option<f64>,
+) -> Result<Choice, String> {
+    let refuse = |flag: &str, name: &str, reason: &str| {
+        Err(format!(
+            "error: {flag} does not apply to --method {name}: {reason}"
+        ))
+    };
+    let fixed_steps = "it takes equal steps; give --step (default 1e-3 s) instead";
+    match method {
+        MethodName::Auto => match step {
+            Some(_) => refuse(
+                "--step",
+                "auto",
+                "auto takes the closed form or dop853, which chooses its own steps; give \
+                 --rtol, or choose --method rk4 or splitting",
+            ),
+            None => Ok(Choice::Auto {
+                rtol: rtol.unwrap_or(DEFAULT_RTOL),
+            }),
+        },
+        MethodName::Exact => {
+            let given = [("--rtol", rtol), ("--step", step)];
+            match given.iter().find(|(_, value)| value.is_some()) {
+                Some((flag, _)) => refuse(
+                    flag,
+                    "exact",
+                    "the closed form is evaluated at each sample time, with neither a \
+                     tolerance nor steps",
+                ),
+                None => Ok(Choice::Exact),
+            }
+        }
+        MethodName::Dop853 => match step {
+            Some(_) => refuse(
+                "--step",
+                "dop853",
+                "dop853 chooses its own steps to meet --rtol (default 1e-10)",
+            ),
+            None => {
+                let rtol = rtol.unwrap_or(DEFAULT_RTOL);
+                Ok(Choice::Integrate(Method::dop853(rtol, rtol * 1e-3)))
+            }
+        },
+        MethodName::Rk4 => match rtol {
+            Some(_) => refuse("--rtol", "rk4", fixed_steps),
+            None => Ok(Choice::Integrate(Method::Rk4 {
+                step: step.unwrap_or(DEFAULT_STEP),
+            })),
+        },
+        MethodName::Splitting => match rtol {
+            Some(_) => refuse("--rtol", "splitting", fixed_steps),
+            None => Ok(Choice::Integrate(Method::Splitting {
+                step: step.unwrap_or(DEFAULT_STEP),
+                order: SplittingOrder::Fourth,
+            })),
+        },
+    }
+}
 
 pub fn run(args: Args) -> Result<String, String> {
+    let choice = method_choice(args.method, args.rtol, args.step)?;
     let (name, text) = super::input::read_file(&args.scene)?;
     let scene = parse_scene(&name, &text).map_err(|d| d.render())?;
     let problem = simulation::problem(&scene).map_err(|d| d.render())?;
@@ -72,17 +148,6 @@ pub fn run(args: Args) -> Result<String, String> {
             ));
         }
     }
-    let step = args.step.unwrap_or(1e-3);
-    let choice = match args.method {
-        MethodName::Auto => Choice::Auto { rtol: args.rtol },
-        MethodName::Exact => Choice::Exact,
-        MethodName::Rk4 => Choice::Integrate(Method::Rk4 { step }),
-        MethodName::Dop853 => Choice::Integrate(Method::dop853(args.rtol, args.rtol * 1e-3)),
-        MethodName::Splitting => Choice::Integrate(Method::Splitting {
-            step,
-            order: SplittingOrder::Fourth,
-        }),
-    };
     let (sampling, count) = match (&args.at, args.until) {
         (Some(times), _) => (Sampling::Times(times.clone()), times.len()),
         (None, Some(until)) => {

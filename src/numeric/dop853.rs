@@ -13,7 +13,9 @@
 //!
 //! The step is accepted when `err ≤ 1`; the next step is `h / clamp(err^⅛ / 0.9, 1/6, 3)`,
 //! and after a rejection it may not grow. The derivative at the end of an accepted step is
-//! the first stage of the next (FSAL). The initial step follows Hairer's `HINIT`.
+//! the first stage of the next (FSAL). The initial step follows Hairer's `HINIT`, measured in
+//! the problem's own time unit so that a body spinning at 1e150 or 1e-150 rad/s starts as one
+//! spinning at 1 rad/s; the norms and the error estimate are scaled before squaring.
 //!
 //! Dense output: three more stages give a degree-7 polynomial on each accepted step, so
 //! samples at any time inside the step are interpolated to the accuracy of the method.
@@ -405,38 +407,73 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
         self.statistics
     }
 
-    /// Error-scaled norm `sqrt(Σ(vᵢ/sᵢ)²)` with weights `sᵢ = atol + rtol |yᵢ|`.
+    /// Error-scaled norm `sqrt(Σ(vᵢ/sᵢ)²)` with weights `sᵢ = atol + rtol |yᵢ|`, computed
+    /// without overflow or underflow (see [`scaled_norm`]): for a derivative the ratios are
+    /// rates, `1/rtol` times the problem's frequency, and for a body spinning at 1e150 rad/s
+    /// their squares overflowed (a zero first step).
     fn weighted_norm(&self, v: &SVector<T, N>, y: &SVector<T, N>) -> T {
-        v.zip_map(y, |vi, yi| {
+        scaled_norm(&v.zip_map(y, |vi, yi| {
             vi / (self.settings.atol + self.settings.rtol * yi.abs())
-        })
-        .norm()
+        }))
     }
 
-    /// Hairer's starting step: make the explicit Euler step's change and the estimated
-    /// second derivative's contribution small, bounded by the whole interval.
+    /// Hairer's starting step (`HINIT`), measured in the problem's own time unit `τ`.
+    ///
+    /// `HINIT` compares the weighted norms `d₁ = ‖f₀‖` (per unit time) and
+    /// `d₂ ≈ ‖y''‖` (per unit time squared) with absolute constants and falls back to an
+    /// absolute `1e-6`, all in the caller's unit of time. For a body spinning at 1e150 rad/s
+    /// `d₂` is about 1e311 s⁻², not representable, and the first step was zero (a step-size
+    /// underflow at `t = 0`); at 1e-150 rad/s the start was `1e-6` s against a natural step
+    /// near 1e149 s, and climbing to it took about two hundred extra steps (577 instead of
+    /// 379 for the body of `tests/simulate_extreme_momentum.rs`). Here the same rules run in
+    /// the unit `τ`:
+    /// * `τ = d₀/d₁`, with `d₀ = ‖y₀‖`: the time in which the initial rate changes the state
+    ///   by its own weighted size (Hairer's trial step is `0.01 τ` already);
+    /// * `τ = 1/d₁` when the state is below its tolerances (`d₀ ≤ 1e-5`): the time to move by
+    ///   one tolerance;
+    /// * `τ = t_end − t₀` when nothing moves (`d₁ = 0`) or `τ` is not representable.
+    ///
+    /// In that unit `d₁τ`, `d₂τ²` and the steps are the same numbers whatever the problem's
+    /// time scale (exactly so when it is scaled by a power of two, with `atol = 0`), and for a
+    /// problem whose natural unit is the caller's the rules are Hairer's: make the explicit
+    /// Euler step's change and the estimated second derivative's contribution small, bounded
+    /// by the whole interval.
     fn initial_step<S: OdeSystem<T, N> + ?Sized>(&mut self, system: &S) -> T {
         let max_step = self.t_end - self.t;
-        let derivative_norm = self.weighted_norm(&self.derivative, &self.y);
         let state_norm = self.weighted_norm(&self.y, &self.y);
+        let derivative_norm = self.weighted_norm(&self.derivative, &self.y);
         let tiny = constant::<T>(1e-5);
+        let own_unit = if state_norm > tiny {
+            state_norm / derivative_norm
+        } else {
+            derivative_norm.recip()
+        };
+        let unit = if own_unit.is_finite() && own_unit > T::zero() {
+            own_unit
+        } else {
+            max_step
+        };
+        // Hairer's HINIT on the quantities in the unit `τ`; steps `h` are in that unit.
+        let max_step_in_unit = max_step / unit;
+        let derivative_norm = derivative_norm * unit;
         let mut h = if derivative_norm <= tiny || state_norm <= tiny {
             constant(1e-6)
         } else {
             state_norm / derivative_norm * constant(0.01)
         };
-        h = h.min(max_step);
-        let euler = self.y + self.derivative * h;
-        let derivative_after = system.derivative(self.t + h, &euler);
+        h = h.min(max_step_in_unit);
+        let euler = self.y + self.derivative * (h * unit);
+        let derivative_after = system.derivative(self.t + h * unit, &euler);
         self.statistics.evaluations += 1;
-        let second = self.weighted_norm(&(derivative_after - self.derivative), &self.y) / h;
+        // ‖Δf‖ / (h τ) is the second derivative per unit time squared; times τ².
+        let second = self.weighted_norm(&(derivative_after - self.derivative), &self.y) * unit / h;
         let scale = second.max(derivative_norm);
         let by_second = if scale <= constant(1e-15) {
             (h * constant(1e-3)).max(constant(1e-6))
         } else {
             (constant::<T>(0.01) / scale).powf(constant(1.0 / 8.0))
         };
-        (h * constant(100.0)).min(by_second).min(max_step)
+        (h * constant(100.0)).min(by_second).min(max_step_in_unit) * unit
     }
 
     /// `y + h Σⱼ aᵢⱼ kⱼ` for stage `i` of a step of size `h` from `y`.
@@ -542,30 +579,38 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
         }
     }
 
-    /// Hairer's combined 5th/3rd-order error estimate of a step (≤ 1 means accept).
+    /// Hairer's combined 5th/3rd-order error estimate of a step (≤ 1 means accept), in the
+    /// form `err = Σaᵢ² / sqrt(n (Σaᵢ² + 0.01 Σbᵢ²))` with `aᵢ = h err₅ᵢ / sᵢ` and
+    /// `bᵢ = h err₃ᵢ / sᵢ`: the module's formula with `|h|` taken inside the sums (`h > 0`).
+    ///
+    /// `err₅ᵢ/sᵢ` is a rate (per unit time), `1/h` for a step at its tolerance: for a body
+    /// spinning at 1e150 rad/s its square overflowed as soon as a trial step missed its
+    /// tolerance by a factor of about 1e4, and the estimate `inf/inf` cut the step by the
+    /// largest factor instead of by its error. The `aᵢ, bᵢ` are dimensionless and near 1 for
+    /// a step near acceptance; `h` multiplies the coefficients (not the sums, which for a slow
+    /// body's tiny derivatives could fall into subnormals first), and the `aᵢ, bᵢ` are divided
+    /// by the largest before squaring, so no estimate overflows or underflows.
     fn error_norm(&self, y_new: &SVector<T, N>, h: T) -> T {
         let mut err5 = SVector::<T, N>::zeros();
         for &(j, e) in &E5 {
-            err5 += self.stages[j] * constant::<T>(e);
+            err5 += self.stages[j] * (constant::<T>(e) * h);
         }
-        let increment = (y_new - self.y) / h;
-        let mut err3 = increment;
+        let mut err3 = y_new - self.y;
         for &(j, b) in &B_HAT_3 {
-            err3 -= self.stages[j] * constant::<T>(b);
+            err3 -= self.stages[j] * (constant::<T>(b) * h);
         }
-        let mut sum5 = T::zero();
-        let mut sum3 = T::zero();
-        for i in 0..N {
-            let scale =
-                self.settings.atol + self.settings.rtol * self.y[i].abs().max(y_new[i].abs());
-            sum5 += (err5[i] / scale).powi(2);
-            sum3 += (err3[i] / scale).powi(2);
+        let weights = self.y.zip_map(y_new, |y, y_new| {
+            self.settings.atol + self.settings.rtol * y.abs().max(y_new.abs())
+        });
+        let (a, b) = (err5.component_div(&weights), err3.component_div(&weights));
+        let largest = largest_magnitude(a.iter().chain(b.iter()));
+        if largest == T::zero() || !largest.is_finite() {
+            // A zero estimate is a perfect step; a non-finite one fails.
+            return largest;
         }
-        let mut denominator = sum5 + sum3 * constant(0.01);
-        if denominator <= T::zero() {
-            denominator = T::one();
-        }
-        h.abs() * sum5 / (denominator * constant(N as f64)).sqrt()
+        let sum5 = a.unscale(largest).norm_squared();
+        let sum3 = b.unscale(largest).norm_squared();
+        largest * sum5 / ((sum5 + sum3 * constant(0.01)) * constant(N as f64)).sqrt()
     }
 
     /// The solution at `t` inside the last accepted step `[t_old, t_now]`, from the
@@ -618,6 +663,33 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
         }
         coefficients
     }
+}
+
+/// The 2-norm of `v` without overflow or underflow: the components are divided by the
+/// largest magnitude before squaring (and the norm of a vector scaled by a power of two is
+/// scaled exactly). Zero for a zero vector; not finite when a component is not.
+fn scaled_norm<T: RealField + Copy, const N: usize>(v: &SVector<T, N>) -> T {
+    let largest = largest_magnitude(v.iter());
+    if largest == T::zero() || !largest.is_finite() {
+        return largest;
+    }
+    v.unscale(largest).norm() * largest
+}
+
+/// The largest `|vᵢ|`; not finite if a component is not (where a plain maximum would skip
+/// a NaN).
+fn largest_magnitude<'a, T: RealField + Copy>(v: impl Iterator<Item = &'a T>) -> T {
+    v.fold(T::zero(), |largest, x| {
+        let x = x.abs();
+        if !largest.is_finite() {
+            return largest;
+        }
+        match x.partial_cmp(&largest) {
+            // `None`: x is NaN.
+            Some(std::cmp::Ordering::Greater) | None => x,
+            _ => largest,
+        }
+    })
 }
 
 #[cfg(test)]

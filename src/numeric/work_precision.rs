@@ -195,7 +195,8 @@ fn run(
 /// Runs the study; `until` is the end time, sampled at 100 equal intervals (a fixed-step
 /// method lands on each sample, so for `until < 10` its steps longer than `until / 100` are
 /// cut to the spacing and give the same error). Each setting is repeated until it has run for
-/// at least `budget`, and its mean time is reported.
+/// at least `budget`, and its mean time is reported. Returns the rows and one note for each
+/// source of truth, naming the bodies measured against it.
 pub fn study(
     until: f64,
     budget: Duration,
@@ -203,10 +204,14 @@ pub fn study(
 ) -> Result<(Vec<Row>, Vec<String>), NumericError> {
     let times: Vec<f64> = (1..=100).map(|k| until * k as f64 / 100.0).collect();
     let mut rows = Vec::new();
-    let mut notes = Vec::new();
+    // Each source of truth with the bodies measured against it, in the order first met.
+    let mut sources: Vec<(&'static str, Vec<&'static str>)> = Vec::new();
     for case in cases() {
         let (truth, source) = truth(&case, &times)?;
-        notes.push(format!("{}: errors against the {source}", case.name));
+        match sources.iter_mut().find(|(s, _)| *s == source) {
+            Some((_, bodies)) => bodies.push(case.name),
+            None => sources.push((source, vec![case.name])),
+        }
         for (method, choice) in choices(!matches!(case.load, Load::None)) {
             progress(&format!("{} / {method}", case.name));
             let started = Instant::now();
@@ -236,5 +241,9 @@ pub fn study(
             });
         }
     }
+    let notes = sources
+        .iter()
+        .map(|(source, bodies)| format!("{}: errors against the {source}", bodies.join(", ")))
+        .collect();
     Ok((rows, notes))
 }

@@ -443,11 +443,28 @@ impl Layout {
         kinematic: KinematicPart<'e>,
         axis: Axis,
     ) -> (bool, NodeId) {
-        let common = coefficient::common_factor(terms);
-        let divided: Vec<Expr> = match &common {
-            Some(common) => terms.iter().map(|t| t.to_expr() / common).collect(),
-            None => Vec::new(),
+        let mut common = coefficient::common_factor(terms);
+        let divide = |common: &Option<Expr>| -> Vec<Expr> {
+            match common {
+                Some(common) => terms.iter().map(|t| t.to_expr() / common).collect(),
+                None => Vec::new(),
+            }
         };
+        let mut divided = divide(&common);
+        if let Some(c) = &common {
+            // A common factor whose base is the group itself stays in the group: the
+            // group and the factor would merge when read back, so `a ω/(a + b) + b ω/(a + b)`
+            // is not `(a + b) ω/(a + b)`, which reads back as `ω`.
+            let sum_base = |f: &Expr| matches!(f.base().view(), View::Add(_));
+            if c.monomial().iter().any(sum_base) {
+                let group = Expr::add_all(divided.iter().cloned());
+                if c.monomial().iter().any(|f| *f.base() == group) {
+                    let kept = c.without_factors(|f| *f.base() == group);
+                    common = (!kept.is_one()).then_some(kept);
+                    divided = divide(&common);
+                }
+            }
+        }
         let divided: Vec<CoefficientTerm> = divided.iter().map(CoefficientTerm::whole).collect();
         let inner = match common {
             Some(_) => &divided[..],
@@ -905,6 +922,19 @@ mod tests {
             );
         }
         assert_eq!(printed.matches(" + (a + b)").count(), n - 1, "{printed}");
+    }
+
+    /// Terms over a common sum whose numerators add up to that sum, `a ω/(a + b) +
+    /// b ω/(a + b)`, are not printed as a group divided by itself (which reads back as `ω`,
+    /// another expression to the algebra): the text parses back to the expression.
+    #[test]
+    fn a_group_is_not_divided_by_itself() {
+        let (a, b, w) = (Expr::symbol("a"), Expr::symbol("b"), Expr::symbol("w_x"));
+        let over = (&a + &b).powi(-1);
+        let e = &a * &w * &over + &b * &w * &over;
+        let printed = crate::print::text(&e);
+        let back = crate::parse::parse_expression("printed", &printed).unwrap();
+        assert_eq!(back.expand().unwrap(), e.expand().unwrap(), "{printed}");
     }
 
     /// Sums in denominators that would collect into a group, `I_xy θ - θ`, are written

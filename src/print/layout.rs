@@ -23,6 +23,9 @@
 //!    and the reciprocal of a product reads back as the product of the reciprocals, a
 //!    different canonical form from the reciprocal of the sum (and expanding does not join
 //!    them), so the printed text would not parse back to the expression.
+//! 6. A function's argument that is a sum is collected as any sum, unless it collects into
+//!    a single negative group: then it is written term by term, since the group's minus
+//!    would leave the function by its parity when read back.
 //!
 //! The form is built bottom-up into a [`Layout`]: nodes in one vector, the terms of each sum
 //! and the factors of each product as a contiguous run in another, children collected on a
@@ -633,11 +636,28 @@ impl Layout {
                 self.push(Node::Number(q))
             }
             View::Func(f, arg) => {
-                let arg = self.present_signed_inline(arg, axis);
+                let arg = self.present_argument(arg, axis);
                 self.push(Node::Function(f, arg))
             }
             _ => self.present_signed_inline(e, axis),
         }
+    }
+
+    /// A function's argument (rule 6): a sum that collects into one negative group,
+    /// `-1/2*(2/a - 1)*w_x`, is written term by term instead. Read back, a single term's
+    /// minus leaves the function by its parity (`sin(-x) = -sin x`), and the sum would
+    /// come back with the opposite sign: `-sin(w_x/a - 1/2*w_x)` for `sin(1/2*w_x - w_x/a)`,
+    /// another canonical form.
+    fn present_argument(&mut self, arg: &Expr, axis: Axis) -> NodeId {
+        if let View::Add(_) = arg.view() {
+            let (negative, id) = self.present_sum(arg, axis, true);
+            if !negative {
+                return id;
+            }
+            // The grouped form's nodes stay behind, unused.
+            return self.present_signed_inline_collected(arg, axis, false);
+        }
+        self.present_signed_inline(arg, axis)
     }
 
     /// An expression that must stand as one unit; a leading minus becomes part of a sum.
@@ -947,6 +967,23 @@ mod tests {
             -denominator.powi(-1),
             Expr::symbol("m") * denominator.powi(-2),
             denominator.checked_pow(&Expr::rational(-1, 2)).unwrap(),
+        ] {
+            let printed = crate::print::text(&e);
+            let back = crate::parse::parse_expression("printed", &printed).unwrap();
+            assert_eq!(back.expand().unwrap(), e.expand().unwrap(), "{printed}");
+        }
+    }
+
+    /// Sums under functions that would collect into one negative group, `w_x/2 - w_x/a`,
+    /// are written term by term, so that the text parses back to the expression.
+    #[test]
+    fn function_arguments_read_back() {
+        let (a, w) = (Expr::symbol("a"), Expr::symbol("w_x"));
+        let argument = Expr::rational(1, 2) * &w - &w / &a;
+        for e in [
+            Func::Abs.apply(argument.clone()),
+            Func::Sin.apply(argument.clone()),
+            Func::Cos.apply(-argument),
         ] {
             let printed = crate::print::text(&e);
             let back = crate::parse::parse_expression("printed", &printed).unwrap();

@@ -46,11 +46,11 @@ impl Expr {
                         check_size("the power", multinomial_terms(t, n as u64))?;
                         let mut result = base.clone();
                         for _ in 1..n {
-                            result = multiply_out(&result, &base);
+                            result = multiply_out(&result, &base)?;
                         }
                         Ok(result)
                     }
-                    _ => base.checked_pow(exponent),
+                    _ => multiplied_out(base.checked_pow(exponent)?),
                 }
             }
             View::Func(f, arg) => Ok(Expr::func(f, arg.expand()?)),
@@ -106,9 +106,9 @@ fn expand_product(p: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
         Some((last, rest)) => {
             let mut partial: Operands = rest[0].terms().iter().cloned().collect();
             for f in &rest[1..] {
-                partial = products_of_terms(&partial, f.terms());
+                partial = products_of_terms(&partial, f.terms())?;
             }
-            for t in products_of_terms(&partial, last.terms()) {
+            for t in products_of_terms(&partial, last.terms())? {
                 terms.push(merge::scaled_product(coeff, &monomial, &t));
             }
         }
@@ -116,15 +116,49 @@ fn expand_product(p: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
     Ok(())
 }
 
-/// Every product `x · y` of a term `x` of `a` and a term `y` of `b`, uncombined.
-fn products_of_terms(a: &[Expr], b: &[Expr]) -> Operands {
+/// Every product `x · y` of a term `x` of `a` and a term `y` of `b`, multiplied out,
+/// uncombined.
+fn products_of_terms(a: &[Expr], b: &[Expr]) -> Result<Operands, AlgebraError> {
     let mut products = Operands::with_capacity(a.len() * b.len());
     for x in a {
         for y in b {
-            products.push(x * y);
+            let product = x * y;
+            if is_multiplied_out(&product) {
+                products.extend(product.terms().iter().cloned());
+            } else {
+                expand_into(&product, &mut products)?;
+            }
         }
     }
-    products
+    Ok(products)
+}
+
+/// `e`, a product or power of expanded expressions, multiplied out.
+fn multiplied_out(e: Expr) -> Result<Expr, AlgebraError> {
+    match is_multiplied_out(&e) {
+        true => Ok(e),
+        false => e.expand(),
+    }
+}
+
+/// Whether a product or power of expanded expressions is expanded itself. It is, unless
+/// powers of one sum met in it and combined into the sum, or a positive whole power of it,
+/// as a factor: `x √s · √s = x s`, `s^(3/2) · s^(3/2) = s³`, `(x √s)² = x² s`. Such a
+/// factor is multiplied out in turn (its sum is of a deeper level, so this ends).
+fn is_multiplied_out(e: &Expr) -> bool {
+    let whole_power_of_sum = |f: &Expr| match f.view() {
+        View::Add(_) => true,
+        View::Pow(base, exponent) => {
+            matches!(base.view(), View::Add(_))
+                && exponent
+                    .as_num()
+                    .is_some_and(|q| q.is_integer() && !q.is_negative())
+        }
+        _ => false,
+    };
+    e.terms()
+        .iter()
+        .all(|t| !t.monomial().iter().any(whole_power_of_sum))
 }
 
 /// Whether `e` is a sum of monomials in symbols (or a single one), which expands to itself.
@@ -153,11 +187,14 @@ fn is_power_of_symbol(e: &Expr) -> bool {
 }
 
 /// The product of two expanded expressions, multiplied out term by term.
-fn multiply_out(a: &Expr, b: &Expr) -> Expr {
+fn multiply_out(a: &Expr, b: &Expr) -> Result<Expr, AlgebraError> {
     if a.terms().len() == 1 && b.terms().len() == 1 {
-        return a * b;
+        return multiplied_out(a * b);
     }
-    Expr::sum_of_terms(&mut products_of_terms(a.terms(), b.terms()))
+    Ok(Expr::sum_of_terms(&mut products_of_terms(
+        a.terms(),
+        b.terms(),
+    )?))
 }
 
 /// The number of monomials of degree `n` in `t` variables, C(t + n - 1, n), as a float
@@ -197,7 +234,7 @@ mod tests {
             View::Mul(factors) => factors
                 .iter()
                 .map(pairwise)
-                .fold(Expr::one(), |acc, f| multiply_out(&acc, &f)),
+                .fold(Expr::one(), |acc, f| multiply_out(&acc, &f).expect("small")),
             _ => e.expand().expect("small"),
         }
     }
@@ -213,6 +250,41 @@ mod tests {
             format!("{:?}", t.expand().unwrap()),
             format!("{expected:?}")
         );
+    }
+
+    /// Powers of one sum that meet in a product combine into the sum or a whole power of
+    /// it, which is multiplied out in turn: with `r = √(a + 1)`,
+    /// `(x r + 1)(r + 1) = a x + x + x r + r + 1`, `(x r)² = a x² + x²` and
+    /// `(r³ - 1)² = (a + 1)³ - 2 r³ + 1` with the cube multiplied out; and expanding
+    /// again changes nothing.
+    #[test]
+    fn powers_of_a_sum_that_combine_are_multiplied_out() {
+        let (a, x) = (Expr::symbol("a"), Expr::symbol("x"));
+        let one = Expr::one();
+        let p = &a + &one;
+        let r = p.checked_pow(&Expr::rational(1, 2)).unwrap();
+        let cases = [
+            (
+                (&x * &r + &one) * (&r + &one),
+                Expr::add_all([&a * &x, x.clone(), &x * &r, r.clone(), one.clone()]),
+            ),
+            ((&x * &r).powi(2), &a * x.powi(2) + x.powi(2)),
+            (
+                (r.powi(3) - &one).powi(2),
+                Expr::add_all([
+                    a.powi(3),
+                    Expr::int(3) * a.powi(2),
+                    Expr::int(3) * &a,
+                    Expr::int(2),
+                    Expr::int(-2) * p.checked_pow(&Expr::rational(3, 2)).unwrap(),
+                ]),
+            ),
+        ];
+        for (e, expected) in cases {
+            let expanded = e.expand().unwrap();
+            assert_eq!(expanded, expected, "{e}");
+            assert_eq!(expanded.expand().unwrap(), expanded, "{e}");
+        }
     }
 
     proptest! {

@@ -331,6 +331,9 @@ impl Expr {
         }
         if merged {
             out.sort_by(|a, b| a.base().cmp(b.base()));
+            // A merged power may have a new base that another factor has too:
+            // `x² · √(x²) · √(x²)` merges the roots into `x²`, whose base is `x`.
+            renormalise |= out.windows(2).any(|w| w[0].base() == w[1].base());
         }
         if renormalise {
             out.push(Expr::num(coeff));
@@ -718,6 +721,23 @@ mod tests {
         assert!(x.powi(0).is_one());
         assert_eq!(x.powi(1), x);
         assert!(Expr::mul_all([Expr::zero(), x.clone()]).is_zero());
+    }
+
+    /// Powers merged into one whose base is new merge again with the factors of that
+    /// base: `x² · √(x²) · √(x²) = x⁴`, in any order of the factors.
+    #[test]
+    fn merged_powers_merge_with_the_factors_of_their_new_base() {
+        let x2 = s("x").powi(2);
+        let root = x2.checked_pow(&Expr::rational(1, 2)).unwrap();
+        let expected = s("x").powi(4);
+        assert_eq!(
+            Expr::mul_all([x2.clone(), root.clone(), root.clone()]),
+            expected
+        );
+        assert_eq!(
+            Expr::mul_all([root.clone(), s("y"), x2.clone(), root.clone()]),
+            Expr::mul_all([expected, s("y")])
+        );
     }
 
     #[test]

@@ -53,10 +53,11 @@ impl Func {
         }
         let (coeff, _) = arg.coeff_and_factors();
         if coeff.is_negative() && !matches!(arg.view(), View::Add(_)) {
+            // The positive argument goes through the rules again: `|-|x|| = ||x|| = |x|`.
             let positive = -arg;
             return match self {
-                Func::Sin | Func::Tan => -Expr::func_node(self, positive),
-                Func::Cos | Func::Abs => Expr::func_node(self, positive),
+                Func::Sin | Func::Tan => -self.apply(positive),
+                Func::Cos | Func::Abs => self.apply(positive),
             };
         }
         Expr::func_node(self, arg)
@@ -80,5 +81,26 @@ impl Func {
             Func::Tan => x.tan(),
             Func::Abs => x.abs(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A negative argument is made positive by the parity rules and then simplified like
+    /// any other: `|-|a|| = |a|`, and `cos(-|a|) = cos |a|`, `sin(-|a|) = -sin |a|`.
+    #[test]
+    fn parity_then_the_other_rules() {
+        let abs_a = Func::Abs.apply(Expr::symbol("a"));
+        assert_eq!(Func::Abs.apply(-&abs_a), abs_a);
+        assert_eq!(
+            Func::Cos.apply(-&abs_a),
+            Expr::func_node(Func::Cos, abs_a.clone())
+        );
+        assert_eq!(
+            Func::Sin.apply(Expr::int(-2) * &abs_a),
+            -Expr::func_node(Func::Sin, Expr::int(2) * &abs_a)
+        );
     }
 }

@@ -4,6 +4,12 @@
 //! prefix `-` and `+`; `^` (right-associative). So `-a^2` is `-(a^2)` and `1/2 m v^2` is
 //! `(1/2)·m·v²`. Decimals are exact (`0.1` is 1/10). `sqrt(x)` is `x^(1/2)`.
 //!
+//! A product is formed once from all its factors: a minus before one of them is the factor
+//! -1 (`-(a - 1) w` is `-((a - 1) w)`), and dividing by a product in parentheses divides
+//! by each of its factors (`x/(3 (1 - a))` is `x/3/(1 - a)`). The value is the same either
+//! way; this way a number is not distributed into a sum before the product is formed, so
+//! the text the printer writes parses back to the canonical form it was written from.
+//!
 //! ```
 //! use kinetics::parse::parse_expression;
 //! use kinetics::algebra::Expr;
@@ -324,22 +330,92 @@ fn primary(p: Pair<Rule>, source_name: &str, source: &str) -> Ast {
     }
 }
 
-fn lower(ast: Ast, source_name: &str, source: &str) -> Result<Expr, Diagnostic> {
-    let fail = |err: AlgebraError, span: (usize, usize)| {
-        let (start, end) = span;
-        let help = match err {
-            AlgebraError::DivisionByZero => "the divisor is exactly zero",
-            _ => "simplify the expression",
-        };
-        Diagnostic::at(
-            source_name,
-            source,
-            start,
-            end.max(start + 1),
-            err.to_string(),
-        )
-        .with_help(help)
+/// Pushes the factors of one factor of a product, as divisors when `divide` holds. A
+/// product (in parentheses) gives its own factors and a negation the factor -1 and its
+/// operand, so that the whole product is formed once: `-(a - 1)*w` is `-((a - 1) w)`, as
+/// the printer means it, and `x/(3 (1 - a))` is `x/3/(1 - a)`. Formed apart, the -1 or the
+/// 3 would first be distributed into the sum (`1 - a`, `3 - 3a`), another canonical form
+/// of the same value; the one the printer's text stands for is the product's.
+///
+/// A factor written after a `/` anywhere (`written_as_divisor`) is a division by zero when
+/// it is zero, even where two divisions cancel (`x/(1/0)`).
+fn gather_factors(
+    f: Ast,
+    divide: bool,
+    written_as_divisor: bool,
+    span: (usize, usize),
+    out: &mut Vec<Expr>,
+    source_name: &str,
+    source: &str,
+) -> Result<(), Diagnostic> {
+    match f {
+        Ast::Product(inner) => {
+            for (inner_divide, g, inner_span) in inner {
+                let inner_span = if written_as_divisor { span } else { inner_span };
+                gather_factors(
+                    g,
+                    divide != inner_divide,
+                    written_as_divisor || inner_divide,
+                    inner_span,
+                    out,
+                    source_name,
+                    source,
+                )?;
+            }
+        }
+        Ast::Negate(operand) => {
+            out.push(Expr::int(-1));
+            gather_factors(
+                *operand,
+                divide,
+                written_as_divisor,
+                span,
+                out,
+                source_name,
+                source,
+            )?;
+        }
+        other => {
+            let e = lower(other, source_name, source)?;
+            if written_as_divisor && e.is_zero() {
+                let zero = AlgebraError::DivisionByZero;
+                return Err(lowering_error(zero, span, source_name, source));
+            }
+            out.push(if divide {
+                e.checked_pow(&Expr::int(-1))
+                    .map_err(|err| lowering_error(err, span, source_name, source))?
+            } else {
+                e
+            });
+        }
+    }
+    Ok(())
+}
+
+/// A located error of the algebra while lowering.
+fn lowering_error(
+    err: AlgebraError,
+    span: (usize, usize),
+    source_name: &str,
+    source: &str,
+) -> Diagnostic {
+    let (start, end) = span;
+    let help = match err {
+        AlgebraError::DivisionByZero => "the divisor is exactly zero",
+        _ => "simplify the expression",
     };
+    Diagnostic::at(
+        source_name,
+        source,
+        start,
+        end.max(start + 1),
+        err.to_string(),
+    )
+    .with_help(help)
+}
+
+fn lower(ast: Ast, source_name: &str, source: &str) -> Result<Expr, Diagnostic> {
+    let fail = |err: AlgebraError, span| lowering_error(err, span, source_name, source);
     Ok(match ast {
         Ast::Number(q) => Expr::num(q),
         Ast::Symbol(name) => Expr::symbol(&name),
@@ -365,13 +441,7 @@ fn lower(ast: Ast, source_name: &str, source: &str) -> Result<Expr, Diagnostic> 
         Ast::Product(factors) => {
             let mut out = Vec::with_capacity(factors.len());
             for (divide, f, span) in factors {
-                let e = lower(f, source_name, source)?;
-                out.push(if divide {
-                    e.checked_pow(&Expr::int(-1))
-                        .map_err(|err| fail(err, span))?
-                } else {
-                    e
-                });
+                gather_factors(f, divide, divide, span, &mut out, source_name, source)?;
             }
             Expr::mul_all(out)
         }
@@ -381,4 +451,53 @@ fn lower(ast: Ast, source_name: &str, source: &str) -> Result<Expr, Diagnostic> 
             b.checked_pow(&e).map_err(|err| fail(err, span))?
         }
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parsed(input: &str) -> Expr {
+        parse_expression("test", input).unwrap()
+    }
+
+    /// A minus before a factor and a product as a divisor belong to the whole product,
+    /// formed once: the -1 or the number is not distributed into a sum first.
+    #[test]
+    fn a_product_is_formed_once_from_all_its_factors() {
+        let (a, w, x) = (Expr::symbol("a"), Expr::symbol("w_x"), Expr::symbol("x"));
+        let one = Expr::one();
+        assert_eq!(
+            parsed("-(a - 1)*w_x"),
+            Expr::mul_all([Expr::int(-1), &a - &one, w.clone()])
+        );
+        assert_eq!(
+            parsed("x/(3*(1 - a))"),
+            Expr::mul_all([x.clone(), Expr::rational(1, 3), (&one - &a).powi(-1)])
+        );
+        let four = Expr::int(4);
+        assert_eq!(
+            parsed("-(a + 4)/(-a - 4)"),
+            Expr::mul_all([Expr::int(-1), &a + &four, (-&a - &four).powi(-1)])
+        );
+        assert_eq!(
+            parsed("x/(2/(a + 1))"),
+            Expr::mul_all([x.clone(), Expr::rational(1, 2), &a + &one])
+        );
+    }
+
+    /// Negations elsewhere keep their meaning: `-a^2` is `-(a^2)`, `a^-2 x` is `a^(-2) x`,
+    /// `-(a + 1)` alone is the sum `-a - 1`; a divisor product with a zero factor is still
+    /// a division by zero.
+    #[test]
+    fn other_negations_and_zero_divisors_are_unchanged() {
+        let (a, x) = (Expr::symbol("a"), Expr::symbol("x"));
+        assert_eq!(parsed("-a^2"), -a.powi(2));
+        assert_eq!(parsed("a^-2 x"), a.powi(-2) * &x);
+        assert_eq!(parsed("-(a + 1)"), -&a - Expr::one());
+        for input in ["x/(2*(a - a))", "x/(1/0)", "x/(a/(-(1 - 1)))"] {
+            let zero = parse_expression("test", input).unwrap_err();
+            assert!(zero.message.contains("division by zero"), "{input}: {zero}");
+        }
+    }
 }

@@ -18,6 +18,14 @@
 //! 4. In a product: the number, then inertia and mass, other quantities, lengths, groups,
 //!    functions, kinematic symbols, unit vectors; factors with negative exponents form a
 //!    denominator.
+//! 5. A sum in a denominator is written term by term (in the order of rule 2), never
+//!    collected: `1/(I_x*theta - theta)`, not `1/((I_x - 1)*theta)`. A group is a product,
+//!    and the reciprocal of a product reads back as the product of the reciprocals, a
+//!    different canonical form from the reciprocal of the sum (and expanding does not join
+//!    them), so the printed text would not parse back to the expression.
+//! 6. A function's argument that is a sum is collected as any sum, unless it collects into
+//!    a single negative group: then it is written term by term, since the group's minus
+//!    would leave the function by its parity when read back.
 //!
 //! The form is built bottom-up into a [`Layout`]: nodes in one vector, the terms of each sum
 //! and the factors of each product as a contiguous run in another, children collected on a
@@ -276,13 +284,19 @@ impl Layout {
 
     /// The presented form of `e` as a signed node: `(negative, node)`.
     pub fn present(&mut self, e: &Expr, axis: Axis) -> (bool, NodeId) {
+        self.present_collected(e, axis, true)
+    }
+
+    /// The presented form of `e`, a sum's terms collected into groups (rule 1) when
+    /// `collect` holds, each standing alone otherwise (rule 5).
+    fn present_collected(&mut self, e: &Expr, axis: Axis, collect: bool) -> (bool, NodeId) {
         match e.view() {
-            View::Add(_) => self.present_sum(e, axis),
+            View::Add(_) => self.present_sum(e, axis, collect),
             _ => self.present_term(e, axis),
         }
     }
 
-    fn present_sum(&mut self, e: &Expr, axis: Axis) -> (bool, NodeId) {
+    fn present_sum(&mut self, e: &Expr, axis: Axis, collect: bool) -> (bool, NodeId) {
         let terms = e.terms();
         let base = self.groups.len();
         let term_base = self.next_member.len();
@@ -292,7 +306,11 @@ impl Layout {
             let kinematic = kinematic_part(term);
             let shape = term_shape(term);
             let groups = &mut self.groups[base..];
-            let found = if groups.len() <= LINEAR_SEARCH_GROUPS {
+            let found = if !collect && kinematic.clone().next().is_some() {
+                // Not collected (rule 5); terms free of kinematic symbols stand on their own
+                // in any case.
+                None
+            } else if groups.len() <= LINEAR_SEARCH_GROUPS {
                 groups.iter().position(|g| {
                     g.key == shape.key
                         && kinematic_part(&terms[g.first as usize]).eq(kinematic.clone())
@@ -401,6 +419,13 @@ impl Layout {
         }
         self.groups.truncate(base);
         self.next_member.truncate(term_base);
+        if !collect {
+            // A sum written term by term starts with a positive term where it has one.
+            let terms = &mut self.pending[mark..];
+            if let Some(at) = terms.iter().position(|&(negative, _)| !negative) {
+                terms[..=at].rotate_right(1);
+            }
+        }
         match self.pending[mark..] {
             [] => {
                 let zero = self.number(&Q::ZERO);
@@ -421,11 +446,28 @@ impl Layout {
         kinematic: KinematicPart<'e>,
         axis: Axis,
     ) -> (bool, NodeId) {
-        let common = coefficient::common_factor(terms);
-        let divided: Vec<Expr> = match &common {
-            Some(common) => terms.iter().map(|t| t.to_expr() / common).collect(),
-            None => Vec::new(),
+        let mut common = coefficient::common_factor(terms);
+        let divide = |common: &Option<Expr>| -> Vec<Expr> {
+            match common {
+                Some(common) => terms.iter().map(|t| t.to_expr() / common).collect(),
+                None => Vec::new(),
+            }
         };
+        let mut divided = divide(&common);
+        if let Some(c) = &common {
+            // A common factor whose base is the group itself stays in the group: the
+            // group and the factor would merge when read back, so `a ω/(a + b) + b ω/(a + b)`
+            // is not `(a + b) ω/(a + b)`, which reads back as `ω`.
+            let sum_base = |f: &Expr| matches!(f.base().view(), View::Add(_));
+            if c.monomial().iter().any(sum_base) {
+                let group = Expr::add_all(divided.iter().cloned());
+                if c.monomial().iter().any(|f| *f.base() == group) {
+                    let kept = c.without_factors(|f| *f.base() == group);
+                    common = (!kept.is_one()).then_some(kept);
+                    divided = divide(&common);
+                }
+            }
+        }
         let divided: Vec<CoefficientTerm> = divided.iter().map(CoefficientTerm::whole).collect();
         let inner = match common {
             Some(_) => &divided[..],
@@ -535,8 +577,10 @@ impl Layout {
                 }
             };
             let factor = match exponent.as_num() {
-                Some(q) if q.is_negative() => (true, self.present_power(base, &q.abs(), axis)),
-                Some(q) => (false, self.present_power(base, q, axis)),
+                Some(q) if q.is_negative() => {
+                    (true, self.present_power(base, &q.abs(), axis, false))
+                }
+                Some(q) => (false, self.present_power(base, q, axis, true)),
                 None => {
                     let base = self.present_atom(base, axis);
                     let exponent = self.present_signed_inline(exponent, axis);
@@ -563,12 +607,17 @@ impl Layout {
         (negative, self.push(node))
     }
 
-    fn present_power(&mut self, base: &Expr, exponent: &Q, axis: Axis) -> NodeId {
+    /// `base^exponent` for a positive exponent; a sum as the base is collected into groups
+    /// when `collect` holds (not in a denominator, rule 5).
+    fn present_power(&mut self, base: &Expr, exponent: &Q, axis: Axis, collect: bool) -> NodeId {
         if *exponent == Q::Small(1, 2) {
-            let inner = self.present_signed_inline(base, axis);
+            let inner = self.present_signed_inline_collected(base, axis, collect);
             return self.push(Node::SquareRoot(inner));
         }
-        let base = self.present_atom(base, axis);
+        let base = match base.view() {
+            View::Add(_) => self.present_signed_inline_collected(base, axis, collect),
+            _ => self.present_atom(base, axis),
+        };
         if exponent.is_one() {
             base
         } else {
@@ -587,16 +636,38 @@ impl Layout {
                 self.push(Node::Number(q))
             }
             View::Func(f, arg) => {
-                let arg = self.present_signed_inline(arg, axis);
+                let arg = self.present_argument(arg, axis);
                 self.push(Node::Function(f, arg))
             }
             _ => self.present_signed_inline(e, axis),
         }
     }
 
+    /// A function's argument (rule 6): a sum that collects into one negative group,
+    /// `-1/2*(2/a - 1)*w_x`, is written term by term instead. Read back, a single term's
+    /// minus leaves the function by its parity (`sin(-x) = -sin x`), and the sum would
+    /// come back with the opposite sign: `-sin(w_x/a - 1/2*w_x)` for `sin(1/2*w_x - w_x/a)`,
+    /// another canonical form.
+    fn present_argument(&mut self, arg: &Expr, axis: Axis) -> NodeId {
+        if let View::Add(_) = arg.view() {
+            let (negative, id) = self.present_sum(arg, axis, true);
+            if !negative {
+                return id;
+            }
+            // The grouped form's nodes stay behind, unused.
+            return self.present_signed_inline_collected(arg, axis, false);
+        }
+        self.present_signed_inline(arg, axis)
+    }
+
     /// An expression that must stand as one unit; a leading minus becomes part of a sum.
     fn present_signed_inline(&mut self, e: &Expr, axis: Axis) -> NodeId {
-        match self.present(e, axis) {
+        self.present_signed_inline_collected(e, axis, true)
+    }
+
+    /// [`Layout::present_signed_inline`], a sum's terms collected when `collect` holds.
+    fn present_signed_inline_collected(&mut self, e: &Expr, axis: Axis, collect: bool) -> NodeId {
+        match self.present_collected(e, axis, collect) {
             (false, id) => id,
             (true, id) => {
                 if let Node::Sum(span) = *self.node(id) {
@@ -871,6 +942,53 @@ mod tests {
             );
         }
         assert_eq!(printed.matches(" + (a + b)").count(), n - 1, "{printed}");
+    }
+
+    /// Terms over a common sum whose numerators add up to that sum, `a ω/(a + b) +
+    /// b ω/(a + b)`, are not printed as a group divided by itself (which reads back as `ω`,
+    /// another expression to the algebra): the text parses back to the expression.
+    #[test]
+    fn a_group_is_not_divided_by_itself() {
+        let (a, b, w) = (Expr::symbol("a"), Expr::symbol("b"), Expr::symbol("w_x"));
+        let over = (&a + &b).powi(-1);
+        let e = &a * &w * &over + &b * &w * &over;
+        let printed = crate::print::text(&e);
+        let back = crate::parse::parse_expression("printed", &printed).unwrap();
+        assert_eq!(back.expand().unwrap(), e.expand().unwrap(), "{printed}");
+    }
+
+    /// Sums in denominators that would collect into a group, `I_xy θ - θ`, are written
+    /// term by term, so that the text parses back to the expression.
+    #[test]
+    fn denominators_read_back() {
+        let theta = Expr::symbol("theta");
+        let denominator = Expr::symbol("I_xy") * &theta - &theta;
+        for e in [
+            -denominator.powi(-1),
+            Expr::symbol("m") * denominator.powi(-2),
+            denominator.checked_pow(&Expr::rational(-1, 2)).unwrap(),
+        ] {
+            let printed = crate::print::text(&e);
+            let back = crate::parse::parse_expression("printed", &printed).unwrap();
+            assert_eq!(back.expand().unwrap(), e.expand().unwrap(), "{printed}");
+        }
+    }
+
+    /// Sums under functions that would collect into one negative group, `w_x/2 - w_x/a`,
+    /// are written term by term, so that the text parses back to the expression.
+    #[test]
+    fn function_arguments_read_back() {
+        let (a, w) = (Expr::symbol("a"), Expr::symbol("w_x"));
+        let argument = Expr::rational(1, 2) * &w - &w / &a;
+        for e in [
+            Func::Abs.apply(argument.clone()),
+            Func::Sin.apply(argument.clone()),
+            Func::Cos.apply(-argument),
+        ] {
+            let printed = crate::print::text(&e);
+            let back = crate::parse::parse_expression("printed", &printed).unwrap();
+            assert_eq!(back.expand().unwrap(), e.expand().unwrap(), "{printed}");
+        }
     }
 
     /// Numbers beyond `i64` go to the layout's side table and print in full.

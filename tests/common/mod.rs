@@ -1,0 +1,5 @@
+//! Support shared by the integration tests. Each test crate uses part of it, so items one
+//! crate leaves unused are not dead code.
+#![allow(dead_code)]
+
+pub mod expression_tree;

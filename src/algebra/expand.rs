@@ -120,10 +120,19 @@ fn expand_product(p: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
 /// uncombined.
 fn products_of_terms(a: &[Expr], b: &[Expr]) -> Result<Operands, AlgebraError> {
     let mut products = Operands::with_capacity(a.len() * b.len());
+    // Two terms of expanded expressions can form a whole power of a sum only if both hold a
+    // power of a sum: one flag per term, not a look at every product.
+    let has_power_of_sum = |t: &Expr| {
+        t.monomial()
+            .iter()
+            .any(|f| matches!(f.view(), View::Pow(base, _) if matches!(base.view(), View::Add(_))))
+    };
+    let b_powers: SmallVec<[bool; 16]> = b.iter().map(has_power_of_sum).collect();
     for x in a {
-        for y in b {
+        let x_power = has_power_of_sum(x);
+        for (y, &y_power) in b.iter().zip(&b_powers) {
             let product = x * y;
-            if is_multiplied_out(&product) {
+            if !(x_power && y_power) || is_multiplied_out(&product) {
                 products.extend(product.terms().iter().cloned());
             } else {
                 expand_into(&product, &mut products)?;

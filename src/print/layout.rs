@@ -25,7 +25,12 @@
 //!    them), so the printed text would not parse back to the expression.
 //! 6. A function's argument that is a sum is collected as any sum, unless it collects into
 //!    a single negative group: then it is written term by term, since the group's minus
-//!    would leave the function by its parity when read back.
+//!    would leave the function by its parity when read back. So is such a sum standing as
+//!    a factor or a base: `sin(a*(1/theta - I_xy/theta))`, not `sin(a*(-(I_xy - 1)/theta))`.
+//! 7. In a product whose denominator holds a sum, a sum in the numerator is written term by
+//!    term: `(a*w_x - w_x)/(a - 1)`, not `((a - 1)*w_x)/(a - 1)`, whose group reads back as
+//!    a factor that cancels the denominator (the canonical form does not cancel a sum
+//!    against a factor of another sum, so the expression itself keeps both).
 //!
 //! The form is built bottom-up into a [`Layout`]: nodes in one vector, the terms of each sum
 //! and the factors of each product as a contiguous run in another, children collected on a
@@ -468,7 +473,24 @@ impl Layout {
                 }
             }
         }
-        let divided: Vec<CoefficientTerm> = divided.iter().map(CoefficientTerm::whole).collect();
+        let quotient_is_sum = divided.iter().any(|d| matches!(d.view(), View::Add(_)));
+        if quotient_is_sum {
+            // A quotient that is itself a sum (`(a - 1)/I_xy` over `-1/(2 I_xy)` is
+            // `-2 a + 2`) joins the others as its terms, like terms combined: standing as
+            // one term of the group, the sign pulled out of the group would reach only its
+            // first term when written out.
+            divided = Expr::add_all(divided).terms().to_vec();
+            if divided.len() < 2 {
+                // Combined into one term: no group is left, only a product.
+                let whole = common.into_iter().chain(divided).chain(kinematic.cloned());
+                return self.present(&Expr::mul_all(whole), axis);
+            }
+        }
+        let mut divided: Vec<CoefficientTerm> =
+            divided.iter().map(CoefficientTerm::whole).collect();
+        if quotient_is_sum {
+            sort_nearly_sorted(&mut divided, |&a, &b| coefficient::compare(a, b, axis));
+        }
         let inner = match common {
             Some(_) => &divided[..],
             None => terms,
@@ -559,6 +581,14 @@ impl Layout {
             pa.cmp(pb).then_with(|| compare_in_place(a, b))
         });
         cyclic_pair_order(ordered);
+        let sum_in_denominator = ordered.iter().any(|(_, f)| match f.view() {
+            View::Pow(base, exponent) => {
+                matches!(base.view(), View::Add(_)) && exponent.as_num().is_some_and(Q::is_negative)
+            }
+            _ => false,
+        });
+        // Rule 7: no group in the numerator over a sum.
+        let collect = !sum_in_denominator;
         let mark = self.pending.len();
         // Each factor with whether it belongs to the denominator.
         for &(_, f) in ordered.iter() {
@@ -568,6 +598,11 @@ impl Layout {
                 View::Sym(s) => {
                     let symbol = self.push(Node::Symbol(s));
                     self.pending.push((false, symbol));
+                    continue;
+                }
+                View::Add(_) => {
+                    let sum = self.present_signed_inline_collected(f, axis, collect);
+                    self.pending.push((false, sum));
                     continue;
                 }
                 _ => {
@@ -580,7 +615,7 @@ impl Layout {
                 Some(q) if q.is_negative() => {
                     (true, self.present_power(base, &q.abs(), axis, false))
                 }
-                Some(q) => (false, self.present_power(base, q, axis, true)),
+                Some(q) => (false, self.present_power(base, q, axis, collect)),
                 None => {
                     let base = self.present_atom(base, axis);
                     let exponent = self.present_signed_inline(exponent, axis);
@@ -676,6 +711,11 @@ impl Layout {
                         .iter_mut()
                         .for_each(|t| t.0 = !t.0);
                     id
+                } else if collect && matches!(e.view(), View::Add(_)) {
+                    // A sum that collects into one negative group is written term by term
+                    // (rule 6, in any product): the group's minus, a factor -1 of its own,
+                    // would move when read back (out of a function by its parity).
+                    self.present_signed_inline_collected(e, axis, false)
                 } else {
                     let mark = self.pending.len();
                     self.pending.push((true, id));
@@ -951,10 +991,46 @@ mod tests {
     fn a_group_is_not_divided_by_itself() {
         let (a, b, w) = (Expr::symbol("a"), Expr::symbol("b"), Expr::symbol("w_x"));
         let over = (&a + &b).powi(-1);
-        let e = &a * &w * &over + &b * &w * &over;
-        let printed = crate::print::text(&e);
+        assert_reads_back(&(&a * &w * &over + &b * &w * &over));
+    }
+
+    /// The text of `e` parses back to `e` (compared expanded, as equality is decided).
+    fn assert_reads_back(e: &Expr) {
+        let printed = crate::print::text(e);
         let back = crate::parse::parse_expression("printed", &printed).unwrap();
         assert_eq!(back.expand().unwrap(), e.expand().unwrap(), "{printed}");
+    }
+
+    /// A group whose common factor divides a member into a sum: in
+    /// `θ(a - 1)/I_xy - m θ/(2 I_xy²)` the factor `-θ/(2 I_xy)` leaves `-2(a - 1) = -2a + 2`
+    /// of the first, whose terms join the group's (`-(m/I_xy - 2 a + 2)`); standing as one
+    /// term, it was written `- 2*a - 2`.
+    #[test]
+    fn a_member_divided_into_a_sum_joins_the_group() {
+        let (a, m, theta) = (Expr::symbol("a"), Expr::symbol("m"), Expr::symbol("theta"));
+        let i_xy = Expr::symbol("I_xy");
+        let e = &theta * (&a - Expr::one()) / &i_xy - &m * &theta / (Expr::int(2) * i_xy.powi(2));
+        assert_reads_back(&e);
+    }
+
+    /// Rule 7: over a sum, a sum in the numerator is not grouped, so the group cannot cancel
+    /// the denominator when read back: `(a w_x - w_x)/(a - 1)`.
+    #[test]
+    fn a_numerator_over_a_sum_is_not_grouped() {
+        let (a, w) = (Expr::symbol("a"), Expr::symbol("w_x"));
+        let e = (&a * &w - &w) * (&a - Expr::one()).powi(-1);
+        assert_eq!(crate::print::text(&e), "(a*w_x - w_x)/(a - 1)");
+        assert_reads_back(&e);
+    }
+
+    /// A sum standing as a factor that would collect into one negative group is written
+    /// term by term (rule 6 in any product): `sin(a (1/θ - I_xy/θ))`.
+    #[test]
+    fn a_factor_that_groups_negatively_is_written_term_by_term() {
+        let (a, theta) = (Expr::symbol("a"), Expr::symbol("theta"));
+        let factor = theta.powi(-1) - Expr::symbol("I_xy") * theta.powi(-1);
+        assert_reads_back(&Func::Sin.apply(&a * &factor));
+        assert_reads_back(&(&a * &factor));
     }
 
     /// Sums in denominators that would collect into a group, `I_xy θ - θ`, are written
@@ -968,9 +1044,7 @@ mod tests {
             Expr::symbol("m") * denominator.powi(-2),
             denominator.checked_pow(&Expr::rational(-1, 2)).unwrap(),
         ] {
-            let printed = crate::print::text(&e);
-            let back = crate::parse::parse_expression("printed", &printed).unwrap();
-            assert_eq!(back.expand().unwrap(), e.expand().unwrap(), "{printed}");
+            assert_reads_back(&e);
         }
     }
 
@@ -985,9 +1059,7 @@ mod tests {
             Func::Sin.apply(argument.clone()),
             Func::Cos.apply(-argument),
         ] {
-            let printed = crate::print::text(&e);
-            let back = crate::parse::parse_expression("printed", &printed).unwrap();
-            assert_eq!(back.expand().unwrap(), e.expand().unwrap(), "{printed}");
+            assert_reads_back(&e);
         }
     }
 

@@ -2,26 +2,9 @@
 //! form for a torque-free scene and agreeing with DOP853, a plot that is written once and
 //! not overwritten without `--force`, and bad options refused.
 
-use std::process::Command;
+mod common;
 
-fn kinetics(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_kinetics"))
-        .args(args)
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn scene(name: &str) -> String {
-    format!(
-        "{}/examples/scenes/{name}.scene",
-        env!("CARGO_MANIFEST_DIR")
-    )
-}
+use common::binary::{kinetics, scene};
 
 fn rows(csv: &str) -> Vec<Vec<f64>> {
     csv.lines()

@@ -5,29 +5,12 @@
 //! error by 2^order); `--format csv` given explicitly is the default output; a
 //! parameter the chosen method does not use is refused with the reason.
 
-use std::process::Command;
+mod common;
+
+use common::binary::{kinetics, scene};
 
 /// The CSV columns, in order.
 const HEADER: &str = "t,w_x,w_y,w_z,q_w,q_x,q_y,q_z,T,H";
-
-fn kinetics(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_kinetics"))
-        .args(args)
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn scene(name: &str) -> String {
-    format!(
-        "{}/examples/scenes/{name}.scene",
-        env!("CARGO_MANIFEST_DIR")
-    )
-}
 
 /// Sampling of every run below: `--until 20 --every 0.5`, 41 rows at `t = k/2`.
 const UNTIL: f64 = 20.0;

@@ -8,6 +8,9 @@
 //! choosing; the driver runs on the caller's thread (no method spawns threads), which the
 //! control test checks by seeing a collecting sink's memory.
 
+mod common;
+
+use common::counting_allocator::{peak_during, Counting};
 use kinetics::numeric::body_inertia::BodyInertia;
 use kinetics::numeric::exact_propagation::{simulate_choice, Choice};
 use kinetics::numeric::rigid_body_state::RigidBodyState;
@@ -16,59 +19,9 @@ use kinetics::numeric::simulate::{Method, Problem, Sampling};
 use kinetics::numeric::splitting::SplittingOrder;
 use kinetics::numeric::torque::Torque;
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
-
-/// The system allocator, counting per thread the bytes held (allocated minus freed) and the
-/// highest count reached.
-struct Counting;
-
-thread_local! {
-    static HELD: Cell<isize> = const { Cell::new(0) };
-    static PEAK: Cell<isize> = const { Cell::new(0) };
-}
-
-fn count(bytes: isize) {
-    // Fails only while the thread is being torn down, after the test.
-    let _ = HELD.try_with(|held| {
-        let now = held.get() + bytes;
-        held.set(now);
-        let _ = PEAK.try_with(|peak| peak.set(peak.get().max(now)));
-    });
-}
-
-// SAFETY: every call is forwarded unchanged to the system allocator; the counters only
-// observe sizes (and do not allocate).
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        count(layout.size() as isize);
-        // SAFETY: forwarded with the caller's guarantees.
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        count(-(layout.size() as isize));
-        // SAFETY: forwarded with the caller's guarantees.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        count(new_size as isize - layout.size() as isize);
-        // SAFETY: forwarded with the caller's guarantees.
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-}
 
 #[global_allocator]
 static ALLOCATOR: Counting = Counting;
-
-/// The most bytes held during `run` above those held when it starts.
-fn peak_during(run: impl FnOnce()) -> isize {
-    let base = HELD.with(Cell::get);
-    PEAK.with(|peak| peak.set(base));
-    run();
-    PEAK.with(Cell::get) - base
-}
 
 /// Span of every run (s): long enough for several hundred steps of each integrator.
 const SPAN: f64 = 10.0;

@@ -3,42 +3,11 @@
 //! return to the same count after each compile–evaluate–drop cycle. The count is per
 //! thread because the test harness's own thread allocates at times of its choosing.
 
+mod common;
+
+use common::counting_allocator::{held_bytes, Counting};
 use kinetics::algebra::{Expr, Func, Symbol};
 use kinetics::numeric::Tape;
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
-
-/// The system allocator, counting per thread the bytes allocated minus those freed.
-struct Counting;
-
-thread_local! {
-    static HELD_BYTES: Cell<isize> = const { Cell::new(0) };
-}
-
-fn count(bytes: isize) {
-    // Fails only while the thread is being torn down, after the test.
-    let _ = HELD_BYTES.try_with(|held| held.set(held.get() + bytes));
-}
-
-fn held_bytes() -> isize {
-    HELD_BYTES.with(Cell::get)
-}
-
-// SAFETY: every call is forwarded unchanged to the system allocator; the counter only
-// observes sizes (and does not allocate).
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        count(layout.size() as isize);
-        // SAFETY: forwarded with the caller's guarantees.
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        count(-(layout.size() as isize));
-        // SAFETY: forwarded with the caller's guarantees.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-}
 
 #[global_allocator]
 static ALLOCATOR: Counting = Counting;

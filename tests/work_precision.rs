@@ -7,11 +7,13 @@
 //! Every body's errors are measured against the double-double Taylor reference; for the
 //! forced bodies that truth is checked independently in `work_precision_forced_truth.rs`. No test here looks at run times.
 
+mod common;
+
+use common::binary::kinetics;
 use kinetics::numeric::work_precision::{cases, study, Load, Row};
 use nalgebra::Vector3;
 use std::collections::BTreeSet;
 use std::path::Path;
-use std::process::Command;
 use std::time::Duration;
 
 /// End time of the study here. The study samples at `UNTIL · k / 100`, and a fixed-step
@@ -216,18 +218,6 @@ fn the_tightest_settings_reach_small_errors() {
             );
         }
     }
-}
-
-fn kinetics(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_kinetics"))
-        .args(args)
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 /// A printed table row: body, method (may hold spaces), time, `|Δω|`, attitude.

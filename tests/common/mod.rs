@@ -2,4 +2,6 @@
 //! crate leaves unused are not dead code.
 #![allow(dead_code)]
 
+pub mod binary;
+pub mod counting_allocator;
 pub mod expression_tree;

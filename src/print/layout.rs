@@ -671,28 +671,11 @@ impl Layout {
                 self.push(Node::Number(q))
             }
             View::Func(f, arg) => {
-                let arg = self.present_argument(arg, axis);
+                let arg = self.present_signed_inline(arg, axis);
                 self.push(Node::Function(f, arg))
             }
             _ => self.present_signed_inline(e, axis),
         }
-    }
-
-    /// A function's argument (rule 6): a sum that collects into one negative group,
-    /// `-1/2*(2/a - 1)*w_x`, is written term by term instead. Read back, a single term's
-    /// minus leaves the function by its parity (`sin(-x) = -sin x`), and the sum would
-    /// come back with the opposite sign: `-sin(w_x/a - 1/2*w_x)` for `sin(1/2*w_x - w_x/a)`,
-    /// another canonical form.
-    fn present_argument(&mut self, arg: &Expr, axis: Axis) -> NodeId {
-        if let View::Add(_) = arg.view() {
-            let (negative, id) = self.present_sum(arg, axis, true);
-            if !negative {
-                return id;
-            }
-            // The grouped form's nodes stay behind, unused.
-            return self.present_signed_inline_collected(arg, axis, false);
-        }
-        self.present_signed_inline(arg, axis)
     }
 
     /// An expression that must stand as one unit; a leading minus becomes part of a sum.
@@ -713,8 +696,9 @@ impl Layout {
                     id
                 } else if collect && matches!(e.view(), View::Add(_)) {
                     // A sum that collects into one negative group is written term by term
-                    // (rule 6, in any product): the group's minus, a factor -1 of its own,
-                    // would move when read back (out of a function by its parity).
+                    // (rule 6): the group's minus, a factor -1 of its own, would move when
+                    // read back, out of a function by its parity (`sin(-x) = -sin x`) or into
+                    // a product's coefficient. The grouped form's nodes stay behind, unused.
                     self.present_signed_inline_collected(e, axis, false)
                 } else {
                     let mark = self.pending.len();

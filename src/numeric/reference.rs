@@ -123,7 +123,7 @@ impl ReferenceMotion {
         w[0] = self.omega;
         q[0] = self.quaternion;
         // The moment's coefficients over I_i, orders 0..ORDER (zero for a free body).
-        let mut forcing = vec![[Dd::ZERO; 3]; ORDER];
+        let mut forcing = [[Dd::ZERO; 3]; ORDER];
         if let Some((moment, inverse)) = &self.moment {
             moment.taylor_coefficients(self.time, &mut forcing);
             for m in &mut forcing {

@@ -55,8 +55,7 @@ fn needs(instructions: &[Instruction]) -> Vec<u32> {
 /// Every register the outputs need, each after its operands: first those of output 0, in
 /// depth-first order, then those output 1 needs beyond them, and so on.
 ///
-/// Uses an explicit stack, so a tape of any depth (a sum of many terms is a long chain)
-/// is ordered without recursion.
+/// Uses an explicit stack, so the order itself puts no bound on a tape's depth.
 pub(super) fn depth_first_order(tape: &Tape) -> Vec<u32> {
     let instructions = tape.instructions();
     let need = needs(instructions);

@@ -219,3 +219,75 @@ fn answers_asked_in_a_unit_are_converted() {
     let c_y_newton = -9.0 * 6.0 / (16.0 * 0.1) - 0.25 * 0.3 * 0.1 * 125.7f64.powi(2);
     assert!((c_y["value"].as_f64().unwrap() - c_y_newton / 1000.0).abs() < 1e-12);
 }
+
+/// The worked solution's H_O and `kinetics derive`'s come from one function: the scene's plan
+/// holds derive's steps with the same titles, and derive's general relations, with the scene's
+/// body and motion substituted (from the plan's own earlier steps), are the scene's relations.
+#[test]
+fn the_h_o_steps_of_a_scene_are_those_of_derive() {
+    use kinetics::algebra::Symbol;
+    use kinetics::mechanics::catalogue::derive_general;
+    let (_, a) = load("sp18_2_rolling_disk");
+    let general = derive_general("H_O", false)
+        .expect("derive knows H_O")
+        .expect("derives");
+    let titles: Vec<&str> = general.steps.iter().map(|s| s.title.as_str()).collect();
+    let start = a
+        .plan
+        .windows(titles.len())
+        .position(|w| {
+            w.iter()
+                .map(|s| s.title.as_str())
+                .eq(titles.iter().copied())
+        })
+        .unwrap_or_else(|| panic!("the plan has derive's H_O steps {titles:?}"));
+    // The scene's values of derive's symbols, read from the plan's earlier steps.
+    let named = |name: &str| -> Expr {
+        a.plan[..start]
+            .iter()
+            .flat_map(|s| &s.relations)
+            .find(|r| r.lhs == Expr::symbol(name))
+            .unwrap_or_else(|| panic!("the plan derives {name} before H_O"))
+            .rhs
+            .clone()
+    };
+    let mut values: Vec<(Symbol, Expr)> = ["I_x", "I_y", "I_z", "I_xy", "I_yz", "I_xz"]
+        .into_iter()
+        .map(|n| (Symbol::new(n), named(n)))
+        .collect();
+    for axis in ["x", "y", "z"] {
+        values.push((
+            Symbol::new(&format!("w_{axis}")),
+            named(&format!("omega_{axis}")),
+        ));
+        values.push((
+            Symbol::new(&format!("{axis}bar")),
+            named(&format!("rbar_{axis}")),
+        ));
+        values.push((
+            Symbol::new(&format!("vbar_{axis}")),
+            named(&format!("vbar_{axis}")),
+        ));
+    }
+    values.push((Symbol::new("m"), named("m_body")));
+    let lookup = |s: Symbol| values.iter().find(|(v, _)| *v == s).map(|(_, e)| e.clone());
+    for (derived, shown) in general.steps.iter().zip(&a.plan[start..]) {
+        assert_eq!(
+            derived.relations.len(),
+            shown.relations.len(),
+            "{}",
+            shown.title
+        );
+        for (d, s) in derived.relations.iter().zip(&shown.relations) {
+            assert_eq!(d.lhs, s.lhs, "{}", shown.title);
+            let substituted = d.rhs.subs(&lookup).and_then(|e| e.expand()).unwrap();
+            assert_eq!(
+                substituted,
+                s.rhs.expand().unwrap(),
+                "{}: {}",
+                shown.title,
+                s.lhs
+            );
+        }
+    }
+}

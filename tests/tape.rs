@@ -40,7 +40,7 @@ fn chapter() -> &'static [(Vec<Expr>, Vec<Symbol>)] {
         let general = InertiaTensor::general();
         let vbar = ["vbar_x", "vbar_y", "vbar_z"].map(Expr::symbol).into();
         let t = kinetic_energy(&general, &omega, Some((&Expr::symbol("m"), &vbar))).unwrap();
-        let h = angular_momentum(&general, &omega, "G");
+        let h = angular_momentum(&general, &omega, "G").unwrap();
         [general_euler().to_vec(), rhs(&t), rhs(&h)]
             .into_iter()
             .map(|outputs| {

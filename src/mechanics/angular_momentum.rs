@@ -11,22 +11,28 @@
 
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
+use super::linear_momentum::linear_momentum;
+use super::rotating_frame::expand_each;
 use crate::algebra::vector_products::{cross, mat_vec};
-use crate::algebra::{Expr, Vector};
+use crate::algebra::{AlgebraError, Expr, Vector};
 
 /// `{H} = [I]{ω}`; `point` names the reference point (`G` or `O`).
-pub fn angular_momentum(inertia: &InertiaTensor, omega: &Vector, point: &str) -> Derivation {
-    let h = mat_vec(&inertia.matrix(), omega);
-    Derivation {
+pub fn angular_momentum(
+    inertia: &InertiaTensor,
+    omega: &Vector,
+    point: &str,
+) -> Result<Derivation, AlgebraError> {
+    let h = expand_each(&mat_vec(&inertia.matrix(), omega))?;
+    Ok(Derivation {
         name: format!("H_{point}"),
         title: format!("angular momentum about {point}"),
         steps: vec![Step {
             title: format!(
-                "{{H_{point}}} = [I]{{ω}}, with the moments and products of inertia about {point} (products positive, entered with a minus sign)"
+                "angular momentum about {point}, {{H_{point}}} = [I]{{ω}} (moments and products of inertia about {point}; products positive, entered with a minus sign)"
             ),
             relations: Relation::components("H", &h),
         }],
-    }
+    })
 }
 
 /// `H_O = H_G + r̄ × m v̄`, where `rbar` is the position of G from O.
@@ -35,10 +41,10 @@ pub fn angular_momentum_about_point(
     rbar: &Vector,
     mass: &Expr,
     vbar: &Vector,
-) -> Derivation {
-    let moment_of_momentum = cross(rbar, &vbar.map(|v| mass * &v));
-    let h_o = h_g + &moment_of_momentum;
-    Derivation {
+) -> Result<Derivation, AlgebraError> {
+    let moment_of_momentum = expand_each(&cross(rbar, &linear_momentum(mass, vbar)?))?;
+    let h_o = expand_each(&(h_g + &moment_of_momentum))?;
+    Ok(Derivation {
         name: "H_O".into(),
         title: "angular momentum about O".into(),
         steps: vec![
@@ -47,9 +53,9 @@ pub fn angular_momentum_about_point(
                 relations: Relation::components("H", &moment_of_momentum),
             },
             Step {
-                title: "H_O = H_G + r̄ × m v̄".into(),
+                title: "angular momentum about O, H_O = H_G + r̄ × m v̄".into(),
                 relations: Relation::components("H", &h_o),
             },
         ],
-    }
+    })
 }

@@ -43,15 +43,10 @@ pub fn derive_general(name: &str, principal: bool) -> Option<Result<Derivation, 
     let m = Expr::symbol("m");
     let vbar = vector(["vbar_x", "vbar_y", "vbar_z"]);
     Some(match name {
-        "H_G" => Ok(angular_momentum(&inertia, &omega, "G")),
+        "H_G" => angular_momentum(&inertia, &omega, "G"),
         "H_O" => {
             let h_g = inertia.matrix() * &omega;
-            Ok(angular_momentum_about_point(
-                &h_g,
-                &vector(["xbar", "ybar", "zbar"]),
-                &m,
-                &vbar,
-            ))
+            angular_momentum_about_point(&h_g, &vector(["xbar", "ybar", "zbar"]), &m, &vbar)
         }
         "T" => kinetic_energy(&inertia, &omega, Some((&m, &vbar))),
         // About a fixed point O: no translational part; moments and products about O.
@@ -70,7 +65,7 @@ pub fn derive_general(name: &str, principal: bool) -> Option<Result<Derivation, 
                 d
             })
         }
-        "impulse" => Ok(impulse_momentum(&ImpulseMomentum {
+        "impulse" => impulse_momentum(&ImpulseMomentum {
             mass: &m,
             velocity_before: &vector(["vbar_x1", "vbar_y1", "vbar_z1"]),
             velocity_after: &vector(["vbar_x2", "vbar_y2", "vbar_z2"]),
@@ -78,7 +73,7 @@ pub fn derive_general(name: &str, principal: bool) -> Option<Result<Derivation, 
             angular_momentum_after: &vector(["H_x2", "H_y2", "H_z2"]),
             linear_impulse: &vector(["F_x", "F_y", "F_z"]).map(|f| f * Expr::symbol("Dt")),
             angular_impulse: &vector(["M_x", "M_y", "M_z"]).map(|f| f * Expr::symbol("Dt")),
-        })),
+        }),
         "Hdot" => rate_of_angular_momentum(
             &inertia,
             &omega,

@@ -27,6 +27,25 @@ impl Relation {
             })
             .collect()
     }
+
+    /// The component relations `lhs_k = rhs_k` about the axes x, y, z, without those that
+    /// read `0 = 0`.
+    pub fn nonzero_components(
+        lhs: &crate::algebra::Vector,
+        rhs: &crate::algebra::Vector,
+    ) -> Vec<Relation> {
+        [Axis::X, Axis::Y, Axis::Z]
+            .into_iter()
+            .enumerate()
+            .filter(|&(k, _)| !(lhs[k].is_zero() && rhs[k].is_zero()))
+            .map(|(k, axis)| Relation::new(lhs[k].clone(), rhs[k].clone(), axis))
+            .collect()
+    }
+
+    /// `lhs − rhs`: zero exactly when the relation holds, the form a solver takes.
+    pub fn residual(&self) -> Expr {
+        &self.lhs - &self.rhs
+    }
 }
 
 /// A step of a derivation: what was done, in words, and the relations it produced.

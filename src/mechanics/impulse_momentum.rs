@@ -7,8 +7,8 @@
 //! ```
 
 use super::derivation::{Derivation, Relation, Step};
-use crate::algebra::{Expr, Vector};
-use crate::print::Axis;
+use super::rotating_frame::expand_each;
+use crate::algebra::{AlgebraError, Expr, Vector};
 
 /// The momenta and impulses of one impact or interval.
 pub struct ImpulseMomentum<'a> {
@@ -23,37 +23,22 @@ pub struct ImpulseMomentum<'a> {
     pub angular_impulse: &'a Vector,
 }
 
-/// The six component equations.
-pub fn impulse_momentum(p: &ImpulseMomentum) -> Derivation {
-    let axes = [Axis::X, Axis::Y, Axis::Z];
-    let linear: Vec<Relation> = (0..3)
-        .map(|k| {
-            Relation::new(
-                p.mass * &p.velocity_before[k] + &p.linear_impulse[k],
-                p.mass * &p.velocity_after[k],
-                axes[k],
-            )
-        })
-        .collect();
-    let angular: Vec<Relation> = (0..3)
-        .map(|k| {
-            Relation::new(
-                &p.angular_momentum_before[k] + &p.angular_impulse[k],
-                p.angular_momentum_after[k].clone(),
-                axes[k],
-            )
-        })
-        .collect();
-    let mut relations: Vec<Relation> = linear;
-    relations.extend(angular);
-    Derivation {
+/// The six component equations; components that read `0 = 0` are left out.
+pub fn impulse_momentum(p: &ImpulseMomentum) -> Result<Derivation, AlgebraError> {
+    let linear_before = expand_each(&(p.velocity_before.map(|v| p.mass * &v) + p.linear_impulse))?;
+    let linear_after = expand_each(&p.velocity_after.map(|v| p.mass * &v))?;
+    let angular_before = expand_each(&(p.angular_momentum_before + p.angular_impulse))?;
+    let angular_after = expand_each(p.angular_momentum_after)?;
+    Ok(Derivation {
         name: "impulse".into(),
         title: "impulse and momentum".into(),
         steps: vec![Step {
-            title:
-                "linear components m v̄₁ + Σ F Δt = m v̄₂, then angular components H₁ + Σ M Δt = H₂"
-                    .into(),
-            relations,
+            title: "impulse and momentum: m v̄₁ + Σ F Δt = m v̄₂ (x, y, z), then H₁ + Σ M Δt = H₂ (x, y, z)".into(),
+            relations: [
+                Relation::nonzero_components(&linear_before, &linear_after),
+                Relation::nonzero_components(&angular_before, &angular_after),
+            ]
+            .concat(),
         }],
-    }
+    })
 }

@@ -14,7 +14,8 @@
 //! `I_x = Ī_x + m(ȳ² + z̄²)`, `I_xy = Ī_xy + m x̄ ȳ`; composite bodies add tensors about a
 //! common point.
 
-use crate::algebra::{Expr, Matrix, Vector};
+use super::composite_body::MassPart;
+use crate::algebra::{AlgebraError, Expr, Matrix, Vector};
 
 /// An inertia tensor by its six components: products of inertia are the positive integrals
 /// `∫xy dm`, entered in the matrix with a minus sign.
@@ -95,6 +96,31 @@ impl InertiaTensor {
             moments: std::array::from_fn(|k| &self.moments[k] + &(mass * &shift_moments[k])),
             products: std::array::from_fn(|k| &self.products[k] + &(mass * &shift_products[k])),
         }
+    }
+
+    /// The centroidal tensor of a body made of `parts`, whose total `mass` has its centre at
+    /// `centroid`: each part's centroidal tensor moved to O, their sum, moved back to G.
+    /// Each component expanded.
+    pub fn composite(
+        parts: &[MassPart],
+        mass: &Expr,
+        centroid: &Vector,
+    ) -> Result<InertiaTensor, AlgebraError> {
+        let about_o = parts
+            .iter()
+            .map(|p| p.inertia.parallel_axis(&p.mass, &p.position))
+            .fold(
+                InertiaTensor::diagonal([Expr::zero(), Expr::zero(), Expr::zero()]),
+                |sum, part| sum.add(&part),
+            );
+        let about_g = about_o.parallel_axis(&-mass, centroid);
+        let expand = |c: &[Expr; 3]| -> Result<[Expr; 3], AlgebraError> {
+            Ok([c[0].expand()?, c[1].expand()?, c[2].expand()?])
+        };
+        Ok(InertiaTensor {
+            moments: expand(&about_g.moments)?,
+            products: expand(&about_g.products)?,
+        })
     }
 
     /// The tensor of two parts about the same point and axes.

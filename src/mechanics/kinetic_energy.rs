@@ -28,7 +28,7 @@ pub fn kinetic_energy(
             let translational = (&half * m * dot(v, v)).expand()?;
             vec![
                 Step {
-                    title: "rotational part ½{ω}ᵀ[I]{ω}".into(),
+                    title: "kinetic energy, rotational part ½{ω}ᵀ[I]{ω}".into(),
                     relations: vec![Relation::new(
                         Expr::symbol("T_rot"),
                         rotational.clone(),
@@ -36,13 +36,14 @@ pub fn kinetic_energy(
                     )],
                 },
                 Step {
-                    title: "add the translational part ½ m v̄²".into(),
+                    title: "kinetic energy, T = ½ m v̄² + ½{ω}ᵀ[I]{ω}: add the translational part"
+                        .into(),
                     relations: vec![Relation::new(t, &translational + &rotational, Axis::X)],
                 },
             ]
         }
         None => vec![Step {
-            title: "T = ½{ω}ᵀ[I_O]{ω} about the fixed point O".into(),
+            title: "kinetic energy about the fixed point O, T = ½{ω}ᵀ[I_O]{ω}".into(),
             relations: vec![Relation::new(t, rotational, Axis::X)],
         }],
     };

@@ -58,24 +58,82 @@ pub struct Constraint {
     pub span: Span,
 }
 
-/// A quantity asked for.
+/// A quantity a scene can ask for with `find`: one of the chapter's quantities by its ASCII
+/// name, or a declared unknown. Decided once, when the scene is parsed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Quantity {
+    /// `omega`: the angular velocity ω.
+    AngularVelocity,
+    /// `vbar`: the velocity v̄ of the mass centre.
+    MassCentreVelocity,
+    /// `mvbar` (or `m*vbar`): the linear momentum m v̄.
+    LinearMomentum,
+    /// `abar`: the acceleration ā of the mass centre.
+    MassCentreAcceleration,
+    /// `mabar` (or `m*abar`): the effective force m ā.
+    EffectiveForce,
+    /// `H_G`: the angular momentum about the mass centre.
+    AngularMomentumAboutG,
+    /// `H_O`: the angular momentum about the origin O.
+    AngularMomentumAboutO,
+    /// `T`: the kinetic energy.
+    KineticEnergy,
+    /// `Hdot_G`: the rate of change of the angular momentum about G.
+    RateOfAngularMomentum,
+    /// A declared unknown, solved from the equations of the scene.
+    Unknown(Symbol),
+}
+
+impl Quantity {
+    /// The chapter's quantities by the names a scene writes them with.
+    pub const NAMED: [(&'static str, Quantity); 11] = [
+        ("omega", Quantity::AngularVelocity),
+        ("vbar", Quantity::MassCentreVelocity),
+        ("mvbar", Quantity::LinearMomentum),
+        ("m*vbar", Quantity::LinearMomentum),
+        ("abar", Quantity::MassCentreAcceleration),
+        ("mabar", Quantity::EffectiveForce),
+        ("m*abar", Quantity::EffectiveForce),
+        ("H_G", Quantity::AngularMomentumAboutG),
+        ("H_O", Quantity::AngularMomentumAboutO),
+        ("T", Quantity::KineticEnergy),
+        ("Hdot_G", Quantity::RateOfAngularMomentum),
+    ];
+
+    /// What the quantity is, in words (`the kinetic energy`).
+    pub fn description(self) -> &'static str {
+        match self {
+            Quantity::AngularVelocity => "the angular velocity",
+            Quantity::MassCentreVelocity => "the velocity of the mass centre",
+            Quantity::LinearMomentum => "the linear momentum",
+            Quantity::MassCentreAcceleration => "the acceleration of the mass centre",
+            Quantity::EffectiveForce => "the effective force m ā",
+            Quantity::AngularMomentumAboutG => "the angular momentum about G",
+            Quantity::AngularMomentumAboutO => "the angular momentum about O",
+            Quantity::KineticEnergy => "the kinetic energy",
+            Quantity::RateOfAngularMomentum => "the rate of change of the angular momentum about G",
+            Quantity::Unknown(_) => "an unknown",
+        }
+    }
+
+    /// The chapter's quantity with this name, if it is one.
+    pub fn named(name: &str) -> Option<Quantity> {
+        Quantity::NAMED
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, q)| *q)
+    }
+}
+
+/// A quantity asked for, by the name written in the scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Request {
+    pub quantity: Quantity,
+    /// The name as written (`m*vbar`, `D_y`).
     pub name: String,
     pub span: Span,
     /// `find D_y in N`: the answer must be a number, given in this unit (as written).
     pub unit: Option<(String, super::units::Unit)>,
-}
-
-impl Request {
-    /// A request-like place in the file (a constraint, the whole file) for diagnostics.
-    pub fn at(name: &str, span: Span) -> Request {
-        Request {
-            name: name.to_string(),
-            span,
-            unit: None,
-        }
-    }
 }
 
 /// A whole scene.

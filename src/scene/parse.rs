@@ -2,7 +2,9 @@
 //! (file:line:column, a caret, a hint). The mathematics inside a statement goes through the
 //! expression parser; its diagnostics are moved to their place in the file.
 
-use super::model::{Constraint, ConstraintKind, Force, Given, Part, Request, Scene, Span};
+use super::model::{
+    Constraint, ConstraintKind, Force, Given, Part, Quantity, Request, Scene, Span,
+};
 use super::units::{dimension_of, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
 use crate::algebra::{vector, Expr, Func, Matrix, Symbol, Vector};
 use crate::mechanics::inertia::InertiaTensor;
@@ -73,6 +75,7 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
     for statement in statements {
         reader.statement(statement)?;
     }
+    reader.resolve_requests()?;
     if reader.scene.requests.is_empty() {
         return Err(Diagnostic::at(
             source_name,
@@ -196,6 +199,8 @@ impl Reader<'_> {
                             .with_help("name each quantity once in 'find'"));
                     }
                     self.scene.requests.push(Request {
+                        // Resolved against the declarations once the whole file is read.
+                        quantity: Quantity::Unknown(Symbol::new(&name)),
                         name,
                         span: Span { start, end },
                         unit,
@@ -203,6 +208,55 @@ impl Reader<'_> {
                 }
             }
             _ => return Err(self.error(at, "unexpected statement")),
+        }
+        Ok(())
+    }
+
+    /// Decides what each `find` names, now that every declaration is known: one of the
+    /// chapter's quantities, or a declared unknown. A name that is both (an unknown force
+    /// called `T`) would be answered with the wrong one: it is refused, at the request.
+    fn resolve_requests(&mut self) -> Result<(), Diagnostic> {
+        for k in 0..self.scene.requests.len() {
+            let request = &self.scene.requests[k];
+            let at = (request.span.start, request.span.end);
+            let symbol = Symbol::new(&request.name);
+            let declared = if self.scene.is_unknown(symbol) {
+                Some("unknown")
+            } else if self.scene.givens.iter().any(|g| g.symbol == symbol) {
+                Some("given")
+            } else {
+                None
+            };
+            let quantity = match (Quantity::named(&request.name), declared) {
+                (Some(q), None) => q,
+                (None, Some("unknown")) => Quantity::Unknown(symbol),
+                (Some(q), Some(kind)) => {
+                    return Err(self
+                        .error(
+                            at,
+                            format!(
+                                "'{}' is both {} and a declared {kind}",
+                                request.name,
+                                q.description()
+                            ),
+                        )
+                        .with_help(format!(
+                            "rename the {kind} ({}_1, say): in 'find', {} means {}",
+                            request.name,
+                            request.name,
+                            q.description()
+                        )))
+                }
+                (None, _) => {
+                    return Err(self
+                        .error(at, format!("cannot find '{}'", request.name))
+                        .with_help(format!(
+                            "ask for {}, or a declared unknown",
+                            Quantity::NAMED.map(|(n, _)| n).join(", ")
+                        )))
+                }
+            };
+            self.scene.requests[k].quantity = quantity;
         }
         Ok(())
     }

@@ -8,6 +8,7 @@ use super::analysis::centroidal_body;
 use super::model::Scene;
 use super::parse::TIME;
 use crate::algebra::{Expr, Symbol, Vector};
+use crate::mechanics::composite_body::MassProperties;
 use crate::numeric::body_inertia::BodyInertia;
 use crate::numeric::rigid_body_state::RigidBodyState;
 use crate::numeric::simulate::Problem;
@@ -99,7 +100,9 @@ fn torque(scene: &Scene, moment: &Vector) -> Result<Torque<f64>, Diagnostic> {
 
 /// The initial-value problem of the scene's body, starting at rest orientation at t = 0.
 pub fn problem(scene: &Scene) -> Result<Problem<f64>, Diagnostic> {
-    let (_, centroid, inertia) = centroidal_body(scene)?;
+    let MassProperties {
+        centroid, inertia, ..
+    } = centroidal_body(scene)?;
     let matrix = inertia.matrix();
     let mut tensor = Matrix3::zeros();
     for r in 0..3 {

@@ -17,6 +17,7 @@ use super::numbers::{format_value, scene_dimensions, unit, value};
 use crate::algebra::{Expr, Vector};
 use crate::mechanics::derivation::Relation;
 use crate::print::{self, Notation};
+use crate::scene::model::{Quantity, Request};
 use crate::scene::units::Dimensions;
 use crate::scene::{Analysis, Scene, Value};
 
@@ -32,6 +33,7 @@ pub enum Format {
 /// A result with its forms and value.
 struct Result<'a> {
     name: &'a str,
+    quantity: Quantity,
     text: String,
     latex: String,
     value: Option<Vec<f64>>,
@@ -54,7 +56,7 @@ fn results<'a>(scene: &Scene, analysis: &'a Analysis, dims: &Dimensions) -> Vec<
 }
 
 /// A value asked for `in UNIT` is converted from SI and labelled with the unit as written.
-fn in_requested_unit<'a>(request: &crate::scene::model::Request, mut r: Result<'a>) -> Result<'a> {
+fn in_requested_unit<'a>(request: &Request, mut r: Result<'a>) -> Result<'a> {
     if let Some((written, unit)) = &request.unit {
         r.value = r.value.map(|v| v.iter().map(|x| x / unit.to_si).collect());
         r.unit = Some(written.clone());
@@ -62,22 +64,18 @@ fn in_requested_unit<'a>(request: &crate::scene::model::Request, mut r: Result<'
     r
 }
 
-fn computed<'a>(
-    scene: &Scene,
-    request: &'a crate::scene::model::Request,
-    v: &Value,
-    dims: &Dimensions,
-) -> Result<'a> {
+fn computed<'a>(scene: &Scene, request: &'a Request, v: &Value, dims: &Dimensions) -> Result<'a> {
     {
         match v {
             Value::Scalar(e) => Result {
                 name: &request.name,
+                quantity: request.quantity,
                 text: print::text(e),
                 latex: print::latex(e),
                 value: value(scene, e).map(|x| vec![x]),
                 // Kinetic energy is work-like: joules, not newton metres.
                 unit: unit(dims, e).map(|u| {
-                    if request.name == "T" && u == "N·m" {
+                    if request.quantity == Quantity::KineticEnergy && u == "N·m" {
                         "J".into()
                     } else {
                         u
@@ -86,6 +84,7 @@ fn computed<'a>(
             },
             Value::Vector(vec) => Result {
                 name: &request.name,
+                quantity: request.quantity,
                 text: print::vector(vec, Notation::Text),
                 latex: print::vector(vec, Notation::Latex),
                 value: vec.iter().map(|c| value(scene, c)).collect(),
@@ -107,17 +106,19 @@ pub fn relation(r: &Relation, notation: Notation) -> (String, String) {
     )
 }
 
-fn result_name_latex(name: &str) -> String {
-    match name {
-        "omega" => r"\boldsymbol{\omega}".into(),
-        "vbar" => r"\bar{\mathbf{v}}".into(),
-        "mvbar" | "m*vbar" => r"m\bar{\mathbf{v}}".into(),
-        "abar" => r"\bar{\mathbf{a}}".into(),
-        "mabar" | "m*abar" => r"m\bar{\mathbf{a}}".into(),
-        "H_G" => r"\mathbf{H}_G".into(),
-        "H_O" => r"\mathbf{H}_O".into(),
-        "Hdot_G" => r"\dot{\mathbf{H}}_G".into(),
-        other => print::latex(&Expr::symbol(other)),
+/// The quantity in LaTeX, as a textbook names it (`\mathbf{H}_G`, `T`, an unknown's symbol).
+fn quantity_latex(quantity: Quantity) -> String {
+    match quantity {
+        Quantity::AngularVelocity => r"\boldsymbol{\omega}".into(),
+        Quantity::MassCentreVelocity => r"\bar{\mathbf{v}}".into(),
+        Quantity::LinearMomentum => r"m\bar{\mathbf{v}}".into(),
+        Quantity::MassCentreAcceleration => r"\bar{\mathbf{a}}".into(),
+        Quantity::EffectiveForce => r"m\bar{\mathbf{a}}".into(),
+        Quantity::AngularMomentumAboutG => r"\mathbf{H}_G".into(),
+        Quantity::AngularMomentumAboutO => r"\mathbf{H}_O".into(),
+        Quantity::KineticEnergy => "T".into(),
+        Quantity::RateOfAngularMomentum => r"\dot{\mathbf{H}}_G".into(),
+        Quantity::Unknown(s) => print::latex(&Expr::sym(s)),
     }
 }
 
@@ -272,7 +273,7 @@ fn latex_results(results: &[Result]) -> String {
             });
             format!(
                 "{} &= {}{}",
-                result_name_latex(r.name),
+                quantity_latex(r.quantity),
                 r.latex,
                 value.unwrap_or_default()
             )

@@ -1,0 +1,191 @@
+//! A scene's kinematics with its constraints solved: each constraint gives equations among
+//! the unknown rates, which are solved (linearly) and substituted into ω, ω̇ and Ω.
+//!
+//! ```text
+//! velocity at (x, y, z) = 0:   v_P = v̄ + ω × (r_P − r̄) = 0       (v_P = ω × r_P, O fixed)
+//! lhs = rhs:                   lhs − rhs = 0
+//! ```
+
+use super::model::{ConstraintKind, Scene, Span};
+use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
+use crate::algebra::{AlgebraError, Expr, Symbol, Vector};
+use crate::mechanics::derivation::{Relation, Step};
+use crate::mechanics::kinematics::velocity_of_point;
+use crate::parse::Diagnostic;
+use crate::print::Axis;
+
+/// ω, the rates of its components in the frame, and the frame's Ω, with the unknowns the
+/// constraints fixed substituted.
+#[derive(Debug, Clone)]
+pub struct SolvedConstraints {
+    pub omega: Vector,
+    pub omega_dot: Vector,
+    pub frame_rate: Vector,
+    /// Values of unknowns fixed by the kinematic constraints.
+    pub solved: Vec<(Symbol, Expr)>,
+}
+
+impl SolvedConstraints {
+    /// `e` with the unknowns the constraints fixed substituted, expanded.
+    pub fn substitute(&self, e: &Expr) -> Result<Expr, AlgebraError> {
+        if self.solved.is_empty() {
+            return Ok(e.clone());
+        }
+        e.subs(&|s| {
+            self.solved
+                .iter()
+                .find(|(u, _)| *u == s)
+                .map(|(_, x)| x.clone())
+        })?
+        .expand()
+    }
+
+    /// Each component with the solved unknowns substituted, expanded.
+    fn substitute_vector(&self, v: &Vector) -> Result<Vector, AlgebraError> {
+        let each = |e: &Expr| self.substitute(e)?.expand();
+        Ok(Vector::new(each(&v[0])?, each(&v[1])?, each(&v[2])?))
+    }
+}
+
+/// The located diagnostic of a failed solve, with what to do about it.
+pub fn solve_error(scene: &Scene, at: Span, e: SolveError) -> Diagnostic {
+    let help = match &e {
+        SolveError::UnderDetermined(_) => "give more conditions, or fewer unknowns",
+        SolveError::Inconsistent { .. } => "remove a condition or an unknown that conflicts",
+        _ => "unknowns must appear linearly",
+    };
+    Diagnostic::at(
+        &scene.source_name,
+        &scene.source,
+        at.start,
+        at.end,
+        e.to_string(),
+    )
+    .with_help(help)
+}
+
+/// Solves the scene's constraints; `centroid` (the mass centre from O) is needed by a
+/// velocity constraint on a body without a fixed point. Returns the kinematics and the steps
+/// that show them. Errors are located at the constraint they come from, else at `at`.
+pub fn solve_constraints(
+    scene: &Scene,
+    centroid: Option<&Vector>,
+    at: Span,
+) -> Result<(SolvedConstraints, Vec<Step>), Diagnostic> {
+    let located = |span: Span| {
+        move |e: AlgebraError| {
+            Diagnostic::at(
+                &scene.source_name,
+                &scene.source,
+                span.start,
+                span.end,
+                e.to_string(),
+            )
+            .with_help("simplify the scene")
+        }
+    };
+    let omega = scene.omega.clone().unwrap_or_else(zero_vector);
+    let mut equations: Vec<Expr> = Vec::new();
+    // The constraint each equation came from, to locate errors.
+    let mut sources: Vec<Span> = Vec::new();
+    let mut shown: Vec<Relation> = Vec::new();
+    for c in &scene.constraints {
+        match &c.kind {
+            ConstraintKind::VelocityZero(point) => {
+                let v = match (scene.fixed_point, &scene.vbar, centroid) {
+                    (true, _, _) => velocity_of_point(&zero_vector(), &omega, point),
+                    (false, Some(vbar), Some(centroid)) => {
+                        velocity_of_point(vbar, &omega, &(point - centroid))
+                    }
+                    (false, _, _) => {
+                        return Err(Diagnostic::at(
+                            &scene.source_name,
+                            &scene.source,
+                            c.span.start,
+                            c.span.end,
+                            "a velocity constraint needs the motion of the body",
+                        )
+                        .with_help("add 'fixed point' or 'vbar = ...'"))
+                    }
+                }
+                .map_err(located(c.span))?;
+                for (k, axis) in [Axis::X, Axis::Y, Axis::Z].into_iter().enumerate() {
+                    if !v[k].is_zero() {
+                        equations.push(v[k].clone());
+                        sources.push(c.span);
+                        shown.push(Relation::new(v[k].clone(), Expr::zero(), axis));
+                    }
+                }
+            }
+            ConstraintKind::Equation(lhs, rhs) => {
+                equations.push(lhs - rhs);
+                sources.push(c.span);
+                shown.push(Relation::new(lhs.clone(), rhs.clone(), Axis::X));
+            }
+        }
+    }
+    let mut steps = Vec::new();
+    let solved = if equations.is_empty() {
+        vec![]
+    } else {
+        let constrained: Vec<Symbol> = scene
+            .unknowns
+            .iter()
+            .map(|u| u.0)
+            .filter(|u| equations.iter().any(|e| e.contains(*u)))
+            .collect();
+        let Solution { values, free } = solve_linear(&equations, &constrained).map_err(|e| {
+            // An equation that cannot be used is reported at its constraint.
+            let span = match &e {
+                SolveError::Inconsistent { equation, .. }
+                | SolveError::Nonlinear { equation, .. } => sources.get(*equation).copied(),
+                _ => None,
+            };
+            solve_error(scene, span.unwrap_or(at), e)
+        })?;
+        if !free.is_empty() {
+            return Err(solve_error(scene, at, SolveError::UnderDetermined(free)));
+        }
+        let mut relations = shown;
+        relations.extend(
+            values
+                .iter()
+                .map(|(u, v)| Relation::new(Expr::sym(*u), v.clone(), Axis::X)),
+        );
+        steps.push(Step {
+            title: "kinematic constraints, solved for the unknown rates".into(),
+            relations,
+        });
+        values
+    };
+    let mut kinematics = SolvedConstraints {
+        omega: zero_vector(),
+        omega_dot: zero_vector(),
+        frame_rate: zero_vector(),
+        solved,
+    };
+    let substituted = |v: &Vector| kinematics.substitute_vector(v).map_err(located(at));
+    let omega = substituted(&omega)?;
+    let omega_dot = substituted(&scene.omega_dot.clone().unwrap_or_else(zero_vector))?;
+    let frame_rate = substituted(&scene.frame_rate.clone().unwrap_or_else(|| omega.clone()))?;
+    let mut relations = Relation::components("omega", &omega);
+    if scene.frame_rate.is_some() {
+        relations.extend(Relation::components("Omega", &frame_rate));
+    }
+    steps.push(Step {
+        title: if scene.frame_rate.is_some() {
+            "angular velocity ω of the body and Ω of the frame (Ω ≠ ω: [I] is constant in this frame)".into()
+        } else {
+            "angular velocity ω (axes fixed in the body, Ω = ω)".into()
+        },
+        relations,
+    });
+    kinematics.omega = omega;
+    kinematics.omega_dot = omega_dot;
+    kinematics.frame_rate = frame_rate;
+    Ok((kinematics, steps))
+}
+
+fn zero_vector() -> Vector {
+    Vector::from_element(Expr::zero())
+}

@@ -2,17 +2,16 @@
 //! (file:line:column, a caret, a hint). The mathematics inside a statement goes through the
 //! expression parser; its diagnostics are moved to their place in the file.
 
-use super::model::{
-    Constraint, ConstraintKind, Force, Given, Part, Quantity, Request, Scene, Span,
-};
+use super::model::{Constraint, ConstraintKind, Force, Given, Quantity, Request, Scene, Span};
 use super::units::{dimension_of, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
-use crate::algebra::{vector, Expr, Func, Matrix, Symbol, Vector};
-use crate::mechanics::inertia::InertiaTensor;
-use crate::mechanics::shapes::Shape;
-use crate::mechanics::validation::validate_inertia_tensor;
+use crate::algebra::{vector, Expr, Symbol, Vector};
 use crate::parse::{parse_expression, Diagnostic};
 use pest::iterators::Pair;
 use pest::Parser;
+use syntax_error::{expected_words, syntax_error};
+
+mod body;
+mod syntax_error;
 
 /// The name of time in scene mathematics.
 pub const TIME: &str = "t";
@@ -423,142 +422,6 @@ impl Reader<'_> {
         Ok(())
     }
 
-    fn body(&mut self, inner: Vec<Pair<Rule>>) -> Result<(), Diagnostic> {
-        let shape_pair = &inner[0];
-        let mut shape_inner = shape_pair.clone().into_inner();
-        let kind = shape_inner
-            .next()
-            .ok_or_else(|| self.error(span(shape_pair), "expected a shape"))?;
-        let args: Vec<Pair<Rule>> = shape_inner.collect();
-        let explicit = kind.as_str() == "inertia";
-        let want = if explicit {
-            Dimension::INERTIA
-        } else {
-            Dimension::LENGTH
-        };
-        let mut lengths = Vec::new();
-        for a in &args {
-            let e = self.math(a)?;
-            self.expect_dimension(&e, want, span(a))?;
-            lengths.push(e);
-        }
-        let shape = if explicit {
-            self.explicit_inertia(lengths, span(shape_pair))?
-        } else {
-            self.shape(&kind, lengths, span(shape_pair))?
-        };
-        let mass = self.math(&inner[1])?;
-        self.expect_dimension(&mass, Dimension::MASS, span(&inner[1]))?;
-        let mut position = Vector::from_element(Expr::zero());
-        let mut rotation = Matrix::identity();
-        let mut i = 2;
-        while i < inner.len() {
-            match inner[i].as_rule() {
-                Rule::point => position = self.point(&inner[i])?,
-                Rule::axis => rotation = along(inner[i].as_str()),
-                Rule::math => {
-                    let angle = self.math(&inner[i])?;
-                    self.expect_dimension(&angle, Dimension::NONE, span(&inner[i]))?;
-                    let about = inner.get(i + 1).map(|p| p.as_str()).unwrap_or("z");
-                    rotation = rotation_about(about, &angle) * rotation;
-                    i += 1;
-                }
-                _ => {}
-            }
-            i += 1;
-        }
-        self.scene.parts.push(Part {
-            shape,
-            mass,
-            position,
-            rotation,
-        });
-        Ok(())
-    }
-
-    /// `inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz)`: checked for physical admissibility when
-    /// every component has a value.
-    fn explicit_inertia(&self, mut c: Vec<Expr>, at: (usize, usize)) -> Result<Shape, Diagnostic> {
-        if c.len() != 6 {
-            return Err(self
-                .error(at, format!("inertia takes 6 components, found {}", c.len()))
-                .with_help("write inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz), products as positive integrals"));
-        }
-        let products: [Expr; 3] = [c.remove(3), c.remove(3), c.remove(3)];
-        let moments: [Expr; 3] = [c.remove(0), c.remove(0), c.remove(0)];
-        let tensor = InertiaTensor { moments, products };
-        let value = |e: &Expr| e.eval(&|s: Symbol| self.scene.value(s)).ok();
-        let numbers: Option<Vec<f64>> = tensor.matrix().iter().map(value).collect();
-        if let Some(numbers) = numbers {
-            let m = nalgebra::Matrix3::from_column_slice(&numbers);
-            validate_inertia_tensor(&m).map_err(|e| {
-                self.error(at, e.to_string()).with_help(
-                    "these components cannot belong to a real body; check their values and signs",
-                )
-            })?;
-        }
-        Ok(Shape::Explicit(tensor))
-    }
-
-    fn shape(
-        &self,
-        kind: &Pair<Rule>,
-        mut l: Vec<Expr>,
-        at: (usize, usize),
-    ) -> Result<Shape, Diagnostic> {
-        let expected = |n: usize, usage: &str| -> Result<(), Diagnostic> {
-            if l.len() == n {
-                Ok(())
-            } else {
-                Err(self
-                    .error(
-                        at,
-                        format!("{} takes {n} length(s), found {}", kind.as_str(), l.len()),
-                    )
-                    .with_help(format!("write {usage}")))
-            }
-        };
-        Ok(match kind.as_str() {
-            "rod" => {
-                expected(1, "rod(L)")?;
-                Shape::SlenderRod { length: l.remove(0) }
-            }
-            "plate" => {
-                expected(2, "plate(a, b)")?;
-                let b = l.remove(1);
-                Shape::ThinPlate { a: l.remove(0), b }
-            }
-            "disk" => {
-                expected(1, "disk(r)")?;
-                Shape::ThinDisk { radius: l.remove(0) }
-            }
-            "cylinder" => {
-                expected(2, "cylinder(r, h)")?;
-                let h = l.remove(1);
-                Shape::SolidCylinder { radius: l.remove(0), length: h }
-            }
-            "sphere" => {
-                expected(1, "sphere(r)")?;
-                Shape::SolidSphere { radius: l.remove(0) }
-            }
-            "prism" => {
-                expected(3, "prism(a, b, c)")?;
-                let c = l.remove(2);
-                let b = l.remove(1);
-                Shape::RectangularPrism { a: l.remove(0), b, c }
-            }
-            "point" => {
-                expected(0, "point()")?;
-                Shape::PointMass
-            }
-            other => {
-                return Err(self
-                    .error(span(kind), format!("unknown shape '{other}'"))
-                    .with_help("the shapes are rod(L), plate(a, b), disk(r), cylinder(r, h), sphere(r), prism(a, b, c), point(), inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz)"))
-            }
-        })
-    }
-
     fn math(&self, p: &Pair<Rule>) -> Result<Expr, Diagnostic> {
         let (start, _) = span(p);
         let e = parse_expression(self.source_name, p.as_str()).map_err(|d| {
@@ -672,132 +535,6 @@ impl Reader<'_> {
     }
 }
 
-/// Each statement with the form it is written in, for the hint of a syntax error.
-const STATEMENT_FORMS: [(&str, &str); 15] = [
-    ("title", "title Sample Problem 18.4"),
-    ("given", "given m = 0.3 kg  or  given L : m"),
-    ("body", "body rod(c) mass m at (L/2, c/2, 0) along y"),
-    ("fixed", "fixed point"),
-    ("omega", "omega = w1*i - w2*j"),
-    ("omegadot", "omegadot = alpha*i"),
-    ("frame", "frame rate = -w2*j  or  frame body-fixed"),
-    ("vbar", "vbar = vbar_x*i + vbar_z*k"),
-    ("abar", "abar = -g*j"),
-    ("force", "force D = D_y*j + D_z*k at (L, 0, 0)"),
-    ("couple", "couple M*i"),
-    ("impulse", "impulse -F*Dt*k at (-a/2, -b/2, 0)"),
-    (
-        "constraint",
-        "constraint velocity at (L, -r, 0) = 0  or  constraint vbar_y = 0",
-    ),
-    ("unknown", "unknown C_y, D_y : N"),
-    ("find", "find D_y, C_y, H_G, T"),
-];
-
-/// A line the grammar cannot read: an unknown first word is named with the nearest
-/// statement; a known statement gets its form as the hint.
-fn syntax_error(source_name: &str, source: &str, at: usize, expected: &[String]) -> Diagnostic {
-    let at = source.floor_char_boundary(at.min(source.len()));
-    let line_start = source[..at].rfind('\n').map_or(0, |i| i + 1);
-    let line = &source[line_start..];
-    let line = &line[..line.find('\n').unwrap_or(line.len())];
-    let indent = line.len() - line.trim_start().len();
-    let word_len = line[indent..]
-        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '-' || c == '_'))
-        .unwrap_or(line.len() - indent);
-    let word = &line[indent..indent + word_len];
-    let word_start = line_start + indent;
-    match STATEMENT_FORMS.iter().find(|(keyword, _)| *keyword == word) {
-        Some((keyword, form)) => {
-            // The grammar may give up at the start of the statement: point past the keyword.
-            let at = if at <= word_start {
-                let after = word_start + word_len;
-                after + source[after..].len()
-                    - source[after..].trim_start_matches([' ', '\t']).len()
-            } else {
-                at
-            };
-            let found = match source[at..].chars().next() {
-                None => "end of file".to_string(),
-                Some('\n' | '\r') => "end of line".to_string(),
-                Some(c) => format!("'{c}'"),
-            };
-            let expected = match expected {
-                [] => String::new(),
-                tokens => format!(", expected {}", tokens.join(" or ")),
-            };
-            Diagnostic::at(
-                source_name,
-                source,
-                at,
-                at + 1,
-                format!("cannot read this '{keyword}' statement (found {found}{expected})"),
-            )
-            .with_help(format!("write it as '{form}'"))
-        }
-        None => {
-            let nearest = STATEMENT_FORMS
-                .iter()
-                .map(|(keyword, _)| (edit_distance(word, keyword), *keyword))
-                .min()
-                .filter(|(d, _)| *d <= 2 && !word.is_empty());
-            let help = match nearest {
-                Some((_, keyword)) => format!("did you mean '{keyword}'?"),
-                None => format!(
-                    "statements begin with one of: {}",
-                    STATEMENT_FORMS.map(|(keyword, _)| keyword).join(", ")
-                ),
-            };
-            let shown = if word.is_empty() { line.trim() } else { word };
-            Diagnostic::at(
-                source_name,
-                source,
-                word_start,
-                word_start + word_len.max(1),
-                format!("unknown statement '{shown}'"),
-            )
-            .with_help(help)
-        }
-    }
-}
-
-/// What the grammar expected, in words, without the spaces, line ends and comments that
-/// are allowed almost everywhere.
-fn expected_words<T: std::fmt::Display>(tokens: &[T]) -> Vec<String> {
-    let mut words: Vec<String> = Vec::new();
-    for token in tokens.iter().map(T::to_string) {
-        let word = match token.as_str() {
-            "#" | "BUILTIN_RULE" => continue,
-            "0..9" => "a digit".to_string(),
-            "A..Z" | "a..z" => "a letter".to_string(),
-            t if t.trim().is_empty() => continue,
-            t => format!("'{t}'"),
-        };
-        if !words.contains(&word) {
-            words.push(word);
-        }
-    }
-    words
-}
-
-/// The Levenshtein distance between two words, for "did you mean".
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut diagonal = row[0];
-        row[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let next = (row[j + 1] + 1)
-                .min(row[j] + 1)
-                .min(diagonal + usize::from(ca != *cb));
-            diagonal = row[j + 1];
-            row[j + 1] = next;
-        }
-    }
-    row[b.len()]
-}
-
 /// Unknowns without a unit: forces by their usual names, otherwise angular velocities.
 fn default_dimension(name: &str) -> Dimension {
     let s = Symbol::new(name);
@@ -806,40 +543,5 @@ fn default_dimension(name: &str) -> Dimension {
         "alpha" => Dimension::ANGULAR_ACCELERATION,
         "v" | "vbar" => Dimension::VELOCITY,
         _ => Dimension::FORCE,
-    }
-}
-
-/// The rotation taking a shape's own x axis to the frame axis `axis` (a cyclic relabelling).
-fn along(axis: &str) -> Matrix {
-    let z = Expr::zero;
-    let o = Expr::one;
-    match axis {
-        "y" => Matrix::new(z(), z(), o(), o(), z(), z(), z(), o(), z()),
-        "z" => Matrix::new(z(), o(), z(), z(), z(), o(), o(), z(), z()),
-        _ => Matrix::identity(),
-    }
-}
-
-/// The rotation by `angle` about a frame axis.
-fn rotation_about(axis: &str, angle: &Expr) -> Matrix {
-    let (c, s) = (
-        Expr::func(Func::Cos, angle.clone()),
-        Expr::func(Func::Sin, angle.clone()),
-    );
-    let (z, o) = (Expr::zero(), Expr::one());
-    match axis {
-        "x" => Matrix::new(o, z.clone(), z.clone(), z.clone(), c.clone(), -&s, z, s, c),
-        "y" => Matrix::new(
-            c.clone(),
-            z.clone(),
-            s.clone(),
-            z.clone(),
-            o,
-            z.clone(),
-            -&s,
-            z,
-            c,
-        ),
-        _ => Matrix::new(c.clone(), -&s, z.clone(), s, c, z.clone(), z.clone(), z, o),
     }
 }

@@ -1,0 +1,186 @@
+//! The `body` statement: a standard shape (or an explicit inertia tensor) with its mass, the
+//! position of its mass centre and its orientation (`along x|y|z`, `rotated ANGLE about x|y|z`),
+//! checked for physical admissibility.
+
+use super::super::model::Part;
+use super::super::units::Dimension;
+use super::{span, Reader, Rule};
+use crate::algebra::{Expr, Func, Matrix, Symbol, Vector};
+use crate::mechanics::inertia::InertiaTensor;
+use crate::mechanics::shapes::Shape;
+use crate::mechanics::validation::validate_inertia_tensor;
+use crate::parse::Diagnostic;
+use pest::iterators::Pair;
+
+impl Reader<'_> {
+    pub(super) fn body(&mut self, inner: Vec<Pair<Rule>>) -> Result<(), Diagnostic> {
+        let shape_pair = &inner[0];
+        let mut shape_inner = shape_pair.clone().into_inner();
+        let kind = shape_inner
+            .next()
+            .ok_or_else(|| self.error(span(shape_pair), "expected a shape"))?;
+        let args: Vec<Pair<Rule>> = shape_inner.collect();
+        let explicit = kind.as_str() == "inertia";
+        let want = if explicit {
+            Dimension::INERTIA
+        } else {
+            Dimension::LENGTH
+        };
+        let mut lengths = Vec::new();
+        for a in &args {
+            let e = self.math(a)?;
+            self.expect_dimension(&e, want, span(a))?;
+            lengths.push(e);
+        }
+        let shape = if explicit {
+            self.explicit_inertia(lengths, span(shape_pair))?
+        } else {
+            self.shape(&kind, lengths, span(shape_pair))?
+        };
+        let mass = self.math(&inner[1])?;
+        self.expect_dimension(&mass, Dimension::MASS, span(&inner[1]))?;
+        let mut position = Vector::from_element(Expr::zero());
+        let mut rotation = Matrix::identity();
+        let mut i = 2;
+        while i < inner.len() {
+            match inner[i].as_rule() {
+                Rule::point => position = self.point(&inner[i])?,
+                Rule::axis => rotation = along(inner[i].as_str()),
+                Rule::math => {
+                    let angle = self.math(&inner[i])?;
+                    self.expect_dimension(&angle, Dimension::NONE, span(&inner[i]))?;
+                    let about = inner.get(i + 1).map(|p| p.as_str()).unwrap_or("z");
+                    rotation = rotation_about(about, &angle) * rotation;
+                    i += 1;
+                }
+                _ => {}
+            }
+            i += 1;
+        }
+        self.scene.parts.push(Part {
+            shape,
+            mass,
+            position,
+            rotation,
+        });
+        Ok(())
+    }
+
+    /// `inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz)`: checked for physical admissibility when
+    /// every component has a value.
+    fn explicit_inertia(&self, mut c: Vec<Expr>, at: (usize, usize)) -> Result<Shape, Diagnostic> {
+        if c.len() != 6 {
+            return Err(self
+                .error(at, format!("inertia takes 6 components, found {}", c.len()))
+                .with_help("write inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz), products as positive integrals"));
+        }
+        let products: [Expr; 3] = [c.remove(3), c.remove(3), c.remove(3)];
+        let moments: [Expr; 3] = [c.remove(0), c.remove(0), c.remove(0)];
+        let tensor = InertiaTensor { moments, products };
+        let value = |e: &Expr| e.eval(&|s: Symbol| self.scene.value(s)).ok();
+        let numbers: Option<Vec<f64>> = tensor.matrix().iter().map(value).collect();
+        if let Some(numbers) = numbers {
+            let m = nalgebra::Matrix3::from_column_slice(&numbers);
+            validate_inertia_tensor(&m).map_err(|e| {
+                self.error(at, e.to_string()).with_help(
+                    "these components cannot belong to a real body; check their values and signs",
+                )
+            })?;
+        }
+        Ok(Shape::Explicit(tensor))
+    }
+
+    fn shape(
+        &self,
+        kind: &Pair<Rule>,
+        mut l: Vec<Expr>,
+        at: (usize, usize),
+    ) -> Result<Shape, Diagnostic> {
+        let expected = |n: usize, usage: &str| -> Result<(), Diagnostic> {
+            if l.len() == n {
+                Ok(())
+            } else {
+                Err(self
+                    .error(
+                        at,
+                        format!("{} takes {n} length(s), found {}", kind.as_str(), l.len()),
+                    )
+                    .with_help(format!("write {usage}")))
+            }
+        };
+        Ok(match kind.as_str() {
+            "rod" => {
+                expected(1, "rod(L)")?;
+                Shape::SlenderRod { length: l.remove(0) }
+            }
+            "plate" => {
+                expected(2, "plate(a, b)")?;
+                let b = l.remove(1);
+                Shape::ThinPlate { a: l.remove(0), b }
+            }
+            "disk" => {
+                expected(1, "disk(r)")?;
+                Shape::ThinDisk { radius: l.remove(0) }
+            }
+            "cylinder" => {
+                expected(2, "cylinder(r, h)")?;
+                let h = l.remove(1);
+                Shape::SolidCylinder { radius: l.remove(0), length: h }
+            }
+            "sphere" => {
+                expected(1, "sphere(r)")?;
+                Shape::SolidSphere { radius: l.remove(0) }
+            }
+            "prism" => {
+                expected(3, "prism(a, b, c)")?;
+                let c = l.remove(2);
+                let b = l.remove(1);
+                Shape::RectangularPrism { a: l.remove(0), b, c }
+            }
+            "point" => {
+                expected(0, "point()")?;
+                Shape::PointMass
+            }
+            other => {
+                return Err(self
+                    .error(span(kind), format!("unknown shape '{other}'"))
+                    .with_help("the shapes are rod(L), plate(a, b), disk(r), cylinder(r, h), sphere(r), prism(a, b, c), point(), inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz)"))
+            }
+        })
+    }
+}
+
+/// The rotation taking a shape's own x axis to the frame axis `axis` (a cyclic relabelling).
+fn along(axis: &str) -> Matrix {
+    let z = Expr::zero;
+    let o = Expr::one;
+    match axis {
+        "y" => Matrix::new(z(), z(), o(), o(), z(), z(), z(), o(), z()),
+        "z" => Matrix::new(z(), o(), z(), z(), z(), o(), o(), z(), z()),
+        _ => Matrix::identity(),
+    }
+}
+
+/// The rotation by `angle` about a frame axis.
+fn rotation_about(axis: &str, angle: &Expr) -> Matrix {
+    let (c, s) = (
+        Expr::func(Func::Cos, angle.clone()),
+        Expr::func(Func::Sin, angle.clone()),
+    );
+    let (z, o) = (Expr::zero(), Expr::one());
+    match axis {
+        "x" => Matrix::new(o, z.clone(), z.clone(), z.clone(), c.clone(), -&s, z, s, c),
+        "y" => Matrix::new(
+            c.clone(),
+            z.clone(),
+            s.clone(),
+            z.clone(),
+            o,
+            z.clone(),
+            -&s,
+            z,
+            c,
+        ),
+        _ => Matrix::new(c.clone(), -&s, z.clone(), s, c, z.clone(), z.clone(), z, o),
+    }
+}

@@ -213,14 +213,20 @@ impl<'a> Analyser<'a> {
                 acc + p.position.map(|x| &p.mass * &x)
             });
             let centroid = expand_vector(&moment.map(|x| &x / &mass));
-            let own =
-                |p: &super::model::Part| p.shape.centroidal_inertia(&p.mass).rotated(&p.rotation);
+            let own = |p: &super::model::Part| {
+                p.shape
+                    .centroidal_inertia(&p.mass)
+                    .and_then(|i| i.rotated(&p.rotation))
+                    .map_err(|e| self.fail(r, e.to_string(), "simplify the scene"))
+            };
             let inertia = if parts.len() == 1 {
-                own(&parts[0])
+                own(&parts[0])?
             } else {
                 let about_o = parts
                     .iter()
-                    .map(|p| own(p).parallel_axis(&p.mass, &p.position))
+                    .map(|p| Ok(own(p)?.parallel_axis(&p.mass, &p.position)))
+                    .collect::<Result<Vec<_>, Diagnostic>>()?
+                    .into_iter()
                     .reduce(|a, b| a.add(&b))
                     .unwrap_or_else(|| {
                         InertiaTensor::diagonal([Expr::zero(), Expr::zero(), Expr::zero()])

@@ -9,11 +9,32 @@ use kinetics::solution::{render, Format};
 pub struct Args {
     /// The scene file; `-` reads standard input.
     pub scene: String,
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
+    #[arg(long, value_enum, default_value_t = SolutionFormat::Text)]
+    pub format: SolutionFormat,
     /// With `--format latex`: a complete document that compiles with pdflatex.
     #[arg(long)]
     pub standalone: bool,
+}
+
+/// The formats of a worked solution as the command line spells them (the library's
+/// [`Format`] knows nothing of clap).
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum SolutionFormat {
+    Text,
+    Latex,
+    Markdown,
+    Json,
+}
+
+impl From<SolutionFormat> for Format {
+    fn from(format: SolutionFormat) -> Format {
+        match format {
+            SolutionFormat::Text => Format::Text,
+            SolutionFormat::Latex => Format::Latex,
+            SolutionFormat::Markdown => Format::Markdown,
+            SolutionFormat::Json => Format::Json,
+        }
+    }
 }
 
 #[derive(clap::Args)]
@@ -32,12 +53,13 @@ fn load(path: &str) -> Result<(Scene, Analysis), CliError> {
 
 pub fn run(args: Args) -> Result<String, CliError> {
     let (scene, analysis) = load(&args.scene)?;
-    if args.standalone && args.format != Format::Latex {
+    let format = Format::from(args.format);
+    if args.standalone && format != Format::Latex {
         return Err(CliError::Usage(
             "--standalone goes with --format latex".into(),
         ));
     }
-    Ok(render(&scene, &analysis, args.format, args.standalone)
+    Ok(render(&scene, &analysis, format, args.standalone)
         .trim_end()
         .to_string())
 }

@@ -14,7 +14,7 @@ use error::CliError;
 use std::io::Write;
 use std::process::ExitCode;
 
-/// Kinetics of rigid bodies in three dimensions: derive, print, evaluate, check.
+/// Kinetics of rigid bodies in three dimensions: derive, print, evaluate.
 #[derive(Parser)]
 #[command(name = "kinetics", version, about, long_about = None)]
 struct Cli {

@@ -1,8 +1,9 @@
 //! The standard shapes' centroidal inertia against sums over point masses that fill the
 //! shape (midpoint rules, relative error O(1/N²)), and a rotated tensor against the sums
-//! over rotated points.
+//! over rotated points; a tensor too large to expand is an error, not an unexpanded
+//! result.
 
-use kinetics::algebra::{Expr, Matrix, Symbol};
+use kinetics::algebra::{AlgebraError, Expr, Matrix, Symbol};
 use kinetics::mechanics::inertia::InertiaTensor;
 use kinetics::mechanics::shapes::Shape;
 use nalgebra::{Rotation3, Vector3};
@@ -71,7 +72,9 @@ fn shapes_match_point_mass_sums() {
     assert_close(
         "rod",
         formula(
-            &Shape::SlenderRod { length: s("a") }.centroidal_inertia(&s("m")),
+            &Shape::SlenderRod { length: s("a") }
+                .centroidal_inertia(&s("m"))
+                .unwrap(),
             &values,
         ),
         sums(&rod),
@@ -86,7 +89,7 @@ fn shapes_match_point_mass_sums() {
     };
     assert_close(
         "plate",
-        formula(&shape.centroidal_inertia(&s("m")), &values),
+        formula(&shape.centroidal_inertia(&s("m")).unwrap(), &values),
         sums(&plate),
     );
     // Rectangular prism.
@@ -104,7 +107,7 @@ fn shapes_match_point_mass_sums() {
     };
     assert_close(
         "prism",
-        formula(&shape.centroidal_inertia(&s("m")), &values),
+        formula(&shape.centroidal_inertia(&s("m")).unwrap(), &values),
         sums(&prism),
     );
     // Thin disk with axis x, and a solid cylinder with axis x: polar cells weighted by area.
@@ -130,7 +133,7 @@ fn shapes_match_point_mass_sums() {
     let shape = Shape::ThinDisk { radius: s("r") };
     assert_close(
         "disk",
-        formula(&shape.centroidal_inertia(&s("m")), &values),
+        formula(&shape.centroidal_inertia(&s("m")).unwrap(), &values),
         sums(&disk),
     );
     let cylinder: Vec<(f64, V)> = polar(r)
@@ -143,7 +146,7 @@ fn shapes_match_point_mass_sums() {
     };
     assert_close(
         "cylinder",
-        formula(&shape.centroidal_inertia(&s("m")), &values),
+        formula(&shape.centroidal_inertia(&s("m")).unwrap(), &values),
         sums(&cylinder),
     );
 }
@@ -178,7 +181,23 @@ fn rotated_tensor_matches_rotated_points() {
         c: Expr::symbol("c"),
     }
     .centroidal_inertia(&Expr::symbol("m"))
-    .rotated(&symbolic);
+    .unwrap()
+    .rotated(&symbolic)
+    .unwrap();
     let values = [("m", m), ("a", a), ("b", b), ("c", c)];
     assert_close("rotated prism", formula(&tensor, &values), sums(&turned));
+}
+
+#[test]
+fn a_tensor_too_large_to_expand_is_an_error() {
+    // (a + b + ... + q)^12 has 293,930 terms, over the bound of 100,000.
+    let sum = Expr::add_all("abcdefghpq".chars().map(|c| Expr::symbol(&c.to_string())));
+    let too_large =
+        |r: Result<InertiaTensor, AlgebraError>| matches!(r, Err(AlgebraError::TooLarge { .. }));
+    let rod = Shape::SlenderRod {
+        length: sum.powi(6),
+    };
+    assert!(too_large(rod.centroidal_inertia(&Expr::symbol("m"))));
+    let tensor = InertiaTensor::diagonal([sum.powi(12), Expr::zero(), Expr::zero()]);
+    assert!(too_large(tensor.rotated(&Matrix::identity())));
 }

@@ -60,18 +60,4 @@ impl Expr {
     pub fn collect(&self, variables: &[Symbol]) -> Result<Vec<Collected>, AlgebraError> {
         self.collect_by(&|s| variables.contains(&s))
     }
-
-    /// The coefficient of `monomial` (a product of powers of `variables`) once collected.
-    pub fn coefficient_of(
-        &self,
-        variables: &[Symbol],
-        monomial: &Expr,
-    ) -> Result<Expr, AlgebraError> {
-        Ok(self
-            .collect(variables)?
-            .into_iter()
-            .find(|g| &g.monomial == monomial)
-            .map(|g| g.coefficient)
-            .unwrap_or_else(Expr::zero))
-    }
 }

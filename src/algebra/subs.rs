@@ -36,9 +36,4 @@ impl Expr {
             View::Func(f, a) => Expr::func(f, a.subs(value)?),
         })
     }
-
-    /// Replaces one symbol by an expression.
-    pub fn subs_one(&self, symbol: Symbol, by: &Expr) -> Result<Expr, AlgebraError> {
-        self.subs(&|s| (s == symbol).then(|| by.clone()))
-    }
 }

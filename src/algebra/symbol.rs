@@ -226,12 +226,6 @@ impl Symbol {
         Symbol::new(&compose_name(&d.base, d.barred, d.dots + 1, &d.subscript))
     }
 
-    /// The same symbol with another subscript: `I` with `xy` gives `I_xy`.
-    pub fn with_subscript(self, subscript: &str) -> Symbol {
-        let d = self.0;
-        Symbol::new(&compose_name(&d.base, d.barred, d.dots, subscript))
-    }
-
     /// True for the derivative of a kinematic symbol (an acceleration-like quantity) and
     /// for symbols that name an acceleration (`alpha`, `a_x`).
     pub fn is_acceleration(self) -> bool {

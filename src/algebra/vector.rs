@@ -40,8 +40,3 @@ pub fn components(e: &Expr) -> Result<Vector, AlgebraError> {
     }
     Ok(out)
 }
-
-/// `v_x i + v_y j + v_z k` as one expression.
-pub fn from_components(v: &Vector) -> Expr {
-    Expr::add_all(v.iter().zip(unit_vectors()).map(|(c, u)| c * &u))
-}

@@ -1,6 +1,7 @@
 //! `kinetics bench work-precision [--until T] [--budget-ms N] [--plot PREFIX]`: run time
 //! against error for every method on the five bodies of the study, as a table and plots.
 
+use super::error::CliError;
 use kinetics::numeric::plot::{line_chart, Series};
 use kinetics::numeric::work_precision::{study, Row};
 use std::path::PathBuf;
@@ -27,13 +28,13 @@ pub struct WorkPrecisionArgs {
     pub plot: Option<PathBuf>,
 }
 
-pub fn run(bench: Bench) -> Result<String, String> {
+pub fn run(bench: Bench) -> Result<String, CliError> {
     let Bench::WorkPrecision(args) = bench;
     if !(args.until.is_finite() && args.until > 0.0) {
-        return Err(format!(
-            "error: --until {} must be a positive number",
+        return Err(CliError::Usage(format!(
+            "--until {} must be a positive number",
             args.until
-        ));
+        )));
     }
     let bar = indicatif::ProgressBar::new_spinner();
     let (rows, notes) = study(
@@ -44,7 +45,7 @@ pub fn run(bench: Bench) -> Result<String, String> {
             bar.tick();
         },
     )
-    .map_err(|e| format!("error: {e}"))?;
+    .map_err(|source| CliError::Numeric { name: None, source })?;
     bar.finish_and_clear();
     if let Some(prefix) = &args.plot {
         plots(prefix, &rows)?;
@@ -64,7 +65,7 @@ pub fn run(bench: Bench) -> Result<String, String> {
     Ok(out)
 }
 
-fn plots(prefix: &std::path::Path, rows: &[Row]) -> Result<(), String> {
+fn plots(prefix: &std::path::Path, rows: &[Row]) -> Result<(), CliError> {
     let mut cases: Vec<&str> = rows.iter().map(|r| r.case).collect();
     cases.dedup();
     for case in cases {
@@ -87,7 +88,8 @@ fn plots(prefix: &std::path::Path, rows: &[Row]) -> Result<(), String> {
             "log10 time per run [s]",
             "log10 max |Δω|",
             &series,
-        )?;
+        )
+        .map_err(CliError::Plot)?;
     }
     Ok(())
 }

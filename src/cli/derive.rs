@@ -1,6 +1,7 @@
 //! `kinetics derive --general [--principal] [--only H_G,T,euler,...] [--steps]
 //! [--format text|latex|json]`: the chapter's equations for a general body.
 
+use super::error::CliError;
 use kinetics::mechanics::catalogue::{derive_general, NAMES};
 use kinetics::mechanics::Derivation;
 use kinetics::print::Notation;
@@ -25,7 +26,7 @@ pub struct Args {
     pub format: super::show::Format,
 }
 
-pub fn run(args: Args) -> Result<String, String> {
+pub fn run(args: Args) -> Result<String, CliError> {
     let names: Vec<&str> = if args.only.is_empty() {
         NAMES.to_vec()
     } else {
@@ -34,12 +35,15 @@ pub fn run(args: Args) -> Result<String, String> {
     let mut derivations = Vec::new();
     for name in names {
         let derived = derive_general(name, args.principal).ok_or_else(|| {
-            format!(
-                "error: unknown derivation '{name}'\n  = help: choose from {}",
+            CliError::Usage(format!(
+                "unknown derivation '{name}'\n  = help: choose from {}",
                 NAMES.join(", ")
-            )
+            ))
         })?;
-        derivations.push(derived.map_err(|e| format!("error: {name}: {e}"))?);
+        derivations.push(derived.map_err(|source| CliError::Algebra {
+            name: Some(name.to_string()),
+            source,
+        })?);
     }
     Ok(match args.format {
         super::show::Format::Text => render(&derivations, Notation::Text, args.steps),

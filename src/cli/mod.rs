@@ -2,6 +2,7 @@
 
 mod bench;
 mod derive;
+mod error;
 mod input;
 mod show;
 mod simplify;
@@ -9,9 +10,11 @@ mod simulate;
 mod solve;
 
 use clap::{Parser, Subcommand};
+use error::CliError;
+use std::io::Write;
 use std::process::ExitCode;
 
-/// Kinetics of rigid bodies in three dimensions: derive, print, evaluate, check.
+/// Kinetics of rigid bodies in three dimensions: derive, print, evaluate.
 #[derive(Parser)]
 #[command(name = "kinetics", version, about, long_about = None)]
 struct Cli {
@@ -38,10 +41,27 @@ enum Command {
     Bench(bench::Bench),
 }
 
-/// Runs the command line and maps failures to a message on standard error and exit code 1.
+/// Runs the command line: the command's output on standard output, or its failure's
+/// message on standard error and exit code 1 (see [`CliError`]).
 pub fn run() -> ExitCode {
     let cli = Cli::parse();
-    let result = match cli.command {
+    match execute(cli.command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            let mut message = e.to_string();
+            if !message.ends_with('\n') {
+                message.push('\n');
+            }
+            // With standard error closed there is no one left to tell.
+            let _ = std::io::stderr().write_all(message.as_bytes());
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// Runs one command and writes its output, if any, as a line.
+fn execute(command: Command) -> Result<(), CliError> {
+    let output = match command {
         Command::Latex(args) => show::run(args),
         Command::Simplify(args) => simplify::run(args),
         Command::Derive(args) => derive::run(args),
@@ -49,20 +69,12 @@ pub fn run() -> ExitCode {
         Command::Plan(args) => solve::plan(args),
         Command::Simulate(args) => simulate::run(args),
         Command::Bench(b) => bench::run(b),
-    };
-    match result {
-        Ok(output) => {
-            if !output.is_empty() {
-                println!("{output}");
-            }
-            ExitCode::SUCCESS
-        }
-        Err(message) => {
-            eprint!("{message}");
-            if !message.ends_with('\n') {
-                eprintln!();
-            }
-            ExitCode::FAILURE
-        }
+    }?;
+    if output.is_empty() {
+        return Ok(());
     }
+    let mut stdout = std::io::stdout().lock();
+    writeln!(stdout, "{output}")
+        .and_then(|()| stdout.flush())
+        .map_err(CliError::io("write"))
 }

@@ -1,5 +1,6 @@
 //! `kinetics latex "<expr or equation>"`: print as LaTeX (default), text or JSON.
 
+use super::error::CliError;
 use super::input;
 use kinetics::algebra::{vector, Expr};
 use kinetics::parse::{parse_statement, Statement};
@@ -22,16 +23,16 @@ pub enum Format {
     Json,
 }
 
-pub fn run(args: Args) -> Result<String, String> {
+pub fn run(args: Args) -> Result<String, CliError> {
     let (name, source) = input::read(&args.input)?;
-    let statement = parse_statement(&name, &source).map_err(|d| d.render())?;
+    let statement = parse_statement(&name, &source)?;
     render_statement(&statement, args.format)
 }
 
 /// Prints an expression or an equation in the chosen format; vectors written with `i j k`
 /// print component by component.
-pub fn render_statement(statement: &Statement, format: Format) -> Result<String, String> {
-    let show = |notation: Notation| -> Result<String, String> {
+pub fn render_statement(statement: &Statement, format: Format) -> Result<String, CliError> {
+    let show = |notation: Notation| -> Result<String, CliError> {
         Ok(match statement {
             Statement::Expression(e) => side(e, notation, Axis::X)?,
             Statement::Equation(eq) => {
@@ -55,9 +56,9 @@ pub fn render_statement(statement: &Statement, format: Format) -> Result<String,
     }
 }
 
-fn side(e: &Expr, notation: Notation, axis: Axis) -> Result<String, String> {
+fn side(e: &Expr, notation: Notation, axis: Axis) -> Result<String, CliError> {
     if vector::has_unit_vectors(e) {
-        let v = vector::components(e).map_err(|err| format!("error: {err}"))?;
+        let v = vector::components(e).map_err(|source| CliError::Algebra { name: None, source })?;
         Ok(print::vector(&v, notation))
     } else {
         Ok(print::render(e, notation, axis))

@@ -1,5 +1,6 @@
 //! `kinetics simplify [--expand] "<expr>"`: the canonical form of an expression.
 
+use super::error::CliError;
 use super::input;
 use super::show::{render_statement, Format};
 use kinetics::parse::{parse_statement, Equation, Statement};
@@ -16,12 +17,16 @@ pub struct Args {
     pub format: Format,
 }
 
-pub fn run(args: Args) -> Result<String, String> {
+pub fn run(args: Args) -> Result<String, CliError> {
     let (name, source) = input::read(&args.input)?;
-    let statement = parse_statement(&name, &source).map_err(|d| d.render())?;
+    let statement = parse_statement(&name, &source)?;
     let statement = if args.expand {
-        let expand =
-            |e: &kinetics::algebra::Expr| e.expand().map_err(|err| format!("error: {name}: {err}"));
+        let expand = |e: &kinetics::algebra::Expr| {
+            e.expand().map_err(|source| CliError::Algebra {
+                name: Some(name.clone()),
+                source,
+            })
+        };
         match statement {
             Statement::Expression(e) => Statement::Expression(expand(&e)?),
             Statement::Equation(eq) => Statement::Equation(Equation {

@@ -7,6 +7,7 @@
 //! with it) and `--step` to rk4 and splitting: a flag the chosen method does not use is
 //! refused with the reason, not ignored.
 
+use super::error::CliError;
 use kinetics::numeric::exact_propagation::{simulate_choice, Choice, MethodUsed};
 use kinetics::numeric::plot::{line_chart, Series};
 use kinetics::numeric::sample_sink::Sample;
@@ -77,11 +78,11 @@ fn method_choice(
     method: MethodName,
     rtol: Option<f64>,
     step: Option<f64>,
-) -> Result<Choice, String> {
+) -> Result<Choice, CliError> {
     let refuse = |flag: &str, name: &str, reason: &str| {
-        Err(format!(
-            "error: {flag} does not apply to --method {name}: {reason}"
-        ))
+        Err(CliError::Usage(format!(
+            "{flag} does not apply to --method {name}: {reason}"
+        )))
     };
     let fixed_steps = "it takes equal steps; give --step (default 1e-3 s) instead";
     match method {
@@ -135,17 +136,17 @@ fn method_choice(
     }
 }
 
-pub fn run(args: Args) -> Result<String, String> {
+pub fn run(args: Args) -> Result<String, CliError> {
     let choice = method_choice(args.method, args.rtol, args.step)?;
     let (name, text) = super::input::read_file(&args.scene)?;
-    let scene = parse_scene(&name, &text).map_err(|d| d.render())?;
-    let problem = simulation::problem(&scene).map_err(|d| d.render())?;
+    let scene = parse_scene(&name, &text)?;
+    let problem = simulation::problem(&scene)?;
     if let Some(path) = &args.plot {
         if path.exists() && !args.force {
-            return Err(format!(
-                "error: {} exists; pass --force to overwrite it",
+            return Err(CliError::Usage(format!(
+                "{} exists; pass --force to overwrite it",
                 path.display()
-            ));
+            )));
         }
     }
     let (sampling, count) = match (&args.at, args.until) {
@@ -165,7 +166,7 @@ pub fn run(args: Args) -> Result<String, String> {
                 count,
             )
         }
-        (None, None) => return Err("error: give --until T or --at t1,t2,...".into()),
+        (None, None) => return Err(CliError::Usage("give --until T or --at t1,t2,...".into())),
     };
     let stride = count.div_ceil(PLOT_POINTS).max(1);
     let stdout = std::io::stdout();
@@ -178,7 +179,7 @@ pub fn run(args: Args) -> Result<String, String> {
         Output::Csv => writeln!(out, "{header}"),
         Output::Json => write!(out, "["),
     };
-    opening.map_err(|e| format!("error: cannot write: {e}"))?;
+    opening.map_err(CliError::io("write"))?;
     let bar = indicatif::ProgressBar::new(1000);
     bar.set_style(
         indicatif::ProgressStyle::with_template(
@@ -225,16 +226,21 @@ pub fn run(args: Args) -> Result<String, String> {
     let (statistics, used) = simulate_choice(&problem, &choice, &sampling, &mut sink, &mut |f| {
         bar.set_position((f * 1000.0) as u64)
     })
-    .map_err(|e| format!("error: {name}: {e}"))?;
+    .map_err(|source| CliError::Numeric {
+        name: Some(name),
+        source,
+    })?;
     bar.finish_and_clear();
     if let Some(e) = failure {
-        return Err(format!("error: cannot write the samples: {e}"));
+        return Err(CliError::Io {
+            action: "write the samples".into(),
+            source: e,
+        });
     }
     if args.format == Output::Json {
-        writeln!(out, "]").map_err(|e| format!("error: cannot write: {e}"))?;
+        writeln!(out, "]").map_err(CliError::io("write"))?;
     }
-    out.flush()
-        .map_err(|e| format!("error: cannot write: {e}"))?;
+    out.flush().map_err(CliError::io("write"))?;
     if let Some(path) = &args.plot {
         let series: Vec<Series> = ["ω_x", "ω_y", "ω_z"]
             .iter()
@@ -250,7 +256,8 @@ pub fn run(args: Args) -> Result<String, String> {
             "t [s]",
             "ω [rad/s]",
             &series,
-        )?;
+        )
+        .map_err(CliError::Plot)?;
     }
     let method = match used {
         MethodUsed::Exact => "exact (closed form)".to_string(),

@@ -1,6 +1,7 @@
 //! `kinetics solve SCENE [--format text|latex|markdown|json] [--standalone]` and
 //! `kinetics plan SCENE`: a scene file (or `-` for standard input) analysed on demand.
 
+use super::error::CliError;
 use kinetics::scene::{analyse, parse_scene, Analysis, Scene};
 use kinetics::solution::{render, Format};
 
@@ -8,11 +9,32 @@ use kinetics::solution::{render, Format};
 pub struct Args {
     /// The scene file; `-` reads standard input.
     pub scene: String,
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
+    #[arg(long, value_enum, default_value_t = SolutionFormat::Text)]
+    pub format: SolutionFormat,
     /// With `--format latex`: a complete document that compiles with pdflatex.
     #[arg(long)]
     pub standalone: bool,
+}
+
+/// The formats of a worked solution as the command line spells them (the library's
+/// [`Format`] knows nothing of clap).
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum SolutionFormat {
+    Text,
+    Latex,
+    Markdown,
+    Json,
+}
+
+impl From<SolutionFormat> for Format {
+    fn from(format: SolutionFormat) -> Format {
+        match format {
+            SolutionFormat::Text => Format::Text,
+            SolutionFormat::Latex => Format::Latex,
+            SolutionFormat::Markdown => Format::Markdown,
+            SolutionFormat::Json => Format::Json,
+        }
+    }
 }
 
 #[derive(clap::Args)]
@@ -21,26 +43,28 @@ pub struct PlanArgs {
     pub scene: String,
 }
 
-fn load(path: &str) -> Result<(Scene, Analysis), String> {
+fn load(path: &str) -> Result<(Scene, Analysis), CliError> {
     let (name, text) = super::input::read_file(path)?;
-    let scene = parse_scene(&name, &text).map_err(|d| d.render())?;
-    let analysis = analyse(&scene).map_err(|d| d.render())?;
-    kinetics::solution::numbers::check_numeric_requests(&scene, &analysis)
-        .map_err(|d| d.render())?;
+    let scene = parse_scene(&name, &text)?;
+    let analysis = analyse(&scene)?;
+    kinetics::solution::numbers::check_numeric_requests(&scene, &analysis)?;
     Ok((scene, analysis))
 }
 
-pub fn run(args: Args) -> Result<String, String> {
+pub fn run(args: Args) -> Result<String, CliError> {
     let (scene, analysis) = load(&args.scene)?;
-    if args.standalone && args.format != Format::Latex {
-        return Err("error: --standalone goes with --format latex".into());
+    let format = Format::from(args.format);
+    if args.standalone && format != Format::Latex {
+        return Err(CliError::Usage(
+            "--standalone goes with --format latex".into(),
+        ));
     }
-    Ok(render(&scene, &analysis, args.format, args.standalone)
+    Ok(render(&scene, &analysis, format, args.standalone)
         .trim_end()
         .to_string())
 }
 
-pub fn plan(args: PlanArgs) -> Result<String, String> {
+pub fn plan(args: PlanArgs) -> Result<String, CliError> {
     let (_, analysis) = load(&args.scene)?;
     Ok(analysis
         .plan

@@ -78,10 +78,12 @@ impl InertiaTensor {
         }
     }
 
-    /// The tensor in axes whose directions are the rows of `rotation`: `R [I] Rᵀ`.
-    pub fn rotated(&self, rotation: &Matrix) -> InertiaTensor {
+    /// The tensor in axes whose directions are the rows of `rotation`: `R [I] Rᵀ`, each
+    /// component expanded. Fails when a component's expansion is over the bound.
+    pub fn rotated(&self, rotation: &Matrix) -> Result<InertiaTensor, AlgebraError> {
         let m = rotation * self.matrix() * rotation.transpose();
-        InertiaTensor::from_matrix(&m.map(|e| e.expand().unwrap_or(e)))
+        let expanded: Vec<Expr> = m.iter().map(Expr::expand).collect::<Result<_, _>>()?;
+        Ok(InertiaTensor::from_matrix(&Matrix::from_iterator(expanded)))
     }
 
     /// Moves a centroidal tensor to axes through a point O, parallel to the centroidal

@@ -14,7 +14,7 @@
 //! may also be given by its six centroidal components ([`Shape::Explicit`]).
 
 use super::inertia::InertiaTensor;
-use crate::algebra::Expr;
+use crate::algebra::{AlgebraError, Expr};
 
 /// A body whose inertia is known in closed form.
 #[derive(Debug, Clone, PartialEq)]
@@ -48,8 +48,10 @@ pub enum Shape {
 }
 
 impl Shape {
-    /// The centroidal tensor of this shape with mass `m`, in the shape's own axes.
-    pub fn centroidal_inertia(&self, m: &Expr) -> InertiaTensor {
+    /// The centroidal tensor of this shape with mass `m`, in the shape's own axes, each
+    /// moment expanded. Fails when a moment's expansion is over the bound (dimensions given
+    /// as large powers of sums).
+    pub fn centroidal_inertia(&self, m: &Expr) -> Result<InertiaTensor, AlgebraError> {
         let q = |n: i64, d: i64| Expr::rational(n, d) * m;
         let sq = |e: &Expr| e.powi(2);
         let moments = match self {
@@ -81,8 +83,9 @@ impl Shape {
                 q(1, 12) * (sq(a) + sq(b)),
             ],
             Shape::PointMass => [Expr::zero(), Expr::zero(), Expr::zero()],
-            Shape::Explicit(tensor) => return tensor.clone(),
+            Shape::Explicit(tensor) => return Ok(tensor.clone()),
         };
-        InertiaTensor::diagonal(moments.map(|e| e.expand().unwrap_or(e)))
+        let [x, y, z] = moments.map(|e| e.expand());
+        Ok(InertiaTensor::diagonal([x?, y?, z?]))
     }
 }

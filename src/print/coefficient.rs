@@ -190,6 +190,10 @@ fn numeric_power(f: &Expr) -> Option<(&Expr, &Q)> {
     }
 }
 
+/// `base^exponent`. `checked_pow` fails only for zero to a negative power, and the base of
+/// a factor of a canonical term is never zero (a product with a zero factor is zero
+/// itself). Were it to fail, 1 still divides every term: the group printed with it is the
+/// same sum.
 fn power(base: &Expr, exponent: &Q) -> Expr {
     base.checked_pow(&Expr::num(exponent.clone()))
         .unwrap_or_else(|_| Expr::one())

@@ -24,7 +24,7 @@ use std::cell::RefCell;
 use std::fmt::Write;
 
 /// The notation of a printed result.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Notation {
     #[default]

@@ -196,12 +196,15 @@ impl<'a> Analyser<'a> {
             }
             let parts: Vec<MassPart> = parts
                 .iter()
-                .map(|p| MassPart {
-                    mass: p.mass.clone(),
-                    position: p.position.clone(),
-                    inertia: p.shape.centroidal_inertia(&p.mass).rotated(&p.rotation),
+                .map(|p| {
+                    Ok(MassPart {
+                        mass: p.mass.clone(),
+                        position: p.position.clone(),
+                        inertia: p.shape.centroidal_inertia(&p.mass)?.rotated(&p.rotation)?,
+                    })
                 })
-                .collect();
+                .collect::<Result<_, AlgebraError>>()
+                .map_err(self.algebra(at))?;
             let (body, derivation) = composite_body(&parts).map_err(|e| match e {
                 AlgebraError::DivisionByZero => self.fail(
                     at,

@@ -21,7 +21,9 @@ pub fn scene_dimensions(scene: &Scene) -> Dimensions {
     dims
 }
 
-/// The value of `e` when every symbol in it has a given value; `None` otherwise.
+/// The value of `e` when every symbol in it has a given value and the value is finite;
+/// `None` otherwise, and the answer stays symbolic. (An answer asked for `in UNIT` must
+/// have a value: [`check_numeric_requests`] refuses it when it has none.)
 pub fn value(scene: &Scene, e: &Expr) -> Option<f64> {
     e.eval(&|s: Symbol| scene.value(s)).ok()
 }
@@ -31,8 +33,8 @@ pub fn unit(dims: &Dimensions, e: &Expr) -> Option<String> {
     dimension_of(e, dims).ok().map(Dimension::si_unit)
 }
 
-/// Checks the requests written `find X in UNIT`: the answer must be in that kind of unit
-/// and every given it depends on must have a value.
+/// Checks the requests written `find X in UNIT`: the answer must be in that kind of unit,
+/// every given it depends on must have a value, and with those values it must be finite.
 pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), Diagnostic> {
     let dims = scene_dimensions(scene);
     for (request, value) in &analysis.results {
@@ -75,6 +77,12 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
                 return Err(fail(
                     format!("{} in {written} needs a value for {}", request.name, missing.join(", ")),
                     format!("give it one, e.g. 'given {first} = <number> <unit>', or drop 'in {written}' for a symbolic answer"),
+                ));
+            }
+            if self::value(scene, e).is_none() {
+                return Err(fail(
+                    format!("{} in {written} is not a finite number with the given values", request.name),
+                    "check the givens it depends on: with these values the configuration has no finite answer".into(),
                 ));
             }
         }

@@ -22,7 +22,7 @@ use crate::scene::units::Dimensions;
 use crate::scene::{Analysis, Scene, Value};
 
 /// The output formats of a worked solution.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Format {
     Text,
     Latex,

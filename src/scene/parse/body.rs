@@ -77,6 +77,8 @@ impl Reader<'_> {
         let products: [Expr; 3] = [c.remove(3), c.remove(3), c.remove(3)];
         let moments: [Expr; 3] = [c.remove(0), c.remove(0), c.remove(0)];
         let tensor = InertiaTensor { moments, products };
+        // Evaluation fails only for a missing value or a non-finite one, and each component
+        // was refused when read if it was not finite: `None` means a symbol has no value.
         let value = |e: &Expr| e.eval(&|s: Symbol| self.scene.value(s)).ok();
         let numbers: Option<Vec<f64>> = tensor.matrix().iter().map(value).collect();
         if let Some(numbers) = numbers {

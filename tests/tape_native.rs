@@ -8,7 +8,7 @@ use kinetics::algebra::{Expr, Func, Symbol, Vector, Q};
 use kinetics::mechanics::euler::body_angular_velocity;
 use kinetics::mechanics::inertia::InertiaTensor;
 use kinetics::mechanics::rotating_frame::rate_of_angular_momentum;
-use kinetics::numeric::tape_batch::SETS_PER_TASK;
+use kinetics::numeric::tape::batch::SETS_PER_TASK;
 use kinetics::numeric::{Instruction, NativeTape, NumericError, Tape};
 use proptest::prelude::*;
 use std::sync::OnceLock;

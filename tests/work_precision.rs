@@ -10,7 +10,7 @@
 mod common;
 
 use common::binary::kinetics;
-use kinetics::numeric::work_precision::{cases, study, Load, Row};
+use kinetics::numeric::work_precision::study::{cases, study, Load, Row};
 use nalgebra::Vector3;
 use std::collections::BTreeSet;
 use std::path::Path;

@@ -1,8 +1,8 @@
 //! `kinetics bench work-precision [--until T] [--budget-ms N] [--plot PREFIX]`: run time
 //! against error for every method on the five bodies of the study, as a table and plots.
 
-use kinetics::numeric::plot::{line_chart, Series};
-use kinetics::numeric::work_precision::{study, Row};
+use kinetics::numeric::work_precision::plot::{line_chart, Series};
+use kinetics::numeric::work_precision::study::{study, Row};
 use std::path::PathBuf;
 use std::time::Duration;
 

@@ -7,11 +7,11 @@
 //! with it) and `--step` to rk4 and splitting: a flag the chosen method does not use is
 //! refused with the reason, not ignored.
 
-use kinetics::numeric::exact_propagation::{simulate_choice, Choice, MethodUsed};
-use kinetics::numeric::plot::{line_chart, Series};
-use kinetics::numeric::sample_sink::Sample;
-use kinetics::numeric::simulate::{Method, Sampling};
-use kinetics::numeric::splitting::SplittingOrder;
+use kinetics::numeric::integrators::splitting::SplittingOrder;
+use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice, MethodUsed};
+use kinetics::numeric::rigid_body::sample_sink::Sample;
+use kinetics::numeric::rigid_body::simulate::{Method, Sampling};
+use kinetics::numeric::work_precision::plot::{line_chart, Series};
 use kinetics::scene::{parse_scene, simulation};
 use std::io::Write;
 use std::path::PathBuf;

@@ -1,0 +1,7 @@
+//! Work against precision: how much time each method needs for how much accuracy.
+//!
+//! - `study.rs`: every method at several settings on a set of bodies, timed, with its error
+//! - `plot.rs`: SVG line charts (also the simulation's ω(t))
+
+pub mod plot;
+pub mod study;

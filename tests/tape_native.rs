@@ -3,6 +3,8 @@
 //! equations in a rotating frame at random points (also against tree-walking `Expr::eval`),
 //! bad lengths, non-finite outputs, tapes without inputs or with constant outputs, a tape
 //! hundreds of instructions deep, the parallel batch, sharing between threads, and many tapes compiled and dropped.
+//! Needs the `jit` feature.
+#![cfg(feature = "jit")]
 
 use kinetics::algebra::{Expr, Func, Symbol, Vector, Q};
 use kinetics::mechanics::euler::body_angular_velocity;

@@ -16,4 +16,5 @@ pub mod work_precision;
 pub use error::NumericError;
 pub use scalar::dual::Dual;
 pub use tape::interpreter::{Instruction, Tape};
+#[cfg(feature = "jit")]
 pub use tape::native::NativeTape;

@@ -117,7 +117,8 @@ impl Tape {
         self.outputs.len()
     }
 
-    /// The register holding each output, in output order.
+    /// The register holding each output, in output order (what the machine code returns).
+    #[cfg(feature = "jit")]
     pub(super) fn output_registers(&self) -> &[u32] {
         &self.outputs
     }

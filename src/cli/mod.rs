@@ -3,6 +3,8 @@
 mod bench;
 mod derive;
 mod input;
+#[cfg(feature = "plot")]
+mod plot;
 mod show;
 mod simplify;
 mod simulate;

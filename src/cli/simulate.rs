@@ -2,19 +2,17 @@
 //! [--rtol R | --step h] [--format csv|json] [--plot out.svg]`: integrate Euler's equations
 //! and the orientation for the scene's body, streaming the samples (memory stays flat).
 //!
-//! Each row is formatted and written as its sample arrives; only the plot keeps points, at
-//! most `PLOT_POINTS` of them. `--rtol` belongs to dop853 (and to auto, which may integrate
-//! with it) and `--step` to rk4 and splitting: a flag the chosen method does not use is
-//! refused with the reason, not ignored.
+//! Each row is formatted and written as its sample arrives; only the plot (`--plot`, with
+//! the `plot` feature) keeps points, a bounded number of them. `--rtol` belongs to dop853
+//! (and to auto, which may integrate with it) and `--step` to rk4 and splitting: a flag the
+//! chosen method does not use is refused with the reason, not ignored.
 
 use kinetics::numeric::integrators::splitting::SplittingOrder;
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice, MethodUsed};
 use kinetics::numeric::rigid_body::sample_sink::Sample;
 use kinetics::numeric::rigid_body::simulate::{Method, Sampling};
-use kinetics::numeric::work_precision::plot::{line_chart, Series};
 use kinetics::scene::{parse_scene, simulation};
 use std::io::Write;
-use std::path::PathBuf;
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum MethodName {
@@ -56,15 +54,15 @@ pub struct Args {
     #[arg(long, value_enum, default_value_t = Output::Csv)]
     pub format: Output,
     /// Also draw ω(t) into this SVG file.
+    #[cfg(feature = "plot")]
     #[arg(long)]
-    pub plot: Option<PathBuf>,
+    pub plot: Option<std::path::PathBuf>,
     /// Overwrite the plot file if it exists.
+    #[cfg(feature = "plot")]
     #[arg(long)]
     pub force: bool,
 }
 
-/// Most points kept for the plot; longer runs are thinned evenly.
-const PLOT_POINTS: usize = 20_000;
 /// Relative tolerance of dop853 (and of auto) without `--rtol`.
 const DEFAULT_RTOL: f64 = 1e-10;
 /// Step of rk4 and splitting without `--step` (s).
@@ -140,37 +138,21 @@ pub fn run(args: Args) -> Result<String, String> {
     let (name, text) = super::input::read_file(&args.scene)?;
     let scene = parse_scene(&name, &text).map_err(|d| d.render())?;
     let problem = simulation::problem(&scene).map_err(|d| d.render())?;
-    if let Some(path) = &args.plot {
-        if path.exists() && !args.force {
-            return Err(format!(
-                "error: {} exists; pass --force to overwrite it",
-                path.display()
-            ));
-        }
-    }
-    let (sampling, count) = match (&args.at, args.until) {
-        (Some(times), _) => (Sampling::Times(times.clone()), times.len()),
-        (None, Some(until)) => {
-            let every = args.every.unwrap_or(until / 100.0);
-            let count = if every > 0.0 && until.is_finite() {
-                (until / every) as usize + 1
-            } else {
-                1
-            };
-            (
-                Sampling::Every {
-                    interval: every,
-                    end: until,
-                },
-                count,
-            )
-        }
+    let sampling = match (&args.at, args.until) {
+        (Some(times), _) => Sampling::Times(times.clone()),
+        (None, Some(until)) => Sampling::Every {
+            interval: args.every.unwrap_or(until / 100.0),
+            end: until,
+        },
         (None, None) => return Err("error: give --until T or --at t1,t2,...".into()),
     };
-    let stride = count.div_ceil(PLOT_POINTS).max(1);
+    #[cfg(feature = "plot")]
+    let mut plot = match &args.plot {
+        Some(path) => Some(super::plot::OmegaPlot::new(path, args.force, &sampling)?),
+        None => None,
+    };
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
-    let mut plotted: [Vec<(f64, f64)>; 3] = Default::default();
     let mut written = 0usize;
     let mut failure: Option<std::io::Error> = None;
     let header = "t,w_x,w_y,w_z,q_w,q_x,q_y,q_z,T,H";
@@ -215,10 +197,9 @@ pub fn run(args: Args) -> Result<String, String> {
         if let Err(e) = result {
             failure = Some(e);
         }
-        if args.plot.is_some() && written.is_multiple_of(stride) {
-            for (line, w) in plotted.iter_mut().zip(s.omega.iter()) {
-                line.push((s.t, *w));
-            }
+        #[cfg(feature = "plot")]
+        if let Some(plot) = &mut plot {
+            plot.add(&s);
         }
         written += 1;
     };
@@ -235,22 +216,9 @@ pub fn run(args: Args) -> Result<String, String> {
     }
     out.flush()
         .map_err(|e| format!("error: cannot write: {e}"))?;
-    if let Some(path) = &args.plot {
-        let series: Vec<Series> = ["ω_x", "ω_y", "ω_z"]
-            .iter()
-            .zip(plotted)
-            .map(|(n, points)| Series {
-                name: n.to_string(),
-                points,
-            })
-            .collect();
-        line_chart(
-            path,
-            "angular velocity in body axes",
-            "t [s]",
-            "ω [rad/s]",
-            &series,
-        )?;
+    #[cfg(feature = "plot")]
+    if let Some(plot) = plot {
+        plot.draw()?;
     }
     let method = match used {
         MethodUsed::Exact => "exact (closed form)".to_string(),

@@ -35,17 +35,10 @@ pub fn run(bench: Bench) -> Result<String, String> {
             args.until
         ));
     }
-    let bar = indicatif::ProgressBar::new_spinner();
-    let (rows, notes) = study(
-        args.until,
-        Duration::from_millis(args.budget_ms),
-        &mut |what| {
-            bar.set_message(what.to_string());
-            bar.tick();
-        },
-    )
+    let (rows, notes) = super::progress::with_spinner(|progress| {
+        study(args.until, Duration::from_millis(args.budget_ms), progress)
+    })
     .map_err(|e| format!("error: {e}"))?;
-    bar.finish_and_clear();
     #[cfg(feature = "plot")]
     if let Some(prefix) = &args.plot {
         super::plot::work_precision(prefix, &rows)?;

@@ -5,6 +5,7 @@ mod derive;
 mod input;
 #[cfg(feature = "plot")]
 mod plot;
+mod progress;
 mod show;
 mod simplify;
 mod simulate;

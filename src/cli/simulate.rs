@@ -161,13 +161,6 @@ pub fn run(args: Args) -> Result<String, String> {
         Output::Json => write!(out, "["),
     };
     opening.map_err(|e| format!("error: cannot write: {e}"))?;
-    let bar = indicatif::ProgressBar::new(1000);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template(
-            "{bar:40} {percent:>3}% {elapsed} elapsed, {eta} left",
-        )
-        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-    );
     let mut sink = |s: Sample<f64>| {
         if failure.is_some() {
             return;
@@ -203,11 +196,10 @@ pub fn run(args: Args) -> Result<String, String> {
         }
         written += 1;
     };
-    let (statistics, used) = simulate_choice(&problem, &choice, &sampling, &mut sink, &mut |f| {
-        bar.set_position((f * 1000.0) as u64)
+    let (statistics, used) = super::progress::with_bar(|progress| {
+        simulate_choice(&problem, &choice, &sampling, &mut sink, progress)
     })
     .map_err(|e| format!("error: {name}: {e}"))?;
-    bar.finish_and_clear();
     if let Some(e) = failure {
         return Err(format!("error: cannot write the samples: {e}"));
     }

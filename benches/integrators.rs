@@ -7,14 +7,14 @@
 //! that figure was measured on ω alone.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use kinetics::numeric::body_inertia::BodyInertia;
-use kinetics::numeric::dop853::{Dop853, Dop853Settings};
-use kinetics::numeric::ode::OdeSystem;
-use kinetics::numeric::rigid_body_state::RigidBodyState;
-use kinetics::numeric::sample_sink::Sample;
-use kinetics::numeric::simulate::{simulate, Method, Problem, Sampling};
-use kinetics::numeric::splitting::SplittingOrder;
-use kinetics::numeric::torque::Torque;
+use kinetics::numeric::integrators::dop853::{Dop853, Dop853Settings};
+use kinetics::numeric::integrators::ode::OdeSystem;
+use kinetics::numeric::integrators::splitting::SplittingOrder;
+use kinetics::numeric::rigid_body::inertia::BodyInertia;
+use kinetics::numeric::rigid_body::sample_sink::Sample;
+use kinetics::numeric::rigid_body::simulate::{simulate, Method, Problem, Sampling};
+use kinetics::numeric::rigid_body::state::RigidBodyState;
+use kinetics::numeric::rigid_body::torque::Torque;
 use nalgebra::{UnitQuaternion, Vector3};
 
 const END: f64 = 100.0;

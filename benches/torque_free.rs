@@ -3,7 +3,7 @@
 //! third-kind integral) and an axisymmetric one (elementary functions).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use kinetics::numeric::torque_free::TorqueFree;
+use kinetics::numeric::rigid_body::torque_free::TorqueFree;
 use nalgebra::{UnitQuaternion, Vector3};
 
 fn bodies() -> [(&'static str, Vector3<f64>, Vector3<f64>); 2] {

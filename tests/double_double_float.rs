@@ -4,7 +4,7 @@
 //! and the double-double tape as an estimate of the f64 rounding error.
 
 use kinetics::algebra::{rational_to, Expr, Func, Symbol, Q};
-use kinetics::numeric::double_double::DoubleDouble;
+use kinetics::numeric::scalar::double_double::DoubleDouble;
 use kinetics::numeric::{Instruction, Tape};
 use num_bigint::BigInt;
 use num_rational::BigRational;

@@ -4,12 +4,14 @@
 //! The reference problem is the free body I = (1, 2, 3), ω₀ = (1, 1, 1), q₀ = 1.
 
 use kinetics::mechanics::principal_axes::principal_axes;
-use kinetics::numeric::body_inertia::BodyInertia;
-use kinetics::numeric::rigid_body_state::RigidBodyState;
-use kinetics::numeric::sample_sink::Sample;
-use kinetics::numeric::simulate::{simulate, Method, Problem, Sampling, SimulationStatistics};
-use kinetics::numeric::splitting::SplittingOrder;
-use kinetics::numeric::torque::Torque;
+use kinetics::numeric::integrators::splitting::SplittingOrder;
+use kinetics::numeric::rigid_body::inertia::BodyInertia;
+use kinetics::numeric::rigid_body::sample_sink::Sample;
+use kinetics::numeric::rigid_body::simulate::{
+    simulate, Method, Problem, Sampling, SimulationStatistics,
+};
+use kinetics::numeric::rigid_body::state::RigidBodyState;
+use kinetics::numeric::rigid_body::torque::Torque;
 use kinetics::numeric::NumericError;
 use nalgebra::{Matrix3, RealField, Rotation3, UnitQuaternion, Vector3};
 use std::cell::Cell;
@@ -697,7 +699,7 @@ fn a_zero_attitude_quaternion_is_rejected_and_a_rounded_one_normalised() {
 
 #[test]
 fn right_hand_side_is_the_chapters_cyclic_form() {
-    use kinetics::numeric::euler_rhs::EulerRhs;
+    use kinetics::numeric::rigid_body::euler_rhs::EulerRhs;
     let (ix, iy, iz) = (1.0, 2.0, 2.5);
     let omega = Vector3::new(0.3, -0.7, 1.1);
     let moment = Vector3::new(0.2, 0.1, -0.4);

@@ -2,12 +2,12 @@
 //! by a full (non-diagonal) tensor agrees with a tight DOP853 run, and a torque sends `auto`
 //! to the integrator and `exact` to an error.
 
-use kinetics::numeric::body_inertia::BodyInertia;
-use kinetics::numeric::exact_propagation::{simulate_choice, Choice, MethodUsed};
-use kinetics::numeric::rigid_body_state::RigidBodyState;
-use kinetics::numeric::sample_sink::Sample;
-use kinetics::numeric::simulate::{Method, Problem, Sampling};
-use kinetics::numeric::torque::Torque;
+use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice, MethodUsed};
+use kinetics::numeric::rigid_body::inertia::BodyInertia;
+use kinetics::numeric::rigid_body::sample_sink::Sample;
+use kinetics::numeric::rigid_body::simulate::{Method, Problem, Sampling};
+use kinetics::numeric::rigid_body::state::RigidBodyState;
+use kinetics::numeric::rigid_body::torque::Torque;
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
 fn rotated_body(torque: Torque<f64>) -> Problem<f64> {

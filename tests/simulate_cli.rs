@@ -65,6 +65,7 @@ fn json_and_every_sampling() {
     assert_eq!(v[4][0], 2.0);
 }
 
+#[cfg(feature = "plot")]
 #[test]
 fn the_plot_is_written_and_never_overwritten_silently() {
     let path = std::env::temp_dir().join(format!("kinetics-plot-{}.svg", std::process::id()));

@@ -8,13 +8,13 @@
 //! integrator exactly the unit problem; any difference is the method's own dependence on
 //! scale (an absolute constant, an overflow in squaring, an underflow).
 
-use kinetics::numeric::body_inertia::BodyInertia;
-use kinetics::numeric::exact_propagation::{simulate_choice, Choice, MethodUsed};
-use kinetics::numeric::rigid_body_state::RigidBodyState;
-use kinetics::numeric::sample_sink::Sample;
-use kinetics::numeric::simulate::{Method, Problem, Sampling};
-use kinetics::numeric::splitting::SplittingOrder;
-use kinetics::numeric::torque::Torque;
+use kinetics::numeric::integrators::splitting::SplittingOrder;
+use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice, MethodUsed};
+use kinetics::numeric::rigid_body::inertia::BodyInertia;
+use kinetics::numeric::rigid_body::sample_sink::Sample;
+use kinetics::numeric::rigid_body::simulate::{Method, Problem, Sampling};
+use kinetics::numeric::rigid_body::state::RigidBodyState;
+use kinetics::numeric::rigid_body::torque::Torque;
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
 /// Sample times of the unit-scale run (s); the scaled run samples at `t / λ`.

@@ -3,12 +3,12 @@
 //! (the torque-free pieces keep `q H` to round-off, so it changes exactly by the kicks),
 //! the spun-up sphere scene against its closed form, and the refusal of a moment of `ω`.
 
-use kinetics::numeric::body_inertia::BodyInertia;
-use kinetics::numeric::rigid_body_state::RigidBodyState;
-use kinetics::numeric::sample_sink::Sample;
-use kinetics::numeric::simulate::{simulate, Method, Problem, Sampling};
-use kinetics::numeric::splitting::SplittingOrder;
-use kinetics::numeric::torque::Torque;
+use kinetics::numeric::integrators::splitting::SplittingOrder;
+use kinetics::numeric::rigid_body::inertia::BodyInertia;
+use kinetics::numeric::rigid_body::sample_sink::Sample;
+use kinetics::numeric::rigid_body::simulate::{simulate, Method, Problem, Sampling};
+use kinetics::numeric::rigid_body::state::RigidBodyState;
+use kinetics::numeric::rigid_body::torque::Torque;
 use kinetics::numeric::NumericError;
 use kinetics::scene::parse::parse_scene;
 use kinetics::scene::simulation::problem as scene_problem;

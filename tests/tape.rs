@@ -9,7 +9,7 @@ use kinetics::mechanics::fixed_axis::bearing_reactions;
 use kinetics::mechanics::inertia::InertiaTensor;
 use kinetics::mechanics::kinetic_energy::kinetic_energy;
 use kinetics::mechanics::Derivation;
-use kinetics::numeric::tape_batch::SETS_PER_TASK;
+use kinetics::numeric::tape::batch::SETS_PER_TASK;
 use kinetics::numeric::{Dual, Instruction, NumericError, Tape};
 use proptest::prelude::*;
 use std::sync::OnceLock;

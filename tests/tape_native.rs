@@ -3,12 +3,14 @@
 //! equations in a rotating frame at random points (also against tree-walking `Expr::eval`),
 //! bad lengths, non-finite outputs, tapes without inputs or with constant outputs, a tape
 //! hundreds of instructions deep, the parallel batch, sharing between threads, and many tapes compiled and dropped.
+//! Needs the `jit` feature.
+#![cfg(feature = "jit")]
 
 use kinetics::algebra::{Expr, Func, Symbol, Vector, Q};
 use kinetics::mechanics::euler::body_angular_velocity;
 use kinetics::mechanics::inertia::InertiaTensor;
 use kinetics::mechanics::rotating_frame::rate_of_angular_momentum;
-use kinetics::numeric::tape_batch::SETS_PER_TASK;
+use kinetics::numeric::tape::batch::SETS_PER_TASK;
 use kinetics::numeric::{Instruction, NativeTape, NumericError, Tape};
 use proptest::prelude::*;
 use std::sync::OnceLock;

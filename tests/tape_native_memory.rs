@@ -2,6 +2,8 @@
 //! takes its code pages from the global allocator) sees the bytes the test's thread holds
 //! return to the same count after each compile–evaluate–drop cycle. The count is per
 //! thread because the test harness's own thread allocates at times of its choosing.
+//! Needs the `jit` feature.
+#![cfg(feature = "jit")]
 
 mod common;
 

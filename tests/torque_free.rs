@@ -5,8 +5,8 @@
 //! the rotation `q_exact⁻¹ q_reference`.
 
 use kinetics::mechanics::validation::PhysicsError;
-use kinetics::numeric::reference::ReferenceMotion;
-use kinetics::numeric::torque_free::{Regime, TorqueFree};
+use kinetics::numeric::integrators::reference::ReferenceMotion;
+use kinetics::numeric::rigid_body::torque_free::{Regime, TorqueFree};
 use kinetics::numeric::NumericError;
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 

@@ -10,9 +10,10 @@
 mod common;
 
 use common::binary::kinetics;
-use kinetics::numeric::work_precision::{cases, study, Load, Row};
+use kinetics::numeric::work_precision::study::{cases, study, Load, Row};
 use nalgebra::Vector3;
 use std::collections::BTreeSet;
+#[cfg(feature = "plot")]
 use std::path::Path;
 use std::time::Duration;
 
@@ -221,6 +222,7 @@ fn the_tightest_settings_reach_small_errors() {
 }
 
 /// A printed table row: body, method (may hold spaces), time, `|Δω|`, attitude.
+#[cfg(feature = "plot")]
 fn parse_row(line: &str) -> (String, String, [f64; 3]) {
     let words: Vec<&str> = line.split_whitespace().collect();
     assert!(words.len() >= 5, "not a table row: {line}");
@@ -234,6 +236,7 @@ fn parse_row(line: &str) -> (String, String, [f64; 3]) {
 }
 
 /// The point lists of an SVG's polylines, each as its number of points.
+#[cfg(feature = "plot")]
 fn polyline_lengths(svg: &str) -> Vec<usize> {
     svg.split("<polyline")
         .skip(1)
@@ -253,6 +256,7 @@ fn polyline_lengths(svg: &str) -> Vec<usize> {
         .collect()
 }
 
+#[cfg(feature = "plot")]
 fn check_chart(path: &Path, case: &str, rows: &[Row]) {
     let svg = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     assert!(
@@ -290,6 +294,7 @@ fn check_chart(path: &Path, case: &str, rows: &[Row]) {
     );
 }
 
+#[cfg(feature = "plot")]
 #[test]
 fn the_command_prints_the_study_and_plots_every_body() {
     let dir = std::env::temp_dir().join(format!("kinetics-work-precision-{}", std::process::id()));

@@ -1,6 +1,6 @@
 //! The ground truth of the forced bodies in `kinetics bench work-precision` is the
 //! double-double Taylor reference under the body's
-//! [`HarmonicMoment`](kinetics::numeric::harmonic_moment::HarmonicMoment) ([`truth`]). This checks
+//! [`HarmonicMoment`](kinetics::numeric::integrators::harmonic_moment::HarmonicMoment) ([`truth`]). This checks
 //! it against an integration that shares none of its code and carries ~32 digits too:
 //! classical RK4 written out here in double-double arithmetic, on the equations read from
 //! each [`Case`] directly (principal moments, `ω₀`, `q₀ = 1`, the body-frame moment of its
@@ -26,8 +26,8 @@
 //! not: that the moment functions are the ones intended, since both sides read the same
 //! [`Case`].
 
-use kinetics::numeric::double_double::DoubleDouble as Dd;
-use kinetics::numeric::work_precision::{cases, truth, Case, Load};
+use kinetics::numeric::scalar::double_double::DoubleDouble as Dd;
+use kinetics::numeric::work_precision::study::{cases, truth, Case, Load};
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
 /// The study's default horizon (`kinetics bench work-precision` without `--until`), sampled

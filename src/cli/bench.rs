@@ -1,10 +1,9 @@
 //! `kinetics bench work-precision [--until T] [--budget-ms N] [--plot PREFIX]`: run time
-//! against error for every method on the five bodies of the study, as a table and plots.
+//! against error for every method on the five bodies of the study, as a table and (with the
+//! `plot` feature) plots.
 
 use super::error::CliError;
-use kinetics::numeric::plot::{line_chart, Series};
-use kinetics::numeric::work_precision::{study, Row};
-use std::path::PathBuf;
+use kinetics::numeric::work_precision::study::study;
 use std::time::Duration;
 
 #[derive(clap::Subcommand)]
@@ -24,8 +23,9 @@ pub struct WorkPrecisionArgs {
     #[arg(long, default_value_t = 50)]
     pub budget_ms: u64,
     /// Write one SVG per body: PREFIX-<body>.svg (log10 error against log10 time).
+    #[cfg(feature = "plot")]
     #[arg(long)]
-    pub plot: Option<PathBuf>,
+    pub plot: Option<std::path::PathBuf>,
 }
 
 pub fn run(bench: Bench) -> Result<String, CliError> {
@@ -36,19 +36,13 @@ pub fn run(bench: Bench) -> Result<String, CliError> {
             args.until
         )));
     }
-    let bar = indicatif::ProgressBar::new_spinner();
-    let (rows, notes) = study(
-        args.until,
-        Duration::from_millis(args.budget_ms),
-        &mut |what| {
-            bar.set_message(what.to_string());
-            bar.tick();
-        },
-    )
+    let (rows, notes) = super::progress::with_spinner(|progress| {
+        study(args.until, Duration::from_millis(args.budget_ms), progress)
+    })
     .map_err(|source| CliError::Numeric { name: None, source })?;
-    bar.finish_and_clear();
+    #[cfg(feature = "plot")]
     if let Some(prefix) = &args.plot {
-        plots(prefix, &rows)?;
+        super::plot::work_precision(prefix, &rows).map_err(CliError::Plot)?;
     }
     let mut out = format!(
         "{:<18} {:<24} {:>14} {:>12} {:>12}\n",
@@ -63,33 +57,4 @@ pub fn run(bench: Bench) -> Result<String, CliError> {
     out.push_str(&format!("\nt from 0 to {} s, 100 samples; ", args.until));
     out.push_str(&notes.join("; "));
     Ok(out)
-}
-
-fn plots(prefix: &std::path::Path, rows: &[Row]) -> Result<(), CliError> {
-    let mut cases: Vec<&str> = rows.iter().map(|r| r.case).collect();
-    cases.dedup();
-    for case in cases {
-        let mut series: Vec<Series> = Vec::new();
-        for r in rows.iter().filter(|r| r.case == case) {
-            let family = r.method.split(' ').next().unwrap_or("method").to_string();
-            let point = (r.seconds_per_run.log10(), r.omega_error.max(1e-17).log10());
-            match series.iter_mut().find(|s| s.name == family) {
-                Some(s) => s.points.push(point),
-                None => series.push(Series {
-                    name: family,
-                    points: vec![point],
-                }),
-            }
-        }
-        let path = PathBuf::from(format!("{}-{case}.svg", prefix.display()));
-        line_chart(
-            &path,
-            &format!("work against precision: {case} body"),
-            "log10 time per run [s]",
-            "log10 max |Δω|",
-            &series,
-        )
-        .map_err(CliError::Plot)?;
-    }
-    Ok(())
 }

@@ -39,6 +39,7 @@ pub enum CliError {
         source: NumericError,
     },
     /// The plot could not be drawn.
+    #[cfg(feature = "plot")]
     #[error("{0}")]
     Plot(String),
 }

@@ -4,6 +4,9 @@ mod bench;
 mod derive;
 mod error;
 mod input;
+#[cfg(feature = "plot")]
+mod plot;
+mod progress;
 mod show;
 mod simplify;
 mod simulate;

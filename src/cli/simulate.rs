@@ -2,20 +2,18 @@
 //! [--rtol R | --step h] [--format csv|json] [--plot out.svg]`: integrate Euler's equations
 //! and the orientation for the scene's body, streaming the samples (memory stays flat).
 //!
-//! Each row is formatted and written as its sample arrives; only the plot keeps points, at
-//! most `PLOT_POINTS` of them. `--rtol` belongs to dop853 (and to auto, which may integrate
-//! with it) and `--step` to rk4 and splitting: a flag the chosen method does not use is
-//! refused with the reason, not ignored.
+//! Each row is formatted and written as its sample arrives; only the plot (`--plot`, with
+//! the `plot` feature) keeps points, a bounded number of them. `--rtol` belongs to dop853
+//! (and to auto, which may integrate with it) and `--step` to rk4 and splitting: a flag the
+//! chosen method does not use is refused with the reason, not ignored.
 
 use super::error::CliError;
-use kinetics::numeric::exact_propagation::{simulate_choice, Choice, MethodUsed};
-use kinetics::numeric::plot::{line_chart, Series};
-use kinetics::numeric::sample_sink::Sample;
-use kinetics::numeric::simulate::{Method, Sampling};
-use kinetics::numeric::splitting::SplittingOrder;
+use kinetics::numeric::integrators::splitting::SplittingOrder;
+use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice, MethodUsed};
+use kinetics::numeric::rigid_body::sample_sink::Sample;
+use kinetics::numeric::rigid_body::simulate::{Method, Sampling};
 use kinetics::scene::{parse_scene, simulation};
 use std::io::Write;
-use std::path::PathBuf;
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum MethodName {
@@ -57,15 +55,15 @@ pub struct Args {
     #[arg(long, value_enum, default_value_t = Output::Csv)]
     pub format: Output,
     /// Also draw ω(t) into this SVG file.
+    #[cfg(feature = "plot")]
     #[arg(long)]
-    pub plot: Option<PathBuf>,
+    pub plot: Option<std::path::PathBuf>,
     /// Overwrite the plot file if it exists.
+    #[cfg(feature = "plot")]
     #[arg(long)]
     pub force: bool,
 }
 
-/// Most points kept for the plot; longer runs are thinned evenly.
-const PLOT_POINTS: usize = 20_000;
 /// Relative tolerance of dop853 (and of auto) without `--rtol`.
 const DEFAULT_RTOL: f64 = 1e-10;
 /// Step of rk4 and splitting without `--step` (s).
@@ -141,37 +139,23 @@ pub fn run(args: Args) -> Result<String, CliError> {
     let (name, text) = super::input::read_file(&args.scene)?;
     let scene = parse_scene(&name, &text)?;
     let problem = simulation::problem(&scene)?;
-    if let Some(path) = &args.plot {
-        if path.exists() && !args.force {
-            return Err(CliError::Usage(format!(
-                "{} exists; pass --force to overwrite it",
-                path.display()
-            )));
-        }
-    }
-    let (sampling, count) = match (&args.at, args.until) {
-        (Some(times), _) => (Sampling::Times(times.clone()), times.len()),
-        (None, Some(until)) => {
-            let every = args.every.unwrap_or(until / 100.0);
-            let count = if every > 0.0 && until.is_finite() {
-                (until / every) as usize + 1
-            } else {
-                1
-            };
-            (
-                Sampling::Every {
-                    interval: every,
-                    end: until,
-                },
-                count,
-            )
-        }
+    let sampling = match (&args.at, args.until) {
+        (Some(times), _) => Sampling::Times(times.clone()),
+        (None, Some(until)) => Sampling::Every {
+            interval: args.every.unwrap_or(until / 100.0),
+            end: until,
+        },
         (None, None) => return Err(CliError::Usage("give --until T or --at t1,t2,...".into())),
     };
-    let stride = count.div_ceil(PLOT_POINTS).max(1);
+    #[cfg(feature = "plot")]
+    let mut plot = match &args.plot {
+        Some(path) => {
+            Some(super::plot::OmegaPlot::new(path, args.force, &sampling).map_err(CliError::Plot)?)
+        }
+        None => None,
+    };
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
-    let mut plotted: [Vec<(f64, f64)>; 3] = Default::default();
     let mut written = 0usize;
     let mut failure: Option<std::io::Error> = None;
     let header = "t,w_x,w_y,w_z,q_w,q_x,q_y,q_z,T,H";
@@ -180,13 +164,6 @@ pub fn run(args: Args) -> Result<String, CliError> {
         Output::Json => write!(out, "["),
     };
     opening.map_err(CliError::io("write"))?;
-    let bar = indicatif::ProgressBar::new(1000);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template(
-            "{bar:40} {percent:>3}% {elapsed} elapsed, {eta} left",
-        )
-        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-    );
     let mut sink = |s: Sample<f64>| {
         if failure.is_some() {
             return;
@@ -216,21 +193,19 @@ pub fn run(args: Args) -> Result<String, CliError> {
         if let Err(e) = result {
             failure = Some(e);
         }
-        if args.plot.is_some() && written.is_multiple_of(stride) {
-            for (line, w) in plotted.iter_mut().zip(s.omega.iter()) {
-                line.push((s.t, *w));
-            }
+        #[cfg(feature = "plot")]
+        if let Some(plot) = &mut plot {
+            plot.add(&s);
         }
         written += 1;
     };
-    let (statistics, used) = simulate_choice(&problem, &choice, &sampling, &mut sink, &mut |f| {
-        bar.set_position((f * 1000.0) as u64)
+    let (statistics, used) = super::progress::with_bar(|progress| {
+        simulate_choice(&problem, &choice, &sampling, &mut sink, progress)
     })
     .map_err(|source| CliError::Numeric {
         name: Some(name),
         source,
     })?;
-    bar.finish_and_clear();
     if let Some(e) = failure {
         return Err(CliError::Io {
             action: "write the samples".into(),
@@ -241,23 +216,9 @@ pub fn run(args: Args) -> Result<String, CliError> {
         writeln!(out, "]").map_err(CliError::io("write"))?;
     }
     out.flush().map_err(CliError::io("write"))?;
-    if let Some(path) = &args.plot {
-        let series: Vec<Series> = ["ω_x", "ω_y", "ω_z"]
-            .iter()
-            .zip(plotted)
-            .map(|(n, points)| Series {
-                name: n.to_string(),
-                points,
-            })
-            .collect();
-        line_chart(
-            path,
-            "angular velocity in body axes",
-            "t [s]",
-            "ω [rad/s]",
-            &series,
-        )
-        .map_err(CliError::Plot)?;
+    #[cfg(feature = "plot")]
+    if let Some(plot) = plot {
+        plot.draw().map_err(CliError::Plot)?;
     }
     let method = match used {
         MethodUsed::Exact => "exact (closed form)".to_string(),

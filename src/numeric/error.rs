@@ -31,7 +31,7 @@ pub enum NumericError {
     #[error("the sample sink failed: {reason}")]
     Sink { reason: String },
     /// A tape could not be compiled to machine code (an unsupported host, or a code
-    /// generator failure).
+    /// generator failure); only with the `jit` feature.
     #[error("native compilation of the tape failed: {reason}")]
     NativeCode { reason: String },
 }

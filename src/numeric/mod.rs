@@ -1,37 +1,20 @@
 //! Numbers: evaluation, integration of Euler's equations, exact torque-free motion.
+//!
+//! - [`scalar`]: number types other than `f64` (dual numbers, double-double)
+//! - [`tape`]: compiled evaluation of expressions (interpreter and machine code)
+//! - [`integrators`]: the ODE integrators and the high-precision reference
+//! - [`rigid_body`]: the body's state, inertia and moment, its exact and simulated motion
+//! - [`work_precision`]: time against error for every method, and its plots
 
-pub mod body_inertia;
-pub mod dop853;
-pub mod double_double;
-pub mod double_double_constants;
-pub mod double_double_elementary;
-pub mod double_double_float;
-pub mod dual;
-pub mod elliptic;
 pub mod error;
-pub mod euler_rhs;
-pub mod exact_propagation;
-pub mod harmonic_moment;
-mod native_schedule;
-pub mod native_tape;
-pub mod native_tape_batch;
-pub mod native_tape_compile;
-pub mod ode;
-pub mod plot;
-pub mod reference;
-pub mod rigid_body_state;
-pub mod rk4;
-pub mod sample_sink;
-pub mod simulate;
-pub mod splitting;
+pub mod integrators;
+pub mod rigid_body;
+pub mod scalar;
 pub mod tape;
-pub mod tape_batch;
-pub mod tape_builder;
-pub mod torque;
-pub mod torque_free;
 pub mod work_precision;
 
-pub use dual::Dual;
 pub use error::NumericError;
-pub use native_tape::NativeTape;
-pub use tape::{Instruction, Tape};
+pub use scalar::dual::Dual;
+pub use tape::interpreter::{Instruction, Tape};
+#[cfg(feature = "jit")]
+pub use tape::native::NativeTape;

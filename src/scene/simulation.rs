@@ -9,11 +9,11 @@ use super::model::Scene;
 use super::parse::TIME;
 use crate::algebra::{Expr, Symbol, Vector};
 use crate::mechanics::composite_body::MassProperties;
-use crate::numeric::body_inertia::BodyInertia;
-use crate::numeric::rigid_body_state::RigidBodyState;
-use crate::numeric::simulate::Problem;
-use crate::numeric::tape::Tape;
-use crate::numeric::torque::Torque;
+use crate::numeric::rigid_body::inertia::BodyInertia;
+use crate::numeric::rigid_body::simulate::Problem;
+use crate::numeric::rigid_body::state::RigidBodyState;
+use crate::numeric::rigid_body::torque::Torque;
+use crate::numeric::tape::interpreter::Tape;
 use crate::parse::Diagnostic;
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 use std::cell::RefCell;
@@ -78,7 +78,9 @@ fn torque(scene: &Scene, moment: &Vector) -> Result<Torque<f64>, Diagnostic> {
         )
     })?;
     // Machine code where Cranelift has a backend (it halves the instructions of an rk4 run
-    // with a time-varying couple); the interpreter elsewhere. Both give the same values.
+    // with a time-varying couple); the interpreter elsewhere, and in a build without the
+    // `jit` feature. Both give the same values.
+    #[cfg(feature = "jit")]
     let native = tape.compile_native().ok();
     let scratch = RefCell::new((values, Vec::new()));
     Ok(Torque::Time(Box::new(move |t: f64| {
@@ -86,10 +88,13 @@ fn torque(scene: &Scene, moment: &Vector) -> Result<Torque<f64>, Diagnostic> {
         let (inputs, registers) = &mut *guard;
         inputs[0] = t;
         let mut out = [0.0; 3];
+        #[cfg(feature = "jit")]
         let evaluated = match &native {
             Some(native) => native.eval(inputs, &mut out),
             None => tape.eval_with(inputs, &mut out, registers),
         };
+        #[cfg(not(feature = "jit"))]
+        let evaluated = tape.eval_with(inputs, &mut out, registers);
         // A non-finite moment is left as NaN; the driver stops with an error at that time.
         if evaluated.is_err() {
             out = [f64::NAN; 3];

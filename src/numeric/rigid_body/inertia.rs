@@ -6,12 +6,12 @@
 //! physical admissibility checks a body whose smallest principal moment is zero (an ideal
 //! slender rod) is refused.
 
-use super::error::NumericError;
-use super::ode::{constant, to_f64};
 use crate::mechanics::principal_axes::principal_axes;
 use crate::mechanics::validation::{
     validate_inertia_tensor, validate_principal_moments, INERTIA_RELATIVE_TOLERANCE,
 };
+use crate::numeric::error::NumericError;
+use crate::numeric::integrators::ode::{constant, to_f64};
 use nalgebra::{Matrix3, RealField, Rotation3, Vector3};
 
 /// Inertia of a rigid body about its mass centre (or a fixed point), in body-frame axes.

@@ -9,7 +9,7 @@
 //! and time frozen): [`Torque::Time`] and [`Torque::Attitude`] qualify, a general
 //! [`Torque::Function`] of `ω` does not.
 
-use super::rigid_body_state::RigidBodyState;
+use super::state::RigidBodyState;
 use nalgebra::{RealField, UnitQuaternion, Vector3};
 
 /// Body-frame moment as a function of time and state, supplied by the caller.

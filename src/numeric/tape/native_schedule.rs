@@ -2,7 +2,7 @@
 //! output, the operand that needs more registers first (Sethi–Ullman), so that few values
 //! are live at once.
 //!
-//! The tape itself is ordered by dependency level (`tape_builder::schedule`), which suits
+//! The tape itself is ordered by dependency level (`builder::schedule`), which suits
 //! the interpreter (runs of one opcode) but keeps every value of a level live together: on
 //! the general Euler tape, the eight products of the first level and the inputs still
 //! needed overflowed the sixteen floating-point registers of x86-64, and the compiled code
@@ -19,7 +19,7 @@
 //! which each register follows its operands computes the same values bit for bit, since
 //! every instruction is the same operation on the same operands.
 
-use super::tape::{Instruction, Tape};
+use super::interpreter::{Instruction, Tape};
 use smallvec::SmallVec;
 
 /// The operands of `instruction`, in order.

@@ -2,25 +2,25 @@
 //! steps, timed, with its error against ground truth.
 //!
 //! Ground truth for every body is the double-double Taylor integration
-//! ([`super::reference`]), which shares no code with the closed form or the integrators;
-//! the forced bodies (a constant moment, and a moment varying in time as a scene's couples
-//! do) carry a [`HarmonicMoment`], whose Taylor series the reference sums exactly. An
-//! independent double-double RK4 with Richardson extrapolation checks the forced truth
-//! (`tests/work_precision_forced_truth.rs`). Every method, the splitting included, runs on
-//! every body.
+//! ([`reference`](crate::numeric::integrators::reference)), which shares no code with the
+//! closed form or the integrators; the forced bodies (a constant moment, and a moment
+//! varying in time as a scene's couples do) carry a [`HarmonicMoment`], whose Taylor series
+//! the reference sums exactly. An independent double-double RK4 with Richardson
+//! extrapolation checks the forced truth (`tests/work_precision_forced_truth.rs`). Every
+//! method, the splitting included, runs on every body.
 //! Error = max over the sample times of `|Δω|` and of the attitude angle between the
 //! computed and the true orientation.
 
-use super::body_inertia::BodyInertia;
-use super::error::NumericError;
-use super::exact_propagation::{simulate_choice, Choice};
-use super::harmonic_moment::HarmonicMoment;
-use super::reference::ReferenceMotion;
-use super::rigid_body_state::RigidBodyState;
-use super::sample_sink::Sample;
-use super::simulate::{Method, Problem, Sampling};
-use super::splitting::SplittingOrder;
-use super::torque::Torque;
+use crate::numeric::error::NumericError;
+use crate::numeric::integrators::harmonic_moment::HarmonicMoment;
+use crate::numeric::integrators::reference::ReferenceMotion;
+use crate::numeric::integrators::splitting::SplittingOrder;
+use crate::numeric::rigid_body::exact_propagation::{simulate_choice, Choice};
+use crate::numeric::rigid_body::inertia::BodyInertia;
+use crate::numeric::rigid_body::sample_sink::Sample;
+use crate::numeric::rigid_body::simulate::{Method, Problem, Sampling};
+use crate::numeric::rigid_body::state::RigidBodyState;
+use crate::numeric::rigid_body::torque::Torque;
 use nalgebra::{UnitQuaternion, Vector3};
 use std::time::{Duration, Instant};
 

@@ -1,5 +1,5 @@
 //! A [`Tape`](crate::numeric::Tape) compiled to machine code: one native function per tape
-//! (built by `native_tape_compile`), and its checked evaluation.
+//! (built by `native_compile.rs`), and its checked evaluation.
 //!
 //! Calling convention of the compiled function (the platform's C convention):
 //!
@@ -12,10 +12,10 @@
 //! on many threads at once. [`NativeTape::eval`] is the safe entry: it checks the slice
 //! lengths before the call and refuses a non-finite output afterwards, exactly as the
 //! interpreter (`Tape::eval_with`) does; the values are those of the interpreter bit for
-//! bit (see `native_tape_compile` for why).
+//! bit (see `native_compile.rs` for why).
 
-use super::error::NumericError;
-use super::tape::{length_error, non_finite_output};
+use super::interpreter::{length_error, non_finite_output};
+use crate::numeric::error::NumericError;
 use cranelift_jit::JITModule;
 use std::fmt;
 use std::sync::Mutex;

@@ -5,13 +5,13 @@
 //! rotated back: with `R` taking principal to body axes, `ω_body = R ω_p` and
 //! `q_body = q_p R⁻¹` (so that `q_body r_body = q_p r_p`).
 
-use super::body_inertia::BodyInertia;
-use super::error::NumericError;
-use super::rigid_body_state::RigidBodyState;
+use super::inertia::BodyInertia;
 use super::sample_sink::SampleSink;
 use super::simulate::{simulate_with, Method, Problem, Propagator, Sampling, SimulationStatistics};
+use super::state::RigidBodyState;
 use super::torque::Torque;
 use super::torque_free::TorqueFree;
+use crate::numeric::error::NumericError;
 use nalgebra::{Rotation3, UnitQuaternion};
 
 /// Which method to use.

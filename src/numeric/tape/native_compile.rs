@@ -25,10 +25,10 @@
 //! Rust functions the interpreter calls (`f64::sin`, ..., `f64::powi`) through the
 //! `extern "C"` helpers below, registered with the JIT as symbols.
 
-use super::error::NumericError;
+use super::interpreter::{Instruction, Tape};
+use super::native::{NativeFunction, NativeTape};
 use super::native_schedule::depth_first_order;
-use super::native_tape::{NativeFunction, NativeTape};
-use super::tape::{Instruction, Tape};
+use crate::numeric::error::NumericError;
 use cranelift_codegen::ir::condcodes::FloatCC;
 use cranelift_codegen::ir::{types, AbiParam, FuncRef, InstBuilder, MemFlags, Value};
 use cranelift_codegen::isa::OwnedTargetIsa;

@@ -3,15 +3,15 @@
 //! Register `i` holds the value of instruction `i` (static single assignment) and an
 //! instruction reads only registers written before it, so evaluating the tape is one pass
 //! over the instructions: `r_i = op_i(r_a, r_b)` with `a, b < i`. The outputs are named
-//! registers. [`Tape::compile`](crate::numeric::tape::Tape::compile) builds a tape from
-//! expressions (see `tape_builder`); this file holds the tape and its evaluation.
+//! registers. [`Tape::compile`](crate::numeric::tape::interpreter::Tape::compile) builds a tape from
+//! expressions (see `builder.rs`); this file holds the tape and its evaluation.
 //!
 //! The evaluator is written once for a block of `L` parameter sets evaluated side by side
 //! (each register holds `L` lanes): a single evaluation is the block of one lane, and the
-//! batch evaluation (`tape_batch`) runs blocks of many lanes, where the per-instruction
+//! batch evaluation (`batch.rs`) runs blocks of many lanes, where the per-instruction
 //! dispatch is paid once per block and the lane loops vectorise.
 
-use super::error::NumericError;
+use crate::numeric::error::NumericError;
 use num_traits::Float;
 
 /// One step of a tape. Operands are register numbers (instruction indices) of earlier
@@ -117,7 +117,8 @@ impl Tape {
         self.outputs.len()
     }
 
-    /// The register holding each output, in output order.
+    /// The register holding each output, in output order (what the machine code returns).
+    #[cfg(feature = "jit")]
     pub(super) fn output_registers(&self) -> &[u32] {
         &self.outputs
     }

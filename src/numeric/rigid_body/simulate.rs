@@ -17,16 +17,16 @@
 //!   moment that does not depend on `ω`: constant, or a function of time or attitude), second
 //!   or fourth order, equal steps like `Rk4`.
 
-use super::body_inertia::BodyInertia;
-use super::dop853::{Dop853, Dop853Settings, DEFAULT_MAX_STEPS};
-use super::error::NumericError;
 use super::euler_rhs::EulerRhs;
-use super::ode::{constant, to_f64};
-use super::rigid_body_state::{RigidBodyState, STATE_DIMENSION};
-use super::rk4::rk4_step;
+use super::inertia::BodyInertia;
 use super::sample_sink::{Sample, SampleSink};
-use super::splitting::{LiePoissonSplitting, SplittingOrder, SplittingState};
+use super::state::{RigidBodyState, STATE_DIMENSION};
 use super::torque::Torque;
+use crate::numeric::error::NumericError;
+use crate::numeric::integrators::dop853::{Dop853, Dop853Settings, DEFAULT_MAX_STEPS};
+use crate::numeric::integrators::ode::{constant, to_f64};
+use crate::numeric::integrators::rk4::rk4_step;
+use crate::numeric::integrators::splitting::{LiePoissonSplitting, SplittingOrder, SplittingState};
 use nalgebra::{RealField, SVector, UnitQuaternion};
 
 /// Most steps (or samples) a simulation may be asked for.
@@ -96,11 +96,11 @@ pub struct SimulationStatistics {
 /// (non-decreasing, at most about a thousand calls, the last one `1.0`).
 ///
 /// ```
-/// use kinetics::numeric::body_inertia::BodyInertia;
-/// use kinetics::numeric::rigid_body_state::RigidBodyState;
-/// use kinetics::numeric::sample_sink::Sample;
-/// use kinetics::numeric::simulate::{simulate, Method, Problem, Sampling};
-/// use kinetics::numeric::torque::Torque;
+/// use kinetics::numeric::rigid_body::inertia::BodyInertia;
+/// use kinetics::numeric::rigid_body::state::RigidBodyState;
+/// use kinetics::numeric::rigid_body::sample_sink::Sample;
+/// use kinetics::numeric::rigid_body::simulate::{simulate, Method, Problem, Sampling};
+/// use kinetics::numeric::rigid_body::torque::Torque;
 /// use nalgebra::{UnitQuaternion, Vector3};
 ///
 /// let problem = Problem {

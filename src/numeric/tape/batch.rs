@@ -6,8 +6,8 @@
 //! `inputs[p * stride..][..n_inputs]` (`stride ≥ n_inputs`, so a table may carry extra
 //! columns). The outputs are rows too: set `p`'s outputs at `out[p * n_outputs..]`.
 
-use super::error::NumericError;
-use super::tape::{length_error, Tape};
+use super::interpreter::{length_error, Tape};
+use crate::numeric::error::NumericError;
 use num_traits::Float;
 use rayon::prelude::*;
 

@@ -26,8 +26,8 @@
 // The coefficients are kept with the digits Hairer published, beyond f64 resolution.
 #![allow(clippy::excessive_precision)]
 
-use super::error::NumericError;
 use super::ode::{constant, to_f64, OdeSystem};
+use crate::numeric::error::NumericError;
 use nalgebra::{RealField, SVector};
 
 /// Number of stages of the method proper (the 13th evaluation is the FSAL derivative).

@@ -37,13 +37,13 @@
 //! Components of ω₀ below 2⁻⁴⁸⁰ times the largest are taken as zero: their squares would
 //! leave the normal range.
 
-use crate::numeric::body_inertia::validate_free_body;
-use crate::numeric::double_double::DoubleDouble as Dd;
-use crate::numeric::elliptic::{
+use crate::numeric::error::NumericError;
+use crate::numeric::rigid_body::elliptic::{
     complete_first_kind, complete_third_kind, first_kind_from_sines, jacobi, third_kind_from_sines,
     EllipticParameter,
 };
-use crate::numeric::error::NumericError;
+use crate::numeric::rigid_body::inertia::validate_free_body;
+use crate::numeric::scalar::double_double::DoubleDouble as Dd;
 use nalgebra::{Matrix3, Rotation3, Unit, UnitQuaternion, Vector3};
 
 /// Components of ω₀ below this fraction (2⁻⁴⁸⁰ ≈ 3e-145) of the largest are set to zero:

@@ -1,13 +1,13 @@
 //! Evaluating a [`NativeTape`] over many parameter sets on all cores: tasks of
 //! [`SETS_PER_TASK`] sets run with rayon, each set one call of the compiled function.
 //!
-//! The table layout is that of `tape_batch`: set `p` has its inputs at
+//! The table layout is that of `batch.rs`: set `p` has its inputs at
 //! `inputs[p * stride..][..n_inputs]` (`stride ≥ n_inputs`) and its outputs at
 //! `out[p * n_outputs..][..n_outputs]`.
 
-use super::error::NumericError;
-use super::native_tape::NativeTape;
-use super::tape_batch::{count_sets, SETS_PER_TASK};
+use super::batch::{count_sets, SETS_PER_TASK};
+use super::native::NativeTape;
+use crate::numeric::error::NumericError;
 use rayon::prelude::*;
 
 impl NativeTape {

@@ -30,9 +30,9 @@
 //! - A rational constant that `f64` holds exactly is one constant; otherwise `p/q` with exact
 //!   integers is a division evaluated in the scalar's own precision.
 
-use super::error::NumericError;
-use super::tape::{Instruction, Tape};
+use super::interpreter::{Instruction, Tape};
 use crate::algebra::{Expr, Func, Symbol, View, Q};
+use crate::numeric::error::NumericError;
 use std::collections::HashMap;
 
 /// Largest exponent written as a multiplication chain rather than `powi`.

@@ -11,11 +11,11 @@
 //! only rescales `q`: the torque is evaluated with `q` normalised, and
 //! [`OdeSystem::project`] renormalises after each step.
 
-use super::body_inertia::BodyInertia;
-use super::error::NumericError;
-use super::ode::{constant, OdeSystem};
-use super::rigid_body_state::{raw_quaternion, RigidBodyState, STATE_DIMENSION};
+use super::inertia::BodyInertia;
+use super::state::{raw_quaternion, RigidBodyState, STATE_DIMENSION};
 use super::torque::Torque;
+use crate::numeric::error::NumericError;
+use crate::numeric::integrators::ode::{constant, OdeSystem};
 use nalgebra::{Matrix3, Quaternion, RealField, SVector, Vector3};
 
 /// `[I]⁻¹` in the cheapest form the inertia allows.

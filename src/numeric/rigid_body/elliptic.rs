@@ -28,8 +28,8 @@
 //! both branches meet, at u ≈ K/2 with cn ≈ dn ≈ m'^{1/4}, their relative error can reach
 //! ε/m'^{1/4} as m → 1; the absolute error stays a few ulps.)
 
-use crate::numeric::double_double::DoubleDouble;
 use crate::numeric::error::NumericError;
+use crate::numeric::scalar::double_double::DoubleDouble;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::ops::{Add, Div, Mul, Neg, Sub};
 

@@ -1,7 +1,7 @@
 //! Where a simulation's output goes: one [`Sample`] at a time, so that memory does not grow
 //! with the number of samples.
 
-use super::error::NumericError;
+use crate::numeric::error::NumericError;
 use nalgebra::{RealField, UnitQuaternion, Vector3};
 
 /// The body at one sample time.

@@ -16,8 +16,8 @@
 //!
 //! and `M_{n,i} = c_i δ_{n0} + a_i u_n + b_i v_n`.
 
-use super::double_double::DoubleDouble as Dd;
-use super::error::NumericError;
+use crate::numeric::error::NumericError;
+use crate::numeric::scalar::double_double::DoubleDouble as Dd;
 use nalgebra::Vector3;
 
 /// `M_i(t) = constant_i + cosine_i cos(frequency_i t) + sine_i sin(frequency_i t)` in body

@@ -41,11 +41,11 @@
 //! given by its full tensor is integrated in its principal frame
 //! ([`BodyInertia::principal_frame`]).
 
-use super::body_inertia::{BodyInertia, PrincipalFrame};
-use super::error::NumericError;
 use super::ode::constant;
-use super::rigid_body_state::RigidBodyState;
-use super::torque::{AttitudeTorqueFunction, TimeTorqueFunction, Torque};
+use crate::numeric::error::NumericError;
+use crate::numeric::rigid_body::inertia::{BodyInertia, PrincipalFrame};
+use crate::numeric::rigid_body::state::RigidBodyState;
+use crate::numeric::rigid_body::torque::{AttitudeTorqueFunction, TimeTorqueFunction, Torque};
 use nalgebra::{Quaternion, RealField, UnitQuaternion, Vector3};
 
 /// A moment the splitting can kick exactly: one that does not depend on `ω`.

@@ -5,7 +5,7 @@
 //!
 //! ```
 //! use kinetics::algebra::{Expr, Symbol};
-//! use kinetics::numeric::double_double::DoubleDouble;
+//! use kinetics::numeric::scalar::double_double::DoubleDouble;
 //! use kinetics::numeric::Tape;
 //! use num_traits::Float;
 //!
@@ -38,7 +38,7 @@
 //!   `to_i64` and the other integer conversions truncate toward zero exactly.
 
 use super::double_double::{quick_two_sum, DoubleDouble};
-use super::error::NumericError;
+use crate::numeric::error::NumericError;
 use num_traits::{Float, Num, NumCast, One, ToPrimitive, Zero};
 use std::num::FpCategory;
 use std::ops::Rem;

@@ -14,10 +14,10 @@
 //! `ε = 10⁻³²` relative, so the truncation error per step sits below the double-double
 //! rounding. The method shares nothing with the elliptic-function solution it checks.
 
-use crate::numeric::body_inertia::validate_free_body;
-use crate::numeric::double_double::DoubleDouble as Dd;
 use crate::numeric::error::NumericError;
-use crate::numeric::harmonic_moment::HarmonicMoment;
+use crate::numeric::integrators::harmonic_moment::HarmonicMoment;
+use crate::numeric::rigid_body::inertia::validate_free_body;
+use crate::numeric::scalar::double_double::DoubleDouble as Dd;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
 /// Number of Taylor terms per step.

@@ -1,9 +1,9 @@
 //! `kinetics latex "<expr or equation>"`: print as LaTeX (default), text or JSON.
 
 use super::input;
-use kinetics::algebra::{vector, Expr};
+use kinetics::algebra::{vector, Axis, Expr};
 use kinetics::parse::{parse_statement, Statement};
-use kinetics::print::{self, Axis, Notation};
+use kinetics::print::{self, Notation};
 
 #[derive(clap::Args)]
 pub struct Args {

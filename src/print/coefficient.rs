@@ -12,8 +12,8 @@
 //!   denominators, positive) times each base common to all terms to its least power (bases
 //!   with exponents of one sign only); it is formed only when it is not one.
 
-use super::layout::{is_kinematic_factor, Axis};
-use crate::algebra::{Expr, Role, Symbol, View, Q};
+use super::layout::is_kinematic_factor;
+use crate::algebra::{Axis, Expr, Role, Symbol, View, Q};
 use std::cmp::Ordering;
 
 /// One term of a group's coefficient.

@@ -40,7 +40,7 @@
 //! as a new expression.
 
 use super::coefficient::{self, inertia_key, CoefficientTerm};
-use crate::algebra::{axis_of_subscript, Expr, Func, Role, Symbol, View, Q};
+use crate::algebra::{Axis, Expr, Func, Role, Symbol, View, Q};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::One;
@@ -129,26 +129,6 @@ impl Integer<'_> {
             Integer::Small(n) => n == 1,
             Integer::Big(n) => n.is_one(),
         }
-    }
-}
-
-/// Which equation an expression belongs to, for ordering inertia symbols cyclically.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Axis {
-    #[default]
-    X,
-    Y,
-    Z,
-}
-
-impl Axis {
-    pub(super) fn index(self) -> usize {
-        self as usize
-    }
-
-    /// The axis named by a subscript such as `x` in `M_x`, if it names exactly one.
-    pub fn from_subscript(subscript: &str) -> Option<Axis> {
-        axis_of_subscript(subscript).map(|k| [Axis::X, Axis::Y, Axis::Z][k])
     }
 }
 

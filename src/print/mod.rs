@@ -12,7 +12,6 @@
 //! assert_eq!(print::text(&h), "I_x*w_x - I_xy*w_y");
 //! ```
 
-mod coefficient;
 pub mod latex;
 pub mod layout;
 pub mod text;

@@ -22,12 +22,14 @@ impl<'a> Iterator for KinematicPart<'a> {
 }
 
 /// The kinematic part of a term, read in place among its factors.
+#[inline]
 pub(super) fn kinematic_part(term: &Expr) -> KinematicPart<'_> {
     KinematicPart(term.factors().iter())
 }
 
 /// Whether a factor belongs to a term's kinematic part (rule 1): a kinematic symbol or unit
 /// vector, a power of one, or a function of an argument that mentions a kinematic symbol.
+#[inline]
 pub(super) fn is_kinematic_factor(f: &Expr) -> bool {
     match f.base().view() {
         View::Sym(s) => matches!(s.role(), Role::Kinematic | Role::UnitVector),
@@ -48,6 +50,7 @@ pub(super) fn mentions_kinematic(e: &Expr) -> bool {
 }
 
 /// Translational (v, a) before rotational (ω, α) before angles and others.
+#[inline]
 pub(super) fn family(s: Symbol) -> u8 {
     match s.base() {
         "v" | "a" => 0,
@@ -73,6 +76,8 @@ pub(super) struct TermShape {
     pub(super) sum_in_coefficient: bool,
 }
 
+/// The [`TermShape`] of a term.
+#[inline]
 pub(super) fn term_shape(term: &Expr) -> TermShape {
     let mut others = 0usize;
     let mut other_is_sum = false;

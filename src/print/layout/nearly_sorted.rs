@@ -8,6 +8,7 @@ use std::cmp::Ordering;
 /// Sorts a short slice that is often in order already (the factors of a term, the groups
 /// of a sum) as `sort_by` would, stably: by insertion, comparing each neighbouring pair once
 /// when nothing is out of place. Long slices go to the standard sort.
+#[inline]
 pub(super) fn sort_nearly_sorted<T: Copy>(
     items: &mut [T],
     mut order: impl FnMut(&T, &T) -> Ordering,

@@ -28,6 +28,7 @@ fn symbol_place(s: Symbol) -> u8 {
 
 /// The place of a factor, by its base: a function of a kinematic argument stands with the
 /// kinematic symbols.
+#[inline]
 pub(super) fn expr_place(e: &Expr) -> u8 {
     match e.base().view() {
         View::Num(_) => 0,
@@ -91,6 +92,7 @@ pub(super) fn compare_in_place(a: &Expr, b: &Expr) -> Ordering {
 
 /// Two kinematic factors on the axes z and x are written `ω_z ω_x` (cyclic order zx).
 /// The factors are in place order, so the kinematic ones (place 8) stand together.
+#[inline]
 pub(super) fn cyclic_pair_order(factors: &mut [(u8, &Expr)]) {
     let Some(i) = factors.iter().position(|f| f.0 == 8) else {
         return;

@@ -83,7 +83,7 @@ proptest! {
     /// the group out again, and the expanded form is the one that decides equality
     /// (ARCHITECTURE.md, invariants). Where expanding would not undo a grouping (a sum in
     /// a denominator, a sum under a function that groups with a leading minus), the
-    /// printer does not group (`print/layout.rs`, rules 5 and 6), so the expanded forms
+    /// printer does not group (`print/layout/`, rules 5 and 6), so the expanded forms
     /// agree for every expression.
     #[test]
     fn text_parses_back_to_the_same_expression(t in tree(NAMES.len())) {

@@ -9,8 +9,8 @@
 //! [`latex`] prints each, the Euler components about their own axes.
 
 use kinetics::algebra::vector_products::{cross, dot, mat_vec};
-use kinetics::algebra::{Expr, Matrix, Vector};
-use kinetics::print::{self, Axis};
+use kinetics::algebra::{Axis, Expr, Matrix, Vector};
+use kinetics::print;
 
 /// The expressions as built: `H`, `ωᵀ[I]ω · ½` and `[I]α + ω × H`, not yet expanded.
 pub struct Built {

@@ -8,6 +8,7 @@
 
 #[cfg(test)]
 mod arbitrary;
+mod axis;
 mod collect;
 mod derivative;
 mod error;
@@ -25,6 +26,7 @@ mod symbol;
 pub mod vector;
 pub mod vector_products;
 
+pub use axis::Axis;
 pub use collect::Collected;
 pub use error::{AlgebraError, MAX_EXPANDED_TERMS};
 pub use eval::rational_to;

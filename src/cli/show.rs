@@ -2,9 +2,9 @@
 
 use super::error::CliError;
 use super::input;
-use kinetics::algebra::{vector, Expr};
+use kinetics::algebra::{vector, Axis, Expr};
 use kinetics::parse::{parse_statement, Statement};
-use kinetics::print::{self, Axis, Notation};
+use kinetics::print::{self, Notation};
 
 #[derive(clap::Args)]
 pub struct Args {

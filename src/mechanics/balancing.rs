@@ -11,8 +11,7 @@
 //! so `m_2 x_2 = (S_x z_1 - I_xz)/(z_2 - z_1)`, `m_1 x_1 = -S_x - m_2 x_2`, and likewise in y.
 
 use super::derivation::{Derivation, Relation, Step};
-use crate::algebra::{AlgebraError, Expr};
-use crate::print::Axis;
+use crate::algebra::{AlgebraError, Axis, Expr};
 
 /// The body's unbalance: first moments and products of inertia about the bearing origin.
 pub struct Unbalance<'a> {

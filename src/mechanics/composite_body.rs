@@ -11,8 +11,7 @@
 
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
-use crate::algebra::{AlgebraError, Expr, Vector};
-use crate::print::Axis;
+use crate::algebra::{AlgebraError, Axis, Expr, Vector};
 
 /// A part of a body: its mass, the position of its mass centre from O, and its centroidal
 /// inertia in the frame's axes.

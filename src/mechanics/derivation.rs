@@ -1,8 +1,7 @@
 //! A derivation: the result together with the steps that led to it (definition,
 //! substitution, grouping), so worked solutions can show them.
 
-use crate::algebra::Expr;
-use crate::print::Axis;
+use crate::algebra::{Axis, Expr};
 
 /// One displayed equation `lhs = rhs`, presented as the equation about `axis`.
 #[derive(Debug, Clone, PartialEq)]

@@ -15,8 +15,7 @@
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
 use super::rotating_frame::rate_of_angular_momentum;
-use crate::algebra::{AlgebraError, Expr, Vector};
-use crate::print::Axis;
+use crate::algebra::{AlgebraError, Axis, Expr, Vector};
 
 fn axis_vector(e: Expr) -> Vector {
     Vector::new(Expr::zero(), Expr::zero(), e)

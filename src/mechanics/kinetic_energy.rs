@@ -10,8 +10,7 @@
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
 use crate::algebra::vector_products::{dot, mat_vec};
-use crate::algebra::{AlgebraError, Expr, Vector};
-use crate::print::Axis;
+use crate::algebra::{AlgebraError, Axis, Expr, Vector};
 
 /// `T = ½ m v̄² + ½ ωᵀ[I]ω`; `translation` is `Some((m, v̄))` for a free body, `None` for a
 /// body about a fixed point.

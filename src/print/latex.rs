@@ -175,8 +175,7 @@ fn product(out: &mut String, layout: &Layout, p: &Product) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::algebra::{Expr, Q};
-    use crate::print::Axis;
+    use crate::algebra::{Axis, Expr, Q};
 
     fn printed(q: Q) -> String {
         let mut layout = Layout::default();

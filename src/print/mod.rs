@@ -12,13 +12,11 @@
 //! assert_eq!(print::text(&h), "I_x*w_x - I_xy*w_y");
 //! ```
 
-mod coefficient;
 pub mod latex;
 pub mod layout;
 pub mod text;
 
-use crate::algebra::{Expr, Symbol, Vector};
-pub use layout::Axis;
+use crate::algebra::{Axis, Expr, Symbol, Vector};
 use layout::{Integer, Layout, Node, NodeId, Span};
 use std::cell::RefCell;
 use std::fmt::Write;

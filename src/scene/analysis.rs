@@ -17,7 +17,7 @@
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
 use super::model::{ConstraintKind, Quantity, Request, Scene, Span};
 use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
-use crate::algebra::{AlgebraError, Expr, Symbol, Vector};
+use crate::algebra::{AlgebraError, Axis, Expr, Symbol, Vector};
 use crate::mechanics::angular_momentum::{angular_momentum, angular_momentum_about_point};
 use crate::mechanics::composite_body::{composite_body, MassPart, MassProperties};
 use crate::mechanics::derivation::{Derivation, Relation, Step};
@@ -29,7 +29,6 @@ use crate::mechanics::linear_momentum::{effective_force, linear_momentum};
 use crate::mechanics::resultant::{resultant_force, resultant_moment, AppliedForce};
 use crate::mechanics::rotating_frame::rate_of_angular_momentum;
 use crate::parse::Diagnostic;
-use crate::print::Axis;
 use std::collections::HashMap;
 
 /// A derived quantity: scalar or vector.

@@ -8,11 +8,10 @@
 
 use super::model::{ConstraintKind, Scene, Span};
 use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
-use crate::algebra::{AlgebraError, Expr, Symbol, Vector};
+use crate::algebra::{AlgebraError, Axis, Expr, Symbol, Vector};
 use crate::mechanics::derivation::{Relation, Step};
 use crate::mechanics::kinematics::velocity_of_point;
 use crate::parse::Diagnostic;
-use crate::print::Axis;
 
 /// ω, the rates of its components in the frame, and the frame's Ω, with the unknowns the
 /// constraints fixed substituted.

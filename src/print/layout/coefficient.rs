@@ -1,4 +1,4 @@
-//! The coefficient of a group of terms (rules 1 and 3 of [`super::layout`]): the terms that
+//! The coefficient of a group of terms (rules 1 and 3 of [`super`]): the terms that
 //! share a kinematic part, read without it, their order, and what they have in common.
 //!
 //! - A coefficient term is a number times factors. Where no member of a group has a sum in
@@ -12,8 +12,8 @@
 //!   denominators, positive) times each base common to all terms to its least power (bases
 //!   with exponents of one sign only); it is formed only when it is not one.
 
-use super::layout::{is_kinematic_factor, Axis};
-use crate::algebra::{Expr, Role, Symbol, View, Q};
+use super::kinematic::is_kinematic_factor;
+use crate::algebra::{Axis, Expr, Role, Symbol, View, Q};
 use std::cmp::Ordering;
 
 /// One term of a group's coefficient.

@@ -1,4 +1,5 @@
-//! Vectors written with unit vectors: `a i + b j + c k` ↔ the components `(a, b, c)`.
+//! Vectors written with unit vectors: `a i + b j + c k` ↔ the components `(a, b, c)`; and a
+//! vector of expressions multiplied out component by component.
 
 use super::error::AlgebraError;
 use super::expr::Expr;
@@ -39,4 +40,9 @@ pub fn components(e: &Expr) -> Result<Vector, AlgebraError> {
         }
     }
     Ok(out)
+}
+
+/// Each component expanded (multiplied out and gathered), or the expansion's error.
+pub fn expand_each(v: &Vector) -> Result<Vector, AlgebraError> {
+    Ok(Vector::new(v[0].expand()?, v[1].expand()?, v[2].expand()?))
 }

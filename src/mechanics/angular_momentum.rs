@@ -12,7 +12,7 @@
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
 use super::linear_momentum::linear_momentum;
-use super::rotating_frame::expand_each;
+use crate::algebra::vector::expand_each;
 use crate::algebra::vector_products::{cross, mat_vec};
 use crate::algebra::{AlgebraError, Expr, Vector};
 

@@ -12,7 +12,7 @@ use super::composite_body::MassProperties;
 use super::derivation::{Derivation, Relation, Step};
 use super::linear_momentum::effective_force;
 use super::resultant::{resultant_force, resultant_moment, AppliedForce};
-use super::rotating_frame::expand_each;
+use crate::algebra::vector::expand_each;
 use crate::algebra::vector_products::cross;
 use crate::algebra::{AlgebraError, Expr, Vector};
 

@@ -11,7 +11,8 @@
 
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
-use super::rotating_frame::{expand_each, rate_of_angular_momentum};
+use super::rotating_frame::rate_of_angular_momentum;
+use crate::algebra::vector::expand_each;
 use crate::algebra::{AlgebraError, Expr, Vector};
 
 /// The body-frame angular velocity `(w_x, w_y, w_z)`.

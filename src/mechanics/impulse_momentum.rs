@@ -7,7 +7,7 @@
 //! ```
 
 use super::derivation::{Derivation, Relation, Step};
-use super::rotating_frame::expand_each;
+use crate::algebra::vector::expand_each;
 use crate::algebra::{AlgebraError, Expr, Vector};
 
 /// The momenta and impulses of one impact or interval.

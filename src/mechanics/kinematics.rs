@@ -7,7 +7,7 @@
 //! ```
 
 use super::derivation::{Derivation, Relation, Step};
-use super::rotating_frame::expand_each;
+use crate::algebra::vector::expand_each;
 use crate::algebra::vector_products::cross;
 use crate::algebra::{AlgebraError, Vector};
 

@@ -1,7 +1,7 @@
 //! Linear momentum and its rate (§18.1): `L = m v̄`, and `L̇ = m ā`, the effective force
 //! that the resultant of the external forces equals (`ΣF = m ā`).
 
-use super::rotating_frame::expand_each;
+use crate::algebra::vector::expand_each;
 use crate::algebra::{AlgebraError, Expr, Vector};
 
 /// `L = m v̄`.

@@ -7,7 +7,7 @@
 //!
 //! The same sums give the impulses of an impact, with `Fᵢ Δt` in place of `Fᵢ`.
 
-use super::rotating_frame::expand_each;
+use crate::algebra::vector::expand_each;
 use crate::algebra::vector_products::cross;
 use crate::algebra::{AlgebraError, Expr, Vector};
 

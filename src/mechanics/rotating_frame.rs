@@ -11,6 +11,7 @@
 
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
+use crate::algebra::vector::expand_each;
 use crate::algebra::vector_products::{cross, mat_vec};
 use crate::algebra::{AlgebraError, Vector};
 
@@ -45,9 +46,4 @@ pub fn rate_of_angular_momentum(
             },
         ],
     })
-}
-
-/// Each component expanded.
-pub fn expand_each(v: &Vector) -> Result<Vector, AlgebraError> {
-    Ok(Vector::new(v[0].expand()?, v[1].expand()?, v[2].expand()?))
 }

@@ -348,10 +348,12 @@ fn propagator<'a, T: RealField + Copy>(
     match *method {
         Method::Rk4 { step } => {
             validate_fixed_step(step, end - start)?;
-            Ok(Box::new(Rk4Propagator {
-                rhs: EulerRhs::new(problem.inertia, &problem.torque)?,
+            Ok(Box::new(FixedStepPropagator {
+                stepper: Rk4Stepper {
+                    rhs: EulerRhs::new(problem.inertia, &problem.torque)?,
+                    y: initial.to_vector(),
+                },
                 t: start,
-                y: initial.to_vector(),
                 max_step: step,
                 steps: 0,
             }))
@@ -359,9 +361,11 @@ fn propagator<'a, T: RealField + Copy>(
         Method::Splitting { step, order } => {
             validate_fixed_step(step, end - start)?;
             let splitting = LiePoissonSplitting::new(&problem.inertia, &problem.torque, order)?;
-            Ok(Box::new(SplittingPropagator {
-                state: splitting.to_splitting_state(start, &initial),
-                splitting,
+            Ok(Box::new(FixedStepPropagator {
+                stepper: SplittingStepper {
+                    state: splitting.to_splitting_state(start, &initial),
+                    splitting,
+                },
                 t: start,
                 max_step: step,
                 steps: 0,
@@ -425,61 +429,77 @@ fn equal_steps<T: RealField + Copy>(from: T, to: T, max_step: T) -> (usize, T) {
     (count, span / constant::<T>(count as f64))
 }
 
-struct Rk4Propagator<'a, T: RealField + Copy> {
-    rhs: EulerRhs<'a, T>,
+/// A method that advances the state by steps of a given size (RK4, the splitting).
+trait FixedStep<T: RealField + Copy> {
+    /// Right-hand-side evaluations a step costs (the splitting's flows are exact: none).
+    const EVALUATIONS_PER_STEP: usize;
+    /// One step of size `h` from the step's exact time `time`.
+    fn step(&mut self, time: T, h: T);
+    fn state(&self) -> RigidBodyState<T>;
+}
+
+/// Equal steps of at most `max_step` to each sample time, each from its exact step time
+/// `t₀ + k h` (not an accumulated sum of `h`).
+struct FixedStepPropagator<T: RealField + Copy, S: FixedStep<T>> {
+    stepper: S,
     t: T,
-    y: SVector<T, STATE_DIMENSION>,
     max_step: T,
     steps: usize,
 }
 
-impl<T: RealField + Copy> Propagator<T> for Rk4Propagator<'_, T> {
+impl<T: RealField + Copy, S: FixedStep<T>> Propagator<T> for FixedStepPropagator<T, S> {
     fn advance_to(&mut self, t: T) -> Result<RigidBodyState<T>, NumericError> {
         let (count, h) = equal_steps(self.t, t, self.max_step);
         for k in 0..count {
-            let time = self.t + h * constant::<T>(k as f64);
-            self.y = rk4_step(&self.rhs, time, &self.y, h);
+            self.stepper.step(self.t + h * constant::<T>(k as f64), h);
         }
         self.steps += count;
         self.t = t;
-        Ok(RigidBodyState::from_vector(&self.y))
+        Ok(self.stepper.state())
     }
 
     fn statistics(&self) -> SimulationStatistics {
         SimulationStatistics {
             steps: self.steps,
-            evaluations: 4 * self.steps,
+            evaluations: S::EVALUATIONS_PER_STEP * self.steps,
             ..Default::default()
         }
     }
 }
 
-struct SplittingPropagator<'a, T: RealField + Copy> {
+struct Rk4Stepper<'a, T: RealField + Copy> {
+    rhs: EulerRhs<'a, T>,
+    y: SVector<T, STATE_DIMENSION>,
+}
+
+impl<T: RealField + Copy> FixedStep<T> for Rk4Stepper<'_, T> {
+    const EVALUATIONS_PER_STEP: usize = 4;
+
+    fn step(&mut self, time: T, h: T) {
+        self.y = rk4_step(&self.rhs, time, &self.y, h);
+    }
+
+    fn state(&self) -> RigidBodyState<T> {
+        RigidBodyState::from_vector(&self.y)
+    }
+}
+
+struct SplittingStepper<'a, T: RealField + Copy> {
     splitting: LiePoissonSplitting<'a, T>,
     state: SplittingState<T>,
-    t: T,
-    max_step: T,
-    steps: usize,
 }
 
-impl<T: RealField + Copy> Propagator<T> for SplittingPropagator<'_, T> {
-    fn advance_to(&mut self, t: T) -> Result<RigidBodyState<T>, NumericError> {
-        let (count, h) = equal_steps(self.t, t, self.max_step);
-        for k in 0..count {
-            // The clock restarts from the exact step time, as Rk4's does.
-            self.state.time = self.t + h * constant::<T>(k as f64);
-            self.splitting.step(&mut self.state, h);
-        }
-        self.steps += count;
-        self.t = t;
-        Ok(self.splitting.to_rigid_body_state(&self.state))
+impl<T: RealField + Copy> FixedStep<T> for SplittingStepper<'_, T> {
+    const EVALUATIONS_PER_STEP: usize = 0;
+
+    fn step(&mut self, time: T, h: T) {
+        // The clock restarts from the exact step time, as RK4's does.
+        self.state.time = time;
+        self.splitting.step(&mut self.state, h);
     }
 
-    fn statistics(&self) -> SimulationStatistics {
-        SimulationStatistics {
-            steps: self.steps,
-            ..Default::default()
-        }
+    fn state(&self) -> RigidBodyState<T> {
+        self.splitting.to_rigid_body_state(&self.state)
     }
 }
 

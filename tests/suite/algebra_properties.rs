@@ -6,9 +6,7 @@
 //! Points where the reference value is not a real number or is near a pole are skipped;
 //! each property fails if it has to skip more than a quarter as many points as it checks.
 
-mod common;
-
-use common::expression_tree::{agrees, point, tree, values, Tree};
+use crate::common::expression_tree::{agrees, point, tree, values, Tree};
 use kinetics::algebra::{Expr, Symbol, View};
 use kinetics::parse::parse_expression;
 use proptest::prelude::*;
@@ -49,7 +47,7 @@ fn rebuilt(e: &Expr) -> Expr {
 }
 
 proptest! {
-    #![proptest_config(common::expression_tree::config(CASES))]
+    #![proptest_config(crate::common::expression_tree::config(CASES))]
 
     /// The canonical form built by the operators has the value of the tree it was built
     /// from, computed without the algebra.

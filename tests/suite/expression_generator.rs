@@ -2,9 +2,7 @@
 //! their documentation claims, and at most points they have a reference value, so that
 //! the properties check what they say rather than skip it.
 
-mod common;
-
-use common::expression_tree::{point, tree, Tree};
+use crate::common::expression_tree::{point, tree, Tree};
 use kinetics::algebra::Func;
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::TestRunner;

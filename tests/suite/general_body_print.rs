@@ -4,7 +4,7 @@
 
 use kinetics::print;
 
-#[path = "../benches/support/general_body.rs"]
+#[path = "../../benches/support/general_body.rs"]
 mod general_body;
 
 #[test]

@@ -3,9 +3,7 @@
 //! the same expression; what a person types parses to the expression the operators build;
 //! the LaTeX is well formed.
 
-mod common;
-
-use common::expression_tree::{agrees, point, tree, values, Tree};
+use crate::common::expression_tree::{agrees, point, tree, values, Tree};
 use kinetics::algebra::{Expr, Func, View};
 use kinetics::parse::parse_expression;
 use kinetics::print;
@@ -74,7 +72,7 @@ fn has_sum_denominator(e: &Expr) -> bool {
 }
 
 proptest! {
-    #![proptest_config(common::expression_tree::config(CASES))]
+    #![proptest_config(crate::common::expression_tree::config(CASES))]
 
     /// The printed text parses back to the same expression, compared after expanding
     /// both. Not compared directly because the printer groups a canonical sum the way a

@@ -2,9 +2,7 @@
 //! form for a torque-free scene and agreeing with DOP853, a plot that is written once and
 //! not overwritten without `--force`, and bad options refused.
 
-mod common;
-
-use common::binary::{kinetics, scene};
+use crate::common::binary::{kinetics, scene};
 
 fn rows(csv: &str) -> Vec<Vec<f64>> {
     csv.lines()

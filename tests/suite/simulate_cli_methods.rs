@@ -5,9 +5,7 @@
 //! error by 2^order); `--format csv` given explicitly is the default output; a
 //! parameter the chosen method does not use is refused with the reason.
 
-mod common;
-
-use common::binary::{kinetics, scene};
+use crate::common::binary::{kinetics, scene};
 
 /// The CSV columns, in order.
 const HEADER: &str = "t,w_x,w_y,w_z,q_w,q_x,q_y,q_z,T,H";

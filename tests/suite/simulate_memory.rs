@@ -1,5 +1,5 @@
-//! The simulation driver's memory does not grow with the number of samples: a counting
-//! global allocator records the peak of the bytes the test's thread holds while
+//! The simulation driver's memory does not grow with the number of samples: the suite's
+//! counting global allocator (`main.rs`) records the peak of the bytes the test's thread holds while
 //! `simulate_choice` (the driver behind `kinetics simulate`) streams 10³ and then 10⁶ or 10⁷
 //! samples over the same span into a sink that drops them, for every method. Storing even
 //! one byte per sample would raise the second peak by a million bytes or more.
@@ -8,9 +8,7 @@
 //! choosing; the driver runs on the caller's thread (no method spawns threads), which the
 //! control test checks by seeing a collecting sink's memory.
 
-mod common;
-
-use common::counting_allocator::{peak_during, Counting};
+use crate::common::counting_allocator::peak_during;
 use kinetics::numeric::body_inertia::BodyInertia;
 use kinetics::numeric::exact_propagation::{simulate_choice, Choice};
 use kinetics::numeric::rigid_body_state::RigidBodyState;
@@ -19,9 +17,6 @@ use kinetics::numeric::simulate::{Method, Problem, Sampling};
 use kinetics::numeric::splitting::SplittingOrder;
 use kinetics::numeric::torque::Torque;
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
-
-#[global_allocator]
-static ALLOCATOR: Counting = Counting;
 
 /// Span of every run (s): long enough for several hundred steps of each integrator.
 const SPAN: f64 = 10.0;

@@ -1,16 +1,11 @@
-//! Dropping a [`NativeTape`] frees its machine code: a counting global allocator (the JIT
-//! takes its code pages from the global allocator) sees the bytes the test's thread holds
+//! Dropping a [`NativeTape`] frees its machine code: the suite's counting global allocator
+//! (`main.rs`; the JIT takes its code pages from the global allocator) sees the bytes the test's thread holds
 //! return to the same count after each compile–evaluate–drop cycle. The count is per
 //! thread because the test harness's own thread allocates at times of its choosing.
 
-mod common;
-
-use common::counting_allocator::{held_bytes, Counting};
+use crate::common::counting_allocator::held_bytes;
 use kinetics::algebra::{Expr, Func, Symbol};
 use kinetics::numeric::Tape;
-
-#[global_allocator]
-static ALLOCATOR: Counting = Counting;
 
 #[test]
 fn dropping_a_native_tape_frees_its_code() {

@@ -7,9 +7,7 @@
 //! `thetadot`, `vdot_y`, then `wddot_x`, ...); inertia, mass, lengths and other quantities
 //! (among them the constant angle `beta`) do not.
 
-mod common;
-
-use common::expression_tree::{point, tree};
+use crate::common::expression_tree::{point, tree};
 use kinetics::algebra::{AlgebraError, Expr, Func, Symbol};
 use kinetics::parse::parse_expression;
 use proptest::prelude::*;
@@ -307,7 +305,7 @@ const NAMES: [&str; 6] = ["w_x", "theta", "v_y", "I_x", "m", "L"];
 const CASES: u32 = 20_000;
 
 proptest! {
-    #![proptest_config(common::expression_tree::config(CASES))]
+    #![proptest_config(crate::common::expression_tree::config(CASES))]
 
     /// For random expressions, the symbolic time derivative agrees with a Richardson
     /// extrapolated central difference (steps `1e-3` to `2.5e-4`) of the expression's reference

@@ -7,9 +7,7 @@
 //! Every body's errors are measured against the double-double Taylor reference; for the
 //! forced bodies that truth is checked independently in `work_precision_forced_truth.rs`. No test here looks at run times.
 
-mod common;
-
-use common::binary::kinetics;
+use crate::common::binary::kinetics;
 use kinetics::numeric::work_precision::{cases, study, Load, Row};
 use nalgebra::Vector3;
 use std::collections::BTreeSet;

@@ -1,13 +1,9 @@
 //! The system allocator, counting per thread the bytes held (allocated minus freed) and the
-//! highest count reached. A test binary installs it with
+//! highest count reached. The suite installs it as its global allocator (`main.rs`), so every
+//! test runs on it and the memory tests read the counts of their own thread.
 //!
-//! ```ignore
-//! #[global_allocator]
-//! static ALLOCATOR: Counting = Counting;
-//! ```
-//!
-//! The counts are per thread because the test harness's own threads allocate at times of
-//! their choosing.
+//! The counts are per thread because the test harness and the other tests, each on threads
+//! of their own, allocate at times of their choosing.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;

@@ -1,6 +1,4 @@
-//! Support shared by the integration tests. Each test crate uses part of it, so items one
-//! crate leaves unused are not dead code.
-#![allow(dead_code)]
+//! Support shared by the integration tests.
 
 pub mod binary;
 pub mod counting_allocator;

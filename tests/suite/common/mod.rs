@@ -1,0 +1,5 @@
+//! Support shared by the integration tests.
+
+pub mod binary;
+pub mod counting_allocator;
+pub mod expression_tree;

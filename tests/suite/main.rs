@@ -1,0 +1,46 @@
+//! The integration and property tests, as one crate: one test binary to compile and link,
+//! not one per file, each linking the library and its dependencies again. Each module is the
+//! tests of one subject; `common` is the support they share.
+//!
+//! The global allocator is the counting one (`common/counting_allocator.rs`), for every
+//! test: a binary has only one, and the memory tests read its per-thread counts.
+
+mod common;
+
+use common::counting_allocator::Counting;
+
+mod algebra_properties;
+mod bad_scenes;
+mod cli_bad_input;
+mod cli_write_failure;
+mod derivations_numeric;
+mod derive_snapshots;
+mod double_double_float;
+mod dual_numbers;
+mod expression_generator;
+mod general_body_print;
+mod integrators;
+mod latex_compiles;
+mod layering;
+mod nalgebra_ops;
+mod principal_axes;
+mod print_parse_properties;
+mod scene_solutions;
+mod shapes_numeric;
+mod simulate_choice;
+mod simulate_cli;
+mod simulate_cli_memory;
+mod simulate_cli_methods;
+mod simulate_extreme_momentum;
+mod simulate_memory;
+mod splitting_time_torque;
+mod tape;
+mod tape_native;
+mod tape_native_memory;
+mod time_derivative;
+mod torque_free;
+mod work_precision;
+mod work_precision_forced_truth;
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;

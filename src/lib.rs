@@ -2,7 +2,77 @@
 //!
 //! Derives the component equations of chapter 18 symbolically ([`algebra`], [`mechanics`]),
 //! reads the ASCII mathematics people type ([`parse`]), prints results as a textbook would
-//! ([`print`]) and evaluates them numerically ([`numeric`]).
+//! ([`print`](mod@print)), solves problems written as scenes ([`scene`], [`solution`]) and
+//! evaluates and simulates them numerically ([`numeric`]).
+//!
+//! The types and functions a user needs are re-exported here; the modules keep the rest.
+//!
+//! # A worked solution from a scene
+//!
+//! Sample Problem 18.4: a massless shaft along x turns in bearings C (at O) and D (at
+//! x = L); two slender rods of mass m and length c are welded to it, and a couple M acts
+//! about it. About the shaft each rod turns about its end, so `I_x = 2 · m c²/3`, and
+//! `ΣM_x = I_x α` gives `α = 3M/(2 m c²) = 3 · 6/(2 · 0.3 · 0.1²) = 3000 rad/s²`.
+//!
+//! ```
+//! use kinetics::{analyse, parse_expression, parse_scene, render, Format, Value};
+//!
+//! let scene = parse_scene(
+//!     "sp18_4.scene",
+//!     "given m = 0.3 kg
+//! given c = 0.1 m
+//! given M = 6 N*m
+//! given L : m
+//! given w = 125.7 rad/s
+//! unknown alpha : rad/s^2
+//! unknown C_y, C_z, D_y, D_z : N
+//! body rod(c) mass m at (L/2, c/2, 0) along y
+//! body rod(c) mass m at (L/4, 0, c/2) along z
+//! fixed point
+//! omega = w*i
+//! omegadot = alpha*i
+//! couple M*i
+//! force C = C_y*j + C_z*k at (0, 0, 0)
+//! force D = D_y*j + D_z*k at (L, 0, 0)
+//! find alpha",
+//! )?;
+//! let analysis = analyse(&scene)?;
+//! let (_, Value::Scalar(alpha)) = &analysis.results[0] else {
+//!     panic!("alpha is a scalar")
+//! };
+//! assert_eq!(*alpha, parse_expression("by hand", "3 M/(2 m c^2)")?);
+//! let worked = render(&scene, &analysis, Format::Text, false);
+//! assert!(worked.contains("alpha = 3*M/(2*m*c^2) = 3000 rad/s²"));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! # Euler's equations in the cyclic form
+//!
+//! In principal axes `[I]` is diagonal, and `ΣM = [I]{ω̇} + ω × [I]{ω}` has the x-component
+//! `I_x ω̇_x + ω_y I_z ω_z − ω_z I_y ω_y = I_x ω̇_x − (I_y − I_z) ω_y ω_z`; the y- and
+//! z-equations follow by the cyclic change x → y → z → x.
+//!
+//! ```
+//! use kinetics::{euler_equations, parse_expression, print, InertiaTensor};
+//!
+//! let euler = euler_equations(&InertiaTensor::principal())?;
+//! let printed: Vec<String> = euler
+//!     .result()
+//!     .iter()
+//!     .map(|r| format!("{} = {}", print::text(&r.lhs), print::text_about(&r.rhs, r.axis)))
+//!     .collect();
+//! assert_eq!(
+//!     printed,
+//!     [
+//!         "SumM_x = I_x*wdot_x - (I_y - I_z)*w_y*w_z",
+//!         "SumM_y = I_y*wdot_y - (I_z - I_x)*w_z*w_x",
+//!         "SumM_z = I_z*wdot_z - (I_x - I_y)*w_x*w_y",
+//!     ]
+//! );
+//! let by_hand = parse_expression("by hand", "I_x wdot_x + w_y I_z w_z - w_z I_y w_y")?;
+//! assert_eq!(euler.result()[0].rhs, by_hand);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 // Diagnostics carry the source line and a hint; they are built only on the error path, so
 // their size does not matter.
@@ -15,3 +85,26 @@ pub mod parse;
 pub mod print;
 pub mod scene;
 pub mod solution;
+
+// The expression algebra.
+pub use algebra::{AlgebraError, Axis, Expr, Matrix, Symbol, Vector};
+// The derivations, each returned with its steps.
+pub use mechanics::angular_momentum::angular_momentum;
+pub use mechanics::catalogue::derive_general;
+pub use mechanics::euler::euler_equations;
+pub use mechanics::fixed_axis::fixed_axis_rotation;
+pub use mechanics::kinetic_energy::kinetic_energy;
+pub use mechanics::{Derivation, InertiaTensor, Relation, Step};
+// Reading expressions and scenes.
+pub use parse::{parse_expression, Diagnostic};
+pub use scene::{analyse, parse_scene, Analysis, Scene, Value};
+// Worked solutions.
+pub use solution::{render, Format};
+// Simulation of a body's motion.
+pub use numeric::rigid_body::exact_propagation::{simulate_choice, Choice, MethodUsed};
+pub use numeric::rigid_body::inertia::BodyInertia;
+pub use numeric::rigid_body::sample_sink::Sample;
+pub use numeric::rigid_body::simulate::{simulate, Method, Problem, Sampling};
+pub use numeric::rigid_body::state::RigidBodyState;
+pub use numeric::rigid_body::torque::Torque;
+pub use numeric::NumericError;

@@ -186,7 +186,7 @@ impl Q {
     }
 
     /// `self^n` for an integer `n`; `None` for `0^n` with `n < 0` or when the result would
-    /// have more than [`MAX_POWER_BITS`] bits.
+    /// have more than `MAX_POWER_BITS` (4096) bits.
     pub fn checked_pow(&self, n: i64) -> Option<Q> {
         if n == 0 {
             return Some(Q::ONE);

@@ -17,6 +17,21 @@ use crate::algebra::vector_products::{cross, mat_vec};
 use crate::algebra::{AlgebraError, Expr, Vector};
 
 /// `{H} = [I]{ω}`; `point` names the reference point (`G` or `O`).
+///
+/// About a fixed axis z, `ω = w k`: `[I]{ω}` is w times the third column of `[I]`, where the
+/// products of inertia enter with a minus sign.
+///
+/// ```
+/// use kinetics::{angular_momentum, parse_expression, Expr, InertiaTensor, Vector};
+///
+/// let omega = Vector::new(Expr::zero(), Expr::zero(), Expr::symbol("w"));
+/// let h = angular_momentum(&InertiaTensor::general(), &omega, "O")?;
+/// let hand = |t: &str| parse_expression("by hand", t).unwrap();
+/// let components: Vec<&Expr> = h.result().iter().map(|r| &r.rhs).collect();
+/// assert_eq!(components, [&hand("-I_xz w"), &hand("-I_yz w"), &hand("I_z w")]);
+/// assert_eq!(h.name, "H_O");
+/// # Ok::<(), kinetics::AlgebraError>(())
+/// ```
 pub fn angular_momentum(
     inertia: &InertiaTensor,
     omega: &Vector,
@@ -36,6 +51,23 @@ pub fn angular_momentum(
 }
 
 /// `H_O = H_G + r̄ × m v̄`, where `rbar` is the position of G from O.
+///
+/// A particle (`H_G = 0`) at `r̄ = x̄ i` moving with `v̄ = v j`: `r̄ × m v̄ = m x̄ v (i × j)`,
+/// so `H_O = m x̄ v k`.
+///
+/// ```
+/// use kinetics::mechanics::angular_momentum::angular_momentum_about_point;
+/// use kinetics::{parse_expression, Expr, Vector};
+///
+/// let (zero, m) = (Vector::from_element(Expr::zero()), Expr::symbol("m"));
+/// let rbar = Vector::new(Expr::symbol("xbar"), Expr::zero(), Expr::zero());
+/// let vbar = Vector::new(Expr::zero(), Expr::symbol("v"), Expr::zero());
+/// let h_o = angular_momentum_about_point(&zero, &rbar, &m, &vbar)?;
+/// let by_hand = parse_expression("by hand", "m xbar v")?;
+/// let components: Vec<&Expr> = h_o.result().iter().map(|r| &r.rhs).collect();
+/// assert_eq!(components, [&Expr::zero(), &Expr::zero(), &by_hand]);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn angular_momentum_about_point(
     h_g: &Vector,
     rbar: &Vector,

@@ -33,6 +33,19 @@ fn vector(names: [&str; 3]) -> Vector {
 
 /// Derives one of [`NAMES`] for a general body (`principal` drops the products of inertia).
 /// Returns `None` for an unknown name.
+///
+/// ```
+/// use kinetics::mechanics::catalogue::NAMES;
+/// use kinetics::{derive_general, parse_expression};
+///
+/// // About a fixed point, principal axes: T = ½(I_x ω_x² + I_y ω_y² + I_z ω_z²).
+/// let t = derive_general("T_O", true).expect("a known name")?;
+/// let by_hand = parse_expression("by hand", "1/2 (I_x w_x^2 + I_y w_y^2 + I_z w_z^2)")?;
+/// assert_eq!(t.result()[0].rhs, by_hand.expand()?);
+/// assert!(NAMES.iter().all(|name| derive_general(name, false).is_some_and(|d| d.is_ok())));
+/// assert!(derive_general("T_G", false).is_none());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn derive_general(name: &str, principal: bool) -> Option<Result<Derivation, AlgebraError>> {
     let inertia = if principal {
         InertiaTensor::principal()

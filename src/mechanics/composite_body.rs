@@ -33,6 +33,29 @@ pub struct MassProperties {
 /// The mass, mass centre and centroidal inertia of the parts together, with the step that
 /// shows them. A total mass that is zero is refused ([`AlgebraError::DivisionByZero`]): the
 /// mass centre is `Σ mᵢ r̄ᵢ / m`.
+///
+/// Two particles of mass m at `(a, 0, 0)` and `(0, b, 0)`: G is midway, at `(a/2, b/2, 0)`,
+/// and from G they sit at `±(a/2, -b/2, 0)`, so `I_x = 2m(b/2)² = m b²/2`, `I_y = m a²/2`,
+/// `I_z = m(a² + b²)/2` and `I_xy = Σ m x y = 2m(a/2)(-b/2) = -m a b/2`.
+///
+/// ```
+/// use kinetics::mechanics::composite_body::{composite_body, MassPart};
+/// use kinetics::{parse_expression, Expr, InertiaTensor, Vector};
+///
+/// let hand = |t: &str| parse_expression("by hand", t).unwrap().expand().unwrap();
+/// let particle = |x: &str, y: &str| MassPart {
+///     mass: hand("m"),
+///     position: Vector::new(hand(x), hand(y), Expr::zero()),
+///     inertia: InertiaTensor::diagonal([(); 3].map(|_| Expr::zero())),
+/// };
+/// let (body, _steps) = composite_body(&[particle("a", "0"), particle("0", "b")])?;
+/// assert_eq!(body.mass, hand("2 m"));
+/// assert_eq!(body.centroid, Vector::new(hand("a/2"), hand("b/2"), Expr::zero()));
+/// let moments = ["m b^2/2", "m a^2/2", "m (a^2 + b^2)/2"].map(hand);
+/// assert_eq!(body.inertia.moments, moments);
+/// assert_eq!(body.inertia.products, ["-m a b/2", "0", "0"].map(hand));
+/// # Ok::<(), kinetics::AlgebraError>(())
+/// ```
 pub fn composite_body(parts: &[MassPart]) -> Result<(MassProperties, Derivation), AlgebraError> {
     let mass = Expr::add_all(parts.iter().map(|p| p.mass.clone())).expand()?;
     let first_moment = parts

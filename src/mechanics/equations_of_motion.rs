@@ -34,6 +34,51 @@ pub struct Loads<'a> {
 
 /// `ΣF = m ā` and `ΣM_P = Ḣ_G + r̄_{G/P} × m ā`, given the body, the acceleration `abar` of
 /// its mass centre and the rate `hdot_g` of its angular momentum about G.
+///
+/// A compound pendulum: a body turning about the fixed axis z through O, G at `r̄ = L i`,
+/// its weight `-m g j` at G and the pin's reaction A at O. With `ā = -L w² i + L α j` and
+/// `Ḣ_G = I_z α k`: `ΣF = m ā` gives `A_x = -m L w²`, `A_y - m g = m L α`, `A_z = 0`, and
+/// `ΣM_O = Ḣ_G + r̄ × m ā` gives `-m g L = I_z α + m L² α` (its x and y read `0 = 0`).
+///
+/// ```
+/// use kinetics::mechanics::equations_of_motion::{equations_of_motion, Loads, MomentCentre};
+/// use kinetics::mechanics::{composite_body::MassProperties, resultant::AppliedForce};
+/// use kinetics::{parse_expression, Expr, InertiaTensor, Vector};
+///
+/// let hand = |t: &str| parse_expression("by hand", t).unwrap().expand().unwrap();
+/// let vector = |x: &str, y: &str, z: &str| Vector::new(hand(x), hand(y), hand(z));
+/// let (l_i, origin) = (vector("L", "0", "0"), vector("0", "0", "0"));
+/// let (weight, pin) = (vector("0", "-m g", "0"), vector("A_x", "A_y", "A_z"));
+/// let forces = [
+///     AppliedForce { value: &weight, point: &l_i },
+///     AppliedForce { value: &pin, point: &origin },
+/// ];
+/// let body = MassProperties {
+///     mass: hand("m"),
+///     centroid: l_i.clone(),
+///     inertia: InertiaTensor::principal(),
+/// };
+/// let motion = equations_of_motion(
+///     &body,
+///     &vector("-L w^2", "L alpha", "0"),
+///     &vector("0", "0", "I_z alpha"),
+///     Loads { forces: &forces, couples: &[] },
+///     MomentCentre::FixedPoint,
+/// )?;
+/// let residuals: Vec<Expr> = motion
+///     .result()
+///     .iter()
+///     .map(|r| r.residual().expand().unwrap())
+///     .collect();
+/// let by_hand = [
+///     "A_x + m L w^2",
+///     "A_y - m g - m L alpha",
+///     "A_z",
+///     "-m g L - I_z alpha - m L^2 alpha",
+/// ];
+/// assert_eq!(residuals, by_hand.map(hand));
+/// # Ok::<(), kinetics::AlgebraError>(())
+/// ```
 pub fn equations_of_motion(
     body: &MassProperties,
     abar: &Vector,

@@ -25,6 +25,27 @@ pub fn body_angular_velocity() -> Vector {
 }
 
 /// Euler's equations for the given tensor (principal or general) in body axes.
+///
+/// A check against §18.8: with products of inertia, a body spinning steadily about z
+/// (`ω_x = ω_y = 0`, `ω̇ = 0`) needs `ΣM_x = I_yz ω_z²` and `ΣM_y = -I_xz ω_z²`, the
+/// fixed-axis equations at `α = 0`.
+///
+/// ```
+/// use kinetics::algebra::Symbol;
+/// use kinetics::{euler_equations, parse_expression, InertiaTensor};
+///
+/// let euler = euler_equations(&InertiaTensor::general())?;
+/// let steady = ["w_x", "w_y", "wdot_x", "wdot_y", "wdot_z"].map(Symbol::new);
+/// let about_z = |s: Symbol| steady.contains(&s).then(kinetics::Expr::zero);
+/// let moments: Vec<_> = euler
+///     .result()
+///     .iter()
+///     .map(|r| r.rhs.subs(&about_z))
+///     .collect::<Result<_, _>>()?;
+/// let hand = |t: &str| parse_expression("by hand", t).unwrap();
+/// assert_eq!(moments, [hand("I_yz w_z^2"), hand("-I_xz w_z^2"), hand("0")]);
+/// # Ok::<(), kinetics::AlgebraError>(())
+/// ```
 pub fn euler_equations(inertia: &InertiaTensor) -> Result<Derivation, AlgebraError> {
     let omega = body_angular_velocity();
     let omega_dot = Vector::new(omega[0].d_dt()?, omega[1].d_dt()?, omega[2].d_dt()?);

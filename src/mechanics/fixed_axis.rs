@@ -22,6 +22,24 @@ fn axis_vector(e: Expr) -> Vector {
 }
 
 /// The three moment equations for rotation about z.
+///
+/// `[I]{α k} = α(-I_xz, -I_yz, I_z)` and `w k × [I]{w k} = w²(I_yz, -I_xz, 0)`
+/// (`k × i = j`, `k × j = -i`); their sum is the chapter's form.
+///
+/// ```
+/// use kinetics::{fixed_axis_rotation, parse_expression, print, InertiaTensor};
+///
+/// let d = fixed_axis_rotation(&InertiaTensor::general())?;
+/// let printed: Vec<String> = d
+///     .result()
+///     .iter()
+///     .map(|r| print::text_about(&r.rhs, r.axis))
+///     .collect();
+/// assert_eq!(printed, ["-I_xz*alpha + I_yz*w^2", "-I_yz*alpha - I_xz*w^2", "I_z*alpha"]);
+/// let by_hand = parse_expression("by hand", "-alpha I_xz + w^2 I_yz")?;
+/// assert_eq!(d.result()[0].rhs, by_hand);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn fixed_axis_rotation(inertia: &InertiaTensor) -> Result<Derivation, AlgebraError> {
     let omega = axis_vector(Expr::symbol("w"));
     let alpha = axis_vector(Expr::symbol("alpha"));
@@ -45,6 +63,24 @@ pub fn fixed_axis_rotation(inertia: &InertiaTensor) -> Result<Derivation, Algebr
 
 /// Dynamic reactions of bearings A (at the origin) and B (at `z = l`) on a body of mass
 /// `m` whose mass centre is at `(x̄, ȳ)` off the axis.
+///
+/// With the mass centre on the axis (`x̄ = ȳ = 0`) the reactions come from the products of
+/// inertia alone: `B_x = ΣM_y/l = (-I_yz α - I_xz ω²)/l`,
+/// `B_y = -ΣM_x/l = (I_xz α - I_yz ω²)/l`, and `A = -B` (`m ā = 0`).
+///
+/// ```
+/// use kinetics::mechanics::fixed_axis::bearing_reactions;
+/// use kinetics::{parse_expression, Expr, InertiaTensor};
+///
+/// let (m, l, zero) = (Expr::symbol("m"), Expr::symbol("l"), Expr::zero());
+/// let d = bearing_reactions(&InertiaTensor::general(), &m, (&zero, &zero), &l)?;
+/// let [b_x, b_y, a_x, a_y] = d.result() else { panic!("four reactions") };
+/// let hand = |t: &str| parse_expression("by hand", t).unwrap().expand().unwrap();
+/// assert_eq!(b_x.rhs, hand("(-I_yz alpha - I_xz w^2)/l"));
+/// assert_eq!(b_y.rhs, hand("(I_xz alpha - I_yz w^2)/l"));
+/// assert_eq!((&a_x.rhs, &a_y.rhs), (&-&b_x.rhs, &-&b_y.rhs));
+/// # Ok::<(), kinetics::AlgebraError>(())
+/// ```
 pub fn bearing_reactions(
     inertia: &InertiaTensor,
     mass: &Expr,

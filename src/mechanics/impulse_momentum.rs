@@ -24,6 +24,31 @@ pub struct ImpulseMomentum<'a> {
 }
 
 /// The six component equations; components that read `0 = 0` are left out.
+///
+/// A body at rest struck by the impulse `F Δt i` at `b j` from G: its moment about G is
+/// `b j × F Δt i = -b F Δt k`, so `F Δt = m v` and `-b F Δt = I_z w` (the other four read
+/// `0 = 0`).
+///
+/// ```
+/// use kinetics::mechanics::impulse_momentum::{impulse_momentum, ImpulseMomentum};
+/// use kinetics::{parse_expression, Expr, Vector};
+///
+/// let hand = |t: &str| parse_expression("by hand", t).unwrap();
+/// let vector = |x: &str, y: &str, z: &str| Vector::new(hand(x), hand(y), hand(z));
+/// let rest = vector("0", "0", "0");
+/// let d = impulse_momentum(&ImpulseMomentum {
+///     mass: &hand("m"),
+///     velocity_before: &rest,
+///     velocity_after: &vector("v", "0", "0"),
+///     angular_momentum_before: &rest,
+///     angular_momentum_after: &vector("0", "0", "I_z w"),
+///     linear_impulse: &vector("F Dt", "0", "0"),
+///     angular_impulse: &vector("0", "0", "-b F Dt"),
+/// })?;
+/// let residuals: Vec<Expr> = d.result().iter().map(|r| r.residual()).collect();
+/// assert_eq!(residuals, [hand("F Dt - m v"), hand("-b F Dt - I_z w")]);
+/// # Ok::<(), kinetics::AlgebraError>(())
+/// ```
 pub fn impulse_momentum(p: &ImpulseMomentum) -> Result<Derivation, AlgebraError> {
     let linear_before = expand_each(&(p.velocity_before.map(|v| p.mass * &v) + p.linear_impulse))?;
     let linear_after = expand_each(&p.velocity_after.map(|v| p.mass * &v))?;

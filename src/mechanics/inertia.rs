@@ -54,6 +54,16 @@ impl InertiaTensor {
     }
 
     /// `[I]` with the chapter's signs.
+    ///
+    /// ```
+    /// use kinetics::{Expr, InertiaTensor};
+    ///
+    /// let matrix = InertiaTensor::general().matrix();
+    /// let minus_i_xy = -Expr::symbol("I_xy");
+    /// assert_eq!((&matrix[(0, 1)], &matrix[(1, 0)]), (&minus_i_xy, &minus_i_xy));
+    /// assert_eq!(matrix[(2, 2)], Expr::symbol("I_z"));
+    /// assert_eq!(matrix[(1, 2)], -Expr::symbol("I_yz"));
+    /// ```
     pub fn matrix(&self) -> Matrix {
         let [ix, iy, iz] = self.moments.clone();
         let [ixy, iyz, ixz] = self.products.clone().map(|p| -p);
@@ -80,6 +90,27 @@ impl InertiaTensor {
 
     /// The tensor in axes whose directions are the rows of `rotation`: `R [I] Rᵀ`, each
     /// component expanded. Fails when a component's expansion is over the bound.
+    ///
+    /// A quarter turn about z, new axes `x' = y`, `y' = -x`, `z' = z`: the moments about x
+    /// and y swap, and `I_x'y' = ∫y(-x) dm = -I_xy`, `I_y'z' = ∫(-x)z dm = -I_xz`,
+    /// `I_x'z' = ∫yz dm = I_yz`.
+    ///
+    /// ```
+    /// use kinetics::{Expr, InertiaTensor, Matrix};
+    ///
+    /// let (o, l) = (Expr::zero(), Expr::one());
+    /// #[rustfmt::skip]
+    /// let quarter_turn = Matrix::new(
+    ///     o.clone(), l.clone(), o.clone(),
+    ///     -&l,       o.clone(), o.clone(),
+    ///     o.clone(), o.clone(), l.clone(),
+    /// );
+    /// let turned = InertiaTensor::general().rotated(&quarter_turn)?;
+    /// assert_eq!(turned.moments, ["I_y", "I_x", "I_z"].map(Expr::symbol));
+    /// let s = Expr::symbol;
+    /// assert_eq!(turned.products, [-s("I_xy"), -s("I_xz"), s("I_yz")]);
+    /// # Ok::<(), kinetics::AlgebraError>(())
+    /// ```
     pub fn rotated(&self, rotation: &Matrix) -> Result<InertiaTensor, AlgebraError> {
         let m = rotation * self.matrix() * rotation.transpose();
         let expanded: Vec<Expr> = m.iter().map(Expr::expand).collect::<Result<_, _>>()?;
@@ -89,6 +120,25 @@ impl InertiaTensor {
     /// Moves a centroidal tensor to axes through a point O, parallel to the centroidal
     /// ones, where `centroid` is the position of G from O:
     /// `I_x = Ī_x + m(ȳ² + z̄²)`, `I_xy = Ī_xy + m x̄ ȳ`, and cyclically.
+    ///
+    /// A solid sphere (`Ī = 2/5 m r²` about every centroidal axis) whose centre is at
+    /// `(a, b, 0)` from O: `I_x = Ī + m b²`, `I_y = Ī + m a²`, `I_z = Ī + m(a² + b²)`,
+    /// `I_xy = m a b`, `I_yz = I_xz = 0`.
+    ///
+    /// ```
+    /// use kinetics::{parse_expression, Expr, InertiaTensor, Vector};
+    ///
+    /// let hand = |t: &str| parse_expression("by hand", t).unwrap().expand().unwrap();
+    /// let sphere = InertiaTensor::diagonal([(); 3].map(|_| hand("2/5 m r^2")));
+    /// let centre = Vector::new(Expr::symbol("a"), Expr::symbol("b"), Expr::zero());
+    /// let about_o = sphere.parallel_axis(&Expr::symbol("m"), &centre);
+    /// let expanded = |c: [Expr; 3]| c.map(|e| e.expand().unwrap());
+    /// assert_eq!(
+    ///     expanded(about_o.moments),
+    ///     ["2/5 m r^2 + m b^2", "2/5 m r^2 + m a^2", "2/5 m r^2 + m (a^2 + b^2)"].map(hand)
+    /// );
+    /// assert_eq!(expanded(about_o.products), ["m a b", "0", "0"].map(hand));
+    /// ```
     pub fn parallel_axis(&self, mass: &Expr, centroid: &Vector) -> InertiaTensor {
         let [x, y, z] = [&centroid[0], &centroid[1], &centroid[2]];
         let sq = |a: &Expr| a * a;

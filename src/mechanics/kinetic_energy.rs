@@ -14,6 +14,23 @@ use crate::algebra::{AlgebraError, Axis, Expr, Vector};
 
 /// `T = ½ m v̄² + ½ ωᵀ[I]ω`; `translation` is `Some((m, v̄))` for a free body, `None` for a
 /// body about a fixed point.
+///
+/// A disk rolling in a plane, principal axes, `v̄ = v i`, `ω = w k`: `T = ½ m v² + ½ I_z w²`;
+/// about a fixed point the translational part is left out.
+///
+/// ```
+/// use kinetics::{kinetic_energy, parse_expression, Expr, InertiaTensor, Vector};
+///
+/// let vbar = Vector::new(Expr::symbol("v"), Expr::zero(), Expr::zero());
+/// let omega = Vector::new(Expr::zero(), Expr::zero(), Expr::symbol("w"));
+/// let (inertia, m) = (InertiaTensor::principal(), Expr::symbol("m"));
+/// let hand = |t: &str| parse_expression("by hand", t).unwrap();
+/// let free = kinetic_energy(&inertia, &omega, Some((&m, &vbar)))?;
+/// assert_eq!(free.result()[0].rhs, hand("1/2 m v^2 + 1/2 I_z w^2"));
+/// let about_o = kinetic_energy(&inertia, &omega, None)?;
+/// assert_eq!(about_o.result()[0].rhs, hand("1/2 I_z w^2"));
+/// # Ok::<(), kinetics::AlgebraError>(())
+/// ```
 pub fn kinetic_energy(
     inertia: &InertiaTensor,
     omega: &Vector,

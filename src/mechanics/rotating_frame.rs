@@ -17,6 +17,27 @@ use crate::algebra::{AlgebraError, Vector};
 
 /// `Ḣ = [I]{ω̇} + Ω × ([I]{ω})`. `omega_dot` holds the rates of the components of ω as
 /// seen in the rotating frame; `frame_rate` is Ω.
+///
+/// The gyroscopic moment: a rotor spinning steadily at `w_z` about its axis z while the frame
+/// turns at `Omega_x` about x. `(Ḣ)_Gxyz = 0` and `Ω × H = Omega_x i × I_z w_z k`, so
+/// `Ḣ = -I_z Omega_x w_z j` (`i × k = -j`).
+///
+/// ```
+/// use kinetics::mechanics::rotating_frame::rate_of_angular_momentum;
+/// use kinetics::{parse_expression, Expr, InertiaTensor, Vector};
+///
+/// let hand = |t: &str| parse_expression("by hand", t).unwrap();
+/// let vector = |x: &str, y: &str, z: &str| Vector::new(hand(x), hand(y), hand(z));
+/// let hdot = rate_of_angular_momentum(
+///     &InertiaTensor::principal(),
+///     &vector("0", "0", "w_z"),
+///     &vector("0", "0", "0"),
+///     &vector("Omega_x", "0", "0"),
+/// )?;
+/// let components: Vec<&Expr> = hdot.result().iter().map(|r| &r.rhs).collect();
+/// assert_eq!(components, [&hand("0"), &hand("-I_z Omega_x w_z"), &hand("0")]);
+/// # Ok::<(), kinetics::AlgebraError>(())
+/// ```
 pub fn rate_of_angular_momentum(
     inertia: &InertiaTensor,
     omega: &Vector,

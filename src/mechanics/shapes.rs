@@ -51,6 +51,21 @@ impl Shape {
     /// The centroidal tensor of this shape with mass `m`, in the shape's own axes, each
     /// moment expanded. Fails when a moment's expansion is over the bound (dimensions given
     /// as large powers of sums).
+    ///
+    /// ```
+    /// use kinetics::mechanics::shapes::Shape;
+    /// use kinetics::{parse_expression, Expr};
+    ///
+    /// // A solid cylinder: m r²/2 about its axis x, m(3r² + h²)/12 across it.
+    /// let (r, h) = (Expr::symbol("r"), Expr::symbol("h"));
+    /// let cylinder = Shape::SolidCylinder { radius: r, length: h };
+    /// let inertia = cylinder.centroidal_inertia(&Expr::symbol("m"))?;
+    /// let hand = |t: &str| parse_expression("by hand", t).unwrap().expand().unwrap();
+    /// let across = hand("m (3 r^2 + h^2)/12");
+    /// assert_eq!(inertia.moments, [hand("m r^2/2"), across.clone(), across]);
+    /// assert!(inertia.is_principal());
+    /// # Ok::<(), kinetics::AlgebraError>(())
+    /// ```
     pub fn centroidal_inertia(&self, m: &Expr) -> Result<InertiaTensor, AlgebraError> {
         let q = |n: i64, d: i64| Expr::rational(n, d) * m;
         let sq = |e: &Expr| e.powi(2);

@@ -59,6 +59,29 @@ struct Analyser<'a> {
 }
 
 /// Runs the analysis for the scene's requests.
+///
+/// A sphere spinning at w about z, asked only for its kinetic energy:
+/// `T = ½ (2/5 m r²) w² = 1/5 m r² w²`, and the plan derives no rate of angular momentum.
+///
+/// ```
+/// use kinetics::{analyse, parse_expression, parse_scene, Value};
+///
+/// let scene = parse_scene(
+///     "sphere.scene",
+///     "given m : kg
+/// given r : m
+/// given w : rad/s
+/// body sphere(r) mass m
+/// vbar = 0
+/// omega = w*k
+/// find T",
+/// )?;
+/// let analysis = analyse(&scene)?;
+/// let (_, Value::Scalar(t)) = &analysis.results[0] else { panic!("T is a scalar") };
+/// assert_eq!(*t, parse_expression("by hand", "1/5 m r^2 w^2")?);
+/// assert!(analysis.plan.iter().all(|step| !step.title.contains('Ḣ')));
+/// # Ok::<(), kinetics::Diagnostic>(())
+/// ```
 pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
     let mut a = Analyser::new(scene);
     let mut results = Vec::new();

@@ -104,6 +104,37 @@ fn torque(scene: &Scene, moment: &Vector) -> Result<Torque<f64>, Diagnostic> {
 }
 
 /// The initial-value problem of the scene's body, starting at rest orientation at t = 0.
+///
+/// A sphere of 5 kg and radius 0.1 m: `I = 2/5 m r² = 0.02 kg·m²` about every axis. A couple
+/// `M j` and a force `F i` at `r j` from its centre give `ΣM_G = M j + r j × F i =
+/// (0, M, -r F) = (0, 3, -1) N·m`.
+///
+/// ```
+/// use kinetics::scene::simulation::problem;
+/// use kinetics::{parse_scene, BodyInertia, Torque};
+///
+/// let scene = parse_scene(
+///     "sphere.scene",
+///     "given m = 5 kg
+/// given r = 0.1 m
+/// given w = 2 rad/s
+/// given M = 3 N*m
+/// given F = 10 N
+/// body sphere(r) mass m
+/// vbar = 0
+/// omega = w*k
+/// couple M*j
+/// force P = F*i at (0, r, 0)
+/// find T",
+/// )?;
+/// let p = problem(&scene)?;
+/// let BodyInertia::Tensor(tensor) = p.inertia else { panic!("the full tensor") };
+/// assert!((tensor - nalgebra::Matrix3::identity() * 0.02).abs().max() < 1e-15);
+/// assert_eq!(p.initial.omega, nalgebra::Vector3::new(0.0, 0.0, 2.0));
+/// let Torque::Body(moment) = p.torque else { panic!("a constant moment") };
+/// assert!((moment - nalgebra::Vector3::new(0.0, 3.0, -1.0)).norm() < 1e-15);
+/// # Ok::<(), kinetics::Diagnostic>(())
+/// ```
 pub fn problem(scene: &Scene) -> Result<Problem<f64>, Diagnostic> {
     let MassProperties {
         centroid, inertia, ..

@@ -198,6 +198,33 @@ fn latex_text(s: &str) -> String {
 }
 
 /// Renders the worked solution in the chosen format; `standalone` LaTeX is a whole document.
+///
+/// A sphere spinning about z: `T = 1/5 m r² w² = 1/5 · 5 · 0.1² · 2² = 0.04 J`.
+///
+/// ```
+/// use kinetics::{analyse, parse_scene, render, Format};
+///
+/// let scene = parse_scene(
+///     "sphere.scene",
+///     "given m = 5 kg
+/// given r = 0.1 m
+/// given w = 2 rad/s
+/// body sphere(r) mass m
+/// vbar = 0
+/// omega = w*k
+/// find T",
+/// )?;
+/// let analysis = analyse(&scene)?;
+/// let json = render(&scene, &analysis, Format::Json, false);
+/// let t = &serde_json::from_str::<serde_json::Value>(&json)?["results"][0];
+/// assert_eq!(t["name"], "T");
+/// assert_eq!(t["text"], "1/5*m*r^2*w^2");
+/// assert_eq!(t["unit"], "J");
+/// assert!((t["value"].as_f64().unwrap() - 0.04).abs() < 1e-12);
+/// let latex = render(&scene, &analysis, Format::Latex, false);
+/// assert!(latex.contains(r"T &= \frac{1}{5} m r^2 \omega^2 = 0.04\ \mathrm{J}"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bool) -> String {
     let dims = scene_dimensions(scene);
     let results = results(scene, analysis, &dims);

@@ -80,6 +80,64 @@ fn exact(problem: &Problem<f64>) -> Result<Box<dyn Propagator<f64> + '_>, Numeri
 }
 
 /// Simulates with the chosen method; `Auto` takes the exact solution for a torque-free body.
+///
+/// A torque-free symmetric body, `I = (1, 1, 2)`, `ω₀ = (1, 0, 1)`: Euler's equations give
+/// `ω̇_z = 0`, `ω̇_x = -ω_y`, `ω̇_y = ω_x`, so `ω = (cos t, sin t, 1)`; `|H| = √(1 + 4)` and
+/// `T = ½(1 + 2) = 1.5` stay constant.
+///
+/// ```
+/// use kinetics::{
+///     simulate_choice, BodyInertia, Choice, MethodUsed, Problem, RigidBodyState, Sample, Sampling,
+///     Torque,
+/// };
+/// use nalgebra::{UnitQuaternion, Vector3};
+///
+/// let problem = Problem {
+///     inertia: BodyInertia::Principal(Vector3::new(1.0, 1.0, 2.0)),
+///     torque: Torque::None,
+///     initial: RigidBodyState::new(Vector3::new(1.0, 0.0, 1.0), UnitQuaternion::identity()),
+///     start_time: 0.0,
+/// };
+/// let times = Sampling::Times(vec![0.0, std::f64::consts::FRAC_PI_2, std::f64::consts::PI]);
+/// let mut samples = Vec::new();
+/// let mut sink = |s: Sample<f64>| samples.push(s);
+/// let auto = Choice::Auto { rtol: 1e-10 };
+/// let (_, used) = simulate_choice(&problem, &auto, &times, &mut sink, &mut |_| {})?;
+/// assert_eq!(used, MethodUsed::Exact);
+/// for (s, omega) in samples.iter().zip([(1.0, 0.0, 1.0), (0.0, 1.0, 1.0), (-1.0, 0.0, 1.0)]) {
+///     assert!((s.omega - Vector3::new(omega.0, omega.1, omega.2)).norm() < 1e-12);
+///     assert!((s.angular_momentum_magnitude - 5f64.sqrt()).abs() < 1e-12);
+///     assert!((s.kinetic_energy - 1.5).abs() < 1e-12);
+/// }
+/// # Ok::<(), kinetics::NumericError>(())
+/// ```
+///
+/// Under a moment `Auto` integrates. A constant `M = 2 k` on a body with `I = (2, 3, 4)`
+/// spinning at `ω₀ = k` about a principal axis: `I_z ω̇_z = M`, so `ω_z = 1 + t/2`.
+///
+/// ```
+/// use kinetics::{
+///     simulate_choice, BodyInertia, Choice, MethodUsed, Problem, RigidBodyState, Sample, Sampling,
+///     Torque,
+/// };
+/// use nalgebra::{UnitQuaternion, Vector3};
+///
+/// let problem = Problem {
+///     inertia: BodyInertia::Principal(Vector3::new(2.0, 3.0, 4.0)),
+///     torque: Torque::Body(Vector3::new(0.0, 0.0, 2.0)),
+///     initial: RigidBodyState::new(Vector3::z(), UnitQuaternion::identity()),
+///     start_time: 0.0,
+/// };
+/// let mut worst: f64 = 0.0;
+/// let exact = |t: f64| Vector3::new(0.0, 0.0, 1.0 + t / 2.0);
+/// let mut sink = |s: Sample<f64>| worst = worst.max((s.omega - exact(s.t)).norm());
+/// let every = Sampling::Every { interval: 0.5, end: 2.0 };
+/// let auto = Choice::Auto { rtol: 1e-10 };
+/// let (statistics, used) = simulate_choice(&problem, &auto, &every, &mut sink, &mut |_| {})?;
+/// assert_eq!((used, statistics.samples), (MethodUsed::Integrator, 5));
+/// assert!(worst < 1e-9);
+/// # Ok::<(), kinetics::NumericError>(())
+/// ```
 pub fn simulate_choice<K: SampleSink<f64> + ?Sized>(
     problem: &Problem<f64>,
     choice: &Choice,

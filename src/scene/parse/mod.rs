@@ -21,6 +21,30 @@ pub const TIME: &str = "t";
 struct SceneGrammar;
 
 /// Parses and checks a scene file.
+///
+/// Values are kept in SI (`100 mm` is 0.1 m); an error says where it is and what to do.
+///
+/// ```
+/// use kinetics::algebra::Symbol;
+/// use kinetics::parse_scene;
+///
+/// let scene = parse_scene(
+///     "sphere.scene",
+///     "given m = 5 kg
+/// given r = 100 mm
+/// body sphere(r) mass m
+/// find T",
+/// )?;
+/// assert_eq!(scene.value(Symbol::new("r")), Some(0.1));
+/// assert_eq!(scene.parts.len(), 1);
+///
+/// let error = parse_scene("sphere.scene", "given m = 5 kg\nbody sphere(r) mass m\nfind T");
+/// let error = error.unwrap_err();
+/// assert_eq!((error.line, error.column), (2, 13));
+/// assert_eq!(error.message, "unknown symbol r");
+/// assert!(error.help.is_some_and(|help| help.contains("given r")));
+/// # Ok::<(), kinetics::Diagnostic>(())
+/// ```
 pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic> {
     crate::parse::limits::check_input(source_name, source)?;
     // Error detail records the furthest place the grammar reached and what it expected there.

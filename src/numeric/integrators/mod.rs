@@ -2,7 +2,7 @@
 //!
 //! - `ode.rs`: the system `ẏ = f(t, y)` as the explicit integrators see it
 //! - `rk4.rs`: classical Runge–Kutta, fixed step
-//! - `dop853.rs`: Dormand–Prince 8(5,3), adaptive step, dense output
+//! - `dop853/`: Dormand–Prince 8(5,3), adaptive step, dense output
 //! - `splitting.rs`: Lie–Poisson splitting of the rigid body, exact rotations
 //! - `reference.rs`: order-30 Taylor integrator in double-double (the reference)
 //! - `harmonic_moment.rs`: a moment whose Taylor series is exact, for the reference

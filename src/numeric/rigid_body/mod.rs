@@ -6,7 +6,7 @@
 //! - `torque.rs`: the applied moment and what it depends on
 //! - `euler_rhs.rs`: Euler's equations and `q̇ = ½ q ⊗ (0, ω)` as a right-hand side
 //! - `torque_free.rs`: exact torque-free motion (Euler–Poinsot), all regimes
-//! - `elliptic.rs`: Jacobi elliptic functions and Carlson's integrals it uses
+//! - `elliptic/`: Jacobi elliptic functions and Carlson's integrals it uses
 //! - `simulate.rs`: one driver for every method: validation, sampling, streaming
 //! - `exact_propagation.rs`: the exact method and `auto`
 //! - `sample_sink.rs`: where samples go (memory stays flat)

@@ -1,0 +1,65 @@
+//! Tolerances and step budget of DOP853: the relative and absolute tolerances of the weights
+//! `sᵢ = atol + rtol · max(|yᵢ|, |y₁ᵢ|)` the error estimate is measured in, and the most steps
+//! one integration may take. `rtol ≥ 10 ε` (a tighter tolerance is below the rounding of
+//! the step itself), `atol ≥ 0`.
+
+use crate::numeric::error::NumericError;
+use crate::numeric::integrators::ode::{constant, to_f64};
+use nalgebra::RealField;
+
+/// Default budget of steps (accepted and rejected) of one integration.
+pub const DEFAULT_MAX_STEPS: usize = 10_000_000;
+
+/// Tolerances and step budget of [`Dop853`](super::Dop853).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dop853Settings<T> {
+    /// Relative tolerance; at least 10 machine epsilons of the scalar.
+    pub rtol: T,
+    /// Absolute tolerance, non-negative.
+    pub atol: T,
+    /// Most steps (accepted and rejected) one integration may take.
+    pub max_steps: usize,
+}
+
+impl<T: RealField + Copy> Dop853Settings<T> {
+    /// Tolerances with the [`DEFAULT_MAX_STEPS`] budget.
+    pub fn new(rtol: T, atol: T) -> Self {
+        Self {
+            rtol,
+            atol,
+            max_steps: DEFAULT_MAX_STEPS,
+        }
+    }
+
+    /// Checks the tolerances: `rtol ≥ 10 ε` and finite, `atol ≥ 0` and finite, at least
+    /// one step allowed.
+    pub fn validate(&self) -> Result<(), NumericError> {
+        let invalid = |what: &str, reason: String| {
+            Err(NumericError::InvalidInput {
+                what: what.to_string(),
+                reason,
+            })
+        };
+        let smallest_rtol = T::default_epsilon() * constant(10.0);
+        if !self.rtol.is_finite() || self.rtol < smallest_rtol {
+            return invalid(
+                "rtol",
+                format!(
+                    "{} must be finite and at least 10 machine epsilons ({:e})",
+                    to_f64(self.rtol),
+                    to_f64(smallest_rtol)
+                ),
+            );
+        }
+        if !self.atol.is_finite() || self.atol < T::zero() {
+            return invalid(
+                "atol",
+                format!("{} must be finite and non-negative", to_f64(self.atol)),
+            );
+        }
+        if self.max_steps == 0 {
+            return invalid("max_steps", "at least one step must be allowed".to_string());
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,40 @@
+//! The stages of a DOP853 step from `(t, y)` of size `h`:
+//!
+//! ```text
+//! kᵢ = f(t + cᵢh, y + h Σⱼ aᵢⱼ kⱼ)
+//! ```
+//!
+//! with the coefficients of [`tableau`](super::tableau); the point of the row of the weights
+//! `bⱼ` is the eighth-order solution `y₁`.
+
+use super::tableau::{A, C};
+use super::Dop853;
+use crate::numeric::integrators::ode::{constant, OdeSystem};
+use nalgebra::{RealField, SVector};
+
+impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
+    /// `y + h Σⱼ aᵢⱼ kⱼ` for stage `i` of a step of size `h` from `y`.
+    pub(super) fn stage_point(&self, stage: usize, y: &SVector<T, N>, h: T) -> SVector<T, N> {
+        let mut sum = SVector::<T, N>::zeros();
+        for &(j, a) in A[stage] {
+            sum += self.stages[j] * constant::<T>(a);
+        }
+        y + sum * h
+    }
+
+    /// Evaluates the stages `range` of a step of size `h` from `(t, y)`.
+    pub(super) fn evaluate_stages<S: OdeSystem<T, N> + ?Sized>(
+        &mut self,
+        system: &S,
+        range: std::ops::Range<usize>,
+        t: T,
+        y: &SVector<T, N>,
+        h: T,
+    ) {
+        self.statistics.evaluations += range.len();
+        for stage in range {
+            let point = self.stage_point(stage, y, h);
+            self.stages[stage] = system.derivative(t + constant::<T>(C[stage]) * h, &point);
+        }
+    }
+}

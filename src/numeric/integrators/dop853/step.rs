@@ -1,0 +1,102 @@
+//! One accepted step of DOP853 and the step-size controller (Hairer, Nørsett & Wanner,
+//! *Solving Ordinary Differential Equations I*, 2nd ed., sections II.4 and II.10):
+//!
+//! ```text
+//! accept when err ≤ 1;   h_next = h / clamp(err^⅛ / 0.9, 1/6, 3)
+//! ```
+//!
+//! after a rejection the next step may not grow, and a rejected step is retried with
+//! `h / min(err^⅛ / 0.9, 3)` (the largest cut for a non-finite estimate). The last step ends
+//! exactly at `t_end`; the derivative at the end of an accepted step is the first stage of
+//! the next (FSAL).
+
+use super::tableau::STAGES;
+use super::Dop853;
+use crate::numeric::error::NumericError;
+use crate::numeric::integrators::ode::{constant, to_f64, OdeSystem};
+use nalgebra::RealField;
+
+/// Step-size controller: safety factor and the bounds of the step-size ratio.
+const SAFETY: f64 = 0.9;
+const MIN_RATIO: f64 = 1.0 / 3.0;
+const MAX_RATIO: f64 = 6.0;
+
+impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
+    /// Takes one accepted step, never past the end time; rejected attempts are retried
+    /// with a smaller step.
+    pub fn step<S: OdeSystem<T, N> + ?Sized>(&mut self, system: &S) -> Result<(), NumericError> {
+        if self.t >= self.t_end {
+            return Err(NumericError::InvalidInput {
+                what: "step".to_string(),
+                reason: format!(
+                    "the integration already reached its end {}",
+                    to_f64(self.t_end)
+                ),
+            });
+        }
+        self.dense = None;
+        self.stages[0] = self.derivative;
+        let uround = T::default_epsilon();
+        loop {
+            let attempts = self.statistics.accepted_steps + self.statistics.rejected_steps;
+            if attempts >= self.settings.max_steps {
+                return Err(NumericError::StepLimit {
+                    max_steps: self.settings.max_steps,
+                    t: to_f64(self.t),
+                });
+            }
+            let resolvable = self.step.abs() * constant(0.1) > self.t.abs() * uround;
+            if !resolvable || !self.step.is_finite() {
+                return Err(NumericError::StepSizeUnderflow {
+                    t: to_f64(self.t),
+                    step: to_f64(self.step),
+                });
+            }
+            let remaining = self.t_end - self.t;
+            let last = self.step * constant(1.01) >= remaining;
+            let h = if last { remaining } else { self.step };
+            let (t, y) = (self.t, self.y);
+            self.evaluate_stages(system, 1..STAGES, t, &y, h);
+            let mut y_new = self.stage_point(STAGES, &y, h);
+            let error = self.error_norm(&y_new, h);
+            // err^⅛ as three square roots, much cheaper than a power.
+            let error_root = error.sqrt().sqrt().sqrt();
+            if error <= T::one() {
+                let ratio = (error_root / constant(SAFETY))
+                    .max(constant(1.0 / MAX_RATIO))
+                    .min(constant(1.0 / MIN_RATIO));
+                let mut next = h / ratio;
+                if self.last_rejected {
+                    next = next.min(h);
+                }
+                system.project(&mut y_new);
+                let t_new = if last { self.t_end } else { self.t + h };
+                let derivative = system.derivative(t_new, &y_new);
+                self.statistics.evaluations += 1;
+                self.statistics.accepted_steps += 1;
+                self.stages[STAGES] = derivative;
+                self.t_old = self.t;
+                self.y_old = self.y;
+                self.last_step = h;
+                self.t = t_new;
+                self.y = y_new;
+                self.derivative = derivative;
+                self.step = next;
+                self.last_rejected = false;
+                if !y_new.iter().all(|v| v.is_finite()) {
+                    return Err(NumericError::NonFinite { t: to_f64(t_new) });
+                }
+                return Ok(());
+            }
+            // Rejected (a non-finite estimate counts as a failure by the largest factor).
+            let ratio = if error.is_finite() {
+                (error_root / constant(SAFETY)).min(constant(1.0 / MIN_RATIO))
+            } else {
+                constant(1.0 / MIN_RATIO)
+            };
+            self.step = h / ratio;
+            self.last_rejected = true;
+            self.statistics.rejected_steps += 1;
+        }
+    }
+}

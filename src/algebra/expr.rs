@@ -671,18 +671,6 @@ impl Hash for Expr {
     }
 }
 
-impl std::fmt::Debug for Expr {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&crate::print::text(self))
-    }
-}
-
-impl std::fmt::Display for Expr {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&crate::print::text(self))
-    }
-}
-
 impl From<Symbol> for Expr {
     fn from(s: Symbol) -> Expr {
         Expr::sym(s)

@@ -4,6 +4,8 @@
 
 use super::integer;
 use super::layout::{Integer, Layout, Node, NodeId, Number, Product, Span};
+use crate::algebra::Expr;
+use std::fmt;
 
 /// Appends a signed layout to `out`.
 pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
@@ -121,5 +123,20 @@ fn product(out: &mut String, layout: &Layout, p: &Product) {
     factors(out, layout, shown, p.denominator);
     if grouped {
         out.push(')');
+    }
+}
+
+/// An expression shows as its plain text, `{}` and `{:?}` alike (assertion failures then
+/// read as the maths). The impls live with the printer: algebra, the bottom layer, uses
+/// no other part of the crate.
+impl fmt::Display for Expr {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&super::text(self))
+    }
+}
+
+impl fmt::Debug for Expr {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(self, f)
     }
 }

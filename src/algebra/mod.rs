@@ -23,6 +23,7 @@ mod rational;
 mod subs;
 mod sum_of_products;
 mod symbol;
+mod traversal;
 pub mod vector;
 pub mod vector_products;
 

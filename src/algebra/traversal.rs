@@ -1,0 +1,49 @@
+//! Walks that read an expression without rebuilding it: its size in nodes (the measure the
+//! size limits use), whether a symbol occurs in it, and the set of its symbols.
+
+use super::expr::{Expr, View};
+use super::symbol::Symbol;
+
+impl Expr {
+    /// Number of nodes in the tree (a measure of size, for limits).
+    pub fn node_count(&self) -> usize {
+        match self.view() {
+            View::Num(_) | View::Sym(_) => 1,
+            View::Add(xs) | View::Mul(xs) => 1 + xs.iter().map(Expr::node_count).sum::<usize>(),
+            View::Pow(b, e) => 1 + b.node_count() + e.node_count(),
+            View::Func(_, a) => 1 + a.node_count(),
+        }
+    }
+
+    /// Whether `s` occurs anywhere in the expression.
+    pub fn contains(&self, s: Symbol) -> bool {
+        match self.view() {
+            View::Num(_) => false,
+            View::Sym(t) => t == s,
+            View::Add(xs) | View::Mul(xs) => xs.iter().any(|x| x.contains(s)),
+            View::Pow(b, e) => b.contains(s) || e.contains(s),
+            View::Func(_, a) => a.contains(s),
+        }
+    }
+
+    /// The symbols in the expression, sorted by name, each once.
+    pub fn symbols(&self) -> Vec<Symbol> {
+        fn walk(e: &Expr, out: &mut Vec<Symbol>) {
+            match e.view() {
+                View::Num(_) => {}
+                View::Sym(s) => out.push(s),
+                View::Add(xs) | View::Mul(xs) => xs.iter().for_each(|x| walk(x, out)),
+                View::Pow(b, x) => {
+                    walk(b, out);
+                    walk(x, out);
+                }
+                View::Func(_, a) => walk(a, out),
+            }
+        }
+        let mut out = Vec::new();
+        walk(self, &mut out);
+        out.sort();
+        out.dedup();
+        out
+    }
+}

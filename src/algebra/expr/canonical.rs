@@ -195,6 +195,7 @@ impl Expr {
     }
 
     /// The canonical sum of terms in canonical order with distinct monomials, none zero.
+    #[inline]
     pub(in crate::algebra) fn sum_of_sorted<T: Borrow<Expr>>(terms: &[T]) -> Expr {
         match terms {
             [] => Expr::zero(),

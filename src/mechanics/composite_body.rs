@@ -10,17 +10,8 @@
 //! integrals `∫xy dm` throughout.
 
 use super::derivation::{Derivation, Relation, Step};
-use super::inertia::InertiaTensor;
+use super::inertia::{InertiaTensor, MassPart};
 use crate::algebra::{AlgebraError, Axis, Expr, Vector};
-
-/// A part of a body: its mass, the position of its mass centre from O, and its centroidal
-/// inertia in the frame's axes.
-#[derive(Debug, Clone, PartialEq)]
-pub struct MassPart {
-    pub mass: Expr,
-    pub position: Vector,
-    pub inertia: InertiaTensor,
-}
 
 /// The body as a whole: mass, position of the mass centre G from O, inertia about G.
 #[derive(Debug, Clone, PartialEq)]
@@ -39,7 +30,7 @@ pub struct MassProperties {
 /// `I_z = m(a² + b²)/2` and `I_xy = Σ m x y = 2m(a/2)(-b/2) = -m a b/2`.
 ///
 /// ```
-/// use kinetics::mechanics::composite_body::{composite_body, MassPart};
+/// use kinetics::mechanics::{composite_body::composite_body, inertia::MassPart};
 /// use kinetics::{parse_expression, Expr, InertiaTensor, Vector};
 ///
 /// let hand = |t: &str| parse_expression("by hand", t).unwrap().expand().unwrap();

@@ -14,7 +14,6 @@
 //! `I_x = Ī_x + m(ȳ² + z̄²)`, `I_xy = Ī_xy + m x̄ ȳ`; composite bodies add tensors about a
 //! common point.
 
-use super::composite_body::MassPart;
 use crate::algebra::{AlgebraError, Expr, Matrix, Vector};
 
 /// An inertia tensor by its six components: products of inertia are the positive integrals
@@ -25,6 +24,15 @@ pub struct InertiaTensor {
     pub moments: [Expr; 3],
     /// `[I_xy, I_yz, I_xz]` (positive-integral convention).
     pub products: [Expr; 3],
+}
+
+/// A part of a body: its mass, the position of its mass centre from O, and its centroidal
+/// inertia in the frame's axes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MassPart {
+    pub mass: Expr,
+    pub position: Vector,
+    pub inertia: InertiaTensor,
 }
 
 impl InertiaTensor {

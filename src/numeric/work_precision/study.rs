@@ -6,7 +6,7 @@
 //! closed form or the integrators; the forced bodies (a constant moment, and a moment
 //! varying in time as a scene's couples do) carry a [`HarmonicMoment`], whose Taylor series
 //! the reference sums exactly. An independent double-double RK4 with Richardson
-//! extrapolation checks the forced truth (`tests/work_precision_forced_truth.rs`). Every
+//! extrapolation checks the forced truth (`tests/suite/work_precision_forced_truth.rs`). Every
 //! method, the splitting included, runs on every body.
 //! Error = max over the sample times of `|Δω|` and of the attitude angle between the
 //! computed and the true orientation.

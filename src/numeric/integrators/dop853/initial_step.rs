@@ -36,7 +36,7 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
     /// `d₂` is about 1e311 s⁻², not representable, and the first step was zero (a step-size
     /// underflow at `t = 0`); at 1e-150 rad/s the start was `1e-6` s against a natural step
     /// near 1e149 s, and climbing to it took about two hundred extra steps (577 instead of
-    /// 379 for the body of `tests/simulate_extreme_momentum.rs`). Here the same rules run in
+    /// 379 for the body of `tests/suite/simulate_extreme_momentum.rs`). Here the same rules run in
     /// the unit `τ`:
     /// * `τ = d₀/d₁`, with `d₀ = ‖y₀‖`: the time in which the initial rate changes the state
     ///   by its own weighted size (Hairer's trial step is `0.01 τ` already);

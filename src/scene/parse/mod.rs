@@ -243,7 +243,8 @@ impl Reader<'_> {
             let request = &self.scene.requests[k];
             let at = (request.span.start, request.span.end);
             let symbol = Symbol::new(&request.name);
-            let declared = if self.scene.is_unknown(symbol) {
+            let is_unknown = self.scene.is_unknown(symbol);
+            let declared = if is_unknown {
                 Some("unknown")
             } else if self.scene.givens.iter().any(|g| g.symbol == symbol) {
                 Some("given")
@@ -252,7 +253,7 @@ impl Reader<'_> {
             };
             let quantity = match (Quantity::named(&request.name), declared) {
                 (Some(q), None) => q,
-                (None, Some("unknown")) => Quantity::Unknown(symbol),
+                (None, _) if is_unknown => Quantity::Unknown(symbol),
                 (Some(q), Some(kind)) => {
                     return Err(self
                         .error(

@@ -124,19 +124,12 @@ impl<'a> Analyser<'a> {
     }
 
     fn fail(&self, at: Span, message: impl Into<String>, help: impl Into<String>) -> Diagnostic {
-        Diagnostic::at(
-            &self.scene.source_name,
-            &self.scene.source,
-            at.start,
-            at.end,
-            message,
-        )
-        .with_help(help)
+        self.scene.error_at(at, message, help)
     }
 
     /// An algebra error met while deriving for the request at `at`.
     fn algebra(&self, at: Span) -> impl Fn(AlgebraError) -> Diagnostic + '_ {
-        move |e| self.fail(at, e.to_string(), "simplify the scene")
+        self.scene.algebra_error_at(at)
     }
 
     /// Records the derivation's steps in the plan and hands back the right-hand sides of its

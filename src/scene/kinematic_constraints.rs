@@ -53,14 +53,7 @@ pub fn solve_error(scene: &Scene, at: Span, e: SolveError) -> Diagnostic {
         SolveError::Inconsistent { .. } => "remove a condition or an unknown that conflicts",
         _ => "unknowns must appear linearly",
     };
-    Diagnostic::at(
-        &scene.source_name,
-        &scene.source,
-        at.start,
-        at.end,
-        e.to_string(),
-    )
-    .with_help(help)
+    scene.error_at(at, e.to_string(), help)
 }
 
 /// Solves the scene's constraints; `centroid` (the mass centre from O) is needed by a
@@ -71,18 +64,7 @@ pub fn solve_constraints(
     centroid: Option<&Vector>,
     at: Span,
 ) -> Result<(SolvedConstraints, Vec<Step>), Diagnostic> {
-    let located = |span: Span| {
-        move |e: AlgebraError| {
-            Diagnostic::at(
-                &scene.source_name,
-                &scene.source,
-                span.start,
-                span.end,
-                e.to_string(),
-            )
-            .with_help("simplify the scene")
-        }
-    };
+    let located = |span: Span| scene.algebra_error_at(span);
     let omega = scene.omega.clone().unwrap_or_else(zero_vector);
     let mut equations: Vec<Expr> = Vec::new();
     // The constraint each equation came from, to locate errors.
@@ -97,14 +79,11 @@ pub fn solve_constraints(
                         velocity_of_point(vbar, &omega, &(point - centroid))
                     }
                     (false, _, _) => {
-                        return Err(Diagnostic::at(
-                            &scene.source_name,
-                            &scene.source,
-                            c.span.start,
-                            c.span.end,
+                        return Err(scene.error_at(
+                            c.span,
                             "a velocity constraint needs the motion of the body",
-                        )
-                        .with_help("add 'fixed point' or 'vbar = ...'"))
+                            "add 'fixed point' or 'vbar = ...'",
+                        ))
                     }
                 }
                 .map_err(located(c.span))?;

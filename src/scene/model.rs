@@ -3,8 +3,9 @@
 //! reference frame; vectors are components in that frame.
 
 use super::units::Dimension;
-use crate::algebra::{Expr, Symbol, Vector};
+use crate::algebra::{AlgebraError, Expr, Symbol, Vector};
 use crate::mechanics::shapes::Shape;
+use crate::parse::Diagnostic;
 
 /// Where a statement stands in the scene file, for diagnostics after parsing.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -184,5 +185,20 @@ impl Scene {
 
     pub fn is_unknown(&self, s: Symbol) -> bool {
         self.unknowns.iter().any(|u| u.0 == s)
+    }
+
+    /// The located error at `at` in the scene's file, with what to do about it.
+    pub fn error_at(
+        &self,
+        at: Span,
+        message: impl Into<String>,
+        help: impl Into<String>,
+    ) -> Diagnostic {
+        Diagnostic::at(&self.source_name, &self.source, at.start, at.end, message).with_help(help)
+    }
+
+    /// For `map_err`: an algebra error met while deriving what the statement at `at` needs.
+    pub fn algebra_error_at(&self, at: Span) -> impl Fn(AlgebraError) -> Diagnostic + '_ {
+        move |e| self.error_at(at, e.to_string(), "simplify the scene")
     }
 }

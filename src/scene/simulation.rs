@@ -5,7 +5,7 @@
 //! splitting included, can integrate it).
 
 use super::analysis::centroidal_body;
-use super::model::Scene;
+use super::model::{Scene, Span};
 use super::parse::TIME;
 use crate::algebra::{Expr, Symbol, Vector};
 use crate::mechanics::composite_body::MassProperties;
@@ -19,7 +19,7 @@ use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 use std::cell::RefCell;
 
 fn whole(scene: &Scene, message: String, help: &str) -> Diagnostic {
-    Diagnostic::at(&scene.source_name, &scene.source, 0, 0, message).with_help(help)
+    scene.error_at(Span::default(), message, help)
 }
 
 fn number(scene: &Scene, e: &Expr, what: &str) -> Result<f64, Diagnostic> {

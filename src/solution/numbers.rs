@@ -41,16 +41,7 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
         let Some((written, unit)) = &request.unit else {
             continue;
         };
-        let fail = |message: String, help: String| {
-            Diagnostic::at(
-                &scene.source_name,
-                &scene.source,
-                request.span.start,
-                request.span.end,
-                message,
-            )
-            .with_help(help)
-        };
+        let fail = |message: String, help: String| scene.error_at(request.span, message, help);
         let components: Vec<&Expr> = match value {
             Value::Scalar(e) => vec![e],
             Value::Vector(v) => v.iter().collect(),

@@ -24,4 +24,13 @@ pub enum AlgebraError {
     TimeDependentExponent(String),
     #[error("{0}")]
     NotAVector(String),
+    #[error("the exponent {0} is out of range: its power cannot be multiplied out")]
+    ExponentOutOfRange(String),
+    /// An exact number past [`crate::algebra::MAX_DIGITS`] decimal digits.
+    #[error("{what} would have about {digits} digits, more than the limit of {limit}")]
+    NumberTooLarge {
+        what: String,
+        digits: u64,
+        limit: u64,
+    },
 }

@@ -13,6 +13,7 @@
 use super::error::{AlgebraError, MAX_EXPANDED_TERMS};
 use super::expr::{Expr, Operands, View};
 use super::merge;
+use super::rational::Q;
 use smallvec::SmallVec;
 use std::borrow::Cow;
 
@@ -39,16 +40,9 @@ impl Expr {
             }
             View::Pow(base, exponent) => {
                 let base = base.expand()?;
-                let n = exponent.as_num().and_then(|q| q.to_i64());
-                match n {
-                    Some(n) if n > 1 && base.terms().len() > 1 => {
-                        let t = base.terms().len();
-                        check_size("the power", multinomial_terms(t, n as u64))?;
-                        let mut result = base.clone();
-                        for _ in 1..n {
-                            result = multiply_out(&result, &base)?;
-                        }
-                        Ok(result)
+                match exponent.as_num() {
+                    Some(n) if n.is_integer() && !n.is_negative() && base.terms().len() > 1 => {
+                        power_of_sum(&base, n)
                     }
                     _ => multiplied_out(base.checked_pow(exponent)?),
                 }
@@ -122,11 +116,6 @@ fn products_of_terms(a: &[Expr], b: &[Expr]) -> Result<Operands, AlgebraError> {
     let mut products = Operands::with_capacity(a.len() * b.len());
     // Two terms of expanded expressions can form a whole power of a sum only if both hold a
     // power of a sum: one flag per term, not a look at every product.
-    let has_power_of_sum = |t: &Expr| {
-        t.monomial()
-            .iter()
-            .any(|f| matches!(f.view(), View::Pow(base, _) if matches!(base.view(), View::Add(_))))
-    };
     let b_powers: SmallVec<[bool; 16]> = b.iter().map(has_power_of_sum).collect();
     for x in a {
         let x_power = has_power_of_sum(x);
@@ -204,6 +193,107 @@ fn multiply_out(a: &Expr, b: &Expr) -> Result<Expr, AlgebraError> {
         a.terms(),
         b.terms(),
     )?))
+}
+
+/// `(x₁ + … + x_t)^n` multiplied out, for an expanded sum of `t ≥ 2` terms and a whole
+/// `n ≥ 2`. Its size is checked first: the number of terms, `C(t + n - 1, n)`, and the
+/// digits of the coefficients, at most `t^n · Π max(|cᵢ|, 1)^n` over numerators and
+/// denominators. A sum of monomials (none holding a power of a sum, which could combine
+/// with another into a whole power to multiply out in turn) is raised by the multinomial
+/// theorem, one term per `k₁ + … + k_t = n`:
+///
+/// `Σ n!/(k₁!⋯k_t!) · Π cᵢ^kᵢ · Π mᵢ^kᵢ` for the terms `xᵢ = cᵢ mᵢ`;
+///
+/// other sums by repeated multiplication.
+fn power_of_sum(base: &Expr, n: &Q) -> Result<Expr, AlgebraError> {
+    let terms = base.terms();
+    let t = terms.len();
+    let Some(n) = n.to_i64().and_then(|n| usize::try_from(n).ok()) else {
+        // n ≥ 2⁶³: more than n terms, far past the limit.
+        return Err(AlgebraError::ExponentOutOfRange(n.to_string()));
+    };
+    check_size("the power", multinomial_terms(t, n as u64))?;
+    let coefficient_bits = terms
+        .iter()
+        .map(|x| {
+            let (num, den) = x.coefficient().bit_lengths();
+            num + den
+        })
+        .max()
+        .unwrap_or(0);
+    let per_factor = coefficient_bits + u64::from(usize::BITS - t.leading_zeros());
+    Q::check_bits(
+        "a coefficient of the expanded power",
+        per_factor.saturating_mul(n as u64),
+    )?;
+    if terms.iter().any(has_power_of_sum) {
+        let mut result = base.clone();
+        for _ in 1..n {
+            result = multiply_out(&result, base)?;
+        }
+        return Ok(result);
+    }
+    let powers: Vec<Vec<(Q, Expr)>> = terms.iter().map(|x| powers_of_term(x, n)).collect();
+    let mut out = Operands::new();
+    push_multinomial_terms(&powers, n, Q::ONE, &mut Vec::new(), &mut out);
+    Ok(Expr::sum_of_terms(&mut out))
+}
+
+/// `cᵏ` and `mᵏ` for `k = 0, …, n`, for the term `c m`.
+fn powers_of_term(x: &Expr, n: usize) -> Vec<(Q, Expr)> {
+    let (c, m) = (x.coefficient(), Expr::term(Q::ONE, x.monomial()));
+    let mut powers = Vec::with_capacity(n + 1);
+    powers.push((Q::ONE, Expr::one()));
+    for k in 1..=n {
+        let coefficient = &powers[k - 1].0 * c;
+        powers.push((coefficient, m.powi(k as i64)));
+    }
+    powers
+}
+
+/// Pushes the terms of the multinomial expansion for the remaining terms' `powers` and
+/// the remaining degree `n`: for the first term each `k` from `n` down to `0`, with the
+/// binomial `C(n, k)` from `C(n, n) = 1` by `C(n, k - 1) = C(n, k) · k / (n - k + 1)`,
+/// times the `scale` and the `factors` chosen so far.
+fn push_multinomial_terms(
+    powers: &[Vec<(Q, Expr)>],
+    n: usize,
+    scale: Q,
+    factors: &mut Vec<Expr>,
+    out: &mut Operands,
+) {
+    let Some((first, rest)) = powers.split_first() else {
+        return;
+    };
+    if rest.is_empty() {
+        let (c, m) = &first[n];
+        factors.push(m.clone());
+        let term =
+            Expr::mul_all(std::iter::once(Expr::num(&scale * c)).chain(factors.iter().cloned()));
+        factors.pop();
+        out.push(term);
+        return;
+    }
+    let mut binomial = Q::ONE;
+    for k in (0..=n).rev() {
+        let (c, m) = &first[k];
+        factors.push(m.clone());
+        let scale = &(&scale * &binomial) * c;
+        push_multinomial_terms(rest, n - k, scale, factors, out);
+        factors.pop();
+        if k > 0 {
+            let step = Q::new(k as i64, (n - k + 1) as i64).expect("n - k + 1 ≥ 1");
+            binomial = &binomial * &step;
+        }
+    }
+}
+
+/// Whether a term holds a power of a sum (`√(a + 1)`): two such may combine into a whole
+/// power of the sum, which is multiplied out in turn.
+fn has_power_of_sum(t: &Expr) -> bool {
+    t.monomial()
+        .iter()
+        .any(|f| matches!(f.view(), View::Pow(base, _) if matches!(base.view(), View::Add(_))))
 }
 
 /// The number of monomials of degree `n` in `t` variables, C(t + n - 1, n), as a float

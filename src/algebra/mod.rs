@@ -33,7 +33,7 @@ pub use error::{AlgebraError, MAX_EXPANDED_TERMS};
 pub use eval::rational_to;
 pub use expr::{Expr, View};
 pub use function::Func;
-pub use rational::Q;
+pub use rational::{MAX_DIGITS, Q};
 pub use symbol::{axis_of_subscript, Role, Symbol};
 
 /// A three-vector of expressions (`i`, `j`, `k` components).

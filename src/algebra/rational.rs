@@ -4,6 +4,7 @@
 //! integer representation, and a result that fits again moves back. The algebra never
 //! rounds: a decimal such as `0.1` is the rational `1/10`.
 
+use super::error::AlgebraError;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
@@ -24,6 +25,14 @@ pub enum Q {
 
 /// Largest number of bits a folded power `p^n` may have; larger powers stay symbolic.
 pub const MAX_POWER_BITS: u64 = 4096;
+
+/// Largest number of decimal digits the numerator or the denominator of an exact number
+/// written or formed from the input may have; a larger one is refused
+/// ([`crate::algebra::AlgebraError::NumberTooLarge`]) where it would be formed.
+pub const MAX_DIGITS: u64 = 10_000;
+
+/// `log2(10)`, to turn a count of bits into one of decimal digits.
+const BITS_PER_DIGIT: f64 = std::f64::consts::LOG2_10;
 
 impl Q {
     pub const ZERO: Q = Q::Small(0, 1);
@@ -67,12 +76,62 @@ impl Q {
         let value: BigInt = digits.parse().ok()?;
         let ten = BigInt::from(10);
         let power = num_traits::pow(ten, scale.unsigned_abs() as usize);
-        let ratio = if scale >= 0 {
-            BigRational::from_integer(value * power)
+        Some(if scale >= 0 {
+            Q::from_big(BigRational::from_integer(value * power))
         } else {
-            BigRational::new(value, power)
-        };
-        Some(Q::from_big(ratio))
+            reduced_big(value, power)
+        })
+    }
+
+    /// The number of bits of the numerator's magnitude and of the denominator.
+    pub fn bit_lengths(&self) -> (u64, u64) {
+        match self {
+            Q::Small(n, d) => {
+                let bits = |x: i64| u64::from(64 - x.unsigned_abs().leading_zeros());
+                (bits(*n), bits(*d))
+            }
+            Q::Big(b) => (b.numer().bits(), b.denom().bits()),
+        }
+    }
+
+    /// An upper bound on the bits of the larger part of `Π qᵢ`: the parts' lengths add.
+    pub fn product_bits<'a>(factors: impl IntoIterator<Item = &'a Q>) -> u64 {
+        let (num, den) = factors.into_iter().fold((0u64, 0u64), |(n, d), q| {
+            let (qn, qd) = q.bit_lengths();
+            (n.saturating_add(qn), d.saturating_add(qd))
+        });
+        num.max(den)
+    }
+
+    /// An upper bound on the bits of the larger part of `Σ qᵢ` (`m` terms `nᵢ/dᵢ`): over the
+    /// common denominator `Π dᵢ` the numerator is at most `m · max|nᵢ| · Π dᵢ`, and a
+    /// denominator `1` adds nothing.
+    pub fn sum_bits<'a>(terms: impl IntoIterator<Item = &'a Q>) -> u64 {
+        let (mut count, mut num, mut den) = (0u64, 0u64, 0u64);
+        for q in terms {
+            let (qn, qd) = q.bit_lengths();
+            count += 1;
+            num = num.max(qn);
+            if qd > 1 {
+                den = den.saturating_add(qd);
+            }
+        }
+        num.saturating_add(den)
+            .saturating_add(u64::from(64 - count.leading_zeros()))
+    }
+
+    /// `Ok` when a number of `bits` bits (an estimate of what `what` would form) is within
+    /// [`MAX_DIGITS`] decimal digits, else the error that names it.
+    pub fn check_bits(what: &str, bits: u64) -> Result<(), AlgebraError> {
+        let digits = (bits as f64 / BITS_PER_DIGIT).ceil() as u64;
+        if digits <= MAX_DIGITS {
+            return Ok(());
+        }
+        Err(AlgebraError::NumberTooLarge {
+            what: what.to_string(),
+            digits,
+            limit: MAX_DIGITS,
+        })
     }
 
     fn from_big(r: BigRational) -> Q {
@@ -99,7 +158,8 @@ impl Q {
         }
         match (i64::try_from(n), i64::try_from(d)) {
             (Ok(n), Ok(d)) => Q::Small(n, d),
-            _ => Q::from_big(BigRational::new(n.into(), d.into())),
+            // Reduced above, with `d > 0`.
+            _ => Q::from_big(BigRational::new_raw(n.into(), d.into())),
         }
     }
 
@@ -198,7 +258,8 @@ impl Q {
             return None;
         }
         let e = n.unsigned_abs() as usize;
-        Some(Q::from_big(BigRational::new(
+        // Powers of coprime integers are coprime, and `den > 0`: already in lowest terms.
+        Some(Q::from_big(BigRational::new_raw(
             num_traits::pow(num, e),
             num_traits::pow(den, e),
         )))
@@ -214,8 +275,56 @@ impl Q {
             let r = x.nth_root(k);
             (num_traits::pow(r.clone(), k as usize) == *x).then_some(r)
         };
-        Some(Q::from_big(BigRational::new(root(&num)?, root(&den)?)))
+        // Roots of coprime integers are coprime, and the denominator's root is positive.
+        Some(Q::from_big(BigRational::new_raw(root(&num)?, root(&den)?)))
     }
+}
+
+/// `n/d` in lowest terms with a positive denominator, for `d != 0`.
+fn reduced_big(n: BigInt, d: BigInt) -> Q {
+    let g = unbalanced_gcd(&n, &d);
+    let (mut n, mut d) = if g.is_one() { (n, d) } else { (n / &g, d / &g) };
+    if d.is_negative() {
+        n = -n;
+        d = -d;
+    }
+    Q::from_big(BigRational::new_raw(n, d))
+}
+
+/// `gcd(a, b)`, cheap when one is much shorter than the other: one Euclidean step
+/// (`a mod b`) first, so the binary gcd that follows runs on numbers no longer than the
+/// shorter one. (The binary gcd alone costs the square of the longer one's length:
+/// `gcd(10^60000, 1)` took seconds.)
+fn unbalanced_gcd(a: &BigInt, b: &BigInt) -> BigInt {
+    let (a, b) = (a.abs(), b.abs());
+    let (long, short) = if a.bits() >= b.bits() { (a, b) } else { (b, a) };
+    if short.is_zero() || short.is_one() {
+        return if short.is_zero() { long } else { short };
+    }
+    (long % &short).gcd(&short)
+}
+
+/// `(a/b)(c/d)` for fractions in lowest terms: cancelling across first (`gcd(a, d)`,
+/// `gcd(c, b)`) leaves the product in lowest terms; integers need no gcd at all.
+fn big_product(x: &Q, y: &Q) -> Q {
+    let ((a, b), (c, d)) = (x.parts(), y.parts());
+    if b.is_one() && d.is_one() {
+        return Q::from_big(BigRational::from_integer(a * c));
+    }
+    let (g, h) = (unbalanced_gcd(&a, &d), unbalanced_gcd(&c, &b));
+    Q::from_big(BigRational::new_raw(
+        (a / &g) * (c / &h),
+        (b / &h) * (d / &g),
+    ))
+}
+
+/// `a/b + c/d` for fractions in lowest terms; integers need no gcd.
+fn big_sum(x: &Q, y: &Q) -> Q {
+    let ((a, b), (c, d)) = (x.parts(), y.parts());
+    if b.is_one() && d.is_one() {
+        return Q::from_big(BigRational::from_integer(a + c));
+    }
+    reduced_big(a * &d + c * &b, b * d)
 }
 
 fn big_to_f64(b: &BigRational) -> f64 {
@@ -293,7 +402,7 @@ impl std::ops::Add for &Q {
                     Q::from_i128(a * d + c * b, b * d)
                 }
             }
-            _ => Q::from_big(self.to_big() + other.to_big()),
+            _ => big_sum(self, other),
         }
     }
 }
@@ -311,7 +420,7 @@ impl std::ops::Mul for &Q {
     fn mul(self, other: &Q) -> Q {
         match (self, other) {
             (Q::Small(a, b), Q::Small(c, d)) => small_product(*a, *b, *c, *d),
-            _ => Q::from_big(self.to_big() * other.to_big()),
+            _ => big_product(self, other),
         }
     }
 }

@@ -20,6 +20,7 @@
 
 use super::diagnostic::Diagnostic;
 use super::limits::check_input;
+use crate::algebra::vector::has_unit_vectors;
 use crate::algebra::{AlgebraError, Expr, Func, Q};
 use pest::iterators::{Pair, Pairs};
 use pest::pratt_parser::{Assoc, Op, PrattParser};
@@ -196,6 +197,7 @@ enum Ast {
     Sum(Vec<(bool, Ast)>),
     /// Factors with `true` for a divisor, and the byte span of each.
     Product(Vec<(bool, Ast, (usize, usize))>),
+    /// Base, exponent and the byte span of the whole power (`(3*v - i)^2`).
     Power(Box<Ast>, Box<Ast>, (usize, usize)),
     Negate(Box<Ast>),
     Error(Diagnostic),
@@ -211,16 +213,23 @@ fn span_of(p: &Pair<Rule>) -> (usize, usize) {
 }
 
 fn to_ast(pairs: Pairs<Rule>, source_name: &str, source: &str) -> Ast {
-    // Spans of operands, for errors on divisors and powers.
+    // Each operand comes with its byte span, for errors on divisors and powers.
     pratt()
-        .map_primary(|p| primary(p, source_name, source))
-        .map_prefix(|op, rhs| match op.as_rule() {
-            Rule::neg => Ast::Negate(Box::new(rhs)),
-            _ => rhs,
+        .map_primary(|p| {
+            let at = span_of(&p);
+            (primary(p, source_name, source), at)
         })
-        .map_infix(|lhs, op, rhs| {
-            let span = span_of(&op);
+        .map_prefix(|op, (rhs, at)| {
+            let at = (span_of(&op).0, at.1);
             match op.as_rule() {
+                Rule::neg => (Ast::Negate(Box::new(rhs)), at),
+                _ => (rhs, at),
+            }
+        })
+        .map_infix(|(lhs, lhs_at), op, (rhs, rhs_at)| {
+            let span = span_of(&op);
+            let at = (lhs_at.0, rhs_at.1);
+            let ast = match op.as_rule() {
                 Rule::add | Rule::sub => {
                     let subtract = op.as_rule() == Rule::sub;
                     match lhs {
@@ -244,10 +253,12 @@ fn to_ast(pairs: Pairs<Rule>, source_name: &str, source: &str) -> Ast {
                         }
                     }
                 }
-                _ => Ast::Power(Box::new(lhs), Box::new(rhs), span),
-            }
+                _ => Ast::Power(Box::new(lhs), Box::new(rhs), at),
+            };
+            (ast, at)
         })
         .parse(pairs)
+        .0
 }
 
 fn primary(p: Pair<Rule>, source_name: &str, source: &str) -> Ast {
@@ -402,6 +413,9 @@ fn lowering_error(
     let (start, end) = span;
     let help = match err {
         AlgebraError::DivisionByZero => "the divisor is exactly zero",
+        AlgebraError::NumberTooLarge { .. } => {
+            "exact numbers are bounded in digits; give such a value a symbol"
+        }
         _ => "simplify the expression",
     };
     Diagnostic::at(
@@ -412,6 +426,21 @@ fn lowering_error(
         err.to_string(),
     )
     .with_help(help)
+}
+
+/// A power of an expression holding `i`, `j` or `k` (or such an exponent) is no vector:
+/// `(3*v - i)^2` is refused as written, before anything is multiplied out.
+fn power_of_a_vector(span: (usize, usize), source_name: &str, source: &str) -> Diagnostic {
+    let (start, end) = span;
+    let written = source.get(start..end).unwrap_or_default();
+    Diagnostic::at(
+        source_name,
+        source,
+        start,
+        end.max(start + 1),
+        format!("a power of a vector, {written}, has no meaning"),
+    )
+    .with_help("write the components, like a*i + b*j + c*k")
 }
 
 fn lower(ast: Ast, source_name: &str, source: &str) -> Result<Expr, Diagnostic> {
@@ -436,18 +465,32 @@ fn lower(ast: Ast, source_name: &str, source: &str) -> Result<Expr, Diagnostic> 
                 let e = lower(t, source_name, source)?;
                 out.push(if subtract { -e } else { e });
             }
+            let bits = Q::sum_bits(out.iter().map(Expr::coefficient));
+            Q::check_bits("the sum of these numbers", bits)
+                .map_err(|err| fail(err, (0, source.len())))?;
             Expr::add_all(out)
         }
         Ast::Product(factors) => {
             let mut out = Vec::with_capacity(factors.len());
+            let mut bits = 0u64;
             for (divide, f, span) in factors {
+                let gathered = out.len();
                 gather_factors(f, divide, divide, span, &mut out, source_name, source)?;
+                // Refused at the factor that crosses the bound, before any number is folded.
+                bits = bits.saturating_add(Q::product_bits(
+                    out[gathered..].iter().map(Expr::coefficient),
+                ));
+                Q::check_bits("the product of these numbers", bits)
+                    .map_err(|err| fail(err, span))?;
             }
             Expr::mul_all(out)
         }
         Ast::Power(base, exponent, span) => {
             let b = lower(*base, source_name, source)?;
             let e = lower(*exponent, source_name, source)?;
+            if has_unit_vectors(&b) || has_unit_vectors(&e) {
+                return Err(power_of_a_vector(span, source_name, source));
+            }
             b.checked_pow(&e).map_err(|err| fail(err, span))?
         }
     })

@@ -9,7 +9,9 @@ use num_traits::Float;
 
 impl Expr {
     /// The value of the expression with each symbol's value from `value`. Fails for a
-    /// symbol without a value, and for a result that is not finite (`1/x` at `x = 0`).
+    /// symbol without a value, and for a result that is not finite: a division by zero
+    /// when a divisor is zero (`1/x` at `x = 0`), [`AlgebraError::NotFinite`] otherwise
+    /// (an overflow such as `10^400`, or a value that is not a number).
     ///
     /// ```
     /// use kinetics::algebra::{Expr, Symbol};
@@ -21,6 +23,8 @@ impl Expr {
         let v = eval_unchecked(self, value)?;
         if v.is_finite() {
             Ok(v)
+        } else if divides_by_zero(self, value) {
+            Err(AlgebraError::DivisionByZero)
         } else {
             Err(AlgebraError::NotFinite {
                 expression: self.to_string(),
@@ -43,6 +47,22 @@ pub fn rational_to<T: Float>(q: &Q) -> T {
             n / d
         }
         _ => T::from(q.to_f64()).unwrap_or_else(T::nan),
+    }
+}
+
+/// Whether some negative power in `e` has a base whose value is zero (only asked once
+/// the value is known not to be finite, so its cost is off the usual path).
+fn divides_by_zero<T: Float>(e: &Expr, value: &dyn Fn(Symbol) -> Option<T>) -> bool {
+    match e.view() {
+        View::Num(_) | View::Sym(_) => false,
+        View::Add(xs) | View::Mul(xs) => xs.iter().any(|x| divides_by_zero(x, value)),
+        View::Pow(b, x) => {
+            let negative = x.as_num().is_some_and(Q::is_negative);
+            (negative && eval_unchecked(b, value).is_ok_and(|v| v.is_zero()))
+                || divides_by_zero(b, value)
+                || divides_by_zero(x, value)
+        }
+        View::Func(_, a) => divides_by_zero(a, value),
     }
 }
 

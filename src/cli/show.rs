@@ -2,8 +2,8 @@
 
 use super::error::CliError;
 use super::input;
-use kinetics::algebra::{vector, Axis, Expr};
-use kinetics::parse::{parse_statement, Statement};
+use kinetics::algebra::{vector, AlgebraError, Axis, Expr};
+use kinetics::parse::{parse_statement, Diagnostic, Statement};
 use kinetics::print::{self, Notation};
 
 #[derive(clap::Args)]
@@ -26,13 +26,20 @@ pub enum Format {
 pub fn run(args: Args) -> Result<String, CliError> {
     let (name, source) = input::read(&args.input)?;
     let statement = parse_statement(&name, &source)?;
-    render_statement(&statement, args.format)
+    render_statement(&statement, args.format).map_err(|err| at_input(&name, &source, err))
+}
+
+/// An algebra error about the input as a whole, located at it: it quotes what was written,
+/// not the multiplied-out form the algebra saw.
+pub fn at_input(name: &str, source: &str, err: AlgebraError) -> CliError {
+    let end = source.trim_end().len();
+    Diagnostic::at(name, source, 0, end, err.to_string()).into()
 }
 
 /// Prints an expression or an equation in the chosen format; vectors written with `i j k`
 /// print component by component.
-pub fn render_statement(statement: &Statement, format: Format) -> Result<String, CliError> {
-    let show = |notation: Notation| -> Result<String, CliError> {
+pub fn render_statement(statement: &Statement, format: Format) -> Result<String, AlgebraError> {
+    let show = |notation: Notation| -> Result<String, AlgebraError> {
         Ok(match statement {
             Statement::Expression(e) => side(e, notation, Axis::X)?,
             Statement::Equation(eq) => {
@@ -56,10 +63,9 @@ pub fn render_statement(statement: &Statement, format: Format) -> Result<String,
     }
 }
 
-fn side(e: &Expr, notation: Notation, axis: Axis) -> Result<String, CliError> {
+fn side(e: &Expr, notation: Notation, axis: Axis) -> Result<String, AlgebraError> {
     if vector::has_unit_vectors(e) {
-        let v = vector::components(e).map_err(|source| CliError::Algebra { name: None, source })?;
-        Ok(print::vector(&v, notation))
+        Ok(print::vector(&vector::components(e)?, notation))
     } else {
         Ok(print::render(e, notation, axis))
     }

@@ -2,7 +2,7 @@
 
 use super::error::CliError;
 use super::input;
-use super::show::{render_statement, Format};
+use super::show::{at_input, render_statement, Format};
 use kinetics::parse::{parse_statement, Equation, Statement};
 
 #[derive(clap::Args)]
@@ -21,12 +21,8 @@ pub fn run(args: Args) -> Result<String, CliError> {
     let (name, source) = input::read(&args.input)?;
     let statement = parse_statement(&name, &source)?;
     let statement = if args.expand {
-        let expand = |e: &kinetics::algebra::Expr| {
-            e.expand().map_err(|source| CliError::Algebra {
-                name: Some(name.clone()),
-                source,
-            })
-        };
+        let expand =
+            |e: &kinetics::algebra::Expr| e.expand().map_err(|err| at_input(&name, &source, err));
         match statement {
             Statement::Expression(e) => Statement::Expression(expand(&e)?),
             Statement::Equation(eq) => Statement::Equation(Equation {
@@ -37,5 +33,5 @@ pub fn run(args: Args) -> Result<String, CliError> {
     } else {
         statement
     };
-    render_statement(&statement, args.format)
+    render_statement(&statement, args.format).map_err(|err| at_input(&name, &source, err))
 }

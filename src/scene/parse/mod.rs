@@ -482,15 +482,21 @@ impl Reader<'_> {
                 self.scene.value(s)
             }
         };
-        match e.eval::<f64>(&value) {
-            Err(crate::algebra::AlgebraError::NotFinite { value, .. }) => Err(self
-                .error(
-                    at,
-                    format!("division by zero: with the given values this is {value}"),
-                )
-                .with_help("check the values of the givens in this expression")),
-            _ => Ok(()),
-        }
+        let message = match e.eval::<f64>(&value) {
+            Err(crate::algebra::AlgebraError::DivisionByZero) => {
+                "division by zero: with the given values a divisor is zero".to_string()
+            }
+            Err(crate::algebra::AlgebraError::NotFinite { value, .. }) if value == "NaN" => {
+                "with the given values this is not a number (NaN)".to_string()
+            }
+            Err(crate::algebra::AlgebraError::NotFinite { .. }) => "with the given values this \
+                overflows the range of numbers (magnitudes up to about 1.8e308)"
+                .to_string(),
+            _ => return Ok(()),
+        };
+        Err(self
+            .error(at, message)
+            .with_help("check the values of the givens in this expression"))
     }
 
     fn dimension(&self, e: &Expr, at: (usize, usize)) -> Result<Dimension, Diagnostic> {

@@ -386,6 +386,48 @@ mod tests {
         }
     }
 
+    /// The multinomial expansion of a power equals the power multiplied out factor by
+    /// factor, coefficients, powers and like terms included.
+    #[test]
+    fn multinomial_power_is_repeated_multiplication() {
+        let s = Expr::symbol;
+        let half = Expr::rational(1, 2);
+        let bases = [
+            s("a") + s("b"),
+            Expr::int(2) * s("a") - s("b") * Expr::rational(1, 3) + Expr::one(),
+            s("a") + s("a").powi(2) + s("a").powi(3),
+            s("x").checked_pow(&half).unwrap() + s("y").powi(-1) + Expr::int(2),
+            half * s("x") * s("y") - Expr::int(3) * s("x").powi(2) + s("z"),
+            Expr::func(crate::algebra::Func::Sin, s("x")) + s("c"),
+        ];
+        for base in bases {
+            for n in [2, 3, 7] {
+                let mut product = base.clone();
+                for _ in 1..n {
+                    product = multiply_out(&product, &base).unwrap();
+                }
+                let power = base.powi(n).expand().unwrap();
+                assert_eq!(format!("{power:?}"), format!("{product:?}"), "({base})^{n}");
+            }
+        }
+    }
+
+    /// A power too large to multiply out is refused before any work: an exponent beyond
+    /// i64 (it recursed until the stack overflowed), too many terms, or too many digits.
+    #[test]
+    fn huge_powers_are_refused_at_once() {
+        let (a, b) = (Expr::symbol("a"), Expr::symbol("b"));
+        let huge = Expr::num(Q::parse_decimal("9223372036854775808").unwrap());
+        let err = (&a + &b).checked_pow(&huge).unwrap().expand().unwrap_err();
+        assert!(matches!(err, AlgebraError::ExponentOutOfRange(_)), "{err}");
+        let err = (&a + &b + Expr::one()).powi(1000).expand().unwrap_err();
+        assert!(matches!(err, AlgebraError::TooLarge { .. }), "{err}");
+        let big = Expr::num(Q::parse_decimal("1e300").unwrap());
+        let err = (big * &a + &b).powi(40).expand().unwrap_err();
+        assert!(matches!(err, AlgebraError::NumberTooLarge { .. }), "{err}");
+        assert_eq!((&a + &b).powi(800).expand().unwrap().terms().len(), 801);
+    }
+
     proptest! {
         #[test]
         fn gathered_expansion_is_the_pairwise_expansion(e in expr()) {

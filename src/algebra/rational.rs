@@ -31,6 +31,10 @@ pub const MAX_POWER_BITS: u64 = 4096;
 /// ([`crate::algebra::AlgebraError::NumberTooLarge`]) where it would be formed.
 pub const MAX_DIGITS: u64 = 10_000;
 
+/// Largest scale `|e|` of a decimal literal `d·10^e` (its exponent less the digits after
+/// the point).
+pub const MAX_DECIMAL_EXPONENT: u64 = 4096;
+
 /// `log2(10)`, to turn a count of bits into one of decimal digits.
 const BITS_PER_DIGIT: f64 = std::f64::consts::LOG2_10;
 
@@ -52,7 +56,9 @@ impl Q {
         Some(Q::from_i128(num.into(), den.into()))
     }
 
-    /// The exact value of a decimal literal such as `12`, `0.25`, `1.5e-3` or `.5`.
+    /// The exact value of a decimal literal such as `12`, `0.25`, `1.5e-3` or `.5`; `None`
+    /// when it is not one, when its scale (the exponent less the digits after the point) is
+    /// beyond ±[`MAX_DECIMAL_EXPONENT`], or when it has more than [`MAX_DIGITS`] digits.
     pub fn parse_decimal(text: &str) -> Option<Q> {
         let (mantissa, exponent) = match text.find(['e', 'E']) {
             Some(at) => (&text[..at], text[at + 1..].parse::<i64>().ok()?),
@@ -70,7 +76,9 @@ impl Q {
             return None;
         }
         let scale = exponent.checked_sub(frac_part.len() as i64)?;
-        if scale.unsigned_abs() > 4096 {
+        if scale.unsigned_abs() > MAX_DECIMAL_EXPONENT
+            || digits.len() as u64 + scale.max(0).unsigned_abs() > MAX_DIGITS
+        {
             return None;
         }
         let value: BigInt = digits.parse().ok()?;
@@ -573,6 +581,77 @@ mod tests {
             let (bx, by) = (x.to_big(), y.to_big());
             proptest::prop_assert_eq!((&x + &y).to_big(), &bx + &by);
             proptest::prop_assert_eq!((&x * &y).to_big(), &bx * &by);
+        }
+    }
+
+    /// The scale of a decimal is at most ±4096 and its digits at most `MAX_DIGITS`.
+    #[test]
+    fn decimals_are_bounded() {
+        assert!(Q::parse_decimal("1e4096").is_some());
+        assert!(Q::parse_decimal("1e-4096").is_some());
+        assert_eq!(Q::parse_decimal("1e4097"), None);
+        assert_eq!(Q::parse_decimal("1e-4097"), None);
+        assert_eq!(Q::parse_decimal("1e9223372036854775808"), None);
+        let long = "1".repeat(MAX_DIGITS as usize);
+        assert!(Q::parse_decimal(&long).is_some());
+        assert_eq!(Q::parse_decimal(&format!("{long}1")), None);
+    }
+
+    /// Big products and sums cancel across and stay in lowest terms; integers need no gcd,
+    /// so a product of many huge integers is fast (it took seconds by the binary gcd).
+    #[test]
+    fn big_products_and_sums_are_reduced() {
+        let ten = |e: i64| Q::parse_decimal(&format!("1e{e}")).unwrap();
+        let third = Q::new(1, 3).unwrap();
+        let x = &ten(400) * &third;
+        let y = &Q::int(3) * &ten(-399);
+        assert_eq!(&x * &y, Q::int(10));
+        let half = &ten(-400) + &ten(-400);
+        assert_eq!(half, &Q::int(2) * &ten(-400));
+        assert_eq!(half.parts().0, BigInt::one());
+        assert_eq!(&(&ten(400) + &Q::ONE) - &ten(400), Q::ONE);
+        let mut p = Q::ONE;
+        for _ in 0..30 {
+            p = &p * &ten(308);
+        }
+        let power = num_traits::pow(BigInt::from(10), 308 * 30);
+        assert_eq!(p, Q::from_big(BigRational::from_integer(power)));
+    }
+
+    #[test]
+    fn digit_bounds() {
+        let ten = |e: i64| Q::parse_decimal(&format!("1e{e}")).unwrap();
+        let (n, d) = ten(-10).bit_lengths();
+        assert_eq!((n, d), (1, 34));
+        assert!(Q::product_bits([&ten(308), &ten(308)]) >= ten(616).bit_lengths().0);
+        let sum = [Q::new(1, 3).unwrap(), Q::new(1, 7).unwrap(), Q::int(5)];
+        let (sn, sd) = (&(&sum[0] + &sum[1]) + &sum[2]).bit_lengths();
+        assert!(Q::sum_bits(&sum) >= sn.max(sd));
+        assert!(Q::check_bits("x", 33_000).is_ok());
+        let err = Q::check_bits("the product", 40_000)
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("more than the limit of 10000"), "{err}");
+    }
+
+    proptest::proptest! {
+        /// The big paths (cross-cancelled products, sums without a gcd for integers).
+        #[test]
+        fn big_sums_and_products_agree_with_big_rationals(
+            a in proptest::num::i64::ANY,
+            b in 1i64..1000,
+            c in proptest::num::i64::ANY,
+            d in 1i64..1000,
+            k in 0usize..60,
+        ) {
+            let scale = Q::from_big(BigRational::from_integer(num_traits::pow(BigInt::from(10), k)));
+            let x = &Q::new(a, b).unwrap() * &scale;
+            let y = Q::new(c, d).unwrap().checked_div(&scale).unwrap();
+            let (bx, by) = (x.to_big(), y.to_big());
+            proptest::prop_assert_eq!((&x + &y).to_big(), &bx + &by);
+            proptest::prop_assert_eq!((&x * &y).to_big(), &bx * &by);
+            proptest::prop_assert_eq!((&x * &x).to_big(), &bx * &bx);
+            proptest::prop_assert_eq!((&y + &y).to_big(), &by + &by);
         }
     }
 

@@ -529,6 +529,42 @@ mod tests {
         );
     }
 
+    /// A power of anything holding a unit vector is refused as written, located at the
+    /// whole power, before anything is multiplied out.
+    #[test]
+    fn powers_of_vectors_are_refused_where_written() {
+        for (input, power) in [
+            ("(3*v - i)^600", "(3*v - i)^600"),
+            ("x + (a+i)^9223372036854775808", "(a+i)^9223372036854775808"),
+            ("2*k^2", "k^2"),
+            ("2^j", "2^j"),
+        ] {
+            let err = parse_expression("test", input).unwrap_err();
+            assert_eq!(
+                err.message,
+                format!("a power of a vector, {power}, has no meaning"),
+                "{input}"
+            );
+            assert_eq!(err.column, input.find(power).unwrap() + 1, "{input}");
+        }
+        assert!(parse_expression("test", "(a + b)^2*i").is_ok());
+    }
+
+    /// Exact numbers are bounded in digits: a product of huge numbers is refused at the
+    /// factor that crosses the bound, before it is formed.
+    #[test]
+    fn products_of_huge_numbers_are_refused_at_the_bound() {
+        let input = vec!["1e308"; 200].join("*");
+        let err = parse_expression("test", &input).unwrap_err();
+        assert!(
+            err.message.contains("more than the limit of 10000"),
+            "{err}"
+        );
+        assert!(err.column > 1 && err.column < 300, "{}", err.column);
+        let fine = vec!["1e308"; 30].join("*");
+        assert!(parse_expression("test", &fine).is_ok());
+    }
+
     /// Negations elsewhere keep their meaning: `-a^2` is `-(a^2)`, `a^-2 x` is `a^(-2) x`,
     /// `-(a + 1)` alone is the sum `-a - 1`; a divisor product with a zero factor is still
     /// a division by zero.

@@ -111,16 +111,18 @@ impl Q {
         num.max(den)
     }
 
-    /// An upper bound on the bits of the larger part of `Σ qᵢ` (`m` terms `nᵢ/dᵢ`): over the
-    /// common denominator `Π dᵢ` the numerator is at most `m · max|nᵢ| · Π dᵢ`, and a
-    /// denominator `1` adds nothing.
+    /// An upper bound on the bits of the larger part of `Σ qᵢ` (`m` terms `nᵢ/dᵢ`): over a
+    /// common denominator `D`, the product of the distinct `dᵢ`, the numerator is at most
+    /// `m · max|nᵢ| · D`; a denominator `1`, or one met before, adds nothing (so a sum
+    /// of many decimals with a few denominators stays small).
     pub fn sum_bits<'a>(terms: impl IntoIterator<Item = &'a Q>) -> u64 {
         let (mut count, mut num, mut den) = (0u64, 0u64, 0u64);
+        let mut seen = std::collections::HashSet::new();
         for q in terms {
             let (qn, qd) = q.bit_lengths();
             count += 1;
             num = num.max(qn);
-            if qd > 1 {
+            if qd > 1 && seen.insert(q.denom()) {
                 den = den.saturating_add(qd);
             }
         }

@@ -123,3 +123,23 @@ fn decimals_beyond_the_range_are_refused() {
         );
     }
 }
+
+/// A sum is bounded by its distinct denominators: many decimals sum exactly, the
+/// reciprocals of thousands of primes (a denominator of some 12,000 digits) are refused.
+#[test]
+fn sums_are_bounded_by_their_distinct_denominators() {
+    let decimals: Vec<String> = (1..=5000).map(|i| format!("0.{:03}", i % 1000)).collect();
+    let (code, stdout, stderr) = kinetics(&["simplify", &decimals.join("+")]);
+    assert_eq!((code, stdout.trim()), (0, "4995/2"), "{stderr}");
+    let primes: Vec<u64> = (2u64..)
+        .filter(|n| (2..).take_while(|d| d * d <= *n).all(|d| n % d != 0))
+        .take(3000)
+        .collect();
+    let reciprocals: Vec<String> = primes.iter().map(|p| format!("1/{p}")).collect();
+    let (code, _, stderr) = kinetics(&["simplify", &reciprocals.join("+")]);
+    assert_eq!(code, 1, "{stderr}");
+    assert!(
+        stderr.starts_with("error: the sum of these numbers would have about"),
+        "{stderr}"
+    );
+}

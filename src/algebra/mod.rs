@@ -11,6 +11,7 @@ mod arbitrary;
 mod axis;
 mod collect;
 mod derivative;
+mod digit_bound;
 mod error;
 mod eval;
 mod expand;
@@ -29,11 +30,12 @@ pub mod vector_products;
 
 pub use axis::Axis;
 pub use collect::Collected;
+pub use digit_bound::MAX_DIGITS;
 pub use error::{AlgebraError, MAX_EXPANDED_TERMS};
 pub use eval::rational_to;
 pub use expr::{Expr, View};
 pub use function::Func;
-pub use rational::{MAX_DIGITS, Q};
+pub use rational::Q;
 pub use symbol::{axis_of_subscript, Role, Symbol};
 
 /// A three-vector of expressions (`i`, `j`, `k` components).

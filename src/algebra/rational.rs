@@ -4,7 +4,7 @@
 //! integer representation, and a result that fits again moves back. The algebra never
 //! rounds: a decimal such as `0.1` is the rational `1/10`.
 
-use super::error::AlgebraError;
+use super::digit_bound::{MAX_DECIMAL_EXPONENT, MAX_DIGITS};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
@@ -25,18 +25,6 @@ pub enum Q {
 
 /// Largest number of bits a folded power `p^n` may have; larger powers stay symbolic.
 pub const MAX_POWER_BITS: u64 = 4096;
-
-/// Largest number of decimal digits the numerator or the denominator of an exact number
-/// written or formed from the input may have; a larger one is refused
-/// ([`crate::algebra::AlgebraError::NumberTooLarge`]) where it would be formed.
-pub const MAX_DIGITS: u64 = 10_000;
-
-/// Largest scale `|e|` of a decimal literal `d·10^e` (its exponent less the digits after
-/// the point).
-pub const MAX_DECIMAL_EXPONENT: u64 = 4096;
-
-/// `log2(10)`, to turn a count of bits into one of decimal digits.
-const BITS_PER_DIGIT: f64 = std::f64::consts::LOG2_10;
 
 impl Q {
     pub const ZERO: Q = Q::Small(0, 1);
@@ -100,48 +88,6 @@ impl Q {
             }
             Q::Big(b) => (b.numer().bits(), b.denom().bits()),
         }
-    }
-
-    /// An upper bound on the bits of the larger part of `Π qᵢ`: the parts' lengths add.
-    pub fn product_bits<'a>(factors: impl IntoIterator<Item = &'a Q>) -> u64 {
-        let (num, den) = factors.into_iter().fold((0u64, 0u64), |(n, d), q| {
-            let (qn, qd) = q.bit_lengths();
-            (n.saturating_add(qn), d.saturating_add(qd))
-        });
-        num.max(den)
-    }
-
-    /// An upper bound on the bits of the larger part of `Σ qᵢ` (`m` terms `nᵢ/dᵢ`): over a
-    /// common denominator `D`, the product of the distinct `dᵢ`, the numerator is at most
-    /// `m · max|nᵢ| · D`; a denominator `1`, or one met before, adds nothing (so a sum
-    /// of many decimals with a few denominators stays small).
-    pub fn sum_bits<'a>(terms: impl IntoIterator<Item = &'a Q>) -> u64 {
-        let (mut count, mut num, mut den) = (0u64, 0u64, 0u64);
-        let mut seen = std::collections::HashSet::new();
-        for q in terms {
-            let (qn, qd) = q.bit_lengths();
-            count += 1;
-            num = num.max(qn);
-            if qd > 1 && seen.insert(q.denom()) {
-                den = den.saturating_add(qd);
-            }
-        }
-        num.saturating_add(den)
-            .saturating_add(u64::from(64 - count.leading_zeros()))
-    }
-
-    /// `Ok` when a number of `bits` bits (an estimate of what `what` would form) is within
-    /// [`MAX_DIGITS`] decimal digits, else the error that names it.
-    pub fn check_bits(what: &str, bits: u64) -> Result<(), AlgebraError> {
-        let digits = (bits as f64 / BITS_PER_DIGIT).ceil() as u64;
-        if digits <= MAX_DIGITS {
-            return Ok(());
-        }
-        Err(AlgebraError::NumberTooLarge {
-            what: what.to_string(),
-            digits,
-            limit: MAX_DIGITS,
-        })
     }
 
     fn from_big(r: BigRational) -> Q {
@@ -586,19 +532,6 @@ mod tests {
         }
     }
 
-    /// The scale of a decimal is at most ±4096 and its digits at most `MAX_DIGITS`.
-    #[test]
-    fn decimals_are_bounded() {
-        assert!(Q::parse_decimal("1e4096").is_some());
-        assert!(Q::parse_decimal("1e-4096").is_some());
-        assert_eq!(Q::parse_decimal("1e4097"), None);
-        assert_eq!(Q::parse_decimal("1e-4097"), None);
-        assert_eq!(Q::parse_decimal("1e9223372036854775808"), None);
-        let long = "1".repeat(MAX_DIGITS as usize);
-        assert!(Q::parse_decimal(&long).is_some());
-        assert_eq!(Q::parse_decimal(&format!("{long}1")), None);
-    }
-
     /// Big products and sums cancel across and stay in lowest terms; integers need no gcd,
     /// so a product of many huge integers is fast (it took seconds by the binary gcd).
     #[test]
@@ -618,22 +551,6 @@ mod tests {
         }
         let power = num_traits::pow(BigInt::from(10), 308 * 30);
         assert_eq!(p, Q::from_big(BigRational::from_integer(power)));
-    }
-
-    #[test]
-    fn digit_bounds() {
-        let ten = |e: i64| Q::parse_decimal(&format!("1e{e}")).unwrap();
-        let (n, d) = ten(-10).bit_lengths();
-        assert_eq!((n, d), (1, 34));
-        assert!(Q::product_bits([&ten(308), &ten(308)]) >= ten(616).bit_lengths().0);
-        let sum = [Q::new(1, 3).unwrap(), Q::new(1, 7).unwrap(), Q::int(5)];
-        let (sn, sd) = (&(&sum[0] + &sum[1]) + &sum[2]).bit_lengths();
-        assert!(Q::sum_bits(&sum) >= sn.max(sd));
-        assert!(Q::check_bits("x", 33_000).is_ok());
-        let err = Q::check_bits("the product", 40_000)
-            .unwrap_err()
-            .to_string();
-        assert!(err.contains("more than the limit of 10000"), "{err}");
     }
 
     proptest::proptest! {

@@ -14,6 +14,20 @@ pub struct Span {
     pub end: usize,
 }
 
+/// Where the statements a simulation draws on stand, so that what is found wrong with
+/// their values after parsing (an overflow, a missing value) is shown at the statement.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Places {
+    /// Each `body` statement, in the order of [`Scene::parts`].
+    pub body: Vec<Span>,
+    /// The `omega` statement.
+    pub omega: Option<Span>,
+    /// Each `force` statement, in the order of [`Scene::forces`].
+    pub forces: Vec<Span>,
+    /// Each `couple` statement, in the order of [`Scene::couples`].
+    pub couples: Vec<Span>,
+}
+
 /// A given quantity: symbolic, or with a value converted to SI.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Given {
@@ -163,6 +177,7 @@ pub struct Scene {
     pub constraints: Vec<Constraint>,
     pub unknowns: Vec<(Symbol, Dimension)>,
     pub requests: Vec<Request>,
+    pub places: Places,
 }
 
 impl Scene {

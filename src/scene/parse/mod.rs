@@ -2,7 +2,9 @@
 //! (file:line:column, a caret, a hint). The mathematics inside a statement goes through the
 //! expression parser; its diagnostics are moved to their place in the file.
 
-use super::model::{Constraint, ConstraintKind, Force, Given, Quantity, Request, Scene, Span};
+use super::model::{
+    Constraint, ConstraintKind, Force, Given, Places, Quantity, Request, Scene, Span,
+};
 use super::units::{dimension_of, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
 use crate::algebra::{vector, Expr, Symbol, Vector};
 use crate::parse::{parse_expression, Diagnostic};
@@ -85,6 +87,7 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
             constraints: vec![],
             unknowns: vec![],
             requests: vec![],
+            places: Places::default(),
         },
     };
     for unit_vector in vector::unit_vectors() {
@@ -231,6 +234,17 @@ impl Reader<'_> {
                 }
             }
             _ => return Err(self.error(at, "unexpected statement")),
+        }
+        let place = Span {
+            start: at.0,
+            end: at.1,
+        };
+        match rule {
+            Rule::body => self.scene.places.body.push(place),
+            Rule::omega => self.scene.places.omega = Some(place),
+            Rule::force => self.scene.places.forces.push(place),
+            Rule::couple => self.scene.places.couples.push(place),
+            _ => {}
         }
         Ok(())
     }

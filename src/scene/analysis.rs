@@ -98,10 +98,15 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
 }
 
 /// The body's mass, mass centre (from O) and centroidal inertia, for callers that need the
-/// body but no derivation (the simulator).
+/// body but no derivation (the simulator); an error stands at the first body statement.
 pub fn centroidal_body(scene: &Scene) -> Result<MassProperties, Diagnostic> {
-    let mut a = Analyser::new(scene);
-    a.body(Span::default()).cloned()
+    // Errors stand at the first body statement, or at the end of a file without one.
+    let end = Span {
+        start: scene.source.len(),
+        end: scene.source.len(),
+    };
+    let at = scene.places.body.first().copied().unwrap_or(end);
+    Analyser::new(scene).body(at).cloned()
 }
 
 fn zero_vector() -> Vector {

@@ -153,6 +153,35 @@ fn scene_errors_stand_at_the_statement_not_the_first_line() {
 }
 
 #[test]
+fn a_body_refused_as_a_whole_stands_at_a_body_statement() {
+    // Zero total mass: whichever check refuses it (the total or the negative part), it
+    // stands at a body line, not the first comment line.
+    let zero = scene_file(
+        "zero_mass",
+        "# two parts whose masses cancel\ngiven m = 1 kg\ngiven r = 1 m\ngiven w = 1 rad/s\n\
+         body sphere(r) mass m\nbody sphere(r) mass -m at (r, 0, 0)\nomega = w*k\nfind T\n",
+    );
+    let (code, out, stderr) = simulate(&zero, &["--until", "1"]);
+    assert_eq!(code, 1, "{stderr}");
+    assert!(out.is_empty(), "wrote {out}");
+    assert!(
+        stderr.contains("body sphere(r) mass") && !stderr.contains(":1:1"),
+        "{stderr}"
+    );
+    // No body at all: at the end of the file, where one would be added.
+    let nobody = scene_file(
+        "no_body",
+        "# no body\ngiven w = 1 rad/s\nomega = w*k\nfind omega\n",
+    );
+    let (code, _, stderr) = simulate(&nobody, &["--until", "1"]);
+    assert_eq!(code, 1, "{stderr}");
+    assert!(
+        stderr.contains("the scene has no body") && stderr.contains(":5:1"),
+        "{stderr}"
+    );
+}
+
+#[test]
 fn each_flag_is_checked_by_its_name_before_anything_is_written() {
     let path = sphere("flags", "1", "1", "1");
     let positive = "it must be a finite positive number";

@@ -96,3 +96,18 @@ fn sample_times(times: &[f64]) -> Result<Vec<f64>, CliError> {
     }
     Ok(times.to_vec())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::MAX_SAMPLES;
+
+    /// The cap is written out in `--every`'s and `--force`'s help; it must stay the cap.
+    #[test]
+    fn the_help_states_the_cap() {
+        let command = clap::Command::new("simulate");
+        let mut command = <super::super::simulate::Args as clap::Args>::augment_args(command);
+        let help = command.render_long_help().to_string();
+        let cap = MAX_SAMPLES.to_string();
+        assert_eq!(help.matches(&cap).count(), 2, "{help}");
+    }
+}

@@ -23,6 +23,8 @@ pub struct Given {
     pub value: Option<f64>,
     /// The value as written (`20 kg`), for the worked solution.
     pub written: Option<String>,
+    /// Where the given's name stands, for errors found where it is used.
+    pub span: Span,
 }
 
 /// A part of the body: a standard shape with its mass, the position of its mass centre,
@@ -181,6 +183,12 @@ impl Scene {
             .iter()
             .find(|g| g.symbol == s)
             .and_then(|g| g.value)
+    }
+
+    /// The 1-based line of the scene file that holds byte offset `at`.
+    pub fn line_of(&self, at: Span) -> usize {
+        let start = self.source.floor_char_boundary(at.start);
+        self.source[..start].matches('\n').count() + 1
     }
 
     pub fn is_unknown(&self, s: Symbol) -> bool {

@@ -135,7 +135,7 @@ impl Reader<'_> {
         match rule {
             Rule::title => self.scene.title = inner.first().map(|t| t.as_str().trim().to_string()),
             Rule::given => self.given(inner)?,
-            Rule::body => self.body(inner)?,
+            Rule::body => self.body(inner, at)?,
             Rule::fixed_point => self.scene.fixed_point = true,
             Rule::omega => {
                 self.only_once(self.scene.omega.is_some(), at)?;
@@ -430,6 +430,10 @@ impl Reader<'_> {
             dimension,
             value,
             written,
+            span: Span {
+                start: span(name).0,
+                end: span(name).1,
+            },
         });
         Ok(())
     }

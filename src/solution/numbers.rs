@@ -215,7 +215,20 @@ pub fn format_value(x: f64) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::format_value;
+    use super::{format_value, scientific};
+    use crate::algebra::Q;
+
+    #[test]
+    fn scientific_beyond_the_range_of_doubles() {
+        let big = |text: &str| Q::parse_decimal(text).unwrap();
+        assert_eq!(scientific(&big("2e399")), "2e399");
+        assert_eq!(scientific(&-&big("12345678e400")), "-1.234e407");
+        assert_eq!(scientific(&big("9.999e-400")), "9.999e-400");
+        assert_eq!(
+            scientific(&(&big("1e-400") * &Q::new(1, 3).unwrap())),
+            "3.333e-401"
+        );
+    }
 
     #[test]
     fn four_significant_figures() {

@@ -149,9 +149,10 @@ impl Reader<'_> {
             return Ok(());
         }
         let masses = parts.iter().map(|p| p.mass.clone()).chain([mass.clone()]);
-        let total = Expr::add_all(masses.clone())
-            .expand()
-            .map_err(|e| self.error(at, e.to_string()))?;
+        let total = Expr::add_all(masses.clone()).expand().map_err(|e| {
+            self.error(at, e.to_string())
+                .with_help("simplify the masses")
+        })?;
         let written = masses
             .map(|m| format!("({m})"))
             .collect::<Vec<_>>()

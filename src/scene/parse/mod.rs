@@ -5,6 +5,7 @@
 use super::model::{Constraint, ConstraintKind, Force, Given, Quantity, Request, Scene, Span};
 use super::units::{dimension_of, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
 use crate::algebra::{vector, Expr, Symbol, Vector};
+use crate::mechanics::validation::validate_mass;
 use crate::parse::{parse_expression, Diagnostic};
 use pest::iterators::Pair;
 use pest::Parser;
@@ -417,7 +418,9 @@ impl Reader<'_> {
                 )));
         };
         let symbol = self.declare(name, dimension)?;
-        if dimension == Dimension::MASS && value.is_some_and(|v| v <= 0.0) {
+        if dimension == Dimension::MASS
+            && value.is_some_and(|v| validate_mass(name.as_str(), v).is_err())
+        {
             return Err(self
                 .error(
                     span(&inner[1]),

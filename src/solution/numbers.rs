@@ -104,10 +104,7 @@ fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Resu
     if value(scene, e).is_some_and(|v| (v / to_si).is_finite()) {
         return Ok(());
     }
-    let named = match &request.unit {
-        Some((written, _)) => format!("{} in {written}", request.name),
-        None => request.name.clone(),
-    };
+    let named = request.as_written();
     let fail = |message: String, help: String| Err(scene.error_at(request.span, message, help));
     let depends = e
         .symbols()
@@ -121,7 +118,7 @@ fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Resu
                 Some((written, _)) => written.clone(),
                 None => result_unit(request, dims, e).unwrap_or_default(),
             };
-            let shown = scientific(&(&q * &exact_of(1.0 / to_si).unwrap_or(Q::ONE)));
+            let shown = scientific(&(&q * &Q::parse_decimal(&format!("{:e}", 1.0 / to_si)).unwrap_or(Q::ONE)));
             fail(
                 format!(
                     "{} = {shown} {unit} overflows the range of numbers (magnitudes up to about 1.8e308)",
@@ -130,27 +127,7 @@ fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Resu
                 format!("check the values of the givens it depends on ({depends}): one is far too large or too small"),
             )
         }
-        Err(AlgebraError::DivisionByZero) => {
-            let zeros: Vec<String> = scene
-                .givens
-                .iter()
-                .filter(|g| e.contains(g.symbol) && g.value == Some(0.0))
-                .map(|g| {
-                    let shown = g.written.as_deref().unwrap_or("0");
-                    let line = scene.line_of(g.span);
-                    format!("{} = {shown} (given on line {line})", g.symbol.name())
-                })
-                .collect();
-            let help = if zeros.is_empty() {
-                format!("a denominator is zero with the values of {depends}; check them")
-            } else {
-                format!("{} makes a denominator zero; check the value", zeros.join(", "))
-            };
-            fail(
-                format!("{named} is not a finite number with the given values: it divides by zero"),
-                help,
-            )
-        }
+        Err(AlgebraError::DivisionByZero) => Err(scene.division_by_zero_at(request.span, &named, e)),
         Err(_) => fail(
             format!("{named} is not a finite number with the given values"),
             "check the givens it depends on: with these values the configuration has no finite answer".into(),
@@ -162,19 +139,12 @@ fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Resu
 /// `0.1`): a number when `e` is built from sums, products and integer powers; an error
 /// for a division by zero; a non-number left with functions of values.
 fn exact_value(scene: &Scene, e: &Expr) -> Result<Q, AlgebraError> {
-    let given = |s: Symbol| scene.value(s).and_then(exact_of).map(Expr::num);
+    let given = |s: Symbol| scene.exact_value(s).map(Expr::num);
     let exact = e.subs(&given)?;
     exact
         .as_num()
         .cloned()
         .ok_or_else(|| AlgebraError::MissingValue(exact.to_string()))
-}
-
-/// The rational a finite `f64` reads as in its shortest decimal form.
-fn exact_of(x: f64) -> Option<Q> {
-    let text = format!("{:e}", x.abs());
-    let q = Q::parse_decimal(&text)?;
-    Some(if x < 0.0 { -&q } else { q })
 }
 
 /// An exact rational in scientific notation with four significant figures, however large:

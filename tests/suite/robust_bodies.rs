@@ -16,7 +16,7 @@ fn bad_scene(name: &str) -> String {
 
 /// The scenes of this part whose error is decided without any value (or by the body's own
 /// statement): `plan` must report exactly what `solve` reports.
-const BODY_SCENES: [&str; 14] = [
+const BODY_SCENES: [&str; 15] = [
     "mass_negated_given",
     "mass_negative_symbolic",
     "mass_zero_product",
@@ -31,6 +31,7 @@ const BODY_SCENES: [&str; 14] = [
     "length_given_negative",
     "numeric_answer_overflows",
     "numeric_answer_divides_by_zero",
+    "numeric_answer_pivot_zero",
 ];
 
 #[test]
@@ -65,7 +66,7 @@ fn a_negative_given_used_as_a_length_is_named_with_its_line() {
     assert_eq!(code, 1);
     assert!(err.contains("length_given_negative.scene:7:10"), "{err}");
     assert!(
-        err.contains("= help: L is given as -2 m on line 6; a length must be greater than zero"),
+        err.contains("= help: L = -2 m (given on line 6); a length must be greater than zero"),
         "{err}"
     );
 }
@@ -93,7 +94,7 @@ fn a_division_by_a_zero_given_names_it_with_its_line() {
     assert_eq!(code, 1);
     assert!(out.is_empty(), "{out}");
     assert!(
-        err.contains("= help: e = 0 m (given on line 12) makes a denominator zero"),
+        err.contains("= help: e = 0 m (given on line 12) makes a divisor zero"),
         "{err}"
     );
 }

@@ -119,16 +119,7 @@ impl Reader<'_> {
             unit,
         };
         ensure_positive(what, e, &facts).map_err(|err| {
-            let culprits: Vec<String> = scene
-                .givens
-                .iter()
-                .filter(|g| e.contains(g.symbol) && g.value.is_some_and(|v| v <= 0.0))
-                .map(|g| {
-                    let shown = g.written.as_deref().unwrap_or_default();
-                    let line = scene.line_of(g.span);
-                    format!("{} is given as {shown} on line {line}", g.symbol.name())
-                })
-                .collect();
+            let culprits = scene.cite_givens_in(e, |v| v <= 0.0);
             let help = if culprits.is_empty() {
                 format!("a {kind} must be greater than zero: correct {written}")
             } else {

@@ -7,6 +7,13 @@ use crate::algebra::{AlgebraError, Expr, Symbol, Vector, Q};
 use crate::mechanics::shapes::Shape;
 use crate::parse::Diagnostic;
 
+/// The exact rational a finite number reads as in its shortest decimal form: `1e200` is
+/// 10²⁰⁰ exactly, `0.1` is 1/10 (not the binary fraction nearest to it).
+pub fn exact_decimal(x: f64) -> Option<Q> {
+    let q = Q::parse_decimal(&format!("{:e}", x.abs()))?;
+    Some(if x < 0.0 { -&q } else { q })
+}
+
 /// Where a statement stands in the scene file, for diagnostics after parsing.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Span {
@@ -198,9 +205,7 @@ impl Scene {
     /// The value of a given as the exact rational its SI value reads as in its shortest
     /// decimal form (`1e200`, `0.1`), for deciding exactly what the values make of a result.
     pub fn exact_value(&self, s: Symbol) -> Option<Q> {
-        let x = self.value(s)?;
-        let q = Q::parse_decimal(&format!("{:e}", x.abs()))?;
-        Some(if x < 0.0 { -&q } else { q })
+        self.value(s).and_then(exact_decimal)
     }
 
     /// A given as the user wrote it, with its line, for a help text: `L = 0 m (given on

@@ -2,7 +2,7 @@
 
 use crate::algebra::{vector, AlgebraError, Expr, Symbol, Q};
 use crate::parse::Diagnostic;
-use crate::scene::model::{Quantity, Request};
+use crate::scene::model::{exact_decimal, Quantity, Request};
 use crate::scene::units::{dimension_of, Dimension, Dimensions};
 use crate::scene::{Analysis, Scene, Value};
 use num_bigint::BigInt;
@@ -39,8 +39,9 @@ pub fn unit(dims: &Dimensions, e: &Expr) -> Option<String> {
 /// Checks that no requested number is silently left out. A request written `find X in UNIT`
 /// must be in that kind of unit and every given it depends on must have a value; any request
 /// whose givens all have values must have a finite value (in the unit asked for). An answer
-/// that is not is refused at its `find`, saying why: a division by zero (naming the givens
-/// whose value is zero) or a magnitude beyond the range of numbers (`T = 2e399 J`).
+/// that is not (or that rounds to zero but is not zero) is refused at its `find`, saying why:
+/// a division by zero (naming the givens whose value is zero) or a magnitude beyond the range
+/// of numbers (`T = 2e399 J`).
 pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), Diagnostic> {
     let dims = scene_dimensions(scene);
     for (request, value) in &analysis.results {
@@ -101,7 +102,10 @@ pub fn result_unit(request: &Request, dims: &Dimensions, e: &Expr) -> Option<Str
 /// the error at the request says why.
 fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Result<(), Diagnostic> {
     let to_si = request.unit.as_ref().map_or(1.0, |(_, u)| u.to_si);
-    if value(scene, e).is_some_and(|v| (v / to_si).is_finite()) {
+    let v = value(scene, e).map(|v| v / to_si);
+    // A zero that is not zero exactly has underflowed: it is not the answer either.
+    let underflow = v == Some(0.0) && exact_value(scene, e).is_ok_and(|q| !q.is_zero());
+    if v.is_some_and(f64::is_finite) && !underflow {
         return Ok(());
     }
     let named = request.as_written();
@@ -118,12 +122,15 @@ fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Resu
                 Some((written, _)) => written.clone(),
                 None => result_unit(request, dims, e).unwrap_or_default(),
             };
-            let shown = scientific(&(&q * &Q::parse_decimal(&format!("{:e}", 1.0 / to_si)).unwrap_or(Q::ONE)));
+            let q = &q * &exact_decimal(1.0 / to_si).unwrap_or(Q::ONE);
+            let name = &request.name;
+            let message = match q.to_f64() {
+                0.0 => format!("{name} = {} {unit} is below the range of numbers (magnitudes down to about 2.2e-308)", scientific(&q)),
+                x if x.is_finite() => format!("{name} = {} {unit} cannot be evaluated: a value on the way to it is beyond the range of numbers", format_value(x)),
+                _ => format!("{name} = {} {unit} overflows the range of numbers (magnitudes up to about 1.8e308)", scientific(&q)),
+            };
             fail(
-                format!(
-                    "{} = {shown} {unit} overflows the range of numbers (magnitudes up to about 1.8e308)",
-                    request.name
-                ),
+                message,
                 format!("check the values of the givens it depends on ({depends}): one is far too large or too small"),
             )
         }

@@ -102,10 +102,13 @@ impl Reader<'_> {
         at: (usize, usize),
     ) -> Result<(), Diagnostic> {
         let scene = &self.scene;
+        // Positive by its value, or by its domain: a given mass or length without a value.
         let positive = |s: Symbol| match (scene.value(s), scene.dimension(s)) {
             (Some(v), _) => v > 0.0,
-            (None, Some(d)) => d == Dimension::MASS || d == Dimension::LENGTH,
-            (None, None) => false,
+            (None, Some(d)) if !scene.is_unknown(s) => {
+                d == Dimension::MASS || d == Dimension::LENGTH
+            }
+            _ => false,
         };
         let value = |s: Symbol| scene.value(s);
         let facts = SymbolFacts {

@@ -7,6 +7,7 @@ use super::model::{
 };
 use super::units::{dimension_of, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
 use crate::algebra::{vector, Expr, Symbol, Vector};
+use crate::mechanics::validation::validate_mass;
 use crate::parse::{parse_expression, Diagnostic};
 use pest::iterators::Pair;
 use pest::Parser;
@@ -138,7 +139,7 @@ impl Reader<'_> {
         match rule {
             Rule::title => self.scene.title = inner.first().map(|t| t.as_str().trim().to_string()),
             Rule::given => self.given(inner)?,
-            Rule::body => self.body(inner)?,
+            Rule::body => self.body(inner, at)?,
             Rule::fixed_point => self.scene.fixed_point = true,
             Rule::omega => {
                 self.only_once(self.scene.omega.is_some(), at)?;
@@ -431,7 +432,9 @@ impl Reader<'_> {
                 )));
         };
         let symbol = self.declare(name, dimension)?;
-        if dimension == Dimension::MASS && value.is_some_and(|v| v <= 0.0) {
+        if dimension == Dimension::MASS
+            && value.is_some_and(|v| validate_mass(name.as_str(), v).is_err())
+        {
             return Err(self
                 .error(
                     span(&inner[1]),
@@ -444,6 +447,10 @@ impl Reader<'_> {
             dimension,
             value,
             written,
+            span: Span {
+                start: span(name).0,
+                end: span(name).1,
+            },
         });
         Ok(())
     }

@@ -26,6 +26,7 @@ mod nalgebra_ops;
 mod principal_axes;
 mod print_parse_properties;
 mod robust_bodies;
+mod robust_parse;
 mod robust_simulate;
 mod scene_solutions;
 mod shapes_numeric;

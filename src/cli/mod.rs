@@ -10,6 +10,7 @@ mod progress;
 mod show;
 mod simplify;
 mod simulate;
+mod simulate_flags;
 mod solve;
 
 use clap::{Parser, Subcommand};

@@ -3,6 +3,8 @@
 //!
 //! A simulation streams its samples; only the plot keeps points, at most [`PLOT_POINTS`] of
 //! them: a longer run keeps every `stride`-th sample, `stride = ⌈samples / PLOT_POINTS⌉`.
+//! The path is checked before the run (see `writable_path`), so that a plot that cannot be
+//! written fails before any sample is computed, not after the whole CSV was streamed.
 
 use kinetics::numeric::rigid_body::sample_sink::Sample;
 use kinetics::numeric::rigid_body::simulate::Sampling;
@@ -22,15 +24,10 @@ pub struct OmegaPlot {
 }
 
 impl OmegaPlot {
-    /// A plot into `path` of a run sampled by `sampling`. An existing file is refused unless
-    /// `force`, before anything is simulated.
+    /// A plot into `path` of a run sampled by `sampling`, the path checked
+    /// ([`writable_path`]) before anything is simulated.
     pub fn new(path: &Path, force: bool, sampling: &Sampling<f64>) -> Result<Self, String> {
-        if path.exists() && !force {
-            return Err(format!(
-                "error: {} exists; pass --force to overwrite it",
-                path.display()
-            ));
-        }
+        writable_path(path, force)?;
         let count = match sampling {
             Sampling::Times(times) => times.len(),
             Sampling::Every { interval, end } if *interval > 0.0 && end.is_finite() => {
@@ -73,6 +70,68 @@ impl OmegaPlot {
             "ω [rad/s]",
             &series,
         )
+    }
+}
+
+/// Refuses a plot path that would fail only after the whole run, or write where the user
+/// did not mean: a directory; a missing parent directory, or one that cannot be written
+/// (tried with a file created and removed at once); an existing file, or a symbolic link
+/// (dangling or not: writing follows it), unless `force`, and then the link's target is
+/// checked in turn.
+fn writable_path(path: &Path, force: bool) -> Result<(), String> {
+    let refuse = |reason: String| Err(format!("error: --plot {}: {reason}", path.display()));
+    let mut target = path.to_path_buf();
+    // A chain of links is followed as the write will follow it, to a bound of hops.
+    for hop in 0..=40 {
+        let Ok(meta) = std::fs::symlink_metadata(&target) else {
+            break;
+        };
+        if hop == 40 {
+            return refuse("it is a chain of more than 40 symbolic links".into());
+        }
+        if meta.is_dir() {
+            return refuse("it is a directory; give a file name".into());
+        }
+        if !force {
+            return if meta.file_type().is_symlink() {
+                refuse(format!(
+                    "it is a symbolic link (to {}); pass --force to write through it",
+                    std::fs::read_link(&target).unwrap_or_default().display()
+                ))
+            } else {
+                refuse("the file exists; pass --force to overwrite it".into())
+            };
+        }
+        if !meta.file_type().is_symlink() {
+            return match std::fs::OpenOptions::new().write(true).open(&target) {
+                Ok(_) => Ok(()),
+                Err(e) => refuse(format!("cannot write {}: {e}", target.display())),
+            };
+        }
+        let link = std::fs::read_link(&target).map_err(|e| format!("error: --plot: {e}"))?;
+        target = match target.parent() {
+            Some(parent) => parent.join(link),
+            None => link,
+        };
+    }
+    let parent = match target.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    if !parent.is_dir() {
+        return refuse(format!("the directory {} does not exist", parent.display()));
+    }
+    let probe = parent.join(format!(".kinetics-plot-{}.tmp", std::process::id()));
+    match std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(&probe)
+    {
+        Ok(_) => {
+            let _ = std::fs::remove_file(&probe);
+            Ok(())
+        }
+        Err(e) => refuse(format!("cannot write in {}: {e}", parent.display())),
     }
 }
 

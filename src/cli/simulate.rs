@@ -6,12 +6,18 @@
 //! the `plot` feature) keeps points, a bounded number of them. `--rtol` belongs to dop853
 //! (and to auto, which may integrate with it) and `--step` to rk4 and splitting: a flag the
 //! chosen method does not use is refused with the reason, not ignored.
+//!
+//! Nothing is written before everything that can be checked is: the flags (by name, see
+//! `simulate_flags`), the plot's path, the scene and the problem it poses (an initial
+//! kinetic energy that overflows, say); the header goes out with the first sample. An
+//! overflow found later stops the run with an error at the body, never an `inf` row.
 
 use super::error::CliError;
+use super::simulate_flags::{positive, sampling};
 use kinetics::numeric::integrators::splitting::SplittingOrder;
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice, MethodUsed};
 use kinetics::numeric::rigid_body::sample_sink::Sample;
-use kinetics::numeric::rigid_body::simulate::{Method, Sampling};
+use kinetics::numeric::rigid_body::simulate::Method;
 use kinetics::scene::{parse_scene, simulation};
 use std::io::Write;
 
@@ -34,23 +40,29 @@ pub enum Output {
 pub struct Args {
     /// The scene file; `-` reads standard input.
     pub scene: String,
-    /// Simulate until this time (s).
-    #[arg(long, conflicts_with = "at", required_unless_present = "at")]
+    /// Simulate until this time (s), positive.
+    #[arg(
+        long,
+        conflicts_with = "at",
+        required_unless_present = "at",
+        allow_negative_numbers = true
+    )]
     pub until: Option<f64>,
-    /// Sample interval with --until (s); default: until/100.
-    #[arg(long, requires = "until")]
+    /// Sample interval with --until (s), positive; default: until/100. More than
+    /// 10000000 samples (until/every + 1) need --force.
+    #[arg(long, requires = "until", allow_negative_numbers = true)]
     pub every: Option<f64>,
-    /// Sample at these times (s), comma-separated and increasing.
-    #[arg(long, value_delimiter = ',')]
+    /// Sample at these times (s), comma-separated, not negative and increasing.
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
     pub at: Option<Vec<f64>>,
     /// auto: the closed form when the body is torque-free, dop853 otherwise.
     #[arg(long, value_enum, default_value_t = MethodName::Auto)]
     pub method: MethodName,
     /// Relative tolerance of dop853 (and of auto when it integrates); default 1e-10.
-    #[arg(long, conflicts_with = "step")]
+    #[arg(long, conflicts_with = "step", allow_negative_numbers = true)]
     pub rtol: Option<f64>,
-    /// Step of rk4 and splitting (s); default 1e-3.
-    #[arg(long)]
+    /// Step of rk4 and splitting (s), positive; default 1e-3.
+    #[arg(long, allow_negative_numbers = true)]
     pub step: Option<f64>,
     #[arg(long, value_enum, default_value_t = Output::Csv)]
     pub format: Output,
@@ -58,8 +70,8 @@ pub struct Args {
     #[cfg(feature = "plot")]
     #[arg(long)]
     pub plot: Option<std::path::PathBuf>,
-    /// Overwrite the plot file if it exists.
-    #[cfg(feature = "plot")]
+    /// Write more than 10000000 samples; and overwrite the plot file if it exists, or write
+    /// through it if it is a symbolic link.
     #[arg(long)]
     pub force: bool,
 }
@@ -77,6 +89,8 @@ fn method_choice(
     rtol: Option<f64>,
     step: Option<f64>,
 ) -> Result<Choice, CliError> {
+    let rtol = rtol.map(|r| positive("--rtol", r)).transpose()?;
+    let step = step.map(|h| positive("--step", h)).transpose()?;
     let refuse = |flag: &str, name: &str, reason: &str| {
         Err(CliError::Usage(format!(
             "{flag} does not apply to --method {name}: {reason}"
@@ -136,17 +150,7 @@ fn method_choice(
 
 pub fn run(args: Args) -> Result<String, CliError> {
     let choice = method_choice(args.method, args.rtol, args.step)?;
-    let (name, text) = super::input::read_file(&args.scene)?;
-    let scene = parse_scene(&name, &text)?;
-    let problem = simulation::problem(&scene)?;
-    let sampling = match (&args.at, args.until) {
-        (Some(times), _) => Sampling::Times(times.clone()),
-        (None, Some(until)) => Sampling::Every {
-            interval: args.every.unwrap_or(until / 100.0),
-            end: until,
-        },
-        (None, None) => return Err(CliError::Usage("give --until T or --at t1,t2,...".into())),
-    };
+    let sampling = sampling(args.until, args.every, args.at.as_deref(), args.force)?;
     #[cfg(feature = "plot")]
     let mut plot = match &args.plot {
         Some(path) => {
@@ -154,16 +158,14 @@ pub fn run(args: Args) -> Result<String, CliError> {
         }
         None => None,
     };
+    let (name, text) = super::input::read_file(&args.scene)?;
+    let scene = parse_scene(&name, &text)?;
+    let problem = simulation::problem(&scene)?;
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
     let mut written = 0usize;
     let mut failure: Option<std::io::Error> = None;
     let header = "t,w_x,w_y,w_z,q_w,q_x,q_y,q_z,T,H";
-    let opening = match args.format {
-        Output::Csv => writeln!(out, "{header}"),
-        Output::Json => write!(out, "["),
-    };
-    opening.map_err(CliError::io("write"))?;
     let mut sink = |s: Sample<f64>| {
         if failure.is_some() {
             return;
@@ -186,9 +188,13 @@ pub fn run(args: Args) -> Result<String, CliError> {
             .map(|v| format!("{v:.17e}"))
             .collect::<Vec<_>>()
             .join(",");
-        let result = match args.format {
-            Output::Csv => writeln!(out, "{row}"),
-            Output::Json => write!(out, "{}[{row}]", if written == 0 { "" } else { "," }),
+        // The header (or the JSON array's opening) goes out with the first sample, so that
+        // a problem refused before it leaves standard output empty.
+        let result = match (args.format, written) {
+            (Output::Csv, 0) => writeln!(out, "{header}\n{row}"),
+            (Output::Csv, _) => writeln!(out, "{row}"),
+            (Output::Json, 0) => write!(out, "[[{row}]"),
+            (Output::Json, _) => write!(out, ",[{row}]"),
         };
         if let Err(e) = result {
             failure = Some(e);
@@ -202,9 +208,12 @@ pub fn run(args: Args) -> Result<String, CliError> {
     let (statistics, used) = super::progress::with_bar(|progress| {
         simulate_choice(&problem, &choice, &sampling, &mut sink, progress)
     })
-    .map_err(|source| CliError::Numeric {
-        name: Some(name),
-        source,
+    .map_err(|source| match simulation::located(&scene, &source) {
+        Some(located) => CliError::from(located),
+        None => CliError::Numeric {
+            name: Some(name),
+            source,
+        },
     })?;
     if let Some(e) = failure {
         return Err(CliError::Io {

@@ -48,6 +48,21 @@ pub enum Shape {
 }
 
 impl Shape {
+    /// The lengths that define the shape, in the order they are written, each with what it
+    /// is (`radius`, `length`, `side`): all of them must be positive.
+    pub fn lengths(&self) -> Vec<(&'static str, &Expr)> {
+        match self {
+            Shape::SlenderRod { length } => vec![("length", length)],
+            Shape::ThinPlate { a, b } => vec![("side", a), ("side", b)],
+            Shape::ThinDisk { radius } | Shape::SolidSphere { radius } => vec![("radius", radius)],
+            Shape::SolidCylinder { radius, length } => {
+                vec![("radius", radius), ("length", length)]
+            }
+            Shape::RectangularPrism { a, b, c } => vec![("side", a), ("side", b), ("side", c)],
+            Shape::PointMass | Shape::Explicit(_) => vec![],
+        }
+    }
+
     /// The centroidal tensor of this shape with mass `m`, in the shape's own axes, each
     /// moment expanded. Fails when a moment's expansion is over the bound (dimensions given
     /// as large powers of sums).

@@ -27,6 +27,10 @@ pub enum NumericError {
     /// The state became infinite or NaN (for instance a torque function returned NaN).
     #[error("the state is no longer finite at t = {t}; check the torque")]
     NonFinite { t: f64 },
+    /// A quantity of a sample (the kinetic energy, |H|) is beyond the range of the numbers
+    /// (or NaN) although the state is finite: it is not printed as `inf`.
+    #[error("{quantity} overflows at t = {t} s")]
+    SampleOverflow { quantity: &'static str, t: f64 },
     /// A sample sink refused a sample (for instance it could not write it).
     #[error("the sample sink failed: {reason}")]
     Sink { reason: String },

@@ -57,6 +57,8 @@ struct Analyser<'a> {
     h_g: Option<Vector>,
     hdot_g: Option<Vector>,
     unknowns: Option<HashMap<Symbol, Expr>>,
+    /// Unknowns solved in general that the givens' values leave undetermined.
+    undetermined_with_values: HashMap<Symbol, Expr>,
 }
 
 /// Runs the analysis for the scene's requests.
@@ -98,10 +100,15 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
 }
 
 /// The body's mass, mass centre (from O) and centroidal inertia, for callers that need the
-/// body but no derivation (the simulator).
+/// body but no derivation (the simulator); an error stands at the first body statement.
 pub fn centroidal_body(scene: &Scene) -> Result<MassProperties, Diagnostic> {
-    let mut a = Analyser::new(scene);
-    a.body(Span::default()).cloned()
+    // Errors stand at the first body statement, or at the end of a file without one.
+    let end = Span {
+        start: scene.source.len(),
+        end: scene.source.len(),
+    };
+    let at = scene.places.body.first().copied().unwrap_or(end);
+    Analyser::new(scene).body(at).cloned()
 }
 
 fn zero_vector() -> Vector {
@@ -120,6 +127,7 @@ impl<'a> Analyser<'a> {
             h_g: None,
             hdot_g: None,
             unknowns: None,
+            undetermined_with_values: HashMap::new(),
         }
     }
 
@@ -433,11 +441,56 @@ impl<'a> Analyser<'a> {
                 map.remove(&f);
             }
             self.unknowns = Some(map);
+            self.undetermined_with_values = self.undetermined_with_values(&equations, &wanted);
+        }
+        if let Some(equations) = self.undetermined_with_values.get(&s) {
+            // Named as the request is written when it asks for this unknown (`T_BC in N`).
+            let scene = self.scene;
+            let named = scene
+                .requests
+                .iter()
+                .find(|r| r.span == at && r.quantity == Quantity::Unknown(s))
+                .map_or_else(|| s.name().to_string(), Request::as_written);
+            return Err(scene.division_by_zero_at(at, &named, equations));
         }
         self.unknowns
             .as_ref()
             .and_then(|m| m.get(&s).cloned())
             .ok_or_else(|| self.solve_error(at, SolveError::UnderDetermined(vec![s])))
+    }
+
+    /// The unknowns that the equations determine in general, dividing by a symbolic pivot,
+    /// but not with the givens' values, where the pivot is zero (a shaft of length L = 0):
+    /// found by solving again with every given's exact value. Each comes with the equations
+    /// (their sum), whose zero givens the error names. Empty when a given in the equations
+    /// has no value.
+    fn undetermined_with_values(
+        &self,
+        equations: &[Expr],
+        wanted: &[Symbol],
+    ) -> HashMap<Symbol, Expr> {
+        let scene = self.scene;
+        let value = |s: Symbol| scene.exact_value(s).map(Expr::num);
+        let all_valued = equations
+            .iter()
+            .flat_map(|e| e.symbols())
+            .all(|s| wanted.contains(&s) || scene.value(s).is_some());
+        let with_values: Option<Vec<Expr>> =
+            equations.iter().map(|e| e.subs(&value).ok()).collect();
+        let (true, Some(with_values)) = (all_valued, with_values) else {
+            return HashMap::new();
+        };
+        let undetermined = match solve_linear(&with_values, wanted) {
+            Ok(solution) => solution.free,
+            Err(SolveError::UnderDetermined(free)) => free,
+            Err(SolveError::Inconsistent { .. }) => wanted.to_vec(),
+            Err(_) => Vec::new(),
+        };
+        let together = Expr::add_all(equations.iter().cloned());
+        undetermined
+            .into_iter()
+            .map(|u| (u, together.clone()))
+            .collect()
     }
 
     /// `ΣF = m ā` and `ΣM_P = Ḣ_G + r̄_{G/P} × m ā` about P = O (fixed point) or G.

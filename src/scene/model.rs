@@ -3,15 +3,36 @@
 //! reference frame; vectors are components in that frame.
 
 use super::units::Dimension;
-use crate::algebra::{AlgebraError, Expr, Symbol, Vector};
+use crate::algebra::{AlgebraError, Expr, Symbol, Vector, Q};
 use crate::mechanics::shapes::Shape;
 use crate::parse::Diagnostic;
+
+/// The exact rational a finite number reads as in its shortest decimal form: `1e200` is
+/// 10²⁰⁰ exactly, `0.1` is 1/10 (not the binary fraction nearest to it).
+pub fn exact_decimal(x: f64) -> Option<Q> {
+    let q = Q::parse_decimal(&format!("{:e}", x.abs()))?;
+    Some(if x < 0.0 { -&q } else { q })
+}
 
 /// Where a statement stands in the scene file, for diagnostics after parsing.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Span {
     pub start: usize,
     pub end: usize,
+}
+
+/// Where the statements a simulation draws on stand, so that what is found wrong with
+/// their values after parsing (an overflow, a missing value) is shown at the statement.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Places {
+    /// Each `body` statement, in the order of [`Scene::parts`].
+    pub body: Vec<Span>,
+    /// The `omega` statement.
+    pub omega: Option<Span>,
+    /// Each `force` statement, in the order of [`Scene::forces`].
+    pub forces: Vec<Span>,
+    /// Each `couple` statement, in the order of [`Scene::couples`].
+    pub couples: Vec<Span>,
 }
 
 /// A given quantity: symbolic, or with a value converted to SI.
@@ -23,6 +44,8 @@ pub struct Given {
     pub value: Option<f64>,
     /// The value as written (`20 kg`), for the worked solution.
     pub written: Option<String>,
+    /// Where the given's name stands, for errors found where it is used.
+    pub span: Span,
 }
 
 /// A part of the body: a standard shape with its mass, the position of its mass centre,
@@ -137,6 +160,16 @@ pub struct Request {
     pub unit: Option<(String, super::units::Unit)>,
 }
 
+impl Request {
+    /// The request as written: `T_BC in N`, `H_G`.
+    pub fn as_written(&self) -> String {
+        match &self.unit {
+            Some((unit, _)) => format!("{} in {unit}", self.name),
+            None => self.name.clone(),
+        }
+    }
+}
+
 /// A whole scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
@@ -163,6 +196,7 @@ pub struct Scene {
     pub constraints: Vec<Constraint>,
     pub unknowns: Vec<(Symbol, Dimension)>,
     pub requests: Vec<Request>,
+    pub places: Places,
 }
 
 impl Scene {
@@ -181,6 +215,45 @@ impl Scene {
             .iter()
             .find(|g| g.symbol == s)
             .and_then(|g| g.value)
+    }
+
+    /// The value of a given as the exact rational its SI value reads as in its shortest
+    /// decimal form (`1e200`, `0.1`), for deciding exactly what the values make of a result.
+    pub fn exact_value(&self, s: Symbol) -> Option<Q> {
+        self.value(s).and_then(exact_decimal)
+    }
+
+    /// A given as the user wrote it, with its line, for a help text: `L = 0 m (given on
+    /// line 9)`.
+    pub fn cite(&self, given: &Given) -> String {
+        let start = self.source.floor_char_boundary(given.span.start);
+        let line = self.source[..start].matches('\n').count() + 1;
+        let written = given.written.as_deref().unwrap_or("no value");
+        format!("{} = {written} (given on line {line})", given.symbol.name())
+    }
+
+    /// The request at `at` (written `named`) has no finite value: with the givens' values, the
+    /// expressions `e` it comes from divide by zero. The help names the givens of `e` whose
+    /// value is zero.
+    pub fn division_by_zero_at(&self, at: Span, named: &str, e: &Expr) -> Diagnostic {
+        let zeros = self.cite_givens_in(e, |v| v == 0.0);
+        let help = if zeros.is_empty() {
+            "a divisor is zero with the values of the givens; check them".to_string()
+        } else {
+            format!("{} makes a divisor zero; check the value", zeros.join(", "))
+        };
+        let message =
+            format!("{named} is not a finite number with the given values: it divides by zero");
+        self.error_at(at, message, help)
+    }
+
+    /// The givens in `e` whose value makes `bad` true, cited (`d = 0 m (given on line 5)`).
+    pub fn cite_givens_in(&self, e: &Expr, bad: impl Fn(f64) -> bool) -> Vec<String> {
+        self.givens
+            .iter()
+            .filter(|g| e.contains(g.symbol) && g.value.is_some_and(&bad))
+            .map(|g| self.cite(g))
+            .collect()
     }
 
     pub fn is_unknown(&self, s: Symbol) -> bool {

@@ -1,9 +1,12 @@
 //! Values of results: evaluation with the scene's givens (in SI) and the unit of the result.
 
-use crate::algebra::{vector, Expr, Symbol};
+use crate::algebra::{vector, AlgebraError, Expr, Symbol, Q};
 use crate::parse::Diagnostic;
+use crate::scene::model::{exact_decimal, Quantity, Request};
 use crate::scene::units::{dimension_of, Dimension, Dimensions};
 use crate::scene::{Analysis, Scene, Value};
+use num_bigint::BigInt;
+use num_traits::Signed;
 
 /// The dimensions of every symbol the scene declares, and of the unit vectors.
 pub fn scene_dimensions(scene: &Scene) -> Dimensions {
@@ -33,20 +36,33 @@ pub fn unit(dims: &Dimensions, e: &Expr) -> Option<String> {
     dimension_of(e, dims).ok().map(Dimension::si_unit)
 }
 
-/// Checks the requests written `find X in UNIT`: the answer must be in that kind of unit,
-/// every given it depends on must have a value, and with those values it must be finite.
+/// Checks that no requested number is silently left out. A request written `find X in UNIT`
+/// must be in that kind of unit and every given it depends on must have a value; any request
+/// whose givens all have values must have a finite value (in the unit asked for). An answer
+/// that is not (or that rounds to zero but is not zero) is refused at its `find`, saying why:
+/// a division by zero (naming the givens whose value is zero) or a magnitude beyond the range
+/// of numbers (`T = 2e399 J`).
 pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), Diagnostic> {
     let dims = scene_dimensions(scene);
     for (request, value) in &analysis.results {
-        let Some((written, unit)) = &request.unit else {
-            continue;
-        };
         let fail = |message: String, help: String| scene.error_at(request.span, message, help);
         let components: Vec<&Expr> = match value {
             Value::Scalar(e) => vec![e],
             Value::Vector(v) => v.iter().collect(),
         };
         for e in components.into_iter().filter(|e| !e.is_zero()) {
+            let missing: Vec<&str> = e
+                .symbols()
+                .into_iter()
+                .filter(|s| scene.value(*s).is_none())
+                .map(|s| s.name())
+                .collect();
+            let Some((written, unit)) = &request.unit else {
+                if missing.is_empty() {
+                    finite(scene, request, e, &dims)?;
+                }
+                continue;
+            };
             if let Ok(d) = dimension_of(e, &dims) {
                 if d != unit.dimension {
                     return Err(fail(
@@ -58,27 +74,102 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
                     ));
                 }
             }
-            let missing: Vec<&str> = e
-                .symbols()
-                .into_iter()
-                .filter(|s| scene.value(*s).is_none())
-                .map(|s| s.name())
-                .collect();
             if let Some(first) = missing.first() {
                 return Err(fail(
                     format!("{} in {written} needs a value for {}", request.name, missing.join(", ")),
                     format!("give it one, e.g. 'given {first} = <number> <unit>', or drop 'in {written}' for a symbolic answer"),
                 ));
             }
-            if self::value(scene, e).is_none() {
-                return Err(fail(
-                    format!("{} in {written} is not a finite number with the given values", request.name),
-                    "check the givens it depends on: with these values the configuration has no finite answer".into(),
-                ));
-            }
+            finite(scene, request, e, &dims)?;
         }
     }
     Ok(())
+}
+
+/// The unit a result is shown in: the SI unit of its dimension, but joules (not newton
+/// metres) for the kinetic energy, which is work-like.
+pub fn result_unit(request: &Request, dims: &Dimensions, e: &Expr) -> Option<String> {
+    unit(dims, e).map(|u| {
+        if request.quantity == Quantity::KineticEnergy && u == "N·m" {
+            "J".into()
+        } else {
+            u
+        }
+    })
+}
+
+/// `e`, every given of which has a value, is a finite number in the unit asked for; else
+/// the error at the request says why.
+fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Result<(), Diagnostic> {
+    let to_si = request.unit.as_ref().map_or(1.0, |(_, u)| u.to_si);
+    let v = value(scene, e).map(|v| v / to_si);
+    // A zero that is not zero exactly has underflowed: it is not the answer either.
+    let underflow = v == Some(0.0) && exact_value(scene, e).is_ok_and(|q| !q.is_zero());
+    if v.is_some_and(f64::is_finite) && !underflow {
+        return Ok(());
+    }
+    let named = request.as_written();
+    let fail = |message: String, help: String| Err(scene.error_at(request.span, message, help));
+    let depends = e
+        .symbols()
+        .into_iter()
+        .map(|s| s.name())
+        .collect::<Vec<_>>()
+        .join(", ");
+    match exact_value(scene, e) {
+        Ok(q) => {
+            let unit = match &request.unit {
+                Some((written, _)) => written.clone(),
+                None => result_unit(request, dims, e).unwrap_or_default(),
+            };
+            let q = &q * &exact_decimal(1.0 / to_si).unwrap_or(Q::ONE);
+            let name = &request.name;
+            let message = match q.to_f64() {
+                0.0 => format!("{name} = {} {unit} is below the range of numbers (magnitudes down to about 2.2e-308)", scientific(&q)),
+                x if x.is_finite() => format!("{name} = {} {unit} cannot be evaluated: a value on the way to it is beyond the range of numbers", format_value(x)),
+                _ => format!("{name} = {} {unit} overflows the range of numbers (magnitudes up to about 1.8e308)", scientific(&q)),
+            };
+            fail(
+                message,
+                format!("check the values of the givens it depends on ({depends}): one is far too large or too small"),
+            )
+        }
+        Err(AlgebraError::DivisionByZero) => Err(scene.division_by_zero_at(request.span, &named, e)),
+        Err(_) => fail(
+            format!("{named} is not a finite number with the given values"),
+            "check the givens it depends on: with these values the configuration has no finite answer".into(),
+        ),
+    }
+}
+
+/// The exact value of `e` with each given's value as the decimal it reads as (`1e200`,
+/// `0.1`): a number when `e` is built from sums, products and integer powers; an error
+/// for a division by zero; a non-number left with functions of values.
+fn exact_value(scene: &Scene, e: &Expr) -> Result<Q, AlgebraError> {
+    let given = |s: Symbol| scene.exact_value(s).map(Expr::num);
+    let exact = e.subs(&given)?;
+    exact
+        .as_num()
+        .cloned()
+        .ok_or_else(|| AlgebraError::MissingValue(exact.to_string()))
+}
+
+/// An exact rational in scientific notation with four significant figures, however large:
+/// `2e399`, `-1.235e-400`.
+fn scientific(q: &Q) -> String {
+    let (numerator, denominator) = q.parts();
+    let sign = if q.is_negative() { "-" } else { "" };
+    let numerator = numerator.abs();
+    let digits = |n: &BigInt| n.to_string().len() as i64;
+    // |q| lies in [10^(k-1), 10^(k+1)): scaled by 10^(4-k), it has four or five digits.
+    let k = digits(&numerator) - digits(&denominator);
+    let ten = |n: i64| BigInt::from(10).pow(n.max(0) as u32);
+    let scaled = numerator * ten(4 - k) / (denominator * ten(k - 4));
+    let text = scaled.to_string();
+    let exponent = k - 5 + text.len() as i64;
+    let mantissa = format!("{}.{}", &text[..1], &text[1..4]);
+    let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+    format!("{sign}{mantissa}e{exponent}")
 }
 
 /// Four significant figures, without trailing noise: `-129.8`, `0.01234`, `1.235e-7`.
@@ -101,7 +192,20 @@ pub fn format_value(x: f64) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::format_value;
+    use super::{format_value, scientific};
+    use crate::algebra::Q;
+
+    #[test]
+    fn scientific_beyond_the_range_of_doubles() {
+        let big = |text: &str| Q::parse_decimal(text).unwrap();
+        assert_eq!(scientific(&big("2e399")), "2e399");
+        assert_eq!(scientific(&-&big("12345678e400")), "-1.234e407");
+        assert_eq!(scientific(&big("9.999e-400")), "9.999e-400");
+        assert_eq!(
+            scientific(&(&big("1e-400") * &Q::new(1, 3).unwrap())),
+            "3.333e-401"
+        );
+    }
 
     #[test]
     fn four_significant_figures() {

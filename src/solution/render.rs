@@ -13,7 +13,7 @@
 //!                "unit": string|null}] }
 //! ```
 
-use super::numbers::{format_value, scene_dimensions, unit, value};
+use super::numbers::{format_value, result_unit, scene_dimensions, unit, value};
 use crate::algebra::{Expr, Vector};
 use crate::mechanics::derivation::Relation;
 use crate::print::{self, Notation};
@@ -73,14 +73,7 @@ fn computed<'a>(scene: &Scene, request: &'a Request, v: &Value, dims: &Dimension
                 text: print::text(e),
                 latex: print::latex(e),
                 value: value(scene, e).map(|x| vec![x]),
-                // Kinetic energy is work-like: joules, not newton metres.
-                unit: unit(dims, e).map(|u| {
-                    if request.quantity == Quantity::KineticEnergy && u == "N·m" {
-                        "J".into()
-                    } else {
-                        u
-                    }
-                }),
+                unit: result_unit(request, dims, e),
             },
             Value::Vector(vec) => Result {
                 name: &request.name,

@@ -47,7 +47,7 @@ fn a_power_of_a_vector_is_refused_as_written() {
     for input in ["(a+i)^9223372036854775808", "(3*v-i)^600"] {
         assert_located(
             &["latex", input],
-            &format!("a power of a vector, {input}, has no meaning"),
+            &format!("a power of a vector, '{input}', has no meaning"),
             input,
         );
     }

@@ -103,6 +103,17 @@ impl<T: RealField + Copy> BodyInertia<T> {
         }
     }
 
+    /// `|H_G| = |[I] ω|`, scaled by its largest component before squaring, so that a
+    /// magnitude near the top of the range (4e299) does not overflow in its squares.
+    pub fn angular_momentum_magnitude(&self, omega: &Vector3<T>) -> T {
+        let h = self.angular_momentum(omega);
+        let largest = h.amax();
+        if largest == T::zero() || !largest.is_finite() {
+            return largest;
+        }
+        (h / largest).norm() * largest
+    }
+
     /// Kinetic energy of rotation `T = ½ ω · [I] ω`.
     pub fn kinetic_energy(&self, omega: &Vector3<T>) -> T {
         omega.dot(&self.angular_momentum(omega)) * constant(0.5)

@@ -4,6 +4,8 @@
 //! Everything is validated before the first step: the inertia
 //! ([`BodyInertia::validate`]), the initial state and constant torques (finite), the method's
 //! parameters and the sample times (finite, strictly increasing, not before the start).
+//! Every sample is checked before it is handed on: a state, kinetic energy or |H| that is
+//! not finite stops the simulation with an error naming it, never an `inf` in the output.
 //! Samples are produced one at a time and never stored, so memory does not depend on their
 //! number.
 //!
@@ -31,6 +33,10 @@ use nalgebra::{RealField, SVector, UnitQuaternion};
 
 /// Most steps (or samples) a simulation may be asked for.
 const MAX_COUNT: f64 = 1e15;
+/// The kinetic energy as an error names it.
+pub const KINETIC_ENERGY: &str = "the kinetic energy T = ½ωᵀ[I]ω";
+/// The magnitude of the angular momentum as an error names it.
+pub const ANGULAR_MOMENTUM: &str = "the angular momentum |H_G| = |[I]ω|";
 /// Progress is reported when the fraction done has grown by this much.
 const PROGRESS_RESOLUTION: f64 = 1e-3;
 
@@ -168,12 +174,25 @@ where
             return Err(NumericError::NonFinite { t: to_f64(t) });
         }
         let omega = state.omega;
+        let kinetic_energy = problem.inertia.kinetic_energy(&omega);
+        let angular_momentum_magnitude = problem.inertia.angular_momentum_magnitude(&omega);
+        for (quantity, value) in [
+            (KINETIC_ENERGY, kinetic_energy),
+            (ANGULAR_MOMENTUM, angular_momentum_magnitude),
+        ] {
+            if !value.is_finite() {
+                return Err(NumericError::SampleOverflow {
+                    quantity,
+                    t: to_f64(t),
+                });
+            }
+        }
         sink.accept(Sample {
             t,
             omega,
             orientation: state.orientation,
-            kinetic_energy: problem.inertia.kinetic_energy(&omega),
-            angular_momentum_magnitude: problem.inertia.angular_momentum(&omega).norm(),
+            kinetic_energy,
+            angular_momentum_magnitude,
         })?;
         let fraction = if k + 1 == times.len() {
             1.0

@@ -1,6 +1,9 @@
 //! The `body` statement: a standard shape (or an explicit inertia tensor) with its mass, the
 //! position of its mass centre and its orientation (`along x|y|z`, `rotated ANGLE about x|y|z`),
-//! checked for physical admissibility.
+//! checked for physical admissibility: every length of the shape, the mass and the total mass
+//! of the bodies so far are positive (`q > 0`, decided by [`ensure_positive`]: symbolically
+//! where it can be, else from the givens' values), and an explicit tensor is one a real body
+//! can have.
 
 use super::super::model::Part;
 use super::super::units::Dimension;
@@ -8,12 +11,18 @@ use super::{span, Reader, Rule};
 use crate::algebra::{Expr, Func, Matrix, Symbol, Vector};
 use crate::mechanics::inertia::InertiaTensor;
 use crate::mechanics::shapes::Shape;
-use crate::mechanics::validation::validate_inertia_tensor;
+use crate::mechanics::validation::{
+    ensure_positive, validate_inertia_tensor, MustBePositive, SymbolFacts,
+};
 use crate::parse::Diagnostic;
 use pest::iterators::Pair;
 
 impl Reader<'_> {
-    pub(super) fn body(&mut self, inner: Vec<Pair<Rule>>) -> Result<(), Diagnostic> {
+    pub(super) fn body(
+        &mut self,
+        inner: Vec<Pair<Rule>>,
+        at: (usize, usize),
+    ) -> Result<(), Diagnostic> {
         let shape_pair = &inner[0];
         let mut shape_inner = shape_pair.clone().into_inner();
         let kind = shape_inner
@@ -37,8 +46,23 @@ impl Reader<'_> {
         } else {
             self.shape(&kind, lengths, span(shape_pair))?
         };
+        let body = format!("body {} ({})", self.scene.parts.len() + 1, kind.as_str());
+        for ((what, length), a) in shape.lengths().into_iter().zip(&args) {
+            let quantity = format!("the {what} of {body}");
+            self.positive(&quantity, what, a.as_str().trim(), "m", length, span(a))?;
+        }
         let mass = self.math(&inner[1])?;
         self.expect_dimension(&mass, Dimension::MASS, span(&inner[1]))?;
+        let written = inner[1].as_str().trim();
+        self.positive(
+            &format!("the mass of {body}"),
+            "mass",
+            written,
+            "kg",
+            &mass,
+            at,
+        )?;
+        self.total_mass_positive(&mass, at)?;
         let mut position = Vector::from_element(Expr::zero());
         let mut rotation = Matrix::identity();
         let mut i = 2;
@@ -64,6 +88,71 @@ impl Reader<'_> {
             rotation,
         });
         Ok(())
+    }
+
+    /// Refuses `e` (a length or a mass, written `written`) at `at` unless it is positive,
+    /// naming the givens with a value that is not (and their lines) in the help.
+    fn positive(
+        &self,
+        quantity: &str,
+        kind: &str,
+        written: &str,
+        unit: &str,
+        e: &Expr,
+        at: (usize, usize),
+    ) -> Result<(), Diagnostic> {
+        let scene = &self.scene;
+        // Positive by its value, or by its domain: a given mass or length without a value.
+        let positive = |s: Symbol| match (scene.value(s), scene.dimension(s)) {
+            (Some(v), _) => v > 0.0,
+            (None, Some(d)) if !scene.is_unknown(s) => {
+                d == Dimension::MASS || d == Dimension::LENGTH
+            }
+            _ => false,
+        };
+        let value = |s: Symbol| scene.value(s);
+        let facts = SymbolFacts {
+            positive: &positive,
+            value: &value,
+        };
+        let what = MustBePositive {
+            quantity,
+            kind,
+            written,
+            unit,
+        };
+        ensure_positive(what, e, &facts).map_err(|err| {
+            let culprits = scene.cite_givens_in(e, |v| v <= 0.0);
+            let help = if culprits.is_empty() {
+                format!("a {kind} must be greater than zero: correct {written}")
+            } else {
+                format!(
+                    "{}; a {kind} must be greater than zero",
+                    culprits.join(", ")
+                )
+            };
+            self.error(at, err.to_string()).with_help(help)
+        })
+    }
+
+    /// The total mass of the bodies so far, this one's `mass` included, is positive too: when
+    /// each mass is undecided alone (`x m`, `-x m`), their sum may still be decided.
+    fn total_mass_positive(&self, mass: &Expr, at: (usize, usize)) -> Result<(), Diagnostic> {
+        let parts = &self.scene.parts;
+        if parts.is_empty() {
+            return Ok(());
+        }
+        let masses = parts.iter().map(|p| p.mass.clone()).chain([mass.clone()]);
+        let total = Expr::add_all(masses.clone()).expand().map_err(|e| {
+            self.error(at, e.to_string())
+                .with_help("simplify the masses")
+        })?;
+        let written = masses
+            .map(|m| format!("({m})"))
+            .collect::<Vec<_>>()
+            .join(" + ");
+        let quantity = format!("the total mass of bodies 1 to {}", parts.len() + 1);
+        self.positive(&quantity, "total mass", &written, "kg", &total, at)
     }
 
     /// `inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz)`: checked for physical admissibility when

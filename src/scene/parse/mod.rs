@@ -2,9 +2,12 @@
 //! (file:line:column, a caret, a hint). The mathematics inside a statement goes through the
 //! expression parser; its diagnostics are moved to their place in the file.
 
-use super::model::{Constraint, ConstraintKind, Force, Given, Quantity, Request, Scene, Span};
+use super::model::{
+    Constraint, ConstraintKind, Force, Given, Places, Quantity, Request, Scene, Span,
+};
 use super::units::{dimension_of, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
 use crate::algebra::{vector, Expr, Symbol, Vector};
+use crate::mechanics::validation::validate_mass;
 use crate::parse::{parse_expression, Diagnostic};
 use pest::iterators::Pair;
 use pest::Parser;
@@ -12,6 +15,7 @@ use syntax_error::{expected_words, syntax_error};
 
 mod body;
 mod syntax_error;
+mod unclosed_parentheses;
 
 /// The name of time in scene mathematics.
 pub const TIME: &str = "t";
@@ -47,6 +51,7 @@ struct SceneGrammar;
 /// ```
 pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic> {
     crate::parse::limits::check_input(source_name, source)?;
+    unclosed_parentheses::check_unclosed_parentheses(source_name, source)?;
     // Error detail records the furthest place the grammar reached and what it expected there.
     pest::set_error_detail(true);
     let mut pairs = SceneGrammar::parse(Rule::scene, source).map_err(|e| {
@@ -85,6 +90,7 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
             constraints: vec![],
             unknowns: vec![],
             requests: vec![],
+            places: Places::default(),
         },
     };
     for unit_vector in vector::unit_vectors() {
@@ -135,7 +141,7 @@ impl Reader<'_> {
         match rule {
             Rule::title => self.scene.title = inner.first().map(|t| t.as_str().trim().to_string()),
             Rule::given => self.given(inner)?,
-            Rule::body => self.body(inner)?,
+            Rule::body => self.body(inner, at)?,
             Rule::fixed_point => self.scene.fixed_point = true,
             Rule::omega => {
                 self.only_once(self.scene.omega.is_some(), at)?;
@@ -231,6 +237,17 @@ impl Reader<'_> {
                 }
             }
             _ => return Err(self.error(at, "unexpected statement")),
+        }
+        let place = Span {
+            start: at.0,
+            end: at.1,
+        };
+        match rule {
+            Rule::body => self.scene.places.body.push(place),
+            Rule::omega => self.scene.places.omega = Some(place),
+            Rule::force => self.scene.places.forces.push(place),
+            Rule::couple => self.scene.places.couples.push(place),
+            _ => {}
         }
         Ok(())
     }
@@ -417,7 +434,9 @@ impl Reader<'_> {
                 )));
         };
         let symbol = self.declare(name, dimension)?;
-        if dimension == Dimension::MASS && value.is_some_and(|v| v <= 0.0) {
+        if dimension == Dimension::MASS
+            && value.is_some_and(|v| validate_mass(name.as_str(), v).is_err())
+        {
             return Err(self
                 .error(
                     span(&inner[1]),
@@ -430,6 +449,10 @@ impl Reader<'_> {
             dimension,
             value,
             written,
+            span: Span {
+                start: span(name).0,
+                end: span(name).1,
+            },
         });
         Ok(())
     }

@@ -25,6 +25,7 @@ mod layering;
 mod nalgebra_ops;
 mod principal_axes;
 mod print_parse_properties;
+mod reproducers;
 mod scene_solutions;
 mod shapes_numeric;
 mod simulate_choice;

@@ -197,7 +197,12 @@ fn problems(r: &Reproducer) -> Vec<String> {
         Ok(o) => o,
         Err(e) => return vec![e],
     };
-    let first = o.stderr.lines().next().unwrap_or_default().to_string();
+    let first = o
+        .stderr
+        .lines()
+        .find(|l| !l.trim().is_empty())
+        .unwrap_or_default()
+        .to_string();
     if let Some(s) = signal(&o.status) {
         return vec![format!(
             "killed by signal {s} (stack overflow or abort): {first}"

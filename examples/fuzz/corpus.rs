@@ -1,5 +1,6 @@
-//! The seed corpus: issue 14's reproducers (`tests/reproducers/`), and for scenes the
-//! shipped scenes (`examples/scenes/`) and the malformed ones (`tests/bad_scenes/`).
+//! The seed corpus: issue 14's reproducers (`tests/reproducers/`); for expressions also the
+//! right sides of the shipped scenes' statements, for scenes the shipped scenes
+//! (`examples/scenes/`) and the malformed ones (`tests/bad_scenes/`).
 
 use crate::target::Target;
 use std::path::Path;
@@ -44,8 +45,28 @@ pub fn seeds(target: Target) -> Vec<String> {
             });
         }
     }
-    if seeds.is_empty() {
-        seeds.push("a + b".to_string());
+    if target == Target::Expr {
+        seeds.extend(scene_expressions(root));
     }
     seeds
+}
+
+/// The right sides of the shipped scenes' `=` (`0.3 kg`, `w*i`, `D_y*j + D_z*k at (L, 0, 0)`):
+/// expressions as people write them, to mutate besides the reproducers.
+fn scene_expressions(root: &Path) -> Vec<String> {
+    let Ok(entries) = std::fs::read_dir(root.join("examples/scenes")) else {
+        return Vec::new();
+    };
+    let mut paths: Vec<_> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
+    paths.sort();
+    paths
+        .iter()
+        .filter_map(|p| std::fs::read_to_string(p).ok())
+        .flat_map(|text| {
+            text.lines()
+                .filter(|l| !l.starts_with('#'))
+                .filter_map(|l| l.split_once(" = ").map(|(_, rhs)| rhs.to_string()))
+                .collect::<Vec<_>>()
+        })
+        .collect()
 }

@@ -30,7 +30,7 @@ mod worker;
 
 use clap::Parser;
 use std::path::PathBuf;
-use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
+use std::time::{Duration, Instant};
 
 /// Fuzz `kinetics` with generated and mutated input.
 #[derive(Parser)]
@@ -67,10 +67,6 @@ fn main() {
     let Some(job) = options.job else {
         std::process::exit(supervisor::run(&options, &dir));
     };
-    let now_ms = SystemTime::now()
-        .duration_since(UNIX_EPOCH)
-        .map(|d| d.as_millis() as u64)
-        .unwrap_or(0);
     worker::run(worker::Work {
         target: options.target,
         seed: options.seed,
@@ -78,6 +74,7 @@ fn main() {
         generation: options.generation,
         findings: dir.join("findings"),
         current: supervisor::current_file(&dir, job),
-        end: Instant::now() + Duration::from_millis(options.end_ms.saturating_sub(now_ms)),
+        end: Instant::now()
+            + Duration::from_millis(options.end_ms.saturating_sub(supervisor::unix_ms())),
     })
 }

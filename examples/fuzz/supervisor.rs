@@ -45,11 +45,7 @@ pub fn run(options: &Options, dir: &Path) -> i32 {
     let findings = dir.join("findings");
     std::fs::create_dir_all(&findings).expect("the findings directory can be made");
     let start = Instant::now();
-    let end_ms = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map(|d| d.as_millis() as u64)
-        .unwrap_or(0)
-        + options.seconds * 1000;
+    let end_ms = unix_ms() + options.seconds * 1000;
     let (tell, reports) = channel();
     let mut generation = vec![0u64; options.jobs as usize];
     for job in 0..options.jobs {
@@ -90,10 +86,7 @@ pub fn run(options: &Options, dir: &Path) -> i32 {
                     note(finding, path.display().to_string());
                     *ran.entry((job, generation[job as usize])).or_default() += 1;
                 }
-                let now = std::time::SystemTime::now()
-                    .duration_since(std::time::UNIX_EPOCH)
-                    .map(|d| d.as_millis() as u64)
-                    .unwrap_or(u64::MAX);
+                let now = unix_ms();
                 // A worker ended early by a crash or a hang: a new one in its place.
                 if now + 200 < end_ms {
                     generation[job as usize] += 1;
@@ -128,6 +121,15 @@ pub fn run(options: &Options, dir: &Path) -> i32 {
         );
     }
     1
+}
+
+/// Now, in milliseconds since the Unix epoch: the clock the supervisor and its workers share
+/// for the campaign's end.
+pub fn unix_ms() -> u64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map(|d| d.as_millis() as u64)
+        .unwrap_or(0)
 }
 
 /// The file worker `job` writes each input to before running it.

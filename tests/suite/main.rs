@@ -25,6 +25,7 @@ mod layering;
 mod nalgebra_ops;
 mod principal_axes;
 mod print_parse_properties;
+mod reproducers;
 mod robust_algebra;
 mod robust_bodies;
 mod robust_parse;

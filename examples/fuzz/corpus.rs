@@ -1,0 +1,72 @@
+//! The seed corpus: issue 14's reproducers (`tests/reproducers/`); for expressions also the
+//! right sides of the shipped scenes' statements, for scenes the shipped scenes
+//! (`examples/scenes/`) and the malformed ones (`tests/bad_scenes/`).
+
+use crate::target::Target;
+use std::path::Path;
+
+/// The headers of a file in `tests/reproducers/` (see `tests/suite/reproducers.rs`).
+const HEADERS: [&str; 4] = ["# run: ", "# at: ", "# ok: ", "# refuse: "];
+
+/// The texts of the target's seeds: an expression each, or a scene each.
+pub fn seeds(target: Target) -> Vec<String> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dirs: &[&str] = match target {
+        Target::Expr => &["tests/reproducers"],
+        Target::Scene => &["tests/reproducers", "examples/scenes", "tests/bad_scenes"],
+    };
+    let mut seeds = Vec::new();
+    for dir in dirs {
+        let Ok(entries) = std::fs::read_dir(root.join(dir)) else {
+            continue;
+        };
+        let mut paths: Vec<_> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
+        paths.sort();
+        for path in paths {
+            if path.extension().is_none_or(|e| e != target.extension()) {
+                continue;
+            }
+            let Ok(text) = std::fs::read_to_string(&path) else {
+                continue;
+            };
+            seeds.push(match target {
+                // The expression is the first line that is not a header.
+                Target::Expr => text
+                    .lines()
+                    .find(|l| !l.starts_with("# "))
+                    .unwrap_or_default()
+                    .to_string(),
+                // Without the reproducer's headers, which say how the test runs it.
+                Target::Scene => text
+                    .lines()
+                    .filter(|l| !HEADERS.iter().any(|h| l.starts_with(h)))
+                    .map(|l| format!("{l}\n"))
+                    .collect(),
+            });
+        }
+    }
+    if target == Target::Expr {
+        seeds.extend(scene_expressions(root));
+    }
+    seeds
+}
+
+/// The right sides of the shipped scenes' `=` (`0.3 kg`, `w*i`, `D_y*j + D_z*k at (L, 0, 0)`):
+/// expressions as people write them, to mutate besides the reproducers.
+fn scene_expressions(root: &Path) -> Vec<String> {
+    let Ok(entries) = std::fs::read_dir(root.join("examples/scenes")) else {
+        return Vec::new();
+    };
+    let mut paths: Vec<_> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
+    paths.sort();
+    paths
+        .iter()
+        .filter_map(|p| std::fs::read_to_string(p).ok())
+        .flat_map(|text| {
+            text.lines()
+                .filter(|l| !l.starts_with('#'))
+                .filter_map(|l| l.split_once(" = ").map(|(_, rhs)| rhs.to_string()))
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}

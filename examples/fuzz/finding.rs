@@ -1,0 +1,138 @@
+//! What the fuzzer looks for, and how a finding is kept: one file per kind of failure (its
+//! class and a signature with the numbers taken out), written in the reproducer format of
+//! `tests/reproducers/` (`# run: ...`, `# found: ...`, then the input), so a finding can be
+//! copied there as it is.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+/// The kinds of failure (issue 14's promises, broken).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Class {
+    /// A Rust panic (caught by `catch_unwind`).
+    Panic,
+    /// The process died: a stack overflow, an abort, the memory exhausted.
+    Crash,
+    /// One input ran longer than the watchdog's limit.
+    Hang,
+    /// `inf` or `NaN` in an output, or a non-finite sample.
+    NonFinite,
+    /// An error without a place in the input, or pointing at a comment.
+    Unlocated,
+    /// An error quoting a number the user never wrote (a long expanded constant).
+    Unquoted,
+}
+
+impl Class {
+    pub fn name(self) -> &'static str {
+        match self {
+            Class::Panic => "panic",
+            Class::Crash => "crash",
+            Class::Hang => "hang",
+            Class::NonFinite => "non-finite",
+            Class::Unlocated => "unlocated",
+            Class::Unquoted => "unquoted",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Class> {
+        [
+            Class::Panic,
+            Class::Crash,
+            Class::Hang,
+            Class::NonFinite,
+            Class::Unlocated,
+            Class::Unquoted,
+        ]
+        .into_iter()
+        .find(|c| c.name() == name)
+    }
+}
+
+/// A failure: its class and what tells it apart from others of the class.
+#[derive(Clone, Debug)]
+pub struct Finding {
+    pub class: Class,
+    pub signature: String,
+}
+
+impl Finding {
+    /// `place` (a panic's source location, or empty) and `message` with every run of digits
+    /// as `N`, on one line, at most 160 characters: the same failure on other numbers is the
+    /// same finding.
+    pub fn new(class: Class, place: &str, message: &str) -> Finding {
+        let mut s = place.to_string();
+        let mut in_digits = false;
+        for c in message
+            .chars()
+            .map(|c| if c.is_whitespace() { ' ' } else { c })
+        {
+            match (c.is_ascii_digit(), in_digits) {
+                (true, true) => {}
+                (true, false) => s.push('N'),
+                (false, _) => s.push(c),
+            }
+            in_digits = c.is_ascii_digit();
+            if s.len() >= 160 {
+                break;
+            }
+        }
+        Finding {
+            class,
+            signature: s,
+        }
+    }
+
+    /// A hang or a crash of `reproducer` (whose first line is its `# run:`): told apart by
+    /// the command and the input's longest line, where the trouble usually is.
+    pub fn of_input(class: Class, why: &str, reproducer: &str) -> Finding {
+        let (run, input) = reproducer.split_once('\n').unwrap_or((reproducer, ""));
+        let longest = input.lines().max_by_key(|l| l.len()).unwrap_or_default();
+        Finding::new(class, "", &format!("{why}: {run}: {longest}"))
+    }
+
+    /// The file this finding is kept in, under `dir`.
+    pub fn path(&self, dir: &Path, extension: &str) -> PathBuf {
+        // FNV-1a of the signature: a stable name for the same failure.
+        let hash = self
+            .signature
+            .bytes()
+            .fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+                (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
+            });
+        dir.join(format!("{}-{hash:016x}.{extension}", self.class.name()))
+    }
+
+    /// Keeps `reproducer` (an input in the reproducer format) for this finding unless one is
+    /// kept already, and reports it on standard output for the supervisor:
+    /// `finding<TAB>class<TAB>signature<TAB>path`.
+    pub fn report(&self, dir: &Path, extension: &str, reproducer: &str) {
+        let path = self.path(dir, extension);
+        if let Ok(mut file) = std::fs::File::create_new(&path) {
+            let found = format!("# found: {}: {}\n", self.class.name(), self.signature);
+            let (run, input) = reproducer.split_once('\n').unwrap_or((reproducer, ""));
+            let _ = write!(file, "{run}\n{found}{input}");
+        }
+        println!(
+            "finding\t{}\t{}\t{}",
+            self.class.name(),
+            self.signature,
+            path.display()
+        );
+    }
+}
+
+/// The first word of `text` that is a printed non-finite number (`inf`, `NaN`, any case).
+pub fn non_finite_word(text: &str) -> Option<&str> {
+    text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_' || c == '.'))
+        .map(|w| w.trim_start_matches(|c: char| c.is_ascii_digit() || c == '.'))
+        .find(|w| ["inf", "infinity", "nan"].contains(&w.to_ascii_lowercase().as_str()))
+}
+
+/// The length of the longest run of digits in `text`.
+pub fn longest_digit_run(text: &str) -> usize {
+    text.split(|c: char| !c.is_ascii_digit())
+        .map(str::len)
+        .max()
+        .unwrap_or(0)
+}

@@ -1,0 +1,173 @@
+//! The two fuzz targets, each input through the library entry points of the commands:
+//! `expr` through `kinetics simplify [--expand]` and `kinetics latex` (parse, expand, print
+//! in text and LaTeX, a vector component by component), `scene` through `kinetics solve`
+//! (parse, analyse, the numbers asked for, the worked solution) and `kinetics simulate
+//! --until 1` (the body's problem, integrated or in closed form, 100 samples). `plan` is
+//! `solve`'s analysis without the rendering, so `solve` covers it.
+//!
+//! Each run returns the first broken promise it sees (a panic aside: the worker catches it);
+//! a clean refusal is no finding.
+
+use crate::finding::{longest_digit_run, non_finite_word, Class, Finding};
+use kinetics::algebra::{vector, AlgebraError, Axis, Expr};
+use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice};
+use kinetics::numeric::rigid_body::sample_sink::Sample;
+use kinetics::numeric::rigid_body::simulate::Sampling;
+use kinetics::parse::{parse_statement, Diagnostic, Statement};
+use kinetics::print::{self, Notation};
+use kinetics::scene::{analyse, parse_scene, simulation};
+use kinetics::solution::numbers::check_numeric_requests;
+use kinetics::solution::{render, Format};
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Target {
+    Expr,
+    Scene,
+}
+
+impl Target {
+    /// The commands an input goes through, as `# run:` writes them.
+    pub fn runs(self) -> &'static [&'static str] {
+        match self {
+            Target::Expr => &["simplify", "simplify --expand", "latex"],
+            Target::Scene => &["solve", "simulate --until 1"],
+        }
+    }
+
+    /// The extension of its inputs' files.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Target::Expr => "expr",
+            Target::Scene => "scene",
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        self.extension()
+    }
+}
+
+/// Runs `text` through the command `run`: what it broke, if anything.
+pub fn check(run: &str, text: &str) -> Option<Finding> {
+    let outcome = match run {
+        "simplify" | "latex" => expression(text, false),
+        "simplify --expand" => expression(text, true),
+        "solve" => solve(text),
+        _ => simulate(text),
+    };
+    outcome.err().flatten()
+}
+
+/// `Err(None)`: refused cleanly; `Err(Some(finding))`: a promise broken.
+type Outcome = Result<(), Option<Finding>>;
+
+fn expression(text: &str, expand: bool) -> Outcome {
+    let statement = parse_statement("input", text).map_err(|d| located(&d, text, false))?;
+    let sides = match statement {
+        Statement::Expression(e) => vec![e],
+        Statement::Equation(eq) => vec![eq.lhs, eq.rhs],
+    };
+    for side in sides {
+        let side = if expand {
+            side.expand().map_err(unlocated)?
+        } else {
+            side
+        };
+        for notation in [Notation::Text, Notation::Latex] {
+            printed(&show(&side, notation).map_err(unlocated)?)?;
+        }
+    }
+    Ok(())
+}
+
+/// An expression as `simplify` and `latex` print it.
+fn show(e: &Expr, notation: Notation) -> Result<String, AlgebraError> {
+    if vector::has_unit_vectors(e) {
+        Ok(print::vector(&vector::components(e)?, notation))
+    } else {
+        Ok(print::render(e, notation, Axis::X))
+    }
+}
+
+fn solve(text: &str) -> Outcome {
+    let scene = parse_scene("fuzz.scene", text).map_err(|d| located(&d, text, true))?;
+    let analysis = analyse(&scene).map_err(|d| located(&d, text, true))?;
+    check_numeric_requests(&scene, &analysis).map_err(|d| located(&d, text, true))?;
+    Ok(printed(&render(&scene, &analysis, Format::Text, false))?)
+}
+
+fn simulate(text: &str) -> Outcome {
+    let scene = parse_scene("fuzz.scene", text).map_err(|d| located(&d, text, true))?;
+    let problem = simulation::problem(&scene).map_err(|d| located(&d, text, true))?;
+    let sampling = Sampling::Every {
+        interval: 0.01,
+        end: 1.0,
+    };
+    let mut non_finite = None;
+    let mut sink = |s: Sample<f64>| {
+        let q = s.orientation.into_inner();
+        let fields = [
+            ("t", s.t),
+            ("w_x", s.omega.x),
+            ("w_y", s.omega.y),
+            ("w_z", s.omega.z),
+            ("q", q.w + q.i + q.j + q.k),
+            ("T", s.kinetic_energy),
+            ("H", s.angular_momentum_magnitude),
+        ];
+        if let Some((name, _)) = fields.iter().find(|(_, v)| !v.is_finite()) {
+            non_finite.get_or_insert(*name);
+        }
+    };
+    let choice = Choice::Auto { rtol: 1e-10 };
+    simulate_choice(&problem, &choice, &sampling, &mut sink, &mut |_| {}).map_err(unlocated)?;
+    match non_finite {
+        Some(name) => Err(Some(Finding::new(Class::NonFinite, "sample ", name))),
+        None => Ok(()),
+    }
+}
+
+/// What is wrong with a refusal, if anything: a place outside the input or on a comment
+/// line of a scene, or a quoted number longer than any the input holds.
+fn located(d: &Diagnostic, text: &str, scene: bool) -> Option<Finding> {
+    let line = text.lines().nth(d.line.wrapping_sub(1));
+    let said = format!("{} {}", d.message, d.help.as_deref().unwrap_or_default());
+    // The end of the input is a place: where a missing line goes.
+    let at_end = d.span.offset() >= text.trim_end().len();
+    let no_place = !at_end
+        && match line {
+            None => true,
+            Some(l) => scene && l.trim_start().starts_with('#'),
+        };
+    if no_place {
+        return Some(Finding::new(
+            Class::Unlocated,
+            "points at no statement: ",
+            &words(&d.message),
+        ));
+    }
+    (longest_digit_run(&said) > longest_digit_run(text).max(12))
+        .then(|| Finding::new(Class::Unquoted, "", &words(&d.message)))
+}
+
+fn unlocated(e: impl std::fmt::Display) -> Finding {
+    Finding::new(Class::Unlocated, "", &words(&e.to_string()))
+}
+
+/// The words of a message (three letters or more), without the terms and numbers it quotes:
+/// the same refusal of other input is the same finding.
+fn words(message: &str) -> String {
+    message
+        .split_whitespace()
+        .filter(|w| w.len() >= 3 && w.chars().all(|c| c.is_ascii_alphabetic() || c == '\''))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Checks printed output for `inf` and `NaN`.
+fn printed(output: &str) -> Result<(), Finding> {
+    match non_finite_word(output) {
+        Some(word) => Err(Finding::new(Class::NonFinite, "prints ", word)),
+        None => Ok(()),
+    }
+}

@@ -198,9 +198,9 @@ fn multiply_out(a: &Expr, b: &Expr) -> Result<Expr, AlgebraError> {
 /// `(x₁ + … + x_t)^n` multiplied out, for an expanded sum of `t ≥ 2` terms and a whole
 /// `n ≥ 2`. Its size is checked first: the number of terms, `C(t + n - 1, n)`, and the
 /// digits of the coefficients, at most `t^n · Π max(|cᵢ|, 1)^n` over numerators and
-/// denominators. A sum of monomials (none holding a power of a sum, which could combine
-/// with another into a whole power to multiply out in turn) is raised by the multinomial
-/// theorem, one term per `k₁ + … + k_t = n`:
+/// denominators. A sum of monomials (none holding a power of a sum but a negative one: any
+/// other could combine with another into a whole power to multiply out in turn) is raised
+/// by the multinomial theorem, one term per `k₁ + … + k_t = n`:
 ///
 /// `Σ n!/(k₁!⋯k_t!) · Π cᵢ^kᵢ · Π mᵢ^kᵢ` for the terms `xᵢ = cᵢ mᵢ`;
 ///
@@ -288,12 +288,17 @@ fn push_multinomial_terms(
     }
 }
 
-/// Whether a term holds a power of a sum (`√(a + 1)`): two such may combine into a whole
-/// power of the sum, which is multiplied out in turn.
+/// Whether a term holds a power of a sum that is not a negative number (`√(a + 1)`): two
+/// such may combine into a whole power of the sum, which is multiplied out in turn. Negative
+/// powers (`(a + b)⁻¹`) only combine into negative powers, which stay atoms.
 fn has_power_of_sum(t: &Expr) -> bool {
-    t.monomial()
-        .iter()
-        .any(|f| matches!(f.view(), View::Pow(base, _) if matches!(base.view(), View::Add(_))))
+    t.monomial().iter().any(|f| match f.view() {
+        View::Pow(base, exponent) => {
+            matches!(base.view(), View::Add(_))
+                && !exponent.as_num().is_some_and(|q| q.is_negative())
+        }
+        _ => false,
+    })
 }
 
 /// The number of monomials of degree `n` in `t` variables, C(t + n - 1, n), as a float
@@ -399,6 +404,11 @@ mod tests {
             s("x").checked_pow(&half).unwrap() + s("y").powi(-1) + Expr::int(2),
             half * s("x") * s("y") - Expr::int(3) * s("x").powi(2) + s("z"),
             Expr::func(crate::algebra::Func::Sin, s("x")) + s("c"),
+            s("a") + s("b") + (s("a") + s("b")).powi(-1) * s("c") - s("d"),
+            (s("a") + s("b"))
+                .checked_pow(&Expr::rational(-1, 2))
+                .unwrap()
+                + s("a"),
         ];
         for base in bases {
             for n in [2, 3, 7] {

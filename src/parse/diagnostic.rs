@@ -10,6 +10,8 @@
 //!   = help: every '(' needs an expression and a matching ')'
 //! ```
 
+use super::long_numbers::shorten_long_numbers;
+
 /// An error in user input with its location.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error, miette::Diagnostic)]
 #[error("{source_name}:{line}:{column}: {message}")]
@@ -30,7 +32,8 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
-    /// A diagnostic at byte offsets `start..end` of `source`.
+    /// A diagnostic at byte offsets `start..end` of `source`. Long numbers in the message
+    /// that the source does not hold are shortened ([`shorten_long_numbers`]).
     pub fn at(
         source_name: &str,
         source: &str,
@@ -55,15 +58,16 @@ impl Diagnostic {
             line,
             column,
             span: (start, end - start).into(),
-            message: message.into(),
+            message: shorten_long_numbers(&message.into(), source),
             help: None,
             source_line,
         }
     }
 
-    /// The same diagnostic with a hint on what to do.
+    /// The same diagnostic with a hint on what to do (long numbers that the quoted line does
+    /// not hold shortened, as in the message).
     pub fn with_help(mut self, help: impl Into<String>) -> Diagnostic {
-        self.help = Some(help.into());
+        self.help = Some(shorten_long_numbers(&help.into(), &self.source_line));
         self
     }
 

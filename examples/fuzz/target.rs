@@ -67,14 +67,19 @@ fn expression(text: &str, expand: bool) -> Outcome {
         Statement::Expression(e) => vec![e],
         Statement::Equation(eq) => vec![eq.lhs, eq.rhs],
     };
+    // As `simplify` and `latex` do, an error of the algebra stands at the whole input.
+    let at_input = |err: AlgebraError| {
+        let whole = Diagnostic::at("input", text, 0, text.trim_end().len(), err.to_string());
+        located(&whole, text, false)
+    };
     for side in sides {
         let side = if expand {
-            side.expand().map_err(unlocated)?
+            side.expand().map_err(at_input)?
         } else {
             side
         };
         for notation in [Notation::Text, Notation::Latex] {
-            printed(&show(&side, notation).map_err(unlocated)?)?;
+            printed(&show(&side, notation).map_err(at_input)?)?;
         }
     }
     Ok(())
@@ -120,7 +125,13 @@ fn simulate(text: &str) -> Outcome {
         }
     };
     let choice = Choice::Auto { rtol: 1e-10 };
-    simulate_choice(&problem, &choice, &sampling, &mut sink, &mut |_| {}).map_err(unlocated)?;
+    // As `simulate` does, a failure of the body's motion stands at the body.
+    simulate_choice(&problem, &choice, &sampling, &mut sink, &mut |_| {}).map_err(|e| {
+        match simulation::located(&scene, &e) {
+            Some(d) => located(&d, text, true),
+            None => Some(unlocated(e)),
+        }
+    })?;
     match non_finite {
         Some(name) => Err(Some(Finding::new(Class::NonFinite, "sample ", name))),
         None => Ok(()),

@@ -18,6 +18,12 @@ pub enum NumericError {
         "integration stopped at t = {t} after {max_steps} steps (the step limit); loosen the tolerances or raise the limit"
     )]
     StepLimit { max_steps: usize, t: f64 },
+    /// An adaptive integrator's step is so small, well into its budget, that the rest of
+    /// the interval would take far more steps than the budget allows: given up early.
+    #[error(
+        "integration stopped at t = {t} after {steps} steps: at the step it needs there, the rest of the interval would take about {needed:.0e} steps"
+    )]
+    StepBudgetHopeless { steps: usize, t: f64, needed: f64 },
     /// The step size an adaptive integrator needs fell below the resolution of `t`: the
     /// solution is singular there or the right-hand side is not finite.
     #[error(

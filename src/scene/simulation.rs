@@ -142,11 +142,20 @@ fn initial_magnitudes(
 }
 
 /// A numerical failure of the simulation of `scene`, at the statement it comes from: the
-/// body's motion (a state, T or |H| that overflows, an inadmissible inertia) at the body.
-/// Failures of the method itself (its step budget) are not about a statement: `None`.
+/// body's motion (a state, T or |H| that overflows, an inadmissible inertia, a spin too fast
+/// for the step budget) at the body. A sample sink's or the code generator's failure is not
+/// about a statement: `None`.
 pub fn located(scene: &Scene, error: &NumericError) -> Option<Diagnostic> {
     let help = match error {
         NumericError::Physics(_) => "check the masses and sizes of the body",
+        NumericError::InvalidInput { .. } => {
+            "the motion of this body cannot be computed as given: check its mass and sizes, \
+             omega and the loads"
+        }
+        NumericError::StepLimit { .. } | NumericError::StepBudgetHopeless { .. } => {
+            "the body turns too fast for the interval to be followed step by step: a shorter \
+             --until, or a looser --rtol"
+        }
         NumericError::SampleOverflow { .. } => RANGE_HELP,
         NumericError::NonFinite { .. } | NumericError::StepSizeUnderflow { .. } => {
             "the integration diverged or the moment is not finite: a shorter --step (rk4, \

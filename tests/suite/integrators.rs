@@ -631,6 +631,28 @@ fn dop853_stops_at_its_step_budget() {
     );
 }
 
+/// An interval a thousand times beyond what the whole budget could cover at the step the
+/// integrator takes is given up after a hundred steps (a hundredth of a larger budget), not
+/// after all of it.
+#[test]
+fn dop853_gives_up_a_hopeless_interval_early() {
+    let result = simulate(
+        &reference_body(),
+        &Method::Dop853 {
+            rtol: 1e-12,
+            atol: 1e-14,
+            max_steps: 1000,
+        },
+        &Sampling::Times(vec![1e12]),
+        &mut |_: Sample<f64>| {},
+        &mut |_| {},
+    );
+    assert!(
+        matches!(result, Err(NumericError::StepBudgetHopeless { steps: 100, needed, .. }) if needed > 1e6),
+        "{result:?}"
+    );
+}
+
 #[test]
 fn a_million_samples_stream_through_a_counting_sink() {
     let mut count = 0usize;

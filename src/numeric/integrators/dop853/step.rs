@@ -21,6 +21,14 @@ const SAFETY: f64 = 0.9;
 const MIN_RATIO: f64 = 1.0 / 3.0;
 const MAX_RATIO: f64 = 6.0;
 
+/// A run is given up as hopeless, after a hundredth of its budget of steps (and at least
+/// a hundred steps, for the step to settle), when the rest of the interval at the step it
+/// takes now would need a thousand times the whole budget (a spin of 1e150 rad/s took the
+/// full budget, 4 s, to fail).
+const HOPELESS_AFTER: usize = 100;
+const HOPELESS_MIN_STEPS: usize = 100;
+const HOPELESS_FACTOR: f64 = 1000.0;
+
 impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
     /// Takes one accepted step, never past the end time; rejected attempts are retried
     /// with a smaller step.
@@ -53,6 +61,16 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
                 });
             }
             let remaining = self.t_end - self.t;
+            if attempts >= (self.settings.max_steps / HOPELESS_AFTER).max(HOPELESS_MIN_STEPS)
+                && remaining
+                    > self.step.abs() * constant(HOPELESS_FACTOR * self.settings.max_steps as f64)
+            {
+                return Err(NumericError::StepBudgetHopeless {
+                    steps: attempts,
+                    t: to_f64(self.t),
+                    needed: to_f64(remaining / self.step.abs()),
+                });
+            }
             let last = self.step * constant(1.01) >= remaining;
             let h = if last { remaining } else { self.step };
             let (t, y) = (self.t, self.y);

@@ -5,6 +5,10 @@ use thiserror::Error;
 /// Largest number of terms an expansion may produce before it is refused.
 pub const MAX_EXPANDED_TERMS: usize = 100_000;
 
+/// Largest expansion, in nodes (symbols, numbers, operations), before it is refused: 801
+/// terms each holding `cos` of a sum of 3,654 terms print as 80 MB.
+pub const MAX_EXPANDED_NODES: usize = 2_000_000;
+
 /// Why an algebraic operation could not give an exact result.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
 pub enum AlgebraError {
@@ -16,6 +20,10 @@ pub enum AlgebraError {
         size: String,
         limit: usize,
     },
+    #[error(
+        "the expansion would have more than {0} symbols and numbers (its terms repeat a large factor); expand a part of it"
+    )]
+    ExpansionTooLong(usize),
     #[error("no value for the symbol {0}")]
     MissingValue(String),
     #[error("{expression} evaluates to {value}, which is not a finite number")]

@@ -4,13 +4,14 @@
 //! powers stay as atoms, with their arguments expanded). It is the canonical form that
 //! decides equality: two polynomials, or two expressions whose denominators are monomials,
 //! are equal exactly when their expansions are identical. An expansion that would produce
-//! more than [`MAX_EXPANDED_TERMS`] terms is refused before any work is done.
+//! more than [`MAX_EXPANDED_TERMS`] terms is refused before any work is done, and one of
+//! more than [`MAX_EXPANDED_NODES`] nodes (few terms repeating a large factor) once formed.
 //!
 //! The terms of a sum, and the products of terms of a product's sums, are gathered in one
 //! list on the stack and summed once at the end (one sort, like terms combined then), rather
 //! than each partial sum and product being made canonical on the way.
 
-use super::error::{AlgebraError, MAX_EXPANDED_TERMS};
+use super::error::{AlgebraError, MAX_EXPANDED_NODES, MAX_EXPANDED_TERMS};
 use super::expr::{Expr, Operands, View};
 use super::merge;
 use super::rational::Q;
@@ -28,6 +29,15 @@ impl Expr {
     /// assert!((&a + &b).powi(99_999_999).expand().is_err());
     /// ```
     pub fn expand(&self) -> Result<Expr, AlgebraError> {
+        let expanded = self.expanded()?;
+        if !expanded.has_at_most_nodes(MAX_EXPANDED_NODES) {
+            return Err(AlgebraError::ExpansionTooLong(MAX_EXPANDED_NODES));
+        }
+        Ok(expanded)
+    }
+
+    /// The expansion, its size in nodes not yet checked.
+    fn expanded(&self) -> Result<Expr, AlgebraError> {
         if is_expanded(self) {
             return Ok(self.clone());
         }
@@ -39,7 +49,7 @@ impl Expr {
                 Ok(Expr::sum_of_terms(&mut terms))
             }
             View::Pow(base, exponent) => {
-                let base = base.expand()?;
+                let base = base.expanded()?;
                 match exponent.as_num() {
                     Some(n) if n.is_integer() && !n.is_negative() && base.terms().len() > 1 => {
                         power_of_sum(&base, n)
@@ -47,7 +57,7 @@ impl Expr {
                     _ => multiplied_out(base.checked_pow(exponent)?),
                 }
             }
-            View::Func(f, arg) => Ok(Expr::func(f, arg.expand()?)),
+            View::Func(f, arg) => Ok(Expr::func(f, arg.expanded()?)),
         }
     }
 }
@@ -63,7 +73,7 @@ fn expand_into(e: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
             Ok(())
         }
         _ => {
-            terms.extend(e.expand()?.terms().iter().cloned());
+            terms.extend(e.expanded()?.terms().iter().cloned());
             Ok(())
         }
     }
@@ -82,7 +92,7 @@ fn expand_product(p: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
         } else if is_expanded(f) {
             others.push(Cow::Borrowed(f));
         } else {
-            others.push(Cow::Owned(f.expand()?));
+            others.push(Cow::Owned(f.expanded()?));
         }
     }
     let size = others
@@ -135,7 +145,7 @@ fn products_of_terms(a: &[Expr], b: &[Expr]) -> Result<Operands, AlgebraError> {
 fn multiplied_out(e: Expr) -> Result<Expr, AlgebraError> {
     match is_multiplied_out(&e) {
         true => Ok(e),
-        false => e.expand(),
+        false => e.expanded(),
     }
 }
 
@@ -184,27 +194,16 @@ fn is_power_of_symbol(e: &Expr) -> bool {
     }
 }
 
-/// The product of two expanded expressions, multiplied out term by term.
-fn multiply_out(a: &Expr, b: &Expr) -> Result<Expr, AlgebraError> {
-    if a.terms().len() == 1 && b.terms().len() == 1 {
-        return multiplied_out(a * b);
-    }
-    Ok(Expr::sum_of_terms(&mut products_of_terms(
-        a.terms(),
-        b.terms(),
-    )?))
-}
-
 /// `(x₁ + … + x_t)^n` multiplied out, for an expanded sum of `t ≥ 2` terms and a whole
 /// `n ≥ 2`. Its size is checked first: the number of terms, `C(t + n - 1, n)`, and the
 /// digits of the coefficients, at most `t^n · Π max(|cᵢ|, 1)^n` over numerators and
-/// denominators. A sum of monomials (none holding a power of a sum but a negative one: any
-/// other could combine with another into a whole power to multiply out in turn) is raised
-/// by the multinomial theorem, one term per `k₁ + … + k_t = n`:
+/// denominators. The sum is raised by the multinomial theorem, one term per
+/// `k₁ + … + k_t = n`:
 ///
 /// `Σ n!/(k₁!⋯k_t!) · Π cᵢ^kᵢ · Π mᵢ^kᵢ` for the terms `xᵢ = cᵢ mᵢ`;
 ///
-/// other sums by repeated multiplication.
+/// where terms hold powers of a sum (other than negative ones), a product may combine
+/// them into a whole power of that sum, which is multiplied out in turn.
 fn power_of_sum(base: &Expr, n: &Q) -> Result<Expr, AlgebraError> {
     let terms = base.terms();
     let t = terms.len();
@@ -226,18 +225,39 @@ fn power_of_sum(base: &Expr, n: &Q) -> Result<Expr, AlgebraError> {
         "a coefficient of the expanded power",
         per_factor.saturating_mul(n as u64),
     )?;
-    if terms.iter().any(has_power_of_sum) {
-        let mut result = base.clone();
-        for _ in 1..n {
-            result = multiply_out(&result, base)?;
-        }
-        return Ok(result);
-    }
     let powers: Vec<Vec<(Q, Expr)>> = terms.iter().map(|x| powers_of_term(x, n)).collect();
     let mut out = Operands::new();
     push_multinomial_terms(&powers, n, Q::ONE, &mut Vec::new(), &mut out);
+    if terms.iter().any(has_power_of_sum) {
+        out = whole_powers_multiplied_out(out)?;
+    }
     Ok(Expr::sum_of_terms(&mut out))
 }
+
+/// The terms of a multinomial expansion with each term in which powers of a sum combined
+/// into a whole power of it (`√s · √s = s`) multiplied out in turn. The terms, like terms
+/// not yet combined, are bounded by [`MAX_UNCOMBINED_TERMS`] as they are gathered.
+fn whole_powers_multiplied_out(terms: Operands) -> Result<Operands, AlgebraError> {
+    let mut out = Operands::with_capacity(terms.len());
+    for term in terms {
+        if is_multiplied_out(&term) {
+            out.push(term);
+        } else {
+            expand_into(&term, &mut out)?;
+        }
+        if out.len() > MAX_UNCOMBINED_TERMS {
+            return Err(AlgebraError::TooLarge {
+                what: "expanding the power".into(),
+                size: format!("more than {MAX_UNCOMBINED_TERMS} uncombined"),
+                limit: MAX_EXPANDED_TERMS,
+            });
+        }
+    }
+    Ok(out)
+}
+
+/// The most terms, like terms not yet combined, an expansion gathers before it is refused.
+const MAX_UNCOMBINED_TERMS: usize = 4 * MAX_EXPANDED_TERMS;
 
 /// `cᵏ` and `mᵏ` for `k = 0, …, n`, for the term `c m`.
 fn powers_of_term(x: &Expr, n: usize) -> Vec<(Q, Expr)> {
@@ -329,6 +349,18 @@ mod tests {
     use super::*;
     use crate::algebra::arbitrary::expr;
     use proptest::prelude::*;
+
+    /// The product of two expanded expressions, multiplied out term by term: the reference
+    /// the multinomial expansion is compared with.
+    fn multiply_out(a: &Expr, b: &Expr) -> Result<Expr, AlgebraError> {
+        if a.terms().len() == 1 && b.terms().len() == 1 {
+            return multiplied_out(a * b);
+        }
+        Ok(Expr::sum_of_terms(&mut products_of_terms(
+            a.terms(),
+            b.terms(),
+        )?))
+    }
 
     /// The definition the gathered expansion must agree with: every product multiplied out
     /// pair by pair into a canonical sum, every sum added up with [`Expr::add_all`].
@@ -422,6 +454,57 @@ mod tests {
         }
     }
 
+    /// Where powers of a sum in the terms combine, the multinomial keeps `mᵏ` as one power
+    /// (`√(a + b)³ = (a + b)^(3/2)`) and multiplies out the whole powers
+    /// (`√(a + b)² = a + b`): the value of the power, with no whole power of a sum left.
+    #[test]
+    fn multinomial_power_multiplies_out_whole_powers_of_inner_sums() {
+        let s = Expr::symbol;
+        let bases = [
+            (s("a") + s("b"))
+                .checked_pow(&Expr::rational(1, 2))
+                .unwrap()
+                + s("c"),
+            (s("a") + s("b") + s("c"))
+                .checked_pow(&Expr::rational(1, 3))
+                .unwrap()
+                * s("c")
+                + s("a")
+                - s("d"),
+        ];
+        let value = |name: &str| match name {
+            "a" => 0.7,
+            "b" => 1.9,
+            "c" => -0.4,
+            _ => 1.3,
+        };
+        let at = |e: &Expr| -> f64 { e.eval(&|x| Some(value(x.name()))).unwrap() };
+        for base in bases {
+            for n in [2, 3, 7] {
+                let power = base.powi(n).expand().unwrap();
+                let expected = at(&base).powi(n as i32);
+                assert!(
+                    (at(&power) - expected).abs() < 1e-12 * expected.abs(),
+                    "({base})^{n}"
+                );
+                assert!(is_multiplied_out(&power), "({base})^{n} = {power}");
+            }
+        }
+        let root = (s("a") + s("b"))
+            .checked_pow(&Expr::rational(1, 2))
+            .unwrap();
+        let cube = (&root + s("c")).powi(3).expand().unwrap();
+        assert!(cube.terms().contains(
+            &(s("a") + s("b"))
+                .checked_pow(&Expr::rational(3, 2))
+                .unwrap()
+        ));
+        assert!(
+            cube.terms().contains(&(Expr::int(3) * s("a") * s("c"))),
+            "{cube}"
+        );
+    }
+
     /// A power too large to multiply out is refused before any work: an exponent beyond
     /// i64 (it recursed until the stack overflowed), too many terms, or too many digits.
     #[test]
@@ -436,6 +519,11 @@ mod tests {
         let err = (big * &a + &b).powi(40).expand().unwrap_err();
         assert!(matches!(err, AlgebraError::NumberTooLarge { .. }), "{err}");
         assert_eq!((&a + &b).powi(800).expand().unwrap().terms().len(), 801);
+        // 801 terms, few enough, each holding cos of a sum of 3,654 terms: too long.
+        let inner = (&a + &b + Expr::symbol("c") + Expr::symbol("d")).powi(26);
+        let long = Expr::func(crate::algebra::Func::Cos, inner) * (&a + &b).powi(800);
+        let err = long.expand().unwrap_err();
+        assert_eq!(err, AlgebraError::ExpansionTooLong(MAX_EXPANDED_NODES));
     }
 
     proptest! {

@@ -15,6 +15,25 @@ impl Expr {
         }
     }
 
+    /// Whether the tree has at most `limit` nodes, counted only up to `limit + 1`: a bound
+    /// checked in time proportional to the bound, however large the tree.
+    pub fn has_at_most_nodes(&self, limit: usize) -> bool {
+        fn count(e: &Expr, budget: &mut usize) -> bool {
+            if *budget == 0 {
+                return false;
+            }
+            *budget -= 1;
+            match e.view() {
+                View::Num(_) | View::Sym(_) => true,
+                View::Add(xs) | View::Mul(xs) => xs.iter().all(|x| count(x, budget)),
+                View::Pow(b, x) => count(b, budget) && count(x, budget),
+                View::Func(_, a) => count(a, budget),
+            }
+        }
+        let mut budget = limit;
+        count(self, &mut budget)
+    }
+
     /// Whether `s` occurs anywhere in the expression.
     pub fn contains(&self, s: Symbol) -> bool {
         match self.view() {

@@ -5,8 +5,9 @@ use thiserror::Error;
 /// Largest number of terms an expansion may produce before it is refused.
 pub const MAX_EXPANDED_TERMS: usize = 100_000;
 
-/// Largest expansion, in nodes (symbols, numbers, operations), before it is refused: 801
-/// terms each holding `cos` of a sum of 3,654 terms print as 80 MB.
+/// Largest expansion, in nodes (symbols, numbers, operations; a long number one more per
+/// ten digits or so), before it is refused: 801 terms each holding `cos` of a sum of 3,654
+/// terms print as 80 MB, 98,770 terms each holding a 1,200-digit number as 118 MB.
 pub const MAX_EXPANDED_NODES: usize = 2_000_000;
 
 /// Why an algebraic operation could not give an exact result.
@@ -21,7 +22,7 @@ pub enum AlgebraError {
         limit: usize,
     },
     #[error(
-        "the expansion would have more than {0} symbols and numbers (its terms repeat a large factor); expand a part of it"
+        "the expansion would be longer than {0} symbols and ten-digit groups of numbers (its terms repeat a large factor); expand a part of it"
     )]
     ExpansionTooLong(usize),
     #[error("no value for the symbol {0}")]

@@ -30,7 +30,7 @@ impl Expr {
     /// ```
     pub fn expand(&self) -> Result<Expr, AlgebraError> {
         let expanded = self.expanded()?;
-        if !expanded.has_at_most_nodes(MAX_EXPANDED_NODES) {
+        if !expanded.has_at_most_size(MAX_EXPANDED_NODES) {
             return Err(AlgebraError::ExpansionTooLong(MAX_EXPANDED_NODES));
         }
         Ok(expanded)
@@ -333,10 +333,10 @@ fn check_size(what: &str, size: f64) -> Result<(), AlgebraError> {
     if size > MAX_EXPANDED_TERMS as f64 {
         return Err(AlgebraError::TooLarge {
             what: format!("expanding {what}"),
-            size: if size < 1e15 {
+            size: if size < 1e9 {
                 format!("{size:.0}")
             } else {
-                format!("{size:.1e}")
+                format!("about {size:.1e}")
             },
             limit: MAX_EXPANDED_TERMS,
         });

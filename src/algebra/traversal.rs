@@ -15,14 +15,23 @@ impl Expr {
         }
     }
 
-    /// Whether the tree has at most `limit` nodes, counted only up to `limit + 1`: a bound
-    /// checked in time proportional to the bound, however large the tree.
-    pub fn has_at_most_nodes(&self, limit: usize) -> bool {
+    /// Whether the tree's size is at most `limit`, counted only up to `limit + 1`: a bound
+    /// checked in time proportional to the bound, however large the tree. A node counts 1,
+    /// a number one more per 32 bits of its numerator and denominator (about ten digits),
+    /// so that the size follows the printed length.
+    pub fn has_at_most_size(&self, limit: usize) -> bool {
         fn count(e: &Expr, budget: &mut usize) -> bool {
-            if *budget == 0 {
+            let cost = match e.view() {
+                View::Num(q) => {
+                    let (num, den) = q.bit_lengths();
+                    1 + usize::try_from((num + den) / 32).unwrap_or(usize::MAX)
+                }
+                _ => 1,
+            };
+            if *budget < cost {
                 return false;
             }
-            *budget -= 1;
+            *budget -= cost;
             match e.view() {
                 View::Num(_) | View::Sym(_) => true,
                 View::Add(xs) | View::Mul(xs) => xs.iter().all(|x| count(x, budget)),

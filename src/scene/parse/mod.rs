@@ -13,9 +13,9 @@ use pest::iterators::Pair;
 use pest::Parser;
 use syntax_error::{expected_words, syntax_error};
 
+mod before_grammar;
 mod body;
 mod syntax_error;
-mod unclosed_parentheses;
 
 /// The name of time in scene mathematics.
 pub const TIME: &str = "t";
@@ -50,8 +50,7 @@ struct SceneGrammar;
 /// # Ok::<(), kinetics::Diagnostic>(())
 /// ```
 pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic> {
-    crate::parse::limits::check_input(source_name, source)?;
-    unclosed_parentheses::check_unclosed_parentheses(source_name, source)?;
+    before_grammar::check_before_grammar(source_name, source)?;
     // Error detail records the furthest place the grammar reached and what it expected there.
     pest::set_error_detail(true);
     let mut pairs = SceneGrammar::parse(Rule::scene, source).map_err(|e| {

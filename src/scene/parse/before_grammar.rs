@@ -1,5 +1,8 @@
-//! A line of a scene on which more than one '(' is never closed, refused before the grammar
-//! reads the file.
+//! What a scene's text is refused for before the grammar reads it: its size and the nesting
+//! of its mathematics, and a line on which more than one '(' is never closed.
+//!
+//! Nesting is counted in the text the grammar reads as mathematics: a comment line or a
+//! title may hold any number of parentheses (the grammar skips them as text, without nesting).
 //!
 //! The grammar learns that a '(' of a line's mathematics is never closed only at the end of
 //! the line: it reads the rest of the line as a group, fails, and reads the '(' again as an
@@ -14,11 +17,42 @@
 
 use crate::parse::Diagnostic;
 
+/// Refuses a scene's text before the grammar: too large or nested too deeply (comment lines
+/// and titles aside, [`crate::parse::limits`]), or a line with unclosed parentheses.
+pub(super) fn check_before_grammar(source_name: &str, source: &str) -> Result<(), Diagnostic> {
+    let mathematics = without_comment_lines_and_titles(source);
+    crate::parse::limits::check_input(source_name, &mathematics).map_err(|d| {
+        // The same place in the text as written, quoted as written.
+        let start = d.span.offset();
+        let mut at = Diagnostic::at(source_name, source, start, start + d.span.len(), d.message);
+        at.help = d.help;
+        at
+    })?;
+    check_unclosed_parentheses(source_name, source)
+}
+
+/// `source` with each comment line and title blanked, byte for byte: the same offsets.
+fn without_comment_lines_and_titles(source: &str) -> String {
+    source
+        .split_inclusive('\n')
+        .map(|line| {
+            let text = line.trim_start_matches([' ', '\t']);
+            if text.starts_with('#') || is_title(line) {
+                line.chars()
+                    .map(|c| match c {
+                        '\n' | '\r' => c.to_string(),
+                        _ => " ".repeat(c.len_utf8()),
+                    })
+                    .collect::<String>()
+            } else {
+                line.to_string()
+            }
+        })
+        .collect()
+}
+
 /// Refuses the first line (but a title) with more than one '(' that is never closed.
-pub(super) fn check_unclosed_parentheses(
-    source_name: &str,
-    source: &str,
-) -> Result<(), Diagnostic> {
+fn check_unclosed_parentheses(source_name: &str, source: &str) -> Result<(), Diagnostic> {
     let mut start = 0;
     for line in source.split(['\n', '\r']) {
         let unclosed = unclosed_before_comment(line);

@@ -9,7 +9,7 @@
 //! `-4.9999999999999995e200` → `-5.000e200`, `1` followed by 200 zeros → `1e200`.
 
 /// The most digits a number in a message keeps as they are.
-pub const LONGEST_QUOTED: usize = 15;
+pub const LONGEST_QUOTED: usize = 12;
 
 /// `message` with every number longer than [`LONGEST_QUOTED`] digits that `source` does not
 /// hold shortened to four significant figures.

@@ -15,7 +15,7 @@ pub enum NumericError {
     InvalidInput { what: String, reason: String },
     /// An adaptive integrator used up its budget of steps before reaching the end time.
     #[error(
-        "integration stopped at t = {t} after {max_steps} steps (the step limit); loosen the tolerances or raise the limit"
+        "integration stopped at t = {t} after {max_steps} steps (the step limit); loosen the tolerance or shorten the interval"
     )]
     StepLimit { max_steps: usize, t: f64 },
     /// An adaptive integrator's step is so small, well into its budget, that the rest of

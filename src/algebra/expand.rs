@@ -236,8 +236,19 @@ fn power_of_sum(base: &Expr, n: &Q) -> Result<Expr, AlgebraError> {
 
 /// The terms of a multinomial expansion with each term in which powers of a sum combined
 /// into a whole power of it (`√s · √s = s`) multiplied out in turn. The terms, like terms
-/// not yet combined, are bounded by [`MAX_UNCOMBINED_TERMS`] as they are gathered.
+/// not yet combined, are bounded by [`MAX_UNCOMBINED_TERMS`]: counted before any is
+/// multiplied out (a term's count is the product of its whole powers' multinomial counts),
+/// and again as they are gathered, for sums nested deeper.
 fn whole_powers_multiplied_out(terms: Operands) -> Result<Operands, AlgebraError> {
+    let too_many = || AlgebraError::TooLarge {
+        what: "expanding the power".into(),
+        size: format!("more than {MAX_UNCOMBINED_TERMS} uncombined"),
+        limit: MAX_EXPANDED_TERMS,
+    };
+    let counted: f64 = terms.iter().map(multiplied_out_terms).sum();
+    if counted > MAX_UNCOMBINED_TERMS as f64 {
+        return Err(too_many());
+    }
     let mut out = Operands::with_capacity(terms.len());
     for term in terms {
         if is_multiplied_out(&term) {
@@ -246,14 +257,28 @@ fn whole_powers_multiplied_out(terms: Operands) -> Result<Operands, AlgebraError
             expand_into(&term, &mut out)?;
         }
         if out.len() > MAX_UNCOMBINED_TERMS {
-            return Err(AlgebraError::TooLarge {
-                what: "expanding the power".into(),
-                size: format!("more than {MAX_UNCOMBINED_TERMS} uncombined"),
-                limit: MAX_EXPANDED_TERMS,
-            });
+            return Err(too_many());
         }
     }
     Ok(out)
+}
+
+/// How many terms a term of expanded factors gives multiplied out: the product over its
+/// sums `s` and whole powers `sⁿ` of `C(t + n - 1, n)` for `t` terms of `s`.
+fn multiplied_out_terms(term: &Expr) -> f64 {
+    term.monomial()
+        .iter()
+        .map(|f| match f.view() {
+            View::Add(xs) => xs.len() as f64,
+            View::Pow(base, exponent) if matches!(base.view(), View::Add(_)) => {
+                match exponent.as_num().and_then(Q::to_i64) {
+                    Some(n) if n > 0 => multinomial_terms(base.terms().len(), n as u64),
+                    _ => 1.0,
+                }
+            }
+            _ => 1.0,
+        })
+        .product()
 }
 
 /// The most terms, like terms not yet combined, an expansion gathers before it is refused.

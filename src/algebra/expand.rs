@@ -221,10 +221,14 @@ fn power_of_sum(base: &Expr, n: &Q) -> Result<Expr, AlgebraError> {
         .max()
         .unwrap_or(0);
     let per_factor = coefficient_bits + u64::from(usize::BITS - t.leading_zeros());
-    Q::check_bits(
-        "a coefficient of the expanded power",
-        per_factor.saturating_mul(n as u64),
-    )?;
+    let coefficient_bound = per_factor.saturating_mul(n as u64);
+    Q::check_bits("a coefficient of the expanded power", coefficient_bound)?;
+    // Its size as `has_at_most_size` counts it, at most: each term a number of up to
+    // `coefficient_bound` bits (one node per 32) and a monomial.
+    let size = multinomial_terms(t, n as u64) * (2.0 + coefficient_bound as f64 / 32.0);
+    if size > MAX_EXPANDED_NODES as f64 {
+        return Err(AlgebraError::ExpansionTooLong(MAX_EXPANDED_NODES));
+    }
     let powers: Vec<Vec<(Q, Expr)>> = terms.iter().map(|x| powers_of_term(x, n)).collect();
     let mut out = Operands::new();
     push_multinomial_terms(&powers, n, Q::ONE, &mut Vec::new(), &mut out);

@@ -19,6 +19,7 @@ mod expr;
 mod function;
 pub mod linear_solve;
 mod merge;
+mod operation_count;
 mod ops;
 mod rational;
 mod subs;

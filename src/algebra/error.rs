@@ -42,4 +42,11 @@ pub enum AlgebraError {
         digits: u64,
         limit: u64,
     },
+    /// Polynomial arithmetic (a gcd, a cancellation) past its bound on work.
+    #[error(
+        "{what} needs more than {limit} steps of polynomial arithmetic; simplify a part of it"
+    )]
+    TooMuchWork { what: String, limit: u64 },
+    #[error("{0} is not a polynomial: it has a denominator")]
+    NotAPolynomial(String),
 }

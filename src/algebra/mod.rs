@@ -9,7 +9,9 @@
 #[cfg(test)]
 mod arbitrary;
 mod axis;
+mod cancel;
 mod collect;
+mod common_factor;
 mod derivative;
 mod digit_bound;
 mod error;
@@ -21,15 +23,18 @@ pub mod linear_solve;
 mod merge;
 mod operation_count;
 mod ops;
+mod polynomial;
 mod rational;
 mod subs;
 mod sum_of_products;
 mod symbol;
+mod together;
 mod traversal;
 pub mod vector;
 pub mod vector_products;
 
 pub use axis::Axis;
+pub use cancel::polynomial_gcd;
 pub use collect::Collected;
 pub use digit_bound::MAX_DIGITS;
 pub use error::{AlgebraError, MAX_EXPANDED_TERMS};

@@ -196,6 +196,21 @@ impl Q {
         }
     }
 
+    /// The greatest common divisor of two integers, non-negative (`gcd(0, 0) = 0`); the
+    /// coefficients of the polynomials are integers, and their contents are such gcds.
+    pub(in crate::algebra) fn integer_gcd(&self, other: &Q) -> Q {
+        debug_assert!(self.is_integer() && other.is_integer());
+        match (self, other) {
+            (Q::Small(a, 1), Q::Small(b, 1)) => {
+                Q::from_i128(i128::from(a.unsigned_abs().gcd(&b.unsigned_abs())), 1)
+            }
+            _ => Q::from_big(BigRational::from_integer(unbalanced_gcd(
+                &self.parts().0,
+                &other.parts().0,
+            ))),
+        }
+    }
+
     /// `self / other`, or `None` when `other` is zero.
     pub fn checked_div(&self, other: &Q) -> Option<Q> {
         Some(self * &other.recip()?)

@@ -11,6 +11,7 @@ use common::counting_allocator::Counting;
 
 mod algebra_properties;
 mod bad_scenes;
+mod cancel;
 mod cli_bad_input;
 mod cli_write_failure;
 mod derivations_numeric;
@@ -24,6 +25,7 @@ mod latex_compiles;
 mod layering;
 mod nalgebra_ops;
 mod operation_count;
+mod polynomial_gcd;
 mod principal_axes;
 mod print_parse_properties;
 mod reproducers;

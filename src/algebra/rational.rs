@@ -211,6 +211,18 @@ impl Q {
         }
     }
 
+    /// `self mod m` in `0..m` for integers, `m > 0`: a digit of `self` in base `m`.
+    pub(in crate::algebra) fn integer_rem_euclid(&self, m: &Q) -> Q {
+        debug_assert!(self.is_integer() && m.is_integer() && !m.is_negative() && !m.is_zero());
+        match (self, m) {
+            (Q::Small(a, 1), Q::Small(b, 1)) => Q::int(a.rem_euclid(*b)),
+            _ => {
+                let (a, b) = (self.parts().0, m.parts().0);
+                Q::from_big(BigRational::from_integer(a.mod_floor(&b)))
+            }
+        }
+    }
+
     /// `self / other`, or `None` when `other` is zero.
     pub fn checked_div(&self, other: &Q) -> Option<Q> {
         Some(self * &other.recip()?)

@@ -88,7 +88,9 @@ impl Polynomial {
             (other, self)
         };
         budget.check_degrees(self, other)?;
-        budget.spend((short.terms.len() as u64).saturating_mul(long.terms.len() as u64))?;
+        let products = (short.terms.len() as u64).saturating_mul(long.terms.len() as u64);
+        budget.check_products(products)?;
+        budget.spend(products)?;
         let product = match short.terms.as_slice() {
             [] => Polynomial::zero(self.generators),
             [t] => long.times_term(&t.exponents, &t.coefficient),
@@ -119,11 +121,28 @@ impl Polynomial {
         let mut power = Polynomial::constant(self.generators, Q::ONE);
         if n > 1 && !self.is_constant() {
             budget.check_degree(self.total_degree().saturating_mul(u64::from(n)))?;
+            budget.check_term_count(self.power_terms_bound(n))?;
         }
         for _ in 0..n {
             power = power.mul(self, budget)?;
         }
         Ok(power)
+    }
+}
+
+impl Polynomial {
+    /// An upper bound on the terms of `selfⁿ`: the number of multisets of `n` of its `t`
+    /// terms, `C(t + n − 1, n)`, and the number of exponent vectors below `n` times its
+    /// degrees, `Π (n·degᵢ + 1)`, whichever is smaller.
+    fn power_terms_bound(&self, n: u32) -> f64 {
+        let n = f64::from(n);
+        let multisets = (1..=self.terms.len().saturating_sub(1))
+            .map(|k| (n + k as f64) / k as f64)
+            .product::<f64>();
+        let dense = (0..self.generators)
+            .map(|i| n * f64::from(self.degree_in(i)) + 1.0)
+            .product::<f64>();
+        multisets.min(dense)
     }
 }
 

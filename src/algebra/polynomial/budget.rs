@@ -17,6 +17,10 @@ pub const MAX_TERM_OPERATIONS: u64 = 20_000_000;
 /// past any product a person writes, and far from overflowing an exponent.
 pub const MAX_DEGREE: u64 = 100_000;
 
+/// Largest number of products of two terms one multiplication may form before like terms
+/// are combined (as `expand` allows).
+pub const MAX_UNCOMBINED_PRODUCTS: u64 = 4 * MAX_EXPANDED_TERMS as u64;
+
 /// The work left to an operation (see the module documentation).
 #[derive(Debug)]
 pub(in crate::algebra) struct Budget {
@@ -65,14 +69,34 @@ impl Budget {
         Ok(())
     }
 
+    /// Refuses a result estimated to hold more than [`MAX_EXPANDED_TERMS`] terms.
+    pub fn check_term_count(&self, terms: f64) -> Result<(), AlgebraError> {
+        if terms > MAX_EXPANDED_TERMS as f64 {
+            return Err(self.too_many_terms(format!("about {terms:.0}")));
+        }
+        Ok(())
+    }
+
+    /// Refuses a product of more than [`MAX_UNCOMBINED_PRODUCTS`] pairs of terms.
+    pub fn check_products(&self, products: u64) -> Result<(), AlgebraError> {
+        if products > MAX_UNCOMBINED_PRODUCTS {
+            return Err(self.too_many_terms(format!("up to {products}")));
+        }
+        Ok(())
+    }
+
+    fn too_many_terms(&self, size: String) -> AlgebraError {
+        AlgebraError::TooLarge {
+            what: format!("a polynomial in {}", self.what),
+            size,
+            limit: MAX_EXPANDED_TERMS,
+        }
+    }
+
     /// Refuses a polynomial with too many terms or too long a coefficient.
     pub fn check_size(&self, p: &Polynomial) -> Result<(), AlgebraError> {
         if p.terms().len() > MAX_EXPANDED_TERMS {
-            return Err(AlgebraError::TooLarge {
-                what: format!("a polynomial in {}", self.what),
-                size: p.terms().len().to_string(),
-                limit: MAX_EXPANDED_TERMS,
-            });
+            return Err(self.too_many_terms(p.terms().len().to_string()));
         }
         let max_bits = (MAX_DIGITS as f64 * std::f64::consts::LOG2_10) as u64;
         let bits = p

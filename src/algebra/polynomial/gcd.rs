@@ -22,30 +22,12 @@ use crate::algebra::rational::Q;
 impl Polynomial {
     /// `gcd(self, other)`, normalised (module documentation).
     pub fn gcd(&self, other: &Polynomial, budget: &mut Budget) -> Result<Polynomial, AlgebraError> {
-        if self.is_zero() || other.is_zero() || self.is_constant() || other.is_constant() {
-            return Ok(if self.is_zero() {
-                other.normalised()
-            } else if other.is_zero() {
-                self.normalised()
-            } else {
-                Polynomial::constant(
-                    self.generators,
-                    self.integer_content().integer_gcd(&other.integer_content()),
-                )
-            });
-        }
-        budget.spend(1)?;
-        let common = least_exponents(self, other);
-        if self.terms.len() == 1 || other.terms.len() == 1 {
-            let c = self.integer_content().integer_gcd(&other.integer_content());
-            return Ok(Polynomial::monomial(common, c));
-        }
-        if common.iter().any(|&e| e > 0) {
-            let (a, b) = (
-                self.without_monomial(&common),
-                other.without_monomial(&common),
-            );
-            return Ok(a.gcd(&b, budget)?.times_term(&common, &Q::ONE));
+        match self.trivial_gcd(other) {
+            Trivial::Answer(gcd) => return Ok(gcd),
+            Trivial::WithoutMonomial(a, b, common) => {
+                return Ok(a.gcd(&b, budget)?.times_term(&common, &Q::ONE))
+            }
+            Trivial::No => budget.spend(1)?,
         }
         for x in 0..self.generators {
             match (self.degree_in(x) > 0, other.degree_in(x) > 0) {
@@ -58,7 +40,63 @@ impl Polynomial {
             .filter(|&x| self.degree_in(x) > 0)
             .min_by_key(|&x| self.degree_in(x).max(other.degree_in(x)))
             .expect("two non-constant polynomials share a generator here");
-        self.primitive_remainder_gcd(other, x, budget)
+        match self.heuristic_gcd(other, x, budget)? {
+            Some(gcd) => Ok(gcd),
+            None => self.primitive_remainder_gcd(other, x, budget),
+        }
+    }
+
+    /// The gcd by the heuristic alone, all the way down (none when it finds none): the
+    /// heuristic's own gcd of values, whose fallback would be a remainder sequence on the
+    /// values' large integers.
+    pub(super) fn heuristic_only_gcd(
+        &self,
+        other: &Polynomial,
+        budget: &mut Budget,
+    ) -> Result<Option<Polynomial>, AlgebraError> {
+        match self.trivial_gcd(other) {
+            Trivial::Answer(gcd) => Ok(Some(gcd)),
+            Trivial::WithoutMonomial(a, b, common) => Ok(a
+                .heuristic_only_gcd(&b, budget)?
+                .map(|gcd| gcd.times_term(&common, &Q::ONE))),
+            Trivial::No => {
+                budget.spend(1)?;
+                let x = (0..self.generators)
+                    .find(|&x| self.degree_in(x) > 0 || other.degree_in(x) > 0)
+                    .expect("a polynomial that is not constant holds a generator");
+                self.heuristic_gcd(other, x, budget)
+            }
+        }
+    }
+
+    /// The gcd when a trivial case gives it: a zero or constant operand, a single-term
+    /// one; or the monomial common to all terms, to take out first.
+    fn trivial_gcd(&self, other: &Polynomial) -> Trivial {
+        if self.is_zero() || other.is_zero() || self.is_constant() || other.is_constant() {
+            return Trivial::Answer(if self.is_zero() {
+                other.normalised()
+            } else if other.is_zero() {
+                self.normalised()
+            } else {
+                Polynomial::constant(
+                    self.generators,
+                    self.integer_content().integer_gcd(&other.integer_content()),
+                )
+            });
+        }
+        let common = least_exponents(self, other);
+        if self.terms.len() == 1 || other.terms.len() == 1 {
+            let c = self.integer_content().integer_gcd(&other.integer_content());
+            return Trivial::Answer(Polynomial::monomial(common, c));
+        }
+        if common.iter().any(|&e| e > 0) {
+            return Trivial::WithoutMonomial(
+                self.without_monomial(&common),
+                other.without_monomial(&common),
+                common,
+            );
+        }
+        Trivial::No
     }
 
     /// The gcd by the primitive remainder sequence in generator `x`, which both hold.
@@ -114,6 +152,14 @@ impl Polynomial {
     }
 }
 
+/// What the trivial cases make of a gcd.
+enum Trivial {
+    Answer(Polynomial),
+    /// `gcd(a·m, b·m) = gcd(a, b)·m` for the monomial `m` common to all terms.
+    WithoutMonomial(Polynomial, Polynomial, Exponents),
+    No,
+}
+
 /// The least exponent of each generator over all terms of `a` and `b`: the monomial part
 /// of their gcd.
 fn least_exponents(a: &Polynomial, b: &Polynomial) -> Exponents {
@@ -124,4 +170,55 @@ fn least_exponents(a: &Polynomial, b: &Polynomial) -> Exponents {
         }
     }
     least
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Budget, Generators, Polynomial};
+    use crate::algebra::Expr;
+    use proptest::prelude::*;
+
+    const NAMES: [&str; 4] = ["a", "b", "x", "y"];
+
+    fn polynomial() -> impl Strategy<Value = Expr> {
+        let term = (
+            -5i64..=5,
+            prop::collection::vec((0..NAMES.len(), 1i64..=2), 0..=3),
+        )
+            .prop_map(|(c, powers)| {
+                Expr::mul_all(
+                    std::iter::once(Expr::int(c)).chain(
+                        powers
+                            .into_iter()
+                            .map(|(i, k)| Expr::symbol(NAMES[i]).powi(k)),
+                    ),
+                )
+            });
+        prop::collection::vec(term, 1..=5).prop_map(Expr::add_all)
+    }
+
+    fn polynomials(a: &Expr, b: &Expr, budget: &mut Budget) -> (Polynomial, Polynomial) {
+        let generators = Generators::of(&[a, b]).unwrap();
+        let mut numerator = |e| generators.fraction(e, budget).unwrap().numerator;
+        (numerator(a), numerator(b))
+    }
+
+    proptest! {
+        /// The fallback, which the heuristic leaves unused on most inputs, gives the same gcd.
+        #[test]
+        fn the_remainder_sequence_agrees_with_the_heuristic(
+            p in polynomial(),
+            q in polynomial(),
+            g in polynomial(),
+        ) {
+            let mut budget = Budget::new("a test");
+            let a = (&p * &g).expand().unwrap();
+            let b = (&q * &g).expand().unwrap();
+            let (a, b) = polynomials(&a, &b, &mut budget);
+            let shared = (0..a.generators()).find(|&x| a.degree_in(x) > 0 && b.degree_in(x) > 0);
+            prop_assume!(shared.is_some());
+            let by_remainders = a.primitive_remainder_gcd(&b, shared.unwrap(), &mut budget).unwrap();
+            prop_assert_eq!(by_remainders, a.gcd(&b, &mut budget).unwrap());
+        }
+    }
 }

@@ -14,6 +14,7 @@ mod content;
 mod conversion;
 mod division;
 mod gcd;
+mod heuristic_gcd;
 
 pub(in crate::algebra) use budget::Budget;
 pub(in crate::algebra) use conversion::Generators;

@@ -1,5 +1,6 @@
 //! Ring operations on sparse polynomials: `p + q` and `p − q` by merging the two sorted
-//! term lists, `c·x^e·p` term by term (a monomial factor keeps the order), `p·q` as all
+//! term lists, `c·x^e·p` term by term (a monomial factor keeps the order), `p·q` as a
+//! sum of merged copies of the longer operand when the shorter is short, else as all
 //! products of terms sorted once with like terms combined, and `pⁿ` by repeated
 //! multiplication. Products are charged to the [`Budget`] and their size checked.
 
@@ -7,6 +8,10 @@ use super::{Budget, Exponents, Polynomial, Term};
 use crate::algebra::error::AlgebraError;
 use crate::algebra::rational::Q;
 use std::cmp::Ordering;
+
+/// Up to this many terms, a product is formed as a sum of the long operand's shifted copies
+/// (each a merge, keeping the order), not as all products of terms sorted once.
+const MERGED_MULTIPLIER_TERMS: usize = 8;
 
 impl Polynomial {
     /// `self + sign·other`, by one merge of the two ordered term lists.
@@ -90,10 +95,16 @@ impl Polynomial {
         budget.check_degrees(self, other)?;
         let products = (short.terms.len() as u64).saturating_mul(long.terms.len() as u64);
         budget.check_products(products)?;
-        budget.spend(products)?;
+        budget.spend_on(products, self.coefficient_bits(), other.coefficient_bits())?;
         let product = match short.terms.as_slice() {
             [] => Polynomial::zero(self.generators),
             [t] => long.times_term(&t.exponents, &t.coefficient),
+            _ if short.terms.len() <= MERGED_MULTIPLIER_TERMS => short
+                .terms
+                .iter()
+                .fold(Polynomial::zero(self.generators), |sum, t| {
+                    sum.add(&long.times_term(&t.exponents, &t.coefficient))
+                }),
             _ => {
                 let mut terms = Vec::with_capacity(short.terms.len() * long.terms.len());
                 for s in &short.terms {

@@ -1,6 +1,7 @@
 //! The bound on the work of polynomial arithmetic: every product, division step and
-//! remainder is charged its number of term operations, and the total may not pass
-//! [`MAX_TERM_OPERATIONS`] (about a second); no result may hold more than
+//! remainder is charged its number of term operations (weighted by the length of long
+//! coefficients), and the total may not pass
+//! [`MAX_TERM_OPERATIONS`] (a few tenths of a second); no result may hold more than
 //! [`MAX_EXPANDED_TERMS`] terms or a coefficient of more than [`MAX_DIGITS`] digits. Past
 //! either bound the operation is refused with an [`AlgebraError`], never left to run.
 
@@ -11,7 +12,7 @@ use super::Polynomial;
 
 /// Largest number of term operations (a product of two terms, a term merged or compared in
 /// a division step) one cancellation or gcd may take.
-pub const MAX_TERM_OPERATIONS: u64 = 20_000_000;
+pub const MAX_TERM_OPERATIONS: u64 = 2_000_000;
 
 /// Largest degree of a polynomial in any generator (and of a power's total degree): far
 /// past any product a person writes, and far from overflowing an exponent.
@@ -49,6 +50,20 @@ impl Budget {
                 limit: MAX_TERM_OPERATIONS,
             }),
         }
+    }
+
+    /// Charges `operations` term operations on coefficients of `bits_a` and `bits_b` bits:
+    /// each counts once more per sixteen products of the numbers' machine words (a
+    /// product of long integers costs about the product of their lengths).
+    pub fn spend_on(
+        &mut self,
+        operations: u64,
+        bits_a: u64,
+        bits_b: u64,
+    ) -> Result<(), AlgebraError> {
+        let words = |bits: u64| bits / 64 + 1;
+        let weight = 1 + words(bits_a).saturating_mul(words(bits_b)) / 16;
+        self.spend(operations.saturating_mul(weight))
     }
 
     /// Refuses a product whose degree in some generator would pass [`MAX_DEGREE`].
@@ -99,12 +114,7 @@ impl Budget {
             return Err(self.too_many_terms(p.terms().len().to_string()));
         }
         let max_bits = (MAX_DIGITS as f64 * std::f64::consts::LOG2_10) as u64;
-        let bits = p
-            .terms()
-            .iter()
-            .map(|t| t.coefficient.bit_lengths().0)
-            .max()
-            .unwrap_or(0);
+        let bits = p.coefficient_bits();
         if bits > max_bits {
             return Err(AlgebraError::NumberTooLarge {
                 what: format!("a coefficient in {}", self.what),

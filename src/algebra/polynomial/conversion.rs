@@ -6,7 +6,7 @@
 //! with a symbolic exponent, and for a rational exponent `p/q` the root `base^(1/q)`, of
 //! which the power is the `p`-th (`x^(3/2) = (√x)³`, `x^(-1/2) = 1/√x`). A sum is a sum of
 //! fractions, a product a product, an integer power of anything else a power of its
-//! fraction (a negative one its reciprocal's). Generators are numbered in the canonical
+//! fraction (a negative one its reciprocal's; a power of a sum multiplied out by `expand`). Generators are numbered in the canonical
 //! order of expressions, so the first weighs most in the polynomials' term order.
 
 use super::{Budget, Polynomial};
@@ -37,6 +37,8 @@ enum Piece<'a> {
     Power(&'a Expr, i64),
     /// `generator^k`.
     Generator(Expr, i64),
+    /// A power of a sum multiplied out, and whether it is the reciprocal's.
+    MultipliedOut(Expr, bool),
 }
 
 fn piece(e: &Expr) -> Result<Piece<'_>, AlgebraError> {
@@ -51,7 +53,11 @@ fn piece(e: &Expr) -> Result<Piece<'_>, AlgebraError> {
                 let (Some(p), Some(q)) = (p, q) else {
                     return Err(AlgebraError::ExponentOutOfRange(exponent.to_string()));
                 };
-                if q == 1 && base.as_symbol().is_none() {
+                if q == 1 && base.terms().len() > 1 && p.unsigned_abs() > 1 {
+                    // A power of a sum by the multinomial theorem, as `expand` forms it.
+                    let power = base.checked_pow(&Expr::int(p.abs()))?.expand()?;
+                    Piece::MultipliedOut(power, p < 0)
+                } else if q == 1 && base.as_symbol().is_none() {
                     Piece::Power(base, p)
                 } else if q == 1 {
                     Piece::Generator(base.clone(), p)
@@ -102,11 +108,19 @@ impl Generators {
                 }
             }
             Piece::Sum(terms) => {
+                // The polynomial terms are gathered and sorted once; fractions are added.
+                let mut polynomial_terms = Vec::new();
                 let mut sum = Fraction::new(Polynomial::zero(n), constant(Q::ONE));
                 for t in terms {
-                    sum = sum.add(&self.fraction(t, budget)?, budget)?;
+                    let f = self.fraction(t, budget)?;
+                    if f.denominator.is_one() {
+                        polynomial_terms.extend(f.numerator.terms);
+                    } else {
+                        sum = sum.add(&f, budget)?;
+                    }
                 }
-                sum
+                let polynomial = Polynomial::from_unsorted(n, polynomial_terms);
+                sum.add(&Fraction::new(polynomial, constant(Q::ONE)), budget)?
             }
             Piece::Product(factors) => {
                 let mut product = Fraction::new(constant(Q::ONE), constant(Q::ONE));
@@ -114,6 +128,14 @@ impl Generators {
                     product = product.mul(&self.fraction(f, budget)?, budget)?;
                 }
                 product
+            }
+            Piece::MultipliedOut(power, reciprocal) => {
+                let f = self.fraction(&power, budget)?;
+                if reciprocal {
+                    f.reciprocal()?
+                } else {
+                    f
+                }
             }
             Piece::Power(base, k) => {
                 budget.check_degree(k.unsigned_abs())?;
@@ -150,6 +172,7 @@ fn collect(e: &Expr, found: &mut BTreeMap<Expr, ()>) -> Result<(), AlgebraError>
             operands.iter().try_for_each(|x| collect(x, found))?;
         }
         Piece::Power(base, _) => collect(base, found)?,
+        Piece::MultipliedOut(power, _) => collect(&power, found)?,
     }
     Ok(())
 }

@@ -23,10 +23,15 @@ impl Polynomial {
             return Ok(Some(self.clone()));
         }
         let lead = &divisor.terms[0];
+        let divisor_bits = divisor.coefficient_bits();
         let mut quotient = Vec::new();
         let mut rest = self.clone();
         while let Some(top) = rest.terms.first() {
-            budget.spend((rest.terms.len() + divisor.terms.len()) as u64)?;
+            budget.spend_on(
+                (rest.terms.len() + divisor.terms.len()) as u64,
+                top.coefficient.bit_lengths().0,
+                divisor_bits,
+            )?;
             let Some(exponents) = top
                 .exponents
                 .iter()
@@ -67,7 +72,13 @@ impl Polynomial {
             let top = rest
                 .coefficient_in(x, k)
                 .times_term(&shift, &crate::algebra::Q::ONE);
-            rest = lead.mul(&rest, budget)?.sub(&top.mul(divisor, budget)?);
+            budget.spend_on(rest.terms.len() as u64, rest.coefficient_bits(), 64)?;
+            let scaled = if lead.is_one() {
+                rest
+            } else {
+                lead.mul(&rest, budget)?
+            };
+            rest = scaled.sub(&top.mul(divisor, budget)?);
         }
         Ok(rest)
     }

@@ -89,7 +89,11 @@ impl Polynomial {
         point: &Q,
         budget: &mut Budget,
     ) -> Result<Polynomial, AlgebraError> {
-        budget.spend(self.terms.len() as u64)?;
+        budget.spend_on(
+            self.terms.len() as u64,
+            self.coefficient_bits(),
+            point.bit_lengths().0 * u64::from(self.degree_in(x)),
+        )?;
         let degree = self.degree_in(x) as usize;
         let mut powers = vec![Q::ONE];
         for k in 1..=degree {
@@ -124,7 +128,7 @@ impl Polynomial {
             let mut rest = t.coefficient.clone();
             let mut k = 0u32;
             while !rest.is_zero() {
-                budget.spend(1)?;
+                budget.spend_on(1, rest.bit_lengths().0, point.bit_lengths().0)?;
                 let mut digit = rest.integer_rem_euclid(point);
                 if digit > half {
                     digit = &digit - point;

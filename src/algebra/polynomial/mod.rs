@@ -139,6 +139,15 @@ impl Polynomial {
             .unwrap_or(0)
     }
 
+    /// The bits of the longest coefficient.
+    pub fn coefficient_bits(&self) -> u64 {
+        self.terms
+            .iter()
+            .map(|t| t.coefficient.bit_lengths().0)
+            .max()
+            .unwrap_or(0)
+    }
+
     /// The largest exponent of generator `i` (0 for zero).
     pub fn degree_in(&self, i: usize) -> u32 {
         self.terms.iter().map(|t| t.exponents[i]).max().unwrap_or(0)

@@ -9,6 +9,7 @@
 //! fraction (a negative one its reciprocal's; a power of a sum multiplied out by `expand`). Generators are numbered in the canonical
 //! order of expressions, so the first weighs most in the polynomials' term order.
 
+use super::budget::MAX_DEGREE;
 use super::{Budget, Polynomial};
 use crate::algebra::error::AlgebraError;
 use crate::algebra::expr::{Expr, View};
@@ -53,6 +54,9 @@ fn piece(e: &Expr) -> Result<Piece<'_>, AlgebraError> {
                 let (Some(p), Some(q)) = (p, q) else {
                     return Err(AlgebraError::ExponentOutOfRange(exponent.to_string()));
                 };
+                if p.unsigned_abs() > MAX_DEGREE {
+                    return Err(AlgebraError::ExponentOutOfRange(exponent.to_string()));
+                }
                 if q == 1 && base.terms().len() > 1 && p.unsigned_abs() > 1 {
                     // A power of a sum by the multinomial theorem, as `expand` forms it.
                     let power = base.checked_pow(&Expr::int(p.abs()))?.expand()?;
@@ -122,13 +126,15 @@ impl Generators {
                 let polynomial = Polynomial::from_unsorted(n, polynomial_terms);
                 sum.add(&Fraction::new(polynomial, constant(Q::ONE)), budget)?
             }
-            Piece::Product(factors) => {
-                let mut product = Fraction::new(constant(Q::ONE), constant(Q::ONE));
-                for f in factors {
-                    product = product.mul(&self.fraction(f, budget)?, budget)?;
-                }
-                product
-            }
+            Piece::Product(factors) if e.coefficient().is_integer() => match self.monomial(factors)
+            {
+                Some(exponents) => Fraction::new(
+                    Polynomial::monomial(exponents, e.coefficient().clone()),
+                    constant(Q::ONE),
+                ),
+                None => self.product(factors, budget)?,
+            },
+            Piece::Product(factors) => self.product(factors, budget)?,
             Piece::MultipliedOut(power, reciprocal) => {
                 let f = self.fraction(&power, budget)?;
                 if reciprocal {
@@ -145,6 +151,34 @@ impl Generators {
                 Fraction::new(f.numerator.pow(k, budget)?, f.denominator.pow(k, budget)?)
             }
         })
+    }
+
+    /// The product of the factors' fractions.
+    fn product(&self, factors: &[Expr], budget: &mut Budget) -> Result<Fraction, AlgebraError> {
+        let n = self.list.len();
+        let mut product = Fraction::new(
+            Polynomial::constant(n, Q::ONE),
+            Polynomial::constant(n, Q::ONE),
+        );
+        for f in factors {
+            product = product.mul(&self.fraction(f, budget)?, budget)?;
+        }
+        Ok(product)
+    }
+
+    /// The exponents of a product of positive integer powers of symbols (its number left
+    /// out), read at once; none for any other product.
+    fn monomial(&self, factors: &[Expr]) -> Option<super::Exponents> {
+        let mut exponents = super::Exponents::from_elem(0, self.list.len());
+        for f in factors.iter().filter(|f| f.as_num().is_none()) {
+            let (base, exponent) = f.base_and_exponent();
+            let k = exponent.as_num()?.to_i64()?;
+            if base.as_symbol().is_none() || k <= 0 || k.unsigned_abs() > MAX_DEGREE {
+                return None;
+            }
+            exponents[self.index[base]] = k as u32;
+        }
+        Some(exponents)
     }
 
     /// The polynomial as an expression: the sum of its terms `c·Π gᵢ^eᵢ`.

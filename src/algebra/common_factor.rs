@@ -10,9 +10,15 @@
 //! `-1/12 m b² - 1/12 m c² = -1/12 m (b² + c²)`, `x/a + y/a = (x + y)/a`, and a fraction's
 //! numerator and denominator are each so factored. A sum whose only common factor is a
 //! number stays a sum (a number times a sum is distributed in canonical form).
+//!
+//! A sum whose terms hold sums has, besides, the gcd of its terms as polynomials pulled
+//! out when that is shorter by [`Expr::operation_count`]: `a(b² − c²) + d(b + c) =
+//! (b + c)(a b − a c + d)`; one work bound (`polynomial/budget.rs`) for the whole
+//! expression, past which the sums stay as they are.
 
 use super::error::AlgebraError;
 use super::expr::{Expr, View};
+use super::polynomial::{Budget, Generators};
 use super::rational::Q;
 
 impl Expr {
@@ -26,25 +32,85 @@ impl Expr {
     /// assert_eq!(e.factor_terms().unwrap(), factored);
     /// ```
     pub fn factor_terms(&self) -> Result<Expr, AlgebraError> {
-        Ok(match self.view() {
-            View::Num(_) | View::Sym(_) => self.clone(),
-            View::Add(terms) => {
-                let terms = terms
-                    .iter()
-                    .map(Expr::factor_terms)
-                    .collect::<Result<Vec<_>, _>>()?;
-                common_factor_out(&terms)?
-            }
-            View::Mul(factors) => Expr::mul_all(
-                factors
-                    .iter()
-                    .map(Expr::factor_terms)
-                    .collect::<Result<Vec<_>, _>>()?,
-            ),
-            View::Pow(base, exponent) => base.factor_terms()?.checked_pow(exponent)?,
-            View::Func(f, arg) => Expr::func(f, arg.factor_terms()?),
-        })
+        factored(self, &mut Budget::new("the common factors"))
     }
+}
+
+/// `factor_terms` of `e`, every polynomial gcd charged to one budget.
+fn factored(e: &Expr, budget: &mut Budget) -> Result<Expr, AlgebraError> {
+    Ok(match e.view() {
+        View::Num(_) | View::Sym(_) => e.clone(),
+        View::Add(terms) => {
+            let terms = terms
+                .iter()
+                .map(|t| factored(t, budget))
+                .collect::<Result<Vec<_>, _>>()?;
+            let out = common_factor_out(&terms)?;
+            match out.view() {
+                View::Add(_) => polynomial_factor_out(&out, budget),
+                View::Mul(factors) => Expr::mul_all(
+                    factors
+                        .iter()
+                        .map(|f| match f.view() {
+                            View::Add(_) => Ok(polynomial_factor_out(f, budget)),
+                            _ => Ok(f.clone()),
+                        })
+                        .collect::<Result<Vec<_>, _>>()?,
+                ),
+                _ => out,
+            }
+        }
+        View::Mul(factors) => Expr::mul_all(
+            factors
+                .iter()
+                .map(|f| factored(f, budget))
+                .collect::<Result<Vec<_>, _>>()?,
+        ),
+        View::Pow(base, exponent) => factored(base, budget)?.checked_pow(exponent)?,
+        View::Func(f, arg) => Expr::func(f, factored(arg, budget)?),
+    })
+}
+
+/// A sum whose terms hold sums, with the gcd `g` of its terms as polynomials in front,
+/// `g · Σ (tᵢ/g)` (`a(b² − c²) + d(b + c) = (b + c)(a b − a c + d)`), when that has fewer
+/// operations ([`Expr::operation_count`]); else the sum as it is. Terms with a denominator
+/// that is not a number are left as they are, as is a sum past the work bound.
+fn polynomial_factor_out(sum: &Expr, budget: &mut Budget) -> Expr {
+    let holds_sums = |t: &Expr| t.monomial().iter().any(|f| f.base().terms().len() > 1);
+    if !sum.terms().iter().any(holds_sums) {
+        return sum.clone();
+    }
+    match with_polynomial_gcd_out(sum, budget) {
+        Ok(Some(candidate)) if candidate.operation_count() < sum.operation_count() => candidate,
+        _ => sum.clone(),
+    }
+}
+
+/// `g · Σ (tᵢ/g)` for the gcd `g` of the terms as polynomials; none when a term has a
+/// denominator that is not a number or `g` is a number.
+fn with_polynomial_gcd_out(sum: &Expr, budget: &mut Budget) -> Result<Option<Expr>, AlgebraError> {
+    let generators = Generators::of(&[sum])?;
+    let mut polynomials = Vec::new();
+    for t in sum.terms() {
+        let f = generators.fraction(t, budget)?;
+        if !f.denominator.is_one() {
+            return Ok(None);
+        }
+        polynomials.push(f.numerator);
+    }
+    let mut gcd = polynomials[0].clone();
+    for p in &polynomials[1..] {
+        gcd = gcd.gcd(p, budget)?;
+        if gcd.is_constant() {
+            return Ok(None);
+        }
+    }
+    let mut quotients = Vec::new();
+    for p in &polynomials {
+        quotients.push(generators.expr(&p.divided_by_factor(&gcd, budget)?));
+    }
+    let factor = common_factor_out(generators.expr(&gcd).terms())?;
+    Ok(Some(Expr::mul_all([factor, Expr::add_all(quotients)])))
 }
 
 /// `Σ terms` with their common factor in front (module documentation).

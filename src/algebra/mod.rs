@@ -5,6 +5,8 @@
 //! expressions work), [`Expr::expand`], [`Expr::subs`], [`Expr::collect`], [`Expr::d_dt`],
 //! [`Expr::diff`] and [`Expr::eval`] over any float type. [`Expr::sum_of_products`] and
 //! [`vector_products`] form `Σ aᵢbᵢ`, `[M]{v}`, `a·b` and `a×b` as one sum per component.
+//! Rational functions: [`Expr::cancel`] (lowest terms, by [`polynomial_gcd`]),
+//! [`Expr::together`] and [`Expr::factor_terms`].
 
 #[cfg(test)]
 mod arbitrary;

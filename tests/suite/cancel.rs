@@ -66,6 +66,13 @@ fn common_factors_come_out_with_the_numbers_in_front() {
         parse("2*x*y + 4*x*z").factor_terms().unwrap(),
         parse("2*x*(y + 2*z)")
     );
+    assert_eq!(
+        parse("a*(b^2 - c^2) + d*(b + c)").factor_terms().unwrap(),
+        parse("(b + c)*(a*b - a*c + d)")
+    );
+    // Not shorter with the gcd out: left as it is.
+    let e = parse("a*(b + c) + b^2 + 2*b*c + c^2");
+    assert_eq!(e.factor_terms().unwrap(), e);
 }
 
 #[test]

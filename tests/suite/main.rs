@@ -21,6 +21,7 @@ mod dual_numbers;
 mod expression_generator;
 mod general_body_print;
 mod integrators;
+mod issue15_scenes;
 mod latex_compiles;
 mod layering;
 mod nalgebra_ops;

@@ -14,7 +14,7 @@ The same inputs as the Rust criterion benchmark, read from the same files:
 Every expression is in kinetics' ASCII syntax (`^` for powers), which SymPy reads once
 `^` is `**`; reading is not timed.
 
-    pip install sympy symengine
+    pip install sympy symengine      # and gmpy2, the integers SymPy's polynomials prefer
     python3 benches/compare/simplification.py                 # the table
     python3 benches/compare/simplification.py --write-inputs  # make the two input files
 
@@ -23,6 +23,8 @@ the planted factor) and takes the unknowns from `target/release/kinetics solve
 examples/scenes/free_box_struck_at_corner.scene --format json` (build it first with
 `cargo build --release`).
 
+The first line says which integers SymPy used (its ground types: `gmpy` with gmpy2
+installed, else `python`; gmpy2 makes its gcd and cancel about 1.5 times faster here).
 Each figure is the best of several batches, as `timeit` recommends (and as
 `general_body.py` does). SymEngine has no cancel, multivariate gcd or simplify in its
 Python module (0.15), so only SymPy's figures are printed; the script says so when

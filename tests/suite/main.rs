@@ -23,6 +23,7 @@ mod integrators;
 mod latex_compiles;
 mod layering;
 mod nalgebra_ops;
+mod numeric_powers;
 mod operation_count;
 mod principal_axes;
 mod print_parse_properties;

@@ -15,6 +15,7 @@ mod cli_bad_input;
 mod cli_write_failure;
 mod derivations_numeric;
 mod derive_snapshots;
+mod dimension_powers;
 mod domains;
 mod double_double_float;
 mod dual_numbers;

@@ -185,3 +185,48 @@ proptest! {
         );
     }
 }
+
+/// A scene declares its givens' domains by their units: kg, m, s, N and kg·m² positive,
+/// unless written `real` or given a negative value; the chapter's defaults for the rest.
+#[test]
+fn a_scene_declares_domains_by_unit() {
+    let text = "given m = 2 kg\ngiven L : m\ngiven x = 0.2 m real\ngiven y : m real\n\
+                given z = -0.1 m\ngiven w = 1 rad/s\ngiven P = 10 N\ngiven I_xy : kg*m^2\n\
+                body rod(L) mass m\nfixed point\nomega = w*k\nfind T\n";
+    let scene = kinetics::scene::parse_scene("domains.scene", text)
+        .unwrap_or_else(|d| panic!("{}", d.render()));
+    let domains = scene.domains();
+    for (name, domain) in [
+        ("m", Domain::Positive),
+        ("L", Domain::Positive),
+        ("P", Domain::Positive),
+        ("I_xy", Domain::Positive),
+        ("x", Domain::Real),
+        ("y", Domain::Real),
+        ("z", Domain::Real),
+        ("w", Domain::Real),
+        ("b", Domain::Positive),
+        ("F_x", Domain::Real),
+    ] {
+        assert_eq!(domains.domain(Symbol::new(name)), domain, "{name}");
+    }
+    let simplify = |text: &str| {
+        parsed(text)
+            .simplify_radicals(&domains)
+            .unwrap()
+            .to_string()
+    };
+    assert_eq!(simplify("sqrt(P^2 L^2)"), "P*L");
+    assert_eq!(simplify("sqrt(x^2)"), "abs(x)");
+}
+
+/// `real` on a given that is real already is a mistake, refused at the word.
+#[test]
+fn real_on_a_real_given_is_refused_where_it_stands() {
+    for (line, column) in [("given w = 3 rad/s real", 19), ("given k_1 = 0.5 real", 17)] {
+        let text = format!("given m = 2 kg\n{line}\n");
+        let d = kinetics::scene::parse_scene("real.scene", &text).expect_err(line);
+        assert_eq!((d.line, d.column), (2, column), "{}", d.render());
+        assert!(d.message.contains("is real already"), "{}", d.render());
+    }
+}

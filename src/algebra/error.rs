@@ -42,4 +42,9 @@ pub enum AlgebraError {
         digits: u64,
         limit: u64,
     },
+    /// An input to a simplification larger than its bound, in nodes.
+    #[error(
+        "the expression is too large to simplify: more than {0} symbols, operations and ten-digit groups of numbers; simplify a part of it"
+    )]
+    TooLargeToSimplify(usize),
 }

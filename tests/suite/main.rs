@@ -50,6 +50,7 @@ mod tape_native;
 mod tape_native_memory;
 mod time_derivative;
 mod torque_free;
+mod trigonometry;
 mod work_precision;
 mod work_precision_forced_truth;
 

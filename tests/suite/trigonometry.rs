@@ -195,3 +195,44 @@ proptest! {
         prop_assert!((before - after).abs().to_f64() < 1e-26 * scale, "{e} -> {s}");
     }
 }
+
+const SCENE: &str = "given M = 5 kg\ngiven R = 1 m\nbody sphere(R) mass M\n";
+
+#[test]
+fn a_scene_may_not_declare_pi_or_deg() {
+    for (name, says) in [("pi", "constant"), ("deg", "degree")] {
+        let text = format!("given {name} = 3\n{SCENE}find T");
+        let err = kinetics::parse_scene("t.scene", &text).unwrap_err();
+        assert!(err.message.contains(says), "{name}: {}", err.message);
+        assert_eq!((err.line, err.column), (1, 7), "{name}");
+    }
+}
+
+#[test]
+fn a_scene_may_use_pi_and_deg() {
+    let text =
+        format!("given t1 = 1 s\n{SCENE}omega = 2*pi*k/t1 + sin(30 deg)*i/t1\nvbar = 0\nfind T");
+    let scene = kinetics::parse_scene("t.scene", &text).unwrap();
+    let omega = scene.omega.clone().unwrap();
+    assert_eq!(omega[2], parse("2*pi/t1"));
+    assert_eq!(omega[0], parse("1/(2*t1)"));
+}
+
+#[test]
+fn a_given_angle_in_degrees_is_exact() {
+    let text = format!("given theta = 90 deg\n{SCENE}find T");
+    let scene = kinetics::parse_scene("t.scene", &text).unwrap();
+    let theta = scene.exact_given(Symbol::new("theta")).unwrap();
+    assert_eq!(theta, parse("pi/2"));
+    assert_eq!(Expr::func(Func::Sin, theta), Expr::one());
+}
+
+/// A compiled tape takes π as the constant it is, not as an input.
+#[test]
+fn a_tape_holds_pi_as_a_constant() {
+    let e = parse("2*pi*x");
+    let tape = kinetics::numeric::Tape::compile(&[e], &[Symbol::new("x")]).unwrap();
+    let mut out = [0.0];
+    tape.eval(&[1.5], &mut out).unwrap();
+    assert!((out[0] - 3.0 * std::f64::consts::PI).abs() < 1e-15);
+}

@@ -13,6 +13,7 @@ use syntax_error::{expected_words, syntax_error};
 mod before_grammar;
 mod body;
 mod given;
+mod reserved_names;
 mod syntax_error;
 
 /// The name of time in scene mathematics.
@@ -90,8 +91,8 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
             places: Places::default(),
         },
     };
-    for unit_vector in vector::unit_vectors() {
-        if let Some(s) = unit_vector.as_symbol() {
+    for dimensionless in vector::unit_vectors().into_iter().chain([Expr::pi()]) {
+        if let Some(s) = dimensionless.as_symbol() {
             reader.dims.insert(s, Dimension::NONE);
         }
     }
@@ -316,9 +317,9 @@ impl Reader<'_> {
 
     fn declare(&mut self, name: &Pair<Rule>, dimension: Dimension) -> Result<Symbol, Diagnostic> {
         let symbol = Symbol::new(name.as_str());
-        if matches!(name.as_str(), "i" | "j" | "k") {
+        if let Some(meaning) = reserved_names::meaning(name.as_str()) {
             return Err(self
-                .error(span(name), "i, j and k are the unit vectors")
+                .error(span(name), meaning)
                 .with_help("choose another name"));
         }
         // `t` is the time unless the scene declares it (a thickness, say).

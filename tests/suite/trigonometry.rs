@@ -236,3 +236,30 @@ fn a_tape_holds_pi_as_a_constant() {
     tape.eval(&[1.5], &mut out).unwrap();
     assert!((out[0] - 3.0 * std::f64::consts::PI).abs() < 1e-15);
 }
+
+mod random_expressions {
+    use crate::common::expression_tree::{agrees, config, point, tree, values};
+    use proptest::prelude::*;
+
+    const NAMES: [&str; 4] = ["a", "b", "theta", "phi"];
+
+    proptest! {
+        #![proptest_config(config(2_000))]
+
+        /// On random expressions (functions, powers, quotients), `simplify_trig` keeps the
+        /// value of the tree and never grows the operation count.
+        #[test]
+        fn simplify_trig_on_any_expression(t in tree(NAMES.len()), x in point(NAMES.len())) {
+            let Some(expected) = t.value(&x) else {
+                return Err(TestCaseError::reject("no reference value"));
+            };
+            let Some(e) = t.build(&NAMES) else {
+                return Err(TestCaseError::reject("division by an exact zero"));
+            };
+            let s = e.simplify_trig().unwrap();
+            prop_assert!(s.operation_count() <= e.operation_count(), "{e} -> {s}");
+            let checked = agrees(&s, expected, &values(&NAMES, &x));
+            prop_assert!(checked.is_ok(), "{e} -> {s}: {}", checked.unwrap_err());
+        }
+    }
+}

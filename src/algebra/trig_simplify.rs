@@ -7,7 +7,8 @@
 //! [`Expr::operation_count`] is kept (the sum itself on a tie). So `a sin²θ + a cos²θ = a`,
 //! `1 − sin²θ = cos²θ`, `sin²θ cos²φ + cos²θ cos²φ = cos²φ`, and `sin²θ + cos²φ` stays.
 //! A product of sums holding `sin` or `cos` is also tried multiplied out
-//! (`(1 − sin θ)(1 + sin θ) = cos²θ`).
+//! (`(1 − sin θ)(1 + sin θ) = cos²θ`), unless `expand` refuses it as too large: that form
+//! is only tried, and the product itself stays a valid answer.
 //!
 //! Two passes, each bottom-up through every argument, power, factor and term (a quotient's
 //! numerator and denominator apart): the Pythagorean forms first over the whole
@@ -67,7 +68,13 @@ fn bottom_up(e: &Expr, pass: &Pass) -> Result<Expr, AlgebraError> {
     };
     let mut candidates = vec![e.clone(), each_angle(rebuilt.clone(), pass)?];
     if matches!(pass, Pass::Pythagorean) && is_product_of_trigonometric_sums(&rebuilt) {
-        candidates.push(each_angle(rebuilt.expand()?, pass)?);
+        match rebuilt.expand() {
+            Ok(expanded) => candidates.push(each_angle(expanded, pass)?),
+            Err(AlgebraError::TooLarge { .. })
+            | Err(AlgebraError::ExpansionTooLong(_))
+            | Err(AlgebraError::NumberTooLarge { .. }) => {}
+            Err(other) => return Err(other),
+        }
     }
     Ok(shortest(candidates))
 }

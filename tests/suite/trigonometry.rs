@@ -85,6 +85,13 @@ fn beyond_the_bound_an_error_not_a_hang() {
     );
 }
 
+/// Multiplying out is only tried: a product too large to expand stays as it is.
+#[test]
+fn a_product_too_large_to_multiply_out_stays() {
+    let e = parse("(a + b + c + d + e + sin(x))^40");
+    assert_eq!(e.simplify_trig().unwrap(), e);
+}
+
 #[test]
 fn exact_values_in_degrees_and_pi() {
     for (text, exact) in [

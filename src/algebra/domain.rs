@@ -9,7 +9,7 @@
 //! | masses `m`, `m_1`, `m_A` | coordinates `x`, `y`, `z`, `xbar`, `x_1` |
 //! | lengths and radii `L`, `l`, `r`, `R`, `a`, `b`, `c`, `d`, `h`, `e`, `r_1`, `d_2` | components `w_x`, `v_x`, `H_x`, `F_x`, `r_x`, `a_x` |
 //! | moments of inertia `I`, `I_x`, `I_y'`, `I_G`, `I_O`, `Ibar_x`, `I_1` | products of inertia `I_xy`, `I_yz'` |
-//! | times `t`, `t_1`, `Dt` | angles and rates `theta`, `beta`, `w`, `alpha`, `phi`, any dotted symbol |
+//! | times `t`, `t_1`, `Dt`; the constant `pi` (π) | angles and rates `theta`, `beta`, `w`, `alpha`, `phi`, any dotted symbol |
 //! | | everything else: forces `F`, `P`, couples `M`, `g` |
 //!
 //! A scene declares more ([`Domains::declare`]): its givens in kg, m, s, N and kg·m² are
@@ -86,7 +86,7 @@ fn default_domain(s: Symbol) -> Domain {
             !matches!(s.base(), "x" | "y" | "z") && !component && !s.name().contains("bar")
         }
         Role::Other => {
-            matches!(s.base(), "R" | "t" | "Dt") && !component && !s.name().contains("bar")
+            matches!(s.base(), "R" | "t" | "Dt" | "pi") && !component && !s.name().contains("bar")
         }
         Role::Kinematic | Role::UnitVector => false,
     };

@@ -270,3 +270,10 @@ mod random_expressions {
         }
     }
 }
+
+/// π is positive: `√(π²) = π`, `|2π| = 2π`.
+#[test]
+fn pi_is_positive() {
+    let domains = kinetics::algebra::Domains::chapter_defaults();
+    assert!(domains.is_positive(&parse("2*pi")));
+}

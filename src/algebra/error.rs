@@ -35,6 +35,9 @@ pub enum AlgebraError {
     NotAVector(String),
     #[error("the exponent {0} is out of range: its power cannot be multiplied out")]
     ExponentOutOfRange(String),
+    /// A function where it has no value: `tan` at an odd multiple of π/2.
+    #[error("{0} is undefined (the tangent of an odd multiple of 90° is infinite)")]
+    Undefined(String),
     /// An exact number past [`crate::algebra::MAX_DIGITS`] decimal digits.
     #[error("{what} would have about {digits} digits, more than the limit of {limit}")]
     NumberTooLarge {
@@ -49,4 +52,9 @@ pub enum AlgebraError {
     TooMuchWork { what: String, limit: u64 },
     #[error("{0} is not a polynomial: it has a denominator")]
     NotAPolynomial(String),
+    /// An input to a simplification larger than its bound, in nodes.
+    #[error(
+        "the expression is too large to simplify: more than {0} symbols, operations and ten-digit groups of numbers; simplify a part of it"
+    )]
+    TooLargeToSimplify(usize),
 }

@@ -8,7 +8,8 @@ use super::symbol::Symbol;
 use num_traits::Float;
 
 impl Expr {
-    /// The value of the expression with each symbol's value from `value`. Fails for a
+    /// The value of the expression with each symbol's value from `value` (π's is π, never
+    /// asked for). Fails for a
     /// symbol without a value, and for a result that is not finite: a division by zero
     /// when a divisor is zero (`1/x` at `x = 0`), [`AlgebraError::NotFinite`] otherwise
     /// (an overflow such as `10^400`, or a value that is not a number).
@@ -72,6 +73,7 @@ fn eval_unchecked<T: Float>(
 ) -> Result<T, AlgebraError> {
     Ok(match e.view() {
         View::Num(q) => rational_to(q),
+        View::Sym(s) if s.is_pi() => super::pi::pi_value(),
         View::Sym(s) => value(s).ok_or_else(|| AlgebraError::MissingValue(s.name().to_string()))?,
         View::Add(terms) => {
             let mut sum = T::zero();

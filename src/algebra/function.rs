@@ -2,8 +2,13 @@
 //! (`sqrt(x)` is the power `x^(1/2)`.)
 //!
 //! Construction applies the parity rules `sin(-x) = -sin x`, `cos(-x) = cos x`,
-//! `tan(-x) = -tan x`, `|-x| = |x|`, `||x|| = |x|` and the values at zero.
+//! `tan(-x) = -tan x`, `|-x| = |x|`, `||x|| = |x|`, the values at zero and the exact values
+//! at the multiples of 15° (`sin(π/6) = 1/2`, `cos(13π/6) = cos(π/6) = √3/2`; see
+//! `exact_angle.rs`). `tan` at an odd multiple of π/2 is undefined: [`Func::checked_apply`]
+//! refuses it, [`Func::apply`] leaves it as `tan(π/2)`.
 
+use super::error::AlgebraError;
+use super::exact_angle::{at_multiple_of_pi, ExactValue};
 use super::expr::{Expr, View};
 
 /// An elementary function of one argument.
@@ -36,8 +41,28 @@ impl Func {
         }
     }
 
-    /// `f(arg)` in canonical form.
+    /// `f(arg)` in canonical form, or an error when `f` is undefined there (`tan(π/2)`).
+    pub fn checked_apply(self, arg: Expr) -> Result<Expr, AlgebraError> {
+        let value = self.apply(arg);
+        match value.view() {
+            View::Func(Func::Tan, a) if a.as_multiple_of_pi().is_some() => {
+                Err(AlgebraError::Undefined(format!("tan({a})")))
+            }
+            _ => Ok(value),
+        }
+    }
+
+    /// `f(arg)` in canonical form (`tan` at an odd multiple of π/2 as `tan(π/2)`).
     pub fn apply(self, arg: Expr) -> Expr {
+        if let Some(q) = arg.as_multiple_of_pi() {
+            match at_multiple_of_pi(self, q) {
+                Some(ExactValue::Value(value)) => return value,
+                Some(ExactValue::Pole) => {
+                    return Expr::func_node(Func::Tan, Expr::pi() / Expr::int(2))
+                }
+                None => {}
+            }
+        }
         if let Some(q) = arg.as_num() {
             match self {
                 Func::Abs => return Expr::num(q.abs()),

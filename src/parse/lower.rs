@@ -1,11 +1,15 @@
 //! Lowering: the parse tree of an expression ([`Ast`], each [`Node`] with the span of its
 //! text) to an [`Expr`] through the canonical constructors. Each algebra error on the way
 //! (a zero divisor, zero to a negative power, a power of a vector, a number too long) points
-//! at and quotes the text the user wrote.
+//! at and quotes the text the user wrote. The name `deg` is the degree, the number π/180
+//! (`sin(30 deg)` is `sin(π/6)`, which is 1/2), and `pi` is π.
 
 use super::diagnostic::Diagnostic;
 use crate::algebra::vector::has_unit_vectors;
 use crate::algebra::{AlgebraError, Expr, Func, Q};
+
+/// The name of the degree, the number π/180, in an expression.
+pub const DEGREE: &str = "deg";
 
 /// The parse tree of one expression before it becomes an [`Expr`]. Sums and products are
 /// flat lists, so a long chain `a + b + c + ...` is one node, not a deep tree.
@@ -97,6 +101,8 @@ enum Operation {
     Sum,
     /// A product, whose numbers are multiplied.
     Product,
+    /// A function of an argument, `tan(x)`.
+    Function,
 }
 
 /// A located error of the algebra while lowering: it points at `span` and quotes the text
@@ -118,6 +124,10 @@ fn lowering_error(
         (AlgebraError::DivisionByZero, Operation::Power) => (
             format!("division by zero: {written} is zero to a negative power"),
             "zero has no negative powers: check the base and the sign of the exponent",
+        ),
+        (AlgebraError::Undefined(_), Operation::Function) => (
+            format!("{written} is undefined: the tangent of an odd multiple of 90° is infinite"),
+            "check the angle: cos is zero there",
         ),
         (AlgebraError::NumberTooLarge { .. }, _) => (
             format!("{err}: {written}"),
@@ -164,13 +174,17 @@ pub(super) fn lower(node: Node, source_name: &str, source: &str) -> Result<Expr,
         |err: AlgebraError, operation| lowering_error(err, operation, whole, source_name, source);
     Ok(match node.ast {
         Ast::Number(q) => Expr::num(q),
+        // The degree is the number π/180: `cos(90 deg)` is `cos(π/2)`, which is 0.
+        Ast::Symbol(name) if name == DEGREE => Expr::pi() / Expr::int(180),
         Ast::Symbol(name) => Expr::symbol(&name),
         Ast::Error(d) => return Err(d),
         Ast::Negate(inner) => -lower(*inner, source_name, source)?,
         Ast::Call(name, arg) => {
             let arg = lower(*arg, source_name, source)?;
             match Func::from_name(&name) {
-                Some(f) => Expr::func(f, arg),
+                Some(f) => f
+                    .checked_apply(arg)
+                    .map_err(|e| fail(e, Operation::Function))?,
                 None => arg
                     .checked_pow(&Expr::rational(1, 2))
                     .map_err(|e| fail(e, Operation::Power))?,

@@ -8,3 +8,4 @@ mod lower;
 
 pub use diagnostic::Diagnostic;
 pub use expression::{parse_equation, parse_expression, parse_statement, Equation, Statement};
+pub use lower::DEGREE;

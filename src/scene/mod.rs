@@ -1,6 +1,7 @@
 //! Scenes: a problem described in a file (`grammar/scene.pest`), analysed on demand.
 
 pub mod analysis;
+mod exact_given;
 pub mod kinematic_constraints;
 pub mod model;
 pub mod parse;

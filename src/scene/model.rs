@@ -3,7 +3,7 @@
 //! reference frame; vectors are components in that frame.
 
 use super::units::Dimension;
-use crate::algebra::{AlgebraError, Expr, Symbol, Vector, Q};
+use crate::algebra::{AlgebraError, Domain, Domains, Expr, Symbol, Vector, Q};
 use crate::mechanics::shapes::Shape;
 use crate::parse::Diagnostic;
 
@@ -44,6 +44,9 @@ pub struct Given {
     pub value: Option<f64>,
     /// The value as written (`20 kg`), for the worked solution.
     pub written: Option<String>,
+    /// Positive for a given in kg, m, s, N or kg·m² not written `real` and not negative;
+    /// real otherwise (`parse/given.rs`).
+    pub domain: Domain,
     /// Where the given's name stands, for errors found where it is used.
     pub span: Span,
 }
@@ -254,6 +257,15 @@ impl Scene {
             .filter(|g| e.contains(g.symbol) && g.value.is_some_and(&bad))
             .map(|g| self.cite(g))
             .collect()
+    }
+
+    /// Which symbols are positive: the chapter's defaults, then each given's domain.
+    pub fn domains(&self) -> Domains {
+        let mut domains = Domains::chapter_defaults();
+        for given in &self.givens {
+            domains.declare(given.symbol, given.domain);
+        }
+        domains
     }
 
     pub fn is_unknown(&self, s: Symbol) -> bool {

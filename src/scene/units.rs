@@ -1,7 +1,12 @@
 //! Units and dimensions: SI and US customary units in scene files, converted to SI, and the
 //! dimension (mass, length, time) of every expression, so that `N + m` is an error.
+//!
+//! Exponents of dimensions are whole numbers. A rational power `b^(p/q)` multiplies its
+//! base's exponents by `p/q` when each product is whole: `sqrt(a^2 + b^2)` of lengths is a
+//! length, `1/sqrt(a^2 + b^2)` per metre, `(a^3)^(1/3)` a length; a power that would give a
+//! fractional exponent (`sqrt(a)` of a length) is an error that says so.
 
-use crate::algebra::{Expr, Symbol, View};
+use crate::algebra::{Expr, Symbol, View, Q};
 use std::collections::HashMap;
 use std::fmt;
 
@@ -40,6 +45,22 @@ impl Dimension {
 
     pub fn power(self, n: i8) -> Dimension {
         Dimension::new(self.mass * n, self.length * n, self.time * n)
+    }
+
+    /// The dimension to the power `p/q`: each exponent times `p/q`, when every one is a
+    /// whole number (`(m²)^(1/2)` is m, `(m³)^(-1/3)` is 1/m); none when one is not
+    /// (`m^(1/2)`), or is beyond the range of exponents.
+    pub fn rational_power(self, exponent: &Q) -> Option<Dimension> {
+        let (p, q) = (exponent.numer().to_i64()?, exponent.denom().to_i64()?);
+        let scaled = |e: i8| -> Option<i8> {
+            let product = i64::from(e).checked_mul(p)?;
+            (product % q == 0).then(|| i8::try_from(product / q).ok())?
+        };
+        Some(Dimension::new(
+            scaled(self.mass)?,
+            scaled(self.length)?,
+            scaled(self.time)?,
+        ))
     }
 
     /// The SI unit a result of this dimension is given in.
@@ -134,6 +155,8 @@ pub enum DimensionError {
     Undeclared(Symbol),
     /// A function of a quantity that has a dimension.
     FunctionOfDimensioned(String, Dimension),
+    /// A power whose unit would have a fractional exponent (`sqrt(a)` of a length).
+    FractionalPower(String, Dimension),
 }
 
 impl fmt::Display for DimensionError {
@@ -149,6 +172,11 @@ impl fmt::Display for DimensionError {
                     "the argument {e} of a function must have no unit, but it is in {d}"
                 )
             }
+            DimensionError::FractionalPower(e, d) => write!(
+                f,
+                "{e} has no unit: its base is in {d}, and this power of it would not be a \
+                 whole power of a unit"
+            ),
         }
     }
 }
@@ -178,25 +206,12 @@ pub fn dimension_of(e: &Expr, dims: &Dimensions) -> Result<Dimension, DimensionE
         }),
         View::Pow(b, x) => {
             let base = dimension_of(b, dims)?;
-            match x.as_num().and_then(|q| q.to_i64()) {
-                Some(n) => Ok(base.power(n as i8)),
-                None if base == Dimension::NONE => Ok(Dimension::NONE),
-                None => {
-                    // sqrt of an even dimension, e.g. sqrt(m^2)
-                    let half = x
-                        .as_num()
-                        .is_some_and(|q| *q == crate::algebra::Q::Small(1, 2));
-                    let even = base.mass % 2 == 0 && base.length % 2 == 0 && base.time % 2 == 0;
-                    if half && even {
-                        Ok(Dimension::new(
-                            base.mass / 2,
-                            base.length / 2,
-                            base.time / 2,
-                        ))
-                    } else {
-                        Err(DimensionError::FunctionOfDimensioned(e.to_string(), base))
-                    }
-                }
+            match x.as_num() {
+                _ if base == Dimension::NONE => Ok(Dimension::NONE),
+                Some(exponent) => base
+                    .rational_power(exponent)
+                    .ok_or_else(|| DimensionError::FractionalPower(e.to_string(), base)),
+                None => Err(DimensionError::FunctionOfDimensioned(e.to_string(), base)),
             }
         }
         View::Func(_, arg) => {

@@ -331,6 +331,9 @@ fn power_or_unevaluated(base: &Expr, exponent: &Expr) -> Expr {
                         return Expr::num(v);
                     }
                 }
+                if let Some(split) = whole_part_of_numeric_power(b, p, q) {
+                    return split;
+                }
             }
         }
         (Repr::Pow(p), _) if int_exp.is_some() => {
@@ -358,6 +361,22 @@ impl Expr {
             power_node(Expr::sym(s), Expr::num(e.clone()))
         }
     }
+}
+
+/// `b^(p/q)` for a positive number `b` that is no perfect `q`-th power, written as SymPy
+/// writes it, with the exponent's whole part `k = ⌊p/q⌋` taken out as a number:
+/// `b^(p/q) = b^k · b^(p/q − k)`, `0 < p/q − k < 1` (`2^(-2/3) = 2^(1/3)/2`), so that
+/// `2 · 2^(-2/3)` and `√2 √2 2^(-2/3)` are both `2^(1/3)`. None when the exponent is
+/// already in (0, 1), or when `b^k` is too long to fold.
+fn whole_part_of_numeric_power(b: &Q, p: i64, q: i64) -> Option<Expr> {
+    let whole = p.div_euclid(q);
+    if whole == 0 || b.is_negative() {
+        return None;
+    }
+    let factor = b.checked_pow(whole)?;
+    let fraction = Q::new(p.rem_euclid(q), q)?;
+    let root = power_node(Expr::num(b.clone()), Expr::num(fraction));
+    Some(Expr::product_of_sorted(factor, &[root]))
 }
 
 /// The unevaluated node `base^exponent`.

@@ -85,7 +85,7 @@ impl Tape {
             if let Some(s) = substituted
                 .symbols()
                 .into_iter()
-                .find(|s| !inputs.contains(s))
+                .find(|s| !inputs.contains(s) && !s.is_pi())
             {
                 return Err(NumericError::InvalidInput {
                     what: format!("symbol `{}` in tape output {k}", s.name()),
@@ -291,6 +291,7 @@ impl Builder<'_> {
         }
         let register = match e.view() {
             View::Num(q) => self.constant(q)?,
+            View::Sym(s) if s.is_pi() => self.emit(Instruction::Const(std::f64::consts::PI)),
             View::Sym(s) => {
                 let k = self.inputs.iter().position(|&i| i == s).ok_or_else(|| {
                     NumericError::InvalidInput {

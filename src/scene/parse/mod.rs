@@ -2,12 +2,9 @@
 //! (file:line:column, a caret, a hint). The mathematics inside a statement goes through the
 //! expression parser; its diagnostics are moved to their place in the file.
 
-use super::model::{
-    Constraint, ConstraintKind, Force, Given, Places, Quantity, Request, Scene, Span,
-};
+use super::model::{Constraint, ConstraintKind, Force, Places, Quantity, Request, Scene, Span};
 use super::units::{dimension_of, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
 use crate::algebra::{vector, Expr, Symbol, Vector};
-use crate::mechanics::validation::validate_mass;
 use crate::parse::{parse_expression, Diagnostic};
 use pest::iterators::Pair;
 use pest::Parser;
@@ -15,6 +12,8 @@ use syntax_error::{expected_words, syntax_error};
 
 mod before_grammar;
 mod body;
+mod given;
+mod reserved_names;
 mod syntax_error;
 
 /// The name of time in scene mathematics.
@@ -92,8 +91,8 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
             places: Places::default(),
         },
     };
-    for unit_vector in vector::unit_vectors() {
-        if let Some(s) = unit_vector.as_symbol() {
+    for dimensionless in vector::unit_vectors().into_iter().chain([Expr::pi()]) {
+        if let Some(s) = dimensionless.as_symbol() {
             reader.dims.insert(s, Dimension::NONE);
         }
     }
@@ -318,9 +317,9 @@ impl Reader<'_> {
 
     fn declare(&mut self, name: &Pair<Rule>, dimension: Dimension) -> Result<Symbol, Diagnostic> {
         let symbol = Symbol::new(name.as_str());
-        if matches!(name.as_str(), "i" | "j" | "k") {
+        if let Some(meaning) = reserved_names::meaning(name.as_str()) {
             return Err(self
-                .error(span(name), "i, j and k are the unit vectors")
+                .error(span(name), meaning)
                 .with_help("choose another name"));
         }
         // `t` is the time unless the scene declares it (a thickness, say).
@@ -367,93 +366,6 @@ impl Reader<'_> {
             }
         }
         Ok(super::units::Unit { dimension, to_si })
-    }
-
-    fn given(&mut self, inner: Vec<Pair<Rule>>) -> Result<(), Diagnostic> {
-        let name = &inner[0];
-        let mut value = None;
-        let mut written = None;
-        let mut dimension = None;
-        for p in &inner[1..] {
-            match p.as_rule() {
-                Rule::quantity => {
-                    let mut q = p.clone().into_inner();
-                    let number = q
-                        .next()
-                        .ok_or_else(|| self.error(span(p), "expected a number"))?;
-                    let n: f64 = number
-                        .as_str()
-                        .parse()
-                        .map_err(|_| self.error(span(&number), "not a number"))?;
-                    if !n.is_finite() {
-                        return Err(self
-                            .error(span(&number), "the value is not a finite number")
-                            .with_help("write the value in a unit that keeps it within 1e308"));
-                    }
-                    let unit = match q.next() {
-                        Some(u) => self.unit(&u)?,
-                        None => super::units::Unit {
-                            dimension: Dimension::NONE,
-                            to_si: 1.0,
-                        },
-                    };
-                    value = Some(n * unit.to_si);
-                    written = Some(p.as_str().trim().to_string());
-                    dimension = Some((unit.dimension, span(p)));
-                }
-                Rule::unit => {
-                    let unit = self.unit(p)?;
-                    if let Some((d, _)) = dimension {
-                        if d != unit.dimension {
-                            return Err(self
-                                .error(
-                                    span(p),
-                                    format!(
-                                        "unit mismatch: the value is in {d} but the unit is {}",
-                                        unit.dimension
-                                    ),
-                                )
-                                .with_help("give the value in a unit of the declared kind"));
-                        }
-                    }
-                    dimension = Some((unit.dimension, span(p)));
-                }
-                _ => {}
-            }
-        }
-        let Some((dimension, _)) = dimension else {
-            return Err(self
-                .error(
-                    span(name),
-                    format!("the given {} has neither a value nor a unit", name.as_str()),
-                )
-                .with_help(format!(
-                    "write 'given {0} = 2 m' or 'given {0} : m'",
-                    name.as_str()
-                )));
-        };
-        let symbol = self.declare(name, dimension)?;
-        if dimension == Dimension::MASS
-            && value.is_some_and(|v| validate_mass(name.as_str(), v).is_err())
-        {
-            return Err(self
-                .error(
-                    span(&inner[1]),
-                    format!("mass {} must be positive", name.as_str()),
-                )
-                .with_help("a body's mass is a positive number"));
-        }
-        self.scene.givens.push(Given {
-            symbol,
-            dimension,
-            value,
-            written,
-            span: Span {
-                start: span(name).0,
-                end: span(name).1,
-            },
-        });
-        Ok(())
     }
 
     fn unknown(&mut self, inner: Vec<Pair<Rule>>) -> Result<(), Diagnostic> {

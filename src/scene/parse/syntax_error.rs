@@ -7,7 +7,10 @@ use crate::parse::Diagnostic;
 /// Each statement with the form it is written in, for the hint of a syntax error.
 const STATEMENT_FORMS: [(&str, &str); 15] = [
     ("title", "title Sample Problem 18.4"),
-    ("given", "given m = 0.3 kg  or  given L : m"),
+    (
+        "given",
+        "given m = 0.3 kg  or  given L : m  or  given x = 0.2 m real",
+    ),
     ("body", "body rod(c) mass m at (L/2, c/2, 0) along y"),
     ("fixed", "fixed point"),
     ("omega", "omega = w1*i - w2*j"),

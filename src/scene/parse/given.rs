@@ -1,0 +1,130 @@
+//! The `given` statement: a symbol with a value and a unit, or a unit alone, and its
+//! domain. A given in kg, m, s, N or kg·m² (a mass, a length, a time, the magnitude of a
+//! force, a moment of inertia; in any unit of those kinds) is positive unless it is written
+//! `real` (`given x = 0.2 m real`, `given x : m real`: a coordinate) or its value is
+//! negative; any other given is real, and `real` on it is refused at the word.
+
+use super::super::model::Given;
+use super::super::units::{Dimension, Unit};
+use super::{span, Reader, Rule};
+use crate::algebra::Domain;
+use crate::mechanics::validation::validate_mass;
+use crate::parse::Diagnostic;
+use crate::scene::model::Span;
+use pest::iterators::Pair;
+
+/// The dimensions of the givens that are positive unless written `real`.
+const POSITIVE_UNITS: [Dimension; 5] = [
+    Dimension::MASS,
+    Dimension::LENGTH,
+    Dimension::TIME,
+    Dimension::FORCE,
+    Dimension::INERTIA,
+];
+
+impl Reader<'_> {
+    pub(super) fn given(&mut self, inner: Vec<Pair<Rule>>) -> Result<(), Diagnostic> {
+        let name = &inner[0];
+        let mut value = None;
+        let mut written = None;
+        let mut dimension = None;
+        let mut real = None;
+        for p in &inner[1..] {
+            match p.as_rule() {
+                Rule::real => real = Some(span(p)),
+                Rule::quantity => {
+                    let mut q = p.clone().into_inner();
+                    let number = q
+                        .next()
+                        .ok_or_else(|| self.error(span(p), "expected a number"))?;
+                    let n: f64 = number
+                        .as_str()
+                        .parse()
+                        .map_err(|_| self.error(span(&number), "not a number"))?;
+                    if !n.is_finite() {
+                        return Err(self
+                            .error(span(&number), "the value is not a finite number")
+                            .with_help("write the value in a unit that keeps it within 1e308"));
+                    }
+                    let unit = match q.next() {
+                        Some(u) => self.unit(&u)?,
+                        None => Unit {
+                            dimension: Dimension::NONE,
+                            to_si: 1.0,
+                        },
+                    };
+                    value = Some(n * unit.to_si);
+                    written = Some(p.as_str().trim().to_string());
+                    dimension = Some((unit.dimension, span(p)));
+                }
+                Rule::unit => {
+                    let unit = self.unit(p)?;
+                    if let Some((d, _)) = dimension {
+                        if d != unit.dimension {
+                            return Err(self
+                                .error(
+                                    span(p),
+                                    format!(
+                                        "unit mismatch: the value is in {d} but the unit is {}",
+                                        unit.dimension
+                                    ),
+                                )
+                                .with_help("give the value in a unit of the declared kind"));
+                        }
+                    }
+                    dimension = Some((unit.dimension, span(p)));
+                }
+                _ => {}
+            }
+        }
+        let Some((dimension, _)) = dimension else {
+            return Err(self
+                .error(
+                    span(name),
+                    format!("the given {} has neither a value nor a unit", name.as_str()),
+                )
+                .with_help(format!(
+                    "write 'given {0} = 2 m' or 'given {0} : m'",
+                    name.as_str()
+                )));
+        };
+        let positive = POSITIVE_UNITS.contains(&dimension);
+        if let (Some(at), false) = (real, positive) {
+            return Err(self
+                .error(
+                    at,
+                    format!("{} is real already: it is in {dimension}", name.as_str()),
+                )
+                .with_help(
+                    "'real' is for a given in kg, m, s, N or kg·m², which is otherwise positive",
+                ));
+        }
+        let symbol = self.declare(name, dimension)?;
+        if dimension == Dimension::MASS
+            && value.is_some_and(|v| validate_mass(name.as_str(), v).is_err())
+        {
+            return Err(self
+                .error(
+                    span(&inner[1]),
+                    format!("mass {} must be positive", name.as_str()),
+                )
+                .with_help("a body's mass is a positive number"));
+        }
+        self.scene.givens.push(Given {
+            symbol,
+            dimension,
+            value,
+            written,
+            domain: if positive && real.is_none() && !value.is_some_and(|v| v < 0.0) {
+                Domain::Positive
+            } else {
+                Domain::Real
+            },
+            span: Span {
+                start: span(name).0,
+                end: span(name).1,
+            },
+        });
+        Ok(())
+    }
+}

@@ -9,11 +9,11 @@ use kinetics::numeric::scalar::double_double::DoubleDouble as Dd;
 use kinetics::parse::parse_expression;
 
 /// One case of the corpus: the input and SymPy's cancelled form.
-struct Case {
-    line: usize,
-    input: Expr,
-    numerator: Expr,
-    denominator: Expr,
+pub struct Case {
+    pub line: usize,
+    pub input: Expr,
+    pub numerator: Expr,
+    pub denominator: Expr,
 }
 
 /// Points each case is checked at, and how many of them may be skipped (near a pole).
@@ -23,7 +23,7 @@ const MAY_SKIP: u64 = 2;
 /// Below this magnitude a denominator counts as a pole (the input loses the digits).
 const NEAR_POLE: f64 = 1e-6;
 
-fn corpus() -> Vec<Case> {
+pub fn corpus() -> Vec<Case> {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/cancel_corpus.txt");
     let text = std::fs::read_to_string(path).expect("the corpus exists");
     let mut lines = text

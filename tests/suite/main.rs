@@ -12,6 +12,7 @@ use common::counting_allocator::Counting;
 mod algebra_properties;
 mod bad_scenes;
 mod cancel;
+mod cancel_agrees_with_sympy;
 mod cancel_corpus_parses;
 mod cli_bad_input;
 mod cli_write_failure;

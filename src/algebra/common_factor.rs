@@ -134,6 +134,18 @@ pub(in crate::algebra) fn common_factor_out(terms: &[Expr]) -> Result<Expr, Alge
     Ok(Expr::mul_all([common, rest]))
 }
 
+/// A sum's terms as their numeric content and the primitive sum,
+/// `12 m₁ + 12 m₂ = 12 · (m₁ + m₂)`: kept apart, because the canonical product of a number
+/// and one sum multiplies the number in again.
+pub(in crate::algebra) fn content_and_primitive(terms: &[Expr]) -> (Q, Expr) {
+    let c = content(terms);
+    let inverse = Expr::num(
+        c.recip()
+            .expect("a sum's terms are not zero, nor their content"),
+    );
+    (c, Expr::add_all(terms.iter().map(|t| t * &inverse)))
+}
+
 /// The content of the terms' coefficients: gcd of numerators over lcm of denominators,
 /// negative when all coefficients are.
 fn content(terms: &[Expr]) -> Q {

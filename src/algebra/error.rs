@@ -58,3 +58,19 @@ pub enum AlgebraError {
     )]
     TooLargeToSimplify(usize),
 }
+
+impl AlgebraError {
+    /// Whether this is a refusal for size or work (a bound of the algebra), not a property
+    /// of the expression's value: a shorter form may still be reached another way.
+    pub fn is_beyond_bounds(&self) -> bool {
+        matches!(
+            self,
+            AlgebraError::TooLarge { .. }
+                | AlgebraError::ExpansionTooLong(_)
+                | AlgebraError::ExponentOutOfRange(_)
+                | AlgebraError::NumberTooLarge { .. }
+                | AlgebraError::TooMuchWork { .. }
+                | AlgebraError::TooLargeToSimplify(_)
+        )
+    }
+}

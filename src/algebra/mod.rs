@@ -33,6 +33,7 @@ mod polynomial;
 mod radicals;
 mod rational;
 mod sign;
+mod simplify;
 mod square_rewrite;
 mod subs;
 mod sum_of_products;

@@ -2,6 +2,7 @@
 //! [--format text|latex|json]`: the chapter's equations for a general body.
 
 use super::error::CliError;
+use kinetics::algebra::Domains;
 use kinetics::mechanics::catalogue::{derive_general, NAMES};
 use kinetics::mechanics::Derivation;
 use kinetics::print::Notation;
@@ -40,10 +41,11 @@ pub fn run(args: Args) -> Result<String, CliError> {
                 NAMES.join(", ")
             ))
         })?;
-        derivations.push(derived.map_err(|source| CliError::Algebra {
+        let derived = derived.map_err(|source| CliError::Algebra {
             name: Some(name.to_string()),
             source,
-        })?);
+        })?;
+        derivations.push(derived.simplified(&Domains::chapter_defaults()));
     }
     Ok(match args.format {
         super::show::Format::Text => render(&derivations, Notation::Text, args.steps),

@@ -1,17 +1,23 @@
-//! `kinetics simplify [--expand] "<expr>"`: the canonical form of an expression.
+//! `kinetics simplify [--canonical | --expand] "<expr>"`: the shortest form of an expression
+//! or equation (`Expr::simplify`, the chapter's symbols positive where they name masses,
+//! lengths, moments of inertia and times), its canonical form, or its expansion.
 
 use super::error::CliError;
 use super::input;
 use super::show::{at_input, render_statement, Format};
+use kinetics::algebra::{AlgebraError, Domains, Expr};
 use kinetics::parse::{parse_statement, Equation, Statement};
 
 #[derive(clap::Args)]
 pub struct Args {
     /// The expression or equation, in ASCII; `-` reads standard input.
     pub input: String,
-    /// Multiply out products and powers of sums.
-    #[arg(long)]
+    /// Multiply out products and powers of sums (no other simplification).
+    #[arg(long, conflicts_with = "canonical")]
     pub expand: bool,
+    /// The canonical form only (the form equality is decided in), not the shortest.
+    #[arg(long)]
+    pub canonical: bool,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub format: Format,
@@ -20,18 +26,23 @@ pub struct Args {
 pub fn run(args: Args) -> Result<String, CliError> {
     let (name, source) = input::read(&args.input)?;
     let statement = parse_statement(&name, &source)?;
-    let statement = if args.expand {
-        let expand =
-            |e: &kinetics::algebra::Expr| e.expand().map_err(|err| at_input(&name, &source, err));
-        match statement {
-            Statement::Expression(e) => Statement::Expression(expand(&e)?),
-            Statement::Equation(eq) => Statement::Equation(Equation {
-                lhs: expand(&eq.lhs)?,
-                rhs: expand(&eq.rhs)?,
-            }),
+    let domains = Domains::chapter_defaults();
+    let transform = |e: &Expr| -> Result<Expr, AlgebraError> {
+        if args.canonical {
+            Ok(e.clone())
+        } else if args.expand {
+            e.expand()
+        } else {
+            e.simplify(&domains)
         }
-    } else {
-        statement
+    };
+    let transform = |e: &Expr| transform(e).map_err(|err| at_input(&name, &source, err));
+    let statement = match statement {
+        Statement::Expression(e) => Statement::Expression(transform(&e)?),
+        Statement::Equation(eq) => Statement::Equation(Equation {
+            lhs: transform(&eq.lhs)?,
+            rhs: transform(&eq.rhs)?,
+        }),
     };
     render_statement(&statement, args.format).map_err(|err| at_input(&name, &source, err))
 }

@@ -1,7 +1,7 @@
 //! A derivation: the result together with the steps that led to it (definition,
 //! substitution, grouping), so worked solutions can show them.
 
-use crate::algebra::{Axis, Expr};
+use crate::algebra::{Axis, Domains, Expr};
 
 /// One displayed equation `lhs = rhs`, presented as the equation about `axis`.
 #[derive(Debug, Clone, PartialEq)]
@@ -41,6 +41,17 @@ impl Relation {
             .collect()
     }
 
+    /// The relation as it is shown: each side in its shortest form ([`Expr::simplify`]) under
+    /// the symbols' domains. A side too large to simplify within the algebra's bounds is
+    /// shown as derived (it is equal, only longer).
+    pub fn simplified(&self, domains: &Domains) -> Relation {
+        Relation::new(
+            presented(&self.lhs, domains),
+            presented(&self.rhs, domains),
+            self.axis,
+        )
+    }
+
     /// `lhs − rhs`: zero exactly when the relation holds, the form a solver takes.
     pub fn residual(&self) -> Expr {
         &self.lhs - &self.rhs
@@ -54,6 +65,26 @@ pub struct Step {
     pub relations: Vec<Relation>,
 }
 
+/// An expression as it is shown: [`Expr::simplify`], or the expression itself when it is
+/// beyond the bounds of simplification.
+pub fn presented(e: &Expr, domains: &Domains) -> Expr {
+    e.simplify(domains).unwrap_or_else(|_| e.clone())
+}
+
+impl Step {
+    /// The step as it is shown: every relation [`Relation::simplified`].
+    pub fn simplified(&self, domains: &Domains) -> Step {
+        Step {
+            title: self.title.clone(),
+            relations: self
+                .relations
+                .iter()
+                .map(|r| r.simplified(domains))
+                .collect(),
+        }
+    }
+}
+
 /// A named derivation and its steps; the last step holds the result.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Derivation {
@@ -65,6 +96,15 @@ pub struct Derivation {
 }
 
 impl Derivation {
+    /// The derivation as it is shown: every step [`Step::simplified`].
+    pub fn simplified(&self, domains: &Domains) -> Derivation {
+        Derivation {
+            name: self.name.clone(),
+            title: self.title.clone(),
+            steps: self.steps.iter().map(|s| s.simplified(domains)).collect(),
+        }
+    }
+
     /// The relations of the final step.
     pub fn result(&self) -> &[Relation] {
         self.steps.last().map_or(&[], |s| s.relations.as_slice())

@@ -17,10 +17,10 @@
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
 use super::model::{ConstraintKind, Quantity, Request, Scene, Span};
 use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
-use crate::algebra::{AlgebraError, Axis, Expr, Symbol, Vector};
+use crate::algebra::{AlgebraError, Axis, Domains, Expr, Symbol, Vector};
 use crate::mechanics::angular_momentum::{angular_momentum, angular_momentum_about_point};
 use crate::mechanics::composite_body::{composite_body, MassProperties};
-use crate::mechanics::derivation::{Derivation, Relation, Step};
+use crate::mechanics::derivation::{presented, Derivation, Relation, Step};
 use crate::mechanics::equations_of_motion::{equations_of_motion, Loads, MomentCentre};
 use crate::mechanics::impulse_momentum::{impulse_momentum, ImpulseMomentum};
 use crate::mechanics::inertia::MassPart;
@@ -93,10 +93,25 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
         let value = a.in_givens(request.span, value)?;
         results.push((request.clone(), value));
     }
+    let domains = scene.domains();
     Ok(Analysis {
-        plan: a.plan,
-        results,
+        plan: a.plan.iter().map(|s| s.simplified(&domains)).collect(),
+        results: results
+            .into_iter()
+            .map(|(request, value)| (request, value.presented(&domains)))
+            .collect(),
     })
+}
+
+impl Value {
+    /// The value as it is shown: each component in its shortest form
+    /// ([`crate::mechanics::derivation::presented`]).
+    fn presented(self, domains: &Domains) -> Value {
+        match self {
+            Value::Scalar(e) => Value::Scalar(presented(&e, domains)),
+            Value::Vector(v) => Value::Vector(v.map(|c| presented(&c, domains))),
+        }
+    }
 }
 
 /// The body's mass, mass centre (from O) and centroidal inertia, for callers that need the

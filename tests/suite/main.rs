@@ -41,6 +41,7 @@ mod robust_parse;
 mod robust_simulate;
 mod scene_solutions;
 mod shapes_numeric;
+mod simplify;
 mod simulate_choice;
 mod simulate_cli;
 mod simulate_cli_memory;

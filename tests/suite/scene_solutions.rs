@@ -158,7 +158,7 @@ fn json_has_the_documented_fields() {
     assert!(d_y["latex"].as_str().unwrap().contains(r"\frac{3 M}{16 c}"));
 }
 
-const EXAMPLES: [&str; 11] = [
+const EXAMPLES: [&str; 13] = [
     "sp18_1_plate_impact",
     "sp18_2_rolling_disk",
     "sp18_3_rotating_rod",
@@ -170,6 +170,8 @@ const EXAMPLES: [&str; 11] = [
     "sliding_box",
     "free_body",
     "spun_up_sphere",
+    "free_box_struck_at_corner",
+    "compound_body_bent_rod",
 ];
 
 #[test]

@@ -93,8 +93,12 @@ impl Generators {
     }
 
     /// `e` as a fraction of polynomials in these generators (not in lowest terms).
+    /// Each piece is charged its generators: it makes at least one exponent vector of
+    /// that length (50,000 different symbols in a sum would otherwise fill memory with
+    /// 50,000 vectors of 50,000 exponents before any arithmetic is charged).
     pub fn fraction(&self, e: &Expr, budget: &mut Budget) -> Result<Fraction, AlgebraError> {
         let n = self.list.len();
+        budget.spend(n as u64)?;
         let constant = |q: Q| Polynomial::constant(n, q);
         Ok(match piece(e)? {
             Piece::Number(q) => Fraction {

@@ -2,11 +2,13 @@
 //! simplification.py` gives SymPy (read from the same files, so the ratios compare like
 //! with like): the gcd of two random polynomials in four symbols of degree 6 sharing a
 //! factor of degree 2, and `cancel` of their quotient; `cancel` of the free box's six
-//! solved unknowns and of every input of the corpus `tests/data/cancel_corpus.txt`; and
-//! `factor_terms` of the free box's cancelled `w_z`.
+//! solved unknowns and of every input of the corpus `tests/data/cancel_corpus.txt`;
+//! `factor_terms` of the free box's cancelled `w_z`; and `simplify` (the shortest form,
+//! the chapter's domains) of the free box's unknowns and of the corpus, beside SymPy's
+//! `simplify` on the same inputs.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use kinetics::algebra::{polynomial_gcd, Expr};
+use kinetics::algebra::{polynomial_gcd, Domains, Expr};
 use kinetics::parse_expression;
 
 /// The allocator the `kinetics` binary ships with, as in `benches/algebra.rs`.
@@ -47,6 +49,14 @@ fn bench(c: &mut Criterion) {
             }
         })
     });
+    let domains = Domains::chapter_defaults();
+    c.bench_function("free-box unknowns: simplify", |b| {
+        b.iter(|| {
+            for e in &free_box {
+                black_box(black_box(e).simplify(&domains).unwrap());
+            }
+        })
+    });
     let w_z = free_box[5].cancel().unwrap();
     c.bench_function("free-box w_z cancelled: factor_terms", |b| {
         b.iter(|| black_box(black_box(&w_z).factor_terms().unwrap()))
@@ -61,6 +71,13 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             for e in &corpus {
                 black_box(black_box(e).cancel().unwrap());
+            }
+        })
+    });
+    c.bench_function("corpus (all cases): simplify", |b| {
+        b.iter(|| {
+            for e in &corpus {
+                black_box(black_box(e).simplify(&domains).unwrap());
             }
         })
     });

@@ -1,5 +1,5 @@
 //! The two fuzz targets, each input through the library entry points of the commands:
-//! `expr` through `kinetics simplify [--expand]` and `kinetics latex` (parse, expand, print
+//! `expr` through `kinetics simplify [--expand]` and `kinetics latex` (parse, simplify or expand, print
 //! in text and LaTeX, a vector component by component), `scene` through `kinetics solve`
 //! (parse, analyse, the numbers asked for, the worked solution) and `kinetics simulate
 //! --until 1` (the body's problem, integrated or in closed form, 100 samples). `plan` is
@@ -9,7 +9,7 @@
 //! a clean refusal is no finding.
 
 use crate::finding::{longest_digit_run, non_finite_word, Class, Finding};
-use kinetics::algebra::{vector, AlgebraError, Axis, Expr};
+use kinetics::algebra::{vector, AlgebraError, Axis, Domains, Expr};
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice};
 use kinetics::numeric::rigid_body::sample_sink::Sample;
 use kinetics::numeric::rigid_body::simulate::Sampling;
@@ -50,8 +50,9 @@ impl Target {
 /// Runs `text` through the command `run`: what it broke, if anything.
 pub fn check(run: &str, text: &str) -> Option<Finding> {
     let outcome = match run {
-        "simplify" | "latex" => expression(text, false),
-        "simplify --expand" => expression(text, true),
+        "simplify" => expression(text, Form::Shortest),
+        "latex" => expression(text, Form::AsWritten),
+        "simplify --expand" => expression(text, Form::Expanded),
         "solve" => solve(text),
         _ => simulate(text),
     };
@@ -61,7 +62,16 @@ pub fn check(run: &str, text: &str) -> Option<Finding> {
 /// `Err(None)`: refused cleanly; `Err(Some(finding))`: a promise broken.
 type Outcome = Result<(), Option<Finding>>;
 
-fn expression(text: &str, expand: bool) -> Outcome {
+/// The form a command shows: `latex` the canonical form, `simplify` the shortest,
+/// `simplify --expand` the expansion.
+#[derive(Clone, Copy)]
+enum Form {
+    AsWritten,
+    Shortest,
+    Expanded,
+}
+
+fn expression(text: &str, form: Form) -> Outcome {
     let statement = parse_statement("input", text).map_err(|d| located(&d, text, false))?;
     let sides = match statement {
         Statement::Expression(e) => vec![e],
@@ -73,10 +83,12 @@ fn expression(text: &str, expand: bool) -> Outcome {
         located(&whole, text, false)
     };
     for side in sides {
-        let side = if expand {
-            side.expand().map_err(at_input)?
-        } else {
-            side
+        let side = match form {
+            Form::AsWritten => side,
+            Form::Shortest => side
+                .simplify(&Domains::chapter_defaults())
+                .map_err(at_input)?,
+            Form::Expanded => side.expand().map_err(at_input)?,
         };
         for notation in [Notation::Text, Notation::Latex] {
             printed(&show(&side, notation).map_err(at_input)?)?;

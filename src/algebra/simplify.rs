@@ -20,6 +20,10 @@
 //! one denominator (the printer groups its terms by kinematic part). A sum with no
 //! kinematic symbol, a mass property such as `⅟₁₂ m b² + ⅟₁₂ m c²`, is offered factored.
 //!
+//! An expansion larger than [`MAX_READABLE_SIZE`] ends the search there: a form that
+//! long is past reading, and the routes after it (trigonometry over every term, a
+//! cancellation, common factors) would each take as long again.
+//!
 //! Each route is bounded as [`Expr::expand`] is. A route refused for size or work
 //! ([`AlgebraError::is_beyond_bounds`]) is passed over, so a form too large for one route
 //! still gets the others, and always at least its canonical form; never a hang.
@@ -29,6 +33,10 @@ use super::domain::Domains;
 use super::error::AlgebraError;
 use super::expr::{Expr, View};
 use super::rational::Q;
+
+/// Largest expansion, in nodes ([`Expr::has_at_most_size`]), the routes after the
+/// expansion work on: some two thousand terms of a product each.
+pub const MAX_READABLE_SIZE: usize = 20_000;
 
 impl Expr {
     /// The shortest equivalent form; see the module documentation.
@@ -52,10 +60,15 @@ impl Expr {
             Some(reduced) => reduced,
             None => inside,
         };
-        let Some(expanded) = shortest.route(reduced.expand().and_then(|x| x.simplify_trig()))?
-        else {
+        let Some(expanded) = shortest.route(reduced.expand())? else {
             return Ok(shortest.into_inner());
         };
+        if !expanded.has_at_most_size(MAX_READABLE_SIZE) {
+            return Ok(shortest.into_inner());
+        }
+        let expanded = shortest
+            .route(expanded.simplify_trig())?
+            .unwrap_or(expanded);
         if let Some(groups) = kinematic_groups(&expanded) {
             shortest.route(simplified_by_group(&groups, domains))?;
             return Ok(shortest.into_inner());

@@ -16,6 +16,11 @@ use super::error::{AlgebraError, MAX_EXPANDED_TERMS};
 use super::expr::Expr;
 use super::rational::Q;
 
+/// Largest power `uⁿ` rewritten: the identities shorten the low powers people write
+/// (`sin⁴θ + 2 sin²θ cos²θ + cos⁴θ = 1`); `cos⁸⁰⁰θ` would become 401 terms with
+/// 240-digit coefficients, tried and thrown away at the cost of seconds.
+pub(super) const MAX_REWRITTEN_EXPONENT: i64 = 12;
+
 /// `u² → p + q g`, with `u` the base whose square is rewritten.
 pub(super) struct SquareRule<'a> {
     pub(super) base: &'a Expr,
@@ -25,7 +30,7 @@ pub(super) struct SquareRule<'a> {
 }
 
 impl SquareRule<'_> {
-    /// `sum` with every `uⁿ` (`n ≥ 2`) of its terms rewritten (see the module documentation).
+    /// `sum` with every `uⁿ` (`2 ≤ n ≤` [`MAX_REWRITTEN_EXPONENT`]) of its terms rewritten (see the module documentation).
     pub(super) fn rewrite(&self, sum: &Expr) -> Result<Expr, AlgebraError> {
         let halves: Vec<(&Expr, Option<(usize, i64)>)> = sum
             .terms()
@@ -58,7 +63,7 @@ impl SquareRule<'_> {
         term.factors().iter().enumerate().find_map(|(at, factor)| {
             let (base, exponent) = factor.base_and_exponent();
             let n = exponent.as_num()?.to_i64()?;
-            (base == self.base && n >= 2).then_some((at, n / 2))
+            (base == self.base && (2..=MAX_REWRITTEN_EXPONENT).contains(&n)).then_some((at, n / 2))
         })
     }
 

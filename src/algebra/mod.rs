@@ -14,6 +14,7 @@ mod axis;
 mod cancel;
 mod collect;
 mod common_factor;
+mod decimal;
 mod derivative;
 mod digit_bound;
 mod domain;

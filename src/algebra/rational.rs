@@ -4,7 +4,6 @@
 //! integer representation, and a result that fits again moves back. The algebra never
 //! rounds: a decimal such as `0.1` is the rational `1/10`.
 
-use super::digit_bound::{MAX_DECIMAL_EXPONENT, MAX_DIGITS};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
@@ -44,41 +43,6 @@ impl Q {
         Some(Q::from_i128(num.into(), den.into()))
     }
 
-    /// The exact value of a decimal literal such as `12`, `0.25`, `1.5e-3` or `.5`; `None`
-    /// when it is not one, when its scale (the exponent less the digits after the point) is
-    /// beyond ±[`MAX_DECIMAL_EXPONENT`], or when it has more than [`MAX_DIGITS`] digits.
-    pub fn parse_decimal(text: &str) -> Option<Q> {
-        let (mantissa, exponent) = match text.find(['e', 'E']) {
-            Some(at) => (&text[..at], text[at + 1..].parse::<i64>().ok()?),
-            None => (text, 0),
-        };
-        let (int_part, frac_part) = match mantissa.find('.') {
-            Some(at) => (&mantissa[..at], &mantissa[at + 1..]),
-            None => (mantissa, ""),
-        };
-        if int_part.is_empty() && frac_part.is_empty() {
-            return None;
-        }
-        let digits: String = [int_part, frac_part].concat();
-        if !digits.bytes().all(|b| b.is_ascii_digit()) {
-            return None;
-        }
-        let scale = exponent.checked_sub(frac_part.len() as i64)?;
-        if scale.unsigned_abs() > MAX_DECIMAL_EXPONENT
-            || digits.len() as u64 + scale.max(0).unsigned_abs() > MAX_DIGITS
-        {
-            return None;
-        }
-        let value: BigInt = digits.parse().ok()?;
-        let ten = BigInt::from(10);
-        let power = num_traits::pow(ten, scale.unsigned_abs() as usize);
-        Some(if scale >= 0 {
-            Q::from_big(BigRational::from_integer(value * power))
-        } else {
-            reduced_big(value, power)
-        })
-    }
-
     /// The number of bits of the numerator's magnitude and of the denominator.
     pub fn bit_lengths(&self) -> (u64, u64) {
         match self {
@@ -90,7 +54,7 @@ impl Q {
         }
     }
 
-    fn from_big(r: BigRational) -> Q {
+    pub(super) fn from_big(r: BigRational) -> Q {
         match (r.numer().to_i64(), r.denom().to_i64()) {
             (Some(n), Some(d)) => Q::Small(n, d),
             _ => Q::Big(Arc::new(r)),
@@ -264,7 +228,7 @@ impl Q {
 }
 
 /// `n/d` in lowest terms with a positive denominator, for `d != 0`.
-fn reduced_big(n: BigInt, d: BigInt) -> Q {
+pub(super) fn reduced_big(n: BigInt, d: BigInt) -> Q {
     let g = unbalanced_gcd(&n, &d);
     let (mut n, mut d) = if g.is_one() { (n, d) } else { (n / &g, d / &g) };
     if d.is_negative() {

@@ -35,7 +35,7 @@ use super::expr::{Expr, View};
 use super::rational::Q;
 
 /// Largest expansion, in nodes ([`Expr::has_at_most_size`]), the routes after the
-/// expansion work on: some two thousand terms of a product each.
+/// expansion work on: about two thousand terms of a few factors each.
 pub const MAX_READABLE_SIZE: usize = 20_000;
 
 impl Expr {

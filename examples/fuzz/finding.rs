@@ -122,11 +122,20 @@ impl Finding {
     }
 }
 
-/// The first word of `text` that is a printed non-finite number (`inf`, `NaN`, any case).
-pub fn non_finite_word(text: &str) -> Option<&str> {
+/// The words of `text` that are printed non-finite numbers (`inf`, `NaN`, any case).
+fn non_finite_words(text: &str) -> impl Iterator<Item = &str> {
     text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_' || c == '.'))
         .map(|w| w.trim_start_matches(|c: char| c.is_ascii_digit() || c == '.'))
-        .find(|w| ["inf", "infinity", "nan"].contains(&w.to_ascii_lowercase().as_str()))
+        .filter(|w| ["inf", "infinity", "nan"].contains(&w.to_ascii_lowercase().as_str()))
+}
+
+/// The first printed non-finite number in `output` that `input` does not hold itself (a
+/// title typed as "tumbling inf(...)" is printed as written; that is no finding).
+pub fn non_finite_word<'a>(output: &'a str, input: &str) -> Option<&'a str> {
+    let written: Vec<String> = non_finite_words(input)
+        .map(str::to_ascii_lowercase)
+        .collect();
+    non_finite_words(output).find(|w| !written.contains(&w.to_ascii_lowercase()))
 }
 
 /// The length of the longest run of digits in `text`.

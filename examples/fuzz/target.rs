@@ -91,7 +91,7 @@ fn expression(text: &str, form: Form) -> Outcome {
             Form::Expanded => side.expand().map_err(at_input)?,
         };
         for notation in [Notation::Text, Notation::Latex] {
-            printed(&show(&side, notation).map_err(at_input)?)?;
+            printed(&show(&side, notation).map_err(at_input)?, text)?;
         }
     }
     Ok(())
@@ -110,7 +110,10 @@ fn solve(text: &str) -> Outcome {
     let scene = parse_scene("fuzz.scene", text).map_err(|d| located(&d, text, true))?;
     let analysis = analyse(&scene).map_err(|d| located(&d, text, true))?;
     check_numeric_requests(&scene, &analysis).map_err(|d| located(&d, text, true))?;
-    Ok(printed(&render(&scene, &analysis, Format::Text, false))?)
+    Ok(printed(
+        &render(&scene, &analysis, Format::Text, false),
+        text,
+    )?)
 }
 
 fn simulate(text: &str) -> Outcome {
@@ -187,9 +190,9 @@ fn words(message: &str) -> String {
         .join(" ")
 }
 
-/// Checks printed output for `inf` and `NaN`.
-fn printed(output: &str) -> Result<(), Finding> {
-    match non_finite_word(output) {
+/// Checks printed output for an `inf` or `NaN` the input did not hold itself.
+fn printed(output: &str, input: &str) -> Result<(), Finding> {
+    match non_finite_word(output, input) {
         Some(word) => Err(Finding::new(Class::NonFinite, "prints ", word)),
         None => Ok(()),
     }

@@ -11,7 +11,8 @@
 //! 3. that form in lowest terms ([`Expr::cancelled_parts`]), the denominator with its common
 //!    factors pulled out and the numbers collected in front (`m (b² + c²)`), the numerator
 //!    likewise when its terms share one kinematic part;
-//! 4. that form over one denominator without expanding ([`Expr::together`]), factored alike.
+//! 4. that form over one denominator without expanding ([`Expr::together_parts`]), factored
+//!    alike.
 //!
 //! A sum whose terms differ in their kinematic part (the product of their factors holding
 //! a rate, an angular velocity, an acceleration) is simplified group by group, as the
@@ -85,8 +86,7 @@ impl Expr {
         )?;
         shortest.route(
             reduced
-                .together()
-                .and_then(|t| numerator_and_denominator(&t))
+                .together_parts()
                 .and_then(|(numerator, denominator)| over(&numerator, &denominator)),
         )?;
         Ok(shortest.into_inner())
@@ -158,30 +158,6 @@ fn number_and_rest(e: &Expr) -> (Q, Expr) {
     }
 }
 
-/// A product split into the factors above and below the line (negative exponents below,
-/// a rational coefficient's denominator below).
-fn numerator_and_denominator(e: &Expr) -> Result<(Expr, Expr), AlgebraError> {
-    let factors: &[Expr] = match e.view() {
-        View::Mul(factors) => factors,
-        _ => std::slice::from_ref(e),
-    };
-    let mut above = Vec::new();
-    let mut below = Vec::new();
-    for factor in factors {
-        match factor.view() {
-            View::Num(q) => {
-                above.push(Expr::num(q.numer()));
-                below.push(Expr::num(q.denom()));
-            }
-            View::Pow(base, exponent) if exponent.as_num().is_some_and(|q| q.is_negative()) => {
-                below.push(base.checked_pow(&-exponent.clone())?);
-            }
-            _ => above.push(factor.clone()),
-        }
-    }
-    Ok((Expr::mul_all(above), Expr::mul_all(below)))
-}
-
 /// The kinematic part of a term: its factors that hold a time-dependent symbol.
 fn kinematic_part(term: &Expr) -> Expr {
     Expr::mul_all(
@@ -235,7 +211,7 @@ fn simplified_by_group(
 }
 
 fn has_kinematic_symbol(e: &Expr) -> bool {
-    e.symbols().into_iter().any(|s| s.is_time_dependent())
+    e.has_symbol_where(&|s| s.is_time_dependent())
 }
 
 /// The candidate with the fewest operations so far; the earliest on a tie.

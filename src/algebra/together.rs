@@ -43,6 +43,22 @@ impl Expr {
             View::Func(f, arg) => Expr::func(f, arg.together()?),
         })
     }
+
+    /// [`Expr::together`] as its numerator and denominator: below the line the number's
+    /// denominator and its powers with a negative exponent (as for each term of a sum), above
+    /// it the fraction times that denominator, in which they cancel.
+    pub fn together_parts(&self) -> Result<(Expr, Expr), AlgebraError> {
+        let fraction = self.together()?;
+        let below = Expr::mul_all(
+            std::iter::once(Expr::num(fraction.coefficient().denom())).chain(
+                denominator(&fraction)
+                    .iter()
+                    .map(|d| power(&d.base, &d.exponent)),
+            ),
+        );
+        let above = &fraction * &below;
+        Ok((above, below))
+    }
 }
 
 /// A denominator factor: `base^exponent` with a positive number `exponent`, or a whole

@@ -45,12 +45,17 @@ impl Expr {
 
     /// Whether `s` occurs anywhere in the expression.
     pub fn contains(&self, s: Symbol) -> bool {
+        self.has_symbol_where(&|t| t == s)
+    }
+
+    /// Whether a symbol for which `holds` is true occurs anywhere in the expression.
+    pub fn has_symbol_where(&self, holds: &dyn Fn(Symbol) -> bool) -> bool {
         match self.view() {
             View::Num(_) => false,
-            View::Sym(t) => t == s,
-            View::Add(xs) | View::Mul(xs) => xs.iter().any(|x| x.contains(s)),
-            View::Pow(b, e) => b.contains(s) || e.contains(s),
-            View::Func(_, a) => a.contains(s),
+            View::Sym(t) => holds(t),
+            View::Add(xs) | View::Mul(xs) => xs.iter().any(|x| x.has_symbol_where(holds)),
+            View::Pow(b, e) => b.has_symbol_where(holds) || e.has_symbol_where(holds),
+            View::Func(_, a) => a.has_symbol_where(holds),
         }
     }
 

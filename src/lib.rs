@@ -79,6 +79,7 @@
 #![allow(clippy::result_large_err)]
 
 pub mod algebra;
+pub mod check;
 pub mod mechanics;
 pub mod numeric;
 pub mod parse;

@@ -1,5 +1,6 @@
 //! Parsers of user input, with located diagnostics.
 
+pub mod claim;
 pub mod diagnostic;
 pub mod expression;
 pub mod limits;

@@ -6,7 +6,7 @@
 use std::path::Path;
 
 /// Each folder of `src/` and the folders it may use, lowest first.
-const LAYERS: [(&str, &[&str]); 8] = [
+const LAYERS: [(&str, &[&str]); 9] = [
     ("algebra", &[]),
     ("parse", &["algebra"]),
     ("print", &["algebra"]),
@@ -15,6 +15,10 @@ const LAYERS: [(&str, &[&str]); 8] = [
     ("scene", &["algebra", "parse", "mechanics", "numeric"]),
     (
         "solution",
+        &["algebra", "parse", "print", "mechanics", "numeric", "scene"],
+    ),
+    (
+        "check",
         &["algebra", "parse", "print", "mechanics", "numeric", "scene"],
     ),
     (
@@ -27,6 +31,7 @@ const LAYERS: [(&str, &[&str]); 8] = [
             "numeric",
             "scene",
             "solution",
+            "check",
         ],
     ),
 ];

@@ -1,0 +1,6 @@
+//! Checking a hand derivation: a claim `lhs = rhs` decided against what the mechanics
+//! derives (`holds`, `differs`, `undecided`), and a `differs` diagnosed term by term.
+
+pub mod diagnosis;
+pub mod dimension;
+pub mod second_opinion;

@@ -1,0 +1,1 @@
+//! A second opinion by evaluation: the residual at random points in double-double.

@@ -1,0 +1,34 @@
+//! Terms named in words for an explanation: `a`, `a and b`, `a, b and c`, each in ASCII
+//! (the `Display` of `Expr`); a long list names its first few and counts the rest, so an
+//! explanation stays a sentence whatever the claim.
+
+use crate::algebra::Expr;
+
+/// How many terms a list names before it counts the rest.
+const MAX_NAMED: usize = 6;
+
+/// The terms as a list in words (module documentation).
+pub(super) fn list<'a>(terms: impl IntoIterator<Item = &'a Expr>) -> String {
+    let terms: Vec<&Expr> = terms.into_iter().collect();
+    let named: Vec<String> = terms
+        .iter()
+        .take(MAX_NAMED)
+        .map(|t| t.to_string())
+        .collect();
+    let rest = terms.len() - named.len();
+    match (named.as_slice(), rest) {
+        ([], _) => String::new(),
+        ([only], 0) => only.clone(),
+        ([init @ .., last], 0) => format!("{} and {last}", init.join(", ")),
+        (all, rest) => format!("{} and {rest} more", all.join(", ")),
+    }
+}
+
+/// `term` for one item, `terms` for several: "the sign of a", "the signs of a and b".
+pub(super) fn plural(count: usize, one: &'static str, several: &'static str) -> &'static str {
+    if count == 1 {
+        one
+    } else {
+        several
+    }
+}

@@ -60,3 +60,4 @@ mod work_precision_forced_truth;
 
 #[global_allocator]
 static ALLOCATOR: Counting = Counting;
+mod diagnosis;

@@ -15,6 +15,7 @@ mod cancel;
 mod cancel_agrees_with_sympy;
 mod cancel_corpus_parses;
 mod check_corpus;
+mod check_properties;
 mod cli_bad_input;
 mod cli_write_failure;
 mod derivations_numeric;

@@ -14,6 +14,7 @@ mod bad_scenes;
 mod cancel;
 mod cancel_agrees_with_sympy;
 mod cancel_corpus_parses;
+mod check_cli;
 mod check_corpus;
 mod check_properties;
 mod cli_bad_input;

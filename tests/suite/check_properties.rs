@@ -19,8 +19,8 @@ use kinetics::Relation;
 use proptest::prelude::Rng;
 use proptest::test_runner::{RngAlgorithm, TestRng};
 
-/// Claims drawn per context (three contexts).
-const CLAIMS_PER_CONTEXT: usize = 120;
+/// Claims drawn per context, all in one claims file (a class set's size).
+const CLAIMS_PER_CONTEXT: usize = 300;
 
 /// The derived relations that are identities in `context`.
 fn relations(context: &str) -> Vec<Relation> {
@@ -161,7 +161,6 @@ fn true_rearrangements_of_the_derived_equations_never_differ() {
             }
         }
     }
-    assert!(total >= 300, "{total} claims");
     assert!(
         failures.is_empty(),
         "{} of {total} true claims not judged to hold ({undecided} more undecided):\n{}",

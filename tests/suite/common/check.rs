@@ -5,6 +5,7 @@ use serde_json::Value;
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::{Command, Stdio};
+use std::time::Duration;
 
 /// The arguments that select a context: `general` (none), `principal`, `fixed-axis`, or a
 /// scene file's path relative to the crate's root.
@@ -52,7 +53,11 @@ pub struct Run {
     pub stderr: String,
 }
 
-/// Runs `kinetics` with `args`, `stdin` written to its standard input.
+/// A run longer than this is a hang (the slowest, 300 claims, takes well under a second).
+const TIME_LIMIT: Duration = Duration::from_secs(60);
+
+/// Runs `kinetics` with `args`, `stdin` written to its standard input; a panic when it does
+/// not finish within [`TIME_LIMIT`].
 pub fn kinetics_with_input(args: &[&str], stdin: &str) -> Run {
     let mut child = Command::new(env!("CARGO_BIN_EXE_kinetics"))
         .args(args)
@@ -67,7 +72,18 @@ pub fn kinetics_with_input(args: &[&str], stdin: &str) -> Run {
     let writer = std::thread::spawn(move || {
         let _ = pipe.write_all(input.as_bytes());
     });
-    let out = child.wait_with_output().expect("output is readable");
+    let pid = child.id();
+    let (done, finished) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let _ = done.send(child.wait_with_output());
+    });
+    let out = match finished.recv_timeout(TIME_LIMIT) {
+        Ok(out) => out.expect("output is readable"),
+        Err(_) => {
+            let _ = Command::new("kill").args(["-9", &pid.to_string()]).status();
+            panic!("kinetics {args:?} did not finish: it hangs");
+        }
+    };
     let _ = writer.join();
     Run {
         code: out.status.code().unwrap_or(-1),

@@ -105,28 +105,32 @@ pub struct Judged {
 /// The claims of `kinetics check --format json` output, and its summary object; a panic
 /// naming the output and the standard error when it is not the documented JSON.
 pub fn judged(run: &Run) -> (Vec<Judged>, Value) {
-    let json: Value = serde_json::from_str(&run.stdout).unwrap_or_else(|e| {
-        panic!(
-            "check's output is not JSON ({e}); exit {}\nstdout: {}\nstderr: {}",
+    try_judged(run).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// [`judged`], or what is wrong with the output, naming it and the standard error.
+pub fn try_judged(run: &Run) -> Result<(Vec<Judged>, Value), String> {
+    let undocumented = |what: String| {
+        format!(
+            "check's output is not the documented JSON ({what}); exit {}\nstdout: {}\nstderr: {}",
             run.code, run.stdout, run.stderr
         )
-    });
+    };
+    let json: Value = serde_json::from_str(&run.stdout).map_err(|e| undocumented(e.to_string()))?;
     let claims = json["claims"]
         .as_array()
-        .unwrap_or_else(|| panic!("no \"claims\" array in {json}"))
+        .ok_or_else(|| undocumented("no \"claims\" array".into()))?
         .iter()
-        .map(|c| Judged {
-            line: c["line"]
-                .as_u64()
-                .unwrap_or_else(|| panic!("no line in {c}")),
-            verdict: c["verdict"]
-                .as_str()
-                .unwrap_or_else(|| panic!("no verdict in {c}"))
-                .to_owned(),
-            reading: c["reading"].as_str().map(str::to_owned),
+        .map(|c| {
+            Some(Judged {
+                line: c["line"].as_u64()?,
+                verdict: c["verdict"].as_str()?.to_owned(),
+                reading: c["reading"].as_str().map(str::to_owned),
+            })
         })
-        .collect();
-    (claims, json["summary"].clone())
+        .collect::<Option<Vec<Judged>>>()
+        .ok_or_else(|| undocumented("a claim without its line or verdict".into()))?;
+    Ok((claims, json["summary"].clone()))
 }
 
 /// `kinetics check CONTEXT --claims FILE --format json`.

@@ -1,5 +1,6 @@
 //! Support shared by the integration tests.
 
 pub mod binary;
+pub mod check;
 pub mod counting_allocator;
 pub mod expression_tree;

@@ -1,1 +1,142 @@
-//! A second opinion by evaluation: the residual at random points in double-double.
+//! A second opinion by evaluation: both sides of a claim at random points in double-double.
+//!
+//! At each point `x`, `l = lhs(x)` and `r = rhs(x)` are computed to about 32 digits; the
+//! sides agree there when `|l − r| ≤ 10⁻²⁵ · max(|l|, |r|)` (or both are exactly 0), and
+//! differ clearly when `|l − r| ≥ 10⁻¹² · max(|l|, |r|)`. The values drawn have at most 22
+//! significant bits (multiples of 2⁻²⁰ no larger than 3), so the products of a polynomial of
+//! modest degree are exact in double-double and a near-cancellation that `f64` would lose
+//! (`(10⁸ + x)² − 10¹⁶ − 2·10⁸ x = x²`) is decided right. The points are deterministic in the
+//! seed (splitmix64), so a verdict can be reproduced.
+
+use crate::algebra::{Domain, Domains, Expr, Symbol};
+use crate::numeric::scalar::double_double::DoubleDouble;
+use num_traits::{Float, Zero};
+
+/// How many points must agree for [`Opinion::Zero`].
+pub const POINTS: usize = 6;
+
+/// How many points are drawn at most, those where a side has no finite value included.
+const MAX_DRAWS: usize = 4 * POINTS;
+
+/// Agreement to 25 digits: rounding in double-double, not a difference.
+const AGREES: f64 = 1e-25;
+
+/// A relative difference at least this large is a difference, not rounding.
+const DIFFERS: f64 = 1e-12;
+
+/// The grid the values are drawn on: multiples of 2⁻²⁰.
+const GRID: f64 = 1.0 / (1u64 << 20) as f64;
+
+/// What evaluation says of `lhs − rhs`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Opinion {
+    /// Every point agrees to 25 digits: |l − r| ≤ 1e-25 · max(|l|, |r|) (or both exactly 0).
+    Zero,
+    /// At some point the sides differ clearly (relative difference ≥ 1e-12): the point.
+    Nonzero {
+        relative: f64,
+        point: Vec<(Symbol, f64)>,
+    },
+    /// Neither: too few points could be evaluated, or a difference between the two bounds.
+    Unsure(String),
+}
+
+/// lhs and rhs (scalars, no unit vectors) evaluated in double-double at [`POINTS`] random
+/// points, deterministic in `seed`. Symbols `domains` proves positive draw from [0.5, 3],
+/// others from ±[0.2, 3]; `pi` is the constant. A point where either side does not
+/// evaluate to a finite value (a division by zero, sqrt of a negative) is drawn again, up
+/// to [`MAX_DRAWS`] draws in all. Each point costs one evaluation of each side.
+pub fn second_opinion(lhs: &Expr, rhs: &Expr, domains: &Domains, seed: u64) -> Opinion {
+    let symbols = symbols_of(lhs, rhs);
+    let positive: Vec<bool> = symbols
+        .iter()
+        .map(|&s| domains.domain(s) == Domain::Positive)
+        .collect();
+    let mut random = SplitMix64(seed);
+    let mut values = vec![0.0; symbols.len()];
+    let (mut evaluated, mut unclear) = (0, None);
+    for _ in 0..MAX_DRAWS {
+        if evaluated == POINTS {
+            break;
+        }
+        for (v, &positive) in values.iter_mut().zip(&positive) {
+            *v = random.value(positive);
+        }
+        let Some(relative) = relative_difference(lhs, rhs, &symbols, &values) else {
+            continue;
+        };
+        evaluated += 1;
+        if relative >= DIFFERS {
+            let point = symbols.iter().copied().zip(values).collect();
+            return Opinion::Nonzero { relative, point };
+        }
+        if relative > AGREES {
+            unclear = Some(unclear.map_or(relative, |u: f64| u.max(relative)));
+        }
+    }
+    match unclear {
+        Some(relative) => Opinion::Unsure(format!(
+            "the sides differ by {relative:.1e} of their size at a point: more than the \
+             rounding of double-double ({AGREES:.0e}), less than a clear difference \
+             ({DIFFERS:.0e})"
+        )),
+        None if evaluated < POINTS => Opinion::Unsure(format!(
+            "only {evaluated} of {MAX_DRAWS} random points gave both sides a finite value \
+             ({POINTS} needed)"
+        )),
+        None => Opinion::Zero,
+    }
+}
+
+/// The symbols of both sides, each once, `pi` left out (it is the constant).
+fn symbols_of(lhs: &Expr, rhs: &Expr) -> Vec<Symbol> {
+    let mut symbols = lhs.symbols();
+    symbols.extend(rhs.symbols());
+    symbols.sort();
+    symbols.dedup();
+    symbols.retain(|s| !s.is_pi());
+    symbols
+}
+
+/// `|l − r| / max(|l|, |r|)` at the point (0 when both are 0), or None when a side has
+/// no finite value there.
+fn relative_difference(lhs: &Expr, rhs: &Expr, symbols: &[Symbol], values: &[f64]) -> Option<f64> {
+    let value = |s: Symbol| {
+        let at = symbols.iter().position(|&t| t == s)?;
+        Some(DoubleDouble::from_f64(values[at]))
+    };
+    let l = lhs.eval(&value).ok()?;
+    let r = rhs.eval(&value).ok()?;
+    let scale = l.abs().max(r.abs());
+    if scale.is_zero() {
+        return Some(0.0);
+    }
+    Some(((l - r).abs() / scale).to_f64())
+}
+
+/// Steele, Lea and Flood's splitmix64: a 64-bit state advanced by a constant, each output
+/// a mix of the state.
+struct SplitMix64(u64);
+
+impl SplitMix64 {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// A multiple of [`GRID`] uniform in [0.5, 3] when `positive`, else in ±[0.2, 3].
+    fn value(&mut self, positive: bool) -> f64 {
+        let bits = self.next();
+        let low: f64 = if positive { 0.5 } else { 0.2 };
+        let (low, high) = ((low / GRID).ceil() as u64, (3.0 / GRID) as u64);
+        let magnitude = (low + (bits >> 1) % (high - low + 1)) as f64 * GRID;
+        if positive || bits & 1 == 0 {
+            magnitude
+        } else {
+            -magnitude
+        }
+    }
+}

@@ -41,6 +41,7 @@ mod robust_bodies;
 mod robust_parse;
 mod robust_simulate;
 mod scene_solutions;
+mod second_opinion;
 mod shapes_numeric;
 mod simplify;
 mod simulate_choice;

@@ -2,15 +2,20 @@
 //!
 //! At each point `x`, `l = lhs(x)` and `r = rhs(x)` are computed to about 32 digits; the
 //! sides agree there when `|l − r| ≤ 10⁻²⁵ · max(|l|, |r|)` (or both are exactly 0), and
-//! differ clearly when `|l − r| ≥ 10⁻¹² · max(|l|, |r|)`. The values drawn have at most 22
+//! differ clearly when `|l − r| ≥ 10⁻¹² · max(|l|, |r|)` and `|l − r|` is beyond what
+//! rounding may cause there (`rounding_error.rs`: a cancellation in a true identity,
+//! `(a − b)⁹` expanded near `a = b`, is not a difference). The values drawn have at most 22
 //! significant bits (multiples of 2⁻²⁰ no larger than 3), so the products of a polynomial of
 //! modest degree are exact in double-double and a near-cancellation that `f64` would lose
 //! (`(10⁸ + x)² − 10¹⁶ − 2·10⁸ x = x²`) is decided right. The points are deterministic in the
 //! seed (splitmix64), so a verdict can be reproduced.
 
+mod rounding_error;
+
 use crate::algebra::{Domain, Domains, Expr, Symbol};
 use crate::numeric::scalar::double_double::DoubleDouble;
 use num_traits::{Float, Zero};
+use rounding_error::bounded;
 
 /// How many points must agree for [`Opinion::Zero`].
 pub const POINTS: usize = 6;
@@ -24,6 +29,9 @@ const AGREES: f64 = 1e-25;
 /// A relative difference at least this large is a difference, not rounding.
 const DIFFERS: f64 = 1e-12;
 
+/// How far beyond the first-order bounds on the rounding errors a clear difference must be.
+const SAFETY: f64 = 64.0;
+
 /// The grid the values are drawn on: multiples of 2⁻²⁰.
 const GRID: f64 = 1.0 / (1u64 << 20) as f64;
 
@@ -32,12 +40,14 @@ const GRID: f64 = 1.0 / (1u64 << 20) as f64;
 pub enum Opinion {
     /// Every point agrees to 25 digits: |l − r| ≤ 1e-25 · max(|l|, |r|) (or both exactly 0).
     Zero,
-    /// At some point the sides differ clearly (relative difference ≥ 1e-12): the point.
+    /// At some point the sides differ clearly (relative difference ≥ 1e-12, and beyond
+    /// the bound on the rounding errors there): the point.
     Nonzero {
         relative: f64,
         point: Vec<(Symbol, f64)>,
     },
-    /// Neither: too few points could be evaluated, or a difference between the two bounds.
+    /// Neither: too few points could be evaluated, or a difference between the two bounds,
+    /// or one that rounding may explain.
     Unsure(String),
 }
 
@@ -62,29 +72,61 @@ pub fn second_opinion(lhs: &Expr, rhs: &Expr, domains: &Domains, seed: u64) -> O
         for (v, &positive) in values.iter_mut().zip(&positive) {
             *v = random.value(positive);
         }
-        let Some(relative) = relative_difference(lhs, rhs, &symbols, &values) else {
+        let value = |s: Symbol| {
+            let at = symbols.iter().position(|&t| t == s)?;
+            Some(DoubleDouble::from_f64(values[at]))
+        };
+        let Some(relative) = relative_difference(lhs, rhs, &value) else {
             continue;
         };
         evaluated += 1;
-        if relative >= DIFFERS {
-            let point = symbols.iter().copied().zip(values).collect();
-            return Opinion::Nonzero { relative, point };
-        }
-        if relative > AGREES {
-            unclear = Some(unclear.map_or(relative, |u: f64| u.max(relative)));
+        let unexplained = match relative {
+            r if r <= AGREES => continue,
+            r if r < DIFFERS => Unexplained::Between(r),
+            r if beyond_rounding(lhs, rhs, &value) => {
+                let point = symbols.iter().copied().zip(values).collect();
+                return Opinion::Nonzero { relative: r, point };
+            }
+            r => Unexplained::Cancellation(r),
+        };
+        if unclear
+            .as_ref()
+            .is_none_or(|u: &Unexplained| u.relative() < unexplained.relative())
+        {
+            unclear = Some(unexplained);
         }
     }
     match unclear {
-        Some(relative) => Opinion::Unsure(format!(
+        Some(Unexplained::Between(relative)) => Opinion::Unsure(format!(
             "the sides differ by {relative:.1e} of their size at a point: more than the \
              rounding of double-double ({AGREES:.0e}), less than a clear difference \
              ({DIFFERS:.0e})"
+        )),
+        Some(Unexplained::Cancellation(relative)) => Opinion::Unsure(format!(
+            "the sides differ by {relative:.1e} of their size at a point, no more than the \
+             rounding error a cancellation in evaluating them may cause"
         )),
         None if evaluated < POINTS => Opinion::Unsure(format!(
             "only {evaluated} of {MAX_DRAWS} random points gave both sides a finite value \
              ({POINTS} needed)"
         )),
         None => Opinion::Zero,
+    }
+}
+
+/// A relative difference at a point that is neither agreement nor a clear difference.
+enum Unexplained {
+    /// Between [`AGREES`] and [`DIFFERS`].
+    Between(f64),
+    /// At least [`DIFFERS`], but within what rounding may cause (`rounding_error`).
+    Cancellation(f64),
+}
+
+impl Unexplained {
+    fn relative(&self) -> f64 {
+        match self {
+            Unexplained::Between(r) | Unexplained::Cancellation(r) => *r,
+        }
     }
 }
 
@@ -100,18 +142,27 @@ fn symbols_of(lhs: &Expr, rhs: &Expr) -> Vec<Symbol> {
 
 /// `|l − r| / max(|l|, |r|)` at the point (0 when both are 0), or None when a side has
 /// no finite value there.
-fn relative_difference(lhs: &Expr, rhs: &Expr, symbols: &[Symbol], values: &[f64]) -> Option<f64> {
-    let value = |s: Symbol| {
-        let at = symbols.iter().position(|&t| t == s)?;
-        Some(DoubleDouble::from_f64(values[at]))
-    };
-    let l = lhs.eval(&value).ok()?;
-    let r = rhs.eval(&value).ok()?;
+fn relative_difference(
+    lhs: &Expr,
+    rhs: &Expr,
+    value: &dyn Fn(Symbol) -> Option<DoubleDouble>,
+) -> Option<f64> {
+    let l = lhs.eval(value).ok()?;
+    let r = rhs.eval(value).ok()?;
     let scale = l.abs().max(r.abs());
     if scale.is_zero() {
         return Some(0.0);
     }
     Some(((l - r).abs() / scale).to_f64())
+}
+
+/// Whether `|l − r|` at the point is beyond [`SAFETY`] times the bounds on the rounding
+/// errors of both sides (false when a bound cannot be had).
+fn beyond_rounding(lhs: &Expr, rhs: &Expr, value: &dyn Fn(Symbol) -> Option<DoubleDouble>) -> bool {
+    let (Some(l), Some(r)) = (bounded(lhs, value), bounded(rhs, value)) else {
+        return false;
+    };
+    (l.value - r.value).abs().to_f64() > SAFETY * (l.error + r.error)
 }
 
 /// Steele, Lea and Flood's splitmix64: a 64-bit state advanced by a constant, each output

@@ -1,14 +1,15 @@
 //! A second opinion by evaluation: both sides of a claim at random points in double-double.
 //!
-//! At each point `x`, `l = lhs(x)` and `r = rhs(x)` are computed to about 32 digits; the
-//! sides agree there when `|l − r| ≤ 10⁻²⁵ · max(|l|, |r|)` (or both are exactly 0), and
-//! differ clearly when `|l − r| ≥ 10⁻¹² · max(|l|, |r|)` and `|l − r|` is beyond what
-//! rounding may cause there (`rounding_error.rs`: a cancellation in a true identity,
-//! `(a − b)⁹` expanded near `a = b`, is not a difference). The values drawn have at most 22
-//! significant bits (multiples of 2⁻²⁰ no larger than 3), so the products of a polynomial of
-//! modest degree are exact in double-double and a near-cancellation that `f64` would lose
-//! (`(10⁸ + x)² − 10¹⁶ − 2·10⁸ x = x²`) is decided right. The points are deterministic in the
-//! seed (splitmix64), so a verdict can be reproduced.
+//! At each point `x`, `l = lhs(x)` and `r = rhs(x)` are computed to about 32 digits, each
+//! with a bound on its rounding error (`rounding_error.rs`); the sides agree there when
+//! `|l − r| ≤ 10⁻²⁵ · max(|l|, |r|)` (or both are exactly 0), and differ clearly when
+//! `|l − r| ≥ 10⁻¹² · max(|l|, |r|)` and `|l − r|` is beyond what rounding may cause there
+//! (a cancellation in a true identity, `(a − b)⁹` expanded near `a = b`, is no difference).
+//! The values drawn have at most 22 significant bits (multiples of 2⁻²⁰ no larger than 3),
+//! so the products of a polynomial of modest degree are exact in double-double and a
+//! near-cancellation that `f64` would lose (`(10⁸ + x)² − 10¹⁶ − 2·10⁸ x = x²`) is decided
+//! right. The points are deterministic in the seed (splitmix64), so a verdict can be
+//! reproduced.
 
 mod rounding_error;
 
@@ -55,7 +56,8 @@ pub enum Opinion {
 /// points, deterministic in `seed`. Symbols `domains` proves positive draw from [0.5, 3],
 /// others from ±[0.2, 3]; `pi` is the constant. A point where either side does not
 /// evaluate to a finite value (a division by zero, sqrt of a negative) is drawn again, up
-/// to [`MAX_DRAWS`] draws in all. Each point costs one evaluation of each side.
+/// to [`MAX_DRAWS`] draws in all. Each point costs one evaluation of each side, with the
+/// bound on its rounding error.
 pub fn second_opinion(lhs: &Expr, rhs: &Expr, domains: &Domains, seed: u64) -> Opinion {
     let symbols = symbols_of(lhs, rhs);
     let positive: Vec<bool> = symbols
@@ -76,14 +78,14 @@ pub fn second_opinion(lhs: &Expr, rhs: &Expr, domains: &Domains, seed: u64) -> O
             let at = symbols.iter().position(|&t| t == s)?;
             Some(DoubleDouble::from_f64(values[at]))
         };
-        let Some(relative) = relative_difference(lhs, rhs, &value) else {
+        let Some(difference) = Difference::at(lhs, rhs, &value) else {
             continue;
         };
         evaluated += 1;
-        let unexplained = match relative {
+        let unexplained = match difference.relative {
             r if r <= AGREES => continue,
             r if r < DIFFERS => Unexplained::Between(r),
-            r if beyond_rounding(lhs, rhs, &value) => {
+            r if difference.beyond_rounding => {
                 let point = symbols.iter().copied().zip(values).collect();
                 return Opinion::Nonzero { relative: r, point };
             }
@@ -140,29 +142,33 @@ fn symbols_of(lhs: &Expr, rhs: &Expr) -> Vec<Symbol> {
     symbols
 }
 
-/// `|l − r| / max(|l|, |r|)` at the point (0 when both are 0), or None when a side has
-/// no finite value there.
-fn relative_difference(
-    lhs: &Expr,
-    rhs: &Expr,
-    value: &dyn Fn(Symbol) -> Option<DoubleDouble>,
-) -> Option<f64> {
-    let l = lhs.eval(value).ok()?;
-    let r = rhs.eval(value).ok()?;
-    let scale = l.abs().max(r.abs());
-    if scale.is_zero() {
-        return Some(0.0);
-    }
-    Some(((l - r).abs() / scale).to_f64())
+/// The two sides compared at a point.
+struct Difference {
+    /// `|l − r| / max(|l|, |r|)` (0 when both are 0).
+    relative: f64,
+    /// Whether `|l − r|` is beyond [`SAFETY`] times the bounds on both sides' rounding.
+    beyond_rounding: bool,
 }
 
-/// Whether `|l − r|` at the point is beyond [`SAFETY`] times the bounds on the rounding
-/// errors of both sides (false when a bound cannot be had).
-fn beyond_rounding(lhs: &Expr, rhs: &Expr, value: &dyn Fn(Symbol) -> Option<DoubleDouble>) -> bool {
-    let (Some(l), Some(r)) = (bounded(lhs, value), bounded(rhs, value)) else {
-        return false;
-    };
-    (l.value - r.value).abs().to_f64() > SAFETY * (l.error + r.error)
+impl Difference {
+    /// The sides at the point, None when a side has no finite value there.
+    fn at(
+        lhs: &Expr,
+        rhs: &Expr,
+        value: &dyn Fn(Symbol) -> Option<DoubleDouble>,
+    ) -> Option<Difference> {
+        let (l, r) = (bounded(lhs, value)?, bounded(rhs, value)?);
+        let difference = (l.value - r.value).abs();
+        let scale = l.value.abs().max(r.value.abs());
+        Some(Difference {
+            relative: if scale.is_zero() {
+                0.0
+            } else {
+                (difference / scale).to_f64()
+            },
+            beyond_rounding: difference.to_f64() > SAFETY * (l.error + r.error),
+        })
+    }
 }
 
 /// Steele, Lea and Flood's splitmix64: a 64-bit state advanced by a constant, each output

@@ -1,4 +1,4 @@
-//! A bound on the rounding error of evaluating an expression in double-double: running
+//! An expression evaluated in double-double with a bound on its rounding error: running
 //! error analysis to first order (Higham, *Accuracy and Stability of Numerical Algorithms*,
 //! §3.3). Each node's computed value `v̂` carries a bound `e ≥ |v̂ − v|`, propagated by the
 //! derivative of the operation and increased by its own rounding, a few units `u = 2⁻¹⁰⁴`
@@ -6,12 +6,15 @@
 //!
 //! ```text
 //! Σ xᵢ       e = Σ eᵢ + n u Σ |xᵢ|
-//! Π xᵢ       e = Σ eᵢ Π_{j≠i} |xⱼ| + n u |v|
+//! x y        e = e_x |y| + |x| e_y + u |v|             (a product, factor by factor)
+//! b^n        e = |n| |b|^(n−1) e_b + (2 log₂|n| + 2) u |v|   (n whole: by squaring)
 //! b^y        e = |y| |b|^(y−1) e_b + |v| |ln |b|| e_y + (c + |y ln |b||) u |v|
 //! sin, cos   e = e_a + c u (1 + |a|)      tan: (1 + v²)(e_a + c u (1 + |a|))      |a|: e_a
 //! ```
 //!
-//! A symbol's value is exact (the second opinion draws values a double-double holds); a
+//! The value is the one `Expr::eval` computes (a whole power by squaring, `½` by a square
+//! root, any other through exp and ln), but for an integer, taken without a division. A
+//! symbol's value is exact (the second opinion draws values a double-double holds); a
 //! number is exact when it is an integer below 2⁵³, within `u` when its numerator and
 //! denominator are (`rational_to` divides them), else within an `f64` rounding. A bound
 //! that overflows or is not a number says nothing: the caller's comparison with it fails.
@@ -60,11 +63,14 @@ pub fn bounded(e: &Expr, value: &dyn Fn(Symbol) -> Option<DoubleDouble>) -> Opti
             }
         }
         View::Mul(factors) => {
-            let factors = factors
-                .iter()
-                .map(|f| bounded(f, value))
-                .collect::<Option<Vec<_>>>()?;
-            product(&factors)
+            let mut product = Bounded {
+                value: DoubleDouble::ONE,
+                error: 0.0,
+            };
+            for f in factors {
+                product = product.times(bounded(f, value)?);
+            }
+            product
         }
         View::Pow(b, y) => power(bounded(b, value)?, y, value)?,
         View::Func(f, a) => function(f, bounded(a, value)?),
@@ -72,13 +78,13 @@ pub fn bounded(e: &Expr, value: &dyn Fn(Symbol) -> Option<DoubleDouble>) -> Opti
     result.value.is_finite().then_some(result)
 }
 
-/// A number as `rational_to` converts it, and the error of that conversion.
+/// A number in double-double (an integer below 2⁵³ exactly, else as `rational_to`
+/// converts it), and the error of that conversion.
 fn number(q: &Q) -> Bounded {
-    let value: DoubleDouble = rational_to(q);
-    let units = match q {
-        Q::Small(n, 1) if n.unsigned_abs() < 1 << 53 => 0.0,
-        Q::Small(n, d) if n.unsigned_abs() < 1 << 53 && *d < 1 << 53 => U,
-        _ => f64::EPSILON,
+    let (value, units) = match q {
+        Q::Small(n, 1) if n.unsigned_abs() < 1 << 53 => (DoubleDouble::from_f64(*n as f64), 0.0),
+        Q::Small(n, d) if n.unsigned_abs() < 1 << 53 && *d < 1 << 53 => (rational_to(q), U),
+        _ => (rational_to(q), f64::EPSILON),
     };
     Bounded {
         value,
@@ -86,24 +92,14 @@ fn number(q: &Q) -> Bounded {
     }
 }
 
-/// `Π xᵢ`: each factor's error times the others' magnitudes (products before and after
-/// it, so linear in the number of factors), and one rounding a factor.
-fn product(factors: &[Bounded]) -> Bounded {
-    let magnitudes: Vec<f64> = factors.iter().map(|f| f.value.abs().to_f64()).collect();
-    let mut after = vec![1.0; factors.len() + 1];
-    for i in (0..factors.len()).rev() {
-        after[i] = after[i + 1] * magnitudes[i];
-    }
-    let (mut value, mut error, mut before) = (DoubleDouble::ONE, 0.0, 1.0);
-    for (i, f) in factors.iter().enumerate() {
-        value = value * f.value;
-        error += scaled(f.error, before * after[i + 1]);
-        before *= magnitudes[i];
-    }
-    let rounding = factors.len() as f64 * U * value.abs().to_f64();
-    Bounded {
-        value,
-        error: error + rounding,
+impl Bounded {
+    /// `x y`, its error `e_x |y| + |x| e_y` and one rounding.
+    fn times(self, other: Bounded) -> Bounded {
+        let value = self.value * other.value;
+        let error = scaled(self.error, || other.value.abs().to_f64())
+            + scaled(other.error, || self.value.abs().to_f64())
+            + U * value.abs().to_f64();
+        Bounded { value, error }
     }
 }
 
@@ -118,33 +114,27 @@ fn power(
         .as_num()
         .and_then(Q::to_i64)
         .and_then(|n| i32::try_from(n).ok());
-    let exponent = match whole {
-        Some(n) => Bounded {
-            value: DoubleDouble::from_f64(f64::from(n)),
-            error: 0.0,
-        },
-        None => bounded(y, value)?,
+    let b = base.value.abs().to_f64();
+    if let Some(n) = whole {
+        let v = base.value.powi(n);
+        let squarings = 2.0 * f64::from(32 - n.unsigned_abs().leading_zeros()) + 2.0;
+        return Some(Bounded {
+            value: v,
+            error: scaled(base.error, || f64::from(n.unsigned_abs()) * b.powi(n - 1))
+                + squarings * U * v.abs().to_f64(),
+        });
+    }
+    let exponent = bounded(y, value)?;
+    let v = match y.as_num() {
+        Some(q) if *q == Q::Small(1, 2) => base.value.sqrt(),
+        _ => base.value.powf(exponent.value),
     };
-    let v = match whole {
-        Some(n) => base.value.powi(n),
-        None if y.as_num().is_some_and(|q| *q == Q::Small(1, 2)) => base.value.sqrt(),
-        None => base.value.powf(exponent.value),
-    };
-    let (b, y, magnitude) = (
-        base.value.abs().to_f64(),
-        exponent.value.to_f64(),
-        v.abs().to_f64(),
-    );
-    let log = b.ln().abs();
-    let rounding = match whole {
-        Some(n) => 2.0 * f64::from(32 - n.unsigned_abs().leading_zeros()) + 2.0,
-        None => ELEMENTARY + (y * log).abs(),
-    };
+    let (y, magnitude, log) = (exponent.value.to_f64(), v.abs().to_f64(), b.ln().abs());
     Some(Bounded {
         value: v,
-        error: scaled(base.error, y.abs() * b.powf(y - 1.0))
-            + scaled(exponent.error, magnitude * log)
-            + rounding * U * magnitude,
+        error: scaled(base.error, || y.abs() * b.powf(y - 1.0))
+            + scaled(exponent.error, || magnitude * log)
+            + (ELEMENTARY + (y * log).abs()) * U * magnitude,
     })
 }
 
@@ -161,13 +151,13 @@ fn function(f: Func, a: Bounded) -> Bounded {
     Bounded { value: v, error }
 }
 
-/// `error · factor`, zero when the error is (an infinite or undefined factor times an exact
-/// value adds nothing).
-fn scaled(error: f64, factor: f64) -> f64 {
+/// `error · factor`, zero when the error is (the factor is not computed then, and an
+/// infinite or undefined factor times an exact value adds nothing).
+fn scaled(error: f64, factor: impl FnOnce() -> f64) -> f64 {
     if error == 0.0 {
         0.0
     } else {
-        error * factor
+        error * factor()
     }
 }
 

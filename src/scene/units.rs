@@ -183,13 +183,25 @@ impl fmt::Display for DimensionError {
 
 /// The dimension of `e`, from the dimensions of its symbols.
 pub fn dimension_of(e: &Expr, dims: &Dimensions) -> Result<Dimension, DimensionError> {
+    dimension_with(e, &|s| dims.get(&s).copied())
+}
+
+/// The dimension of `e`, each symbol's from `dimension_of_symbol` (none: the symbol is
+/// [`DimensionError::Undeclared`]). A sum's terms share one dimension, a product's is the
+/// product of its factors', a power's `b^(p/q)` is its base's times `p/q`, and a function's
+/// argument has none.
+pub fn dimension_with(
+    e: &Expr,
+    dimension_of_symbol: &dyn Fn(Symbol) -> Option<Dimension>,
+) -> Result<Dimension, DimensionError> {
+    let dimension = |e: &Expr| dimension_with(e, dimension_of_symbol);
     match e.view() {
         View::Num(_) => Ok(Dimension::NONE),
-        View::Sym(s) => dims.get(&s).copied().ok_or(DimensionError::Undeclared(s)),
+        View::Sym(s) => dimension_of_symbol(s).ok_or(DimensionError::Undeclared(s)),
         View::Add(terms) => {
-            let first = dimension_of(&terms[0], dims)?;
+            let first = dimension(&terms[0])?;
             for t in &terms[1..] {
-                let d = dimension_of(t, dims)?;
+                let d = dimension(t)?;
                 if d != first {
                     return Err(DimensionError::Mismatch(
                         terms[0].to_string(),
@@ -201,11 +213,11 @@ pub fn dimension_of(e: &Expr, dims: &Dimensions) -> Result<Dimension, DimensionE
             }
             Ok(first)
         }
-        View::Mul(factors) => factors.iter().try_fold(Dimension::NONE, |acc, f| {
-            Ok(acc.times(dimension_of(f, dims)?))
-        }),
+        View::Mul(factors) => factors
+            .iter()
+            .try_fold(Dimension::NONE, |acc, f| Ok(acc.times(dimension(f)?))),
         View::Pow(b, x) => {
-            let base = dimension_of(b, dims)?;
+            let base = dimension(b)?;
             match x.as_num() {
                 _ if base == Dimension::NONE => Ok(Dimension::NONE),
                 Some(exponent) => base
@@ -215,7 +227,7 @@ pub fn dimension_of(e: &Expr, dims: &Dimensions) -> Result<Dimension, DimensionE
             }
         }
         View::Func(_, arg) => {
-            let d = dimension_of(arg, dims)?;
+            let d = dimension(arg)?;
             if d == Dimension::NONE {
                 Ok(Dimension::NONE)
             } else {

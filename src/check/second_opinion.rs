@@ -1,1 +1,0 @@
-//! A second opinion by evaluation: the residual at random points in double-double.

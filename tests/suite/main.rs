@@ -14,6 +14,7 @@ mod bad_scenes;
 mod cancel;
 mod cancel_agrees_with_sympy;
 mod cancel_corpus_parses;
+mod claim_parsing;
 mod cli_bad_input;
 mod cli_write_failure;
 mod derivations_numeric;

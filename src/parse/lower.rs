@@ -61,13 +61,14 @@ impl Node {
     }
 }
 
-/// The functions a call may name, besides those of [`Func`]: `sqrt(x)` is `x^(1/2)`, and
-/// `cross(a, b)` and `dot(a, b)` the vector and scalar products.
+/// `sqrt(x)`, the power `x^(1/2)`.
 const SQRT: &str = "sqrt";
+/// `cross(a, b)`, the vector product `a × b`.
 const CROSS: &str = "cross";
+/// `dot(a, b)`, the scalar product.
 const DOT: &str = "dot";
 
-/// Whether `name(...)` is a call of a known function.
+/// Whether `name(...)` is a call of a known function: one of [`Func`], or the three above.
 pub(super) fn is_function(name: &str) -> bool {
     Func::from_name(name).is_some() || [SQRT, CROSS, DOT].contains(&name)
 }

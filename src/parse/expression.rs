@@ -1,8 +1,11 @@
 //! The expression parser: `grammar/expr.pest` read with a `PrattParser`.
 //!
-//! Precedence, loosest first: `+ -`; `* /` and juxtaposition (left-associative);
-//! prefix `-` and `+`; `^` (right-associative). So `-a^2` is `-(a^2)` and `1/2 m v^2` is
-//! `(1/2)·m·v²`. Decimals are exact (`0.1` is 1/10). `sqrt(x)` is `x^(1/2)`.
+//! Precedence, loosest first: `+ -`; the cross product `×`; `* / ·` and juxtaposition;
+//! prefix `-` and `+`; `^` (right-associative; the others left-associative). So `-a^2` is
+//! `-(a^2)`, `1/2 m v^2` is `(1/2)·m·v²` and `r × m v` is `r × (m v)`. Decimals are exact
+//! (`0.1` is 1/10). `sqrt(x)` is `x^(1/2)`; `cross(a, b)` is `a × b` and `dot(a, b)` the
+//! scalar product. A parenthesised sum, product or chain of `×` stays one operand of the
+//! list around it (`(a + b) + c` has two terms), so a claim's terms are those written.
 //!
 //! A product is formed once from all its factors: a minus before one of them is the factor
 //! -1 (`-(a - 1) w` is `-((a - 1) w)`), and dividing by a product in parentheses divides
@@ -20,7 +23,7 @@
 
 use super::diagnostic::Diagnostic;
 use super::limits::check_input;
-use super::lower::{lower, Ast, Node};
+use super::lower::{is_function, Ast, Lowering, Node, Span};
 use crate::algebra::{Expr, Func, Q};
 use pest::iterators::{Pair, Pairs};
 use pest::pratt_parser::{Assoc, Op, PrattParser};
@@ -29,7 +32,7 @@ use std::sync::OnceLock;
 
 #[derive(pest_derive::Parser)]
 #[grammar = "../grammar/expr.pest"]
-struct ExprGrammar;
+pub(super) struct ExprGrammar;
 
 /// An equation `lhs = rhs`.
 #[derive(Debug, Clone, PartialEq)]
@@ -53,6 +56,7 @@ fn pratt() -> &'static PrattParser<Rule> {
     PRATT.get_or_init(|| {
         PrattParser::new()
             .op(Op::infix(Rule::add, Assoc::Left) | Op::infix(Rule::sub, Assoc::Left))
+            .op(Op::infix(Rule::cross, Assoc::Left))
             .op(Op::infix(Rule::mul, Assoc::Left)
                 | Op::infix(Rule::div, Assoc::Left)
                 | Op::infix(Rule::implicit, Assoc::Left))
@@ -118,6 +122,15 @@ fn parse_rule<'i>(
     source: &'i str,
 ) -> Result<Pairs<'i, Rule>, Diagnostic> {
     check_input(source_name, source)?;
+    parse_checked(rule, source_name, source)
+}
+
+/// Parses input already within the bounds of [`check_input`].
+pub(super) fn parse_checked<'i>(
+    rule: Rule,
+    source_name: &str,
+    source: &'i str,
+) -> Result<Pairs<'i, Rule>, Diagnostic> {
     ExprGrammar::parse(rule, source).map_err(|e| from_pest(e, source_name, source))
 }
 
@@ -132,7 +145,13 @@ fn describe(rule: &Rule) -> &'static str {
         | Rule::paren
         | Rule::neg
         | Rule::pos => "an expression (a number, a symbol or a parenthesis)",
-        Rule::add | Rule::sub | Rule::mul | Rule::div | Rule::pow | Rule::implicit => "an operator",
+        Rule::add
+        | Rule::sub
+        | Rule::cross
+        | Rule::mul
+        | Rule::div
+        | Rule::pow
+        | Rule::implicit => "an operator",
         Rule::EOI => "the end of the input",
         _ => "",
     }
@@ -190,14 +209,15 @@ fn from_pest(e: pest::error::Error<Rule>, source_name: &str, source: &str) -> Di
 
 fn build(expr: Pair<Rule>, source_name: &str, source: &str) -> Result<Expr, Diagnostic> {
     let node = to_ast(expr.into_inner(), source_name, source);
-    lower(node, source_name, source)
+    Lowering::expression(source_name, source).lower(node)
 }
 
-fn span_of(p: &Pair<Rule>) -> (usize, usize) {
+fn span_of(p: &Pair<Rule>) -> Span {
     (p.as_span().start(), p.as_span().end())
 }
 
-fn to_ast(pairs: Pairs<Rule>, source_name: &str, source: &str) -> Node {
+/// The parse tree of an `expr`'s parts.
+pub(super) fn to_ast(pairs: Pairs<Rule>, source_name: &str, source: &str) -> Node {
     pratt()
         .map_primary(|p| Node {
             span: span_of(&p),
@@ -212,21 +232,30 @@ fn to_ast(pairs: Pairs<Rule>, source_name: &str, source: &str) -> Node {
         })
         .map_infix(|lhs, op, rhs| {
             let span = (lhs.span.0, rhs.span.1);
+            // A chain continues the list on its left, unless that list is in parentheses.
+            let chained = !lhs.is_parenthesised_list();
             let ast = match op.as_rule() {
                 Rule::add | Rule::sub => {
                     let subtract = op.as_rule() == Rule::sub;
                     match lhs.ast {
-                        Ast::Sum(mut terms) => {
+                        Ast::Sum(mut terms) if chained => {
                             terms.push((subtract, rhs));
                             Ast::Sum(terms)
                         }
                         _ => Ast::Sum(vec![(false, lhs), (subtract, rhs)]),
                     }
                 }
+                Rule::cross => match lhs.ast {
+                    Ast::Cross(mut operands) if chained => {
+                        operands.push(rhs);
+                        Ast::Cross(operands)
+                    }
+                    _ => Ast::Cross(vec![lhs, rhs]),
+                },
                 Rule::mul | Rule::div | Rule::implicit => {
                     let divide = op.as_rule() == Rule::div;
                     match lhs.ast {
-                        Ast::Product(mut factors) => {
+                        Ast::Product(mut factors) if chained => {
                             factors.push((divide, rhs));
                             Ast::Product(factors)
                         }
@@ -285,23 +314,19 @@ fn primary(p: Pair<Rule>, source_name: &str, source: &str) -> Ast {
                 .as_ref()
                 .map(|c| c.as_str().trim_end_matches('(').to_string())
                 .unwrap_or_default();
-            let arg = inner
-                .next()
-                .map(|a| to_ast(a.into_inner(), source_name, source))
-                .unwrap_or(Node {
-                    ast: Ast::Number(Q::ZERO),
-                    span: (start, end),
-                });
-            if Func::from_name(&name).is_none() && name != "sqrt" {
+            if !is_function(&name) {
                 let end = start + name.len();
                 return Ast::Error(
                     Diagnostic::at(source_name, source, start, end, format!("unknown function {name}"))
                         .with_help(format!(
-                            "the functions are sin, cos, tan, sqrt and abs; for a product write {name}*(...)"
+                            "the functions are sin, cos, tan, sqrt, abs, cross(a, b) and dot(a, b); for a product write {name}*(...)"
                         )),
                 );
             }
-            Ast::Call(name, Box::new(arg))
+            let arguments = inner
+                .map(|a| to_ast(a.into_inner(), source_name, source))
+                .collect();
+            Ast::Call(name, arguments)
         }
         Rule::paren => match p.into_inner().next() {
             Some(e) => to_ast(e.into_inner(), source_name, source).ast,

@@ -34,7 +34,15 @@ pub fn check_input(source_name: &str, source: &str) -> Result<(), Diagnostic> {
     let bytes = source.as_bytes();
     let mut i = 0;
     while i < bytes.len() {
-        let c = bytes[i];
+        // The cross product × and the product sign · (two bytes each in UTF-8) are binary
+        // operators, read here as the one-byte operator '/' (`**` is not matched after them).
+        let c = match bytes[i..] {
+            [0xC3, 0x97, ..] | [0xC2, 0xB7, ..] => {
+                i += 1;
+                b'/'
+            }
+            _ => bytes[i],
+        };
         let depth = chains.len() - 1;
         let too_deep = |what: &str| {
             Diagnostic::at(

@@ -3,23 +3,39 @@
 //! (a zero divisor, zero to a negative power, a power of a vector, a number too long) points
 //! at and quotes the text the user wrote. The name `deg` is the degree, the number π/180
 //! (`sin(30 deg)` is `sin(π/6)`, which is 1/2), and `pi` is π.
+//!
+//! A claim is lowered with its [`Names`]: each name written is resolved at its leaf (so a
+//! cross product operates on the resolved vectors), and the rules of
+//! [`claim_vectors`](super::claim_vectors) and [`cross_letter`](super::cross_letter) apply.
+//! An expression keeps every name as a symbol.
 
+use super::claim_vectors::{self, is_vector, VectorFactors};
+use super::cross_letter;
 use super::diagnostic::Diagnostic;
+use super::names::Names;
 use crate::algebra::vector::has_unit_vectors;
 use crate::algebra::{AlgebraError, Expr, Func, Q};
 
 /// The name of the degree, the number π/180, in an expression.
 pub const DEGREE: &str = "deg";
 
-/// The parse tree of one expression before it becomes an [`Expr`]. Sums and products are
-/// flat lists, so a long chain `a + b + c + ...` is one node, not a deep tree.
+/// The byte span of a text in the source: start and end.
+pub(super) type Span = (usize, usize);
+
+/// The parse tree of one expression before it becomes an [`Expr`]. Sums, products and
+/// chains of cross products are flat lists, so a long chain `a + b + c + ...` is one node,
+/// not a deep tree.
 pub(super) enum Ast {
     Number(Q),
     Symbol(String),
-    Call(String, Box<Node>),
+    /// `f(a, b, ...)`: the name and its arguments, their count checked when lowered.
+    Call(String, Vec<Node>),
+    /// Terms with `true` for a subtracted one.
     Sum(Vec<(bool, Node)>),
     /// Factors with `true` for a divisor.
     Product(Vec<(bool, Node)>),
+    /// `a × b × c`, left-associative: `(a × b) × c`.
+    Cross(Vec<Node>),
     Power(Box<Node>, Box<Node>),
     Negate(Box<Node>),
     Error(Diagnostic),
@@ -29,70 +45,46 @@ pub(super) enum Ast {
 /// included), so that an error of the algebra points at, and quotes, what the user wrote.
 pub(super) struct Node {
     pub(super) ast: Ast,
-    pub(super) span: (usize, usize),
+    pub(super) span: Span,
 }
 
-/// Pushes the factors of one factor of a product, as divisors when `divide` holds. A
-/// product (in parentheses) gives its own factors and a negation the factor -1 and its
-/// operand, so that the whole product is formed once: `-(a - 1)*w` is `-((a - 1) w)`, as
-/// the printer means it, and `x/(3 (1 - a))` is `x/3/(1 - a)`. Formed apart, the -1 or the
-/// 3 would first be distributed into the sum (`1 - a`, `3 - 3a`), another canonical form
-/// of the same value; the one the printer's text stands for is the product's.
-///
-/// A factor written after a `/` anywhere (`written_as_divisor`) is a division by zero when
-/// it is zero, even where two divisions cancel (`x/(1/0)`); the error points at that factor.
-fn gather_factors(
-    f: Node,
-    divide: bool,
-    written_as_divisor: bool,
-    out: &mut Vec<Expr>,
-    source_name: &str,
-    source: &str,
-) -> Result<(), Diagnostic> {
-    match f.ast {
-        Ast::Product(inner) => {
-            for (inner_divide, g) in inner {
-                gather_factors(
-                    g,
-                    divide != inner_divide,
-                    written_as_divisor || inner_divide,
-                    out,
-                    source_name,
-                    source,
-                )?;
-            }
-        }
-        Ast::Negate(operand) => {
-            out.push(Expr::int(-1));
-            gather_factors(
-                *operand,
-                divide,
-                written_as_divisor,
-                out,
-                source_name,
-                source,
-            )?;
-        }
-        ast => {
-            let span = f.span;
-            let e = lower(Node { ast, span }, source_name, source)?;
-            let fail = |err| lowering_error(err, Operation::Division, span, source_name, source);
-            if written_as_divisor && e.is_zero() {
-                return Err(fail(AlgebraError::DivisionByZero));
-            }
-            out.push(if divide {
-                e.checked_pow(&Expr::int(-1)).map_err(fail)?
-            } else {
-                e
-            });
-        }
+impl Node {
+    /// Whether the node is a sum, product or cross product written in parentheses: its
+    /// text starts before its first operand's (an operator's chain starts with it).
+    pub(super) fn is_parenthesised_list(&self) -> bool {
+        let first = match &self.ast {
+            Ast::Sum(items) | Ast::Product(items) => items.first().map(|(_, n)| n),
+            Ast::Cross(operands) => operands.first(),
+            _ => None,
+        };
+        first.is_some_and(|f| f.span.0 != self.span.0)
     }
-    Ok(())
+}
+
+/// `sqrt(x)`, the power `x^(1/2)`.
+const SQRT: &str = "sqrt";
+/// `cross(a, b)`, the vector product `a × b`.
+const CROSS: &str = "cross";
+/// `dot(a, b)`, the scalar product.
+const DOT: &str = "dot";
+
+/// Whether `name(...)` is a call of a known function: one of [`Func`], or the three above.
+pub(super) fn is_function(name: &str) -> bool {
+    Func::from_name(name).is_some() || [SQRT, CROSS, DOT].contains(&name)
+}
+
+/// Reads one parse tree into an [`Expr`]: the source it was read from, for located
+/// errors, and in a claim its names.
+pub(super) struct Lowering<'a> {
+    pub(super) source_name: &'a str,
+    pub(super) source: &'a str,
+    /// The names of a claim, resolved as they are met; `None` for an expression.
+    pub(super) names: Option<Names<'a>>,
 }
 
 /// What the user wrote that the algebra could not form: the help names it.
 #[derive(Clone, Copy)]
-enum Operation {
+pub(super) enum Operation {
     /// A factor written after a `/`.
     Division,
     /// `base^exponent`, and `sqrt(x)`, the power `x^(1/2)`.
@@ -105,40 +97,290 @@ enum Operation {
     Function,
 }
 
-/// A located error of the algebra while lowering: it points at `span` and quotes the text
-/// the user wrote there, never a form the algebra made of it.
-fn lowering_error(
-    err: AlgebraError,
-    operation: Operation,
-    span: (usize, usize),
-    source_name: &str,
-    source: &str,
-) -> Diagnostic {
-    let (start, end) = span;
-    let written = quoted(&source[start..end]);
-    let (message, help) = match (&err, operation) {
-        (AlgebraError::DivisionByZero, Operation::Division) => (
-            format!("division by zero: {written} is exactly zero"),
-            "a divisor, or a factor of one, must not be zero (as written, or as terms that cancel)",
-        ),
-        (AlgebraError::DivisionByZero, Operation::Power) => (
-            format!("division by zero: {written} is zero to a negative power"),
-            "zero has no negative powers: check the base and the sign of the exponent",
-        ),
-        (AlgebraError::Undefined(_), Operation::Function) => (
-            format!("{written} is undefined: the tangent of an odd multiple of 90° is infinite"),
-            "check the angle: cos is zero there",
-        ),
-        (AlgebraError::NumberTooLarge { .. }, _) => (
-            format!("{err}: {written}"),
-            "exact numbers are bounded in digits; give such a value a symbol",
-        ),
-        _ => (
-            format!("{err}: {written}"),
-            "write this part of the expression another way",
-        ),
-    };
-    Diagnostic::at(source_name, source, start, end.max(start + 1), message).with_help(help)
+impl Lowering<'_> {
+    /// An expression's lowering: every name a symbol.
+    pub(super) fn expression<'a>(source_name: &'a str, source: &'a str) -> Lowering<'a> {
+        Lowering {
+            source_name,
+            source,
+            names: None,
+        }
+    }
+
+    /// Whether this is a claim's lowering (names resolved, vectors checked).
+    pub(super) fn in_claim(&self) -> bool {
+        self.names.is_some()
+    }
+
+    /// A located error at `span` of the source.
+    pub(super) fn error_at(&self, span: Span, message: impl Into<String>) -> Diagnostic {
+        let (start, end) = span;
+        Diagnostic::at(
+            self.source_name,
+            self.source,
+            start,
+            end.max(start + 1),
+            message,
+        )
+    }
+
+    /// The text written at `span`, quoted for a one-line message.
+    pub(super) fn written(&self, span: Span) -> String {
+        quoted(self.source.get(span.0..span.1).unwrap_or_default())
+    }
+
+    /// A located error of the algebra while lowering: it points at `span` and quotes the
+    /// text the user wrote there, never a form the algebra made of it.
+    pub(super) fn algebra_error(
+        &self,
+        err: AlgebraError,
+        operation: Operation,
+        span: Span,
+    ) -> Diagnostic {
+        let written = self.written(span);
+        let (message, help) = match (&err, operation) {
+            (AlgebraError::DivisionByZero, Operation::Division) => (
+                format!("division by zero: {written} is exactly zero"),
+                "a divisor, or a factor of one, must not be zero (as written, or as terms that cancel)",
+            ),
+            (AlgebraError::DivisionByZero, Operation::Power) => (
+                format!("division by zero: {written} is zero to a negative power"),
+                "zero has no negative powers: check the base and the sign of the exponent",
+            ),
+            (AlgebraError::Undefined(_), Operation::Function) => (
+                format!("{written} is undefined: the tangent of an odd multiple of 90° is infinite"),
+                "check the angle: cos is zero there",
+            ),
+            (AlgebraError::NumberTooLarge { .. }, _) => (
+                format!("{err}: {written}"),
+                "exact numbers are bounded in digits; give such a value a symbol",
+            ),
+            _ => (
+                format!("{err}: {written}"),
+                "write this part of the expression another way",
+            ),
+        };
+        self.error_at(span, message).with_help(help)
+    }
+
+    /// A power of an expression holding `i`, `j` or `k` (or such an exponent) is no
+    /// vector: `(3*v - i)^2` is refused as written, before anything is multiplied out.
+    fn power_of_a_vector(&self, span: Span) -> Diagnostic {
+        let written = self.written(span);
+        self.error_at(
+            span,
+            format!("a power of a vector, {written}, has no meaning"),
+        )
+        .with_help("write the components, like a*i + b*j + c*k")
+    }
+
+    /// Refuses a product whose numbers would pass the bound on digits (`bits` of them),
+    /// before any number is folded.
+    pub(super) fn check_product_bits(&self, bits: u64, span: Span) -> Result<(), Diagnostic> {
+        Q::check_bits("the product of these numbers", bits)
+            .map_err(|err| self.algebra_error(err, Operation::Product, span))
+    }
+
+    /// Pushes the factors of one factor of a product, as divisors when `divide` holds,
+    /// each with the span of its text. A product (in parentheses) gives its own factors
+    /// and a negation the factor -1 and its operand, so that the whole product is formed
+    /// once: `-(a - 1)*w` is `-((a - 1) w)`, as the printer means it, and `x/(3 (1 - a))`
+    /// is `x/3/(1 - a)`. Formed apart, the -1 or the 3 would first be distributed into the
+    /// sum (`1 - a`, `3 - 3a`), another canonical form of the same value; the one the
+    /// printer's text stands for is the product's. (In a claim, a product in which the
+    /// letter x is a cross product is one factor: its grouping is its meaning.)
+    ///
+    /// A factor written after a `/` anywhere (`written_as_divisor`) is a division by zero
+    /// when it is zero, even where two divisions cancel (`x/(1/0)`); the error points at
+    /// that factor. In a claim it is refused when it is a vector.
+    fn gather_factors(
+        &mut self,
+        f: Node,
+        divide: bool,
+        written_as_divisor: bool,
+        out: &mut Vec<(Expr, Span)>,
+    ) -> Result<(), Diagnostic> {
+        match f.ast {
+            Ast::Product(inner) if !(self.in_claim() && cross_letter::has_cross_letter(&inner)) => {
+                for (inner_divide, g) in inner {
+                    self.gather_factors(
+                        g,
+                        divide != inner_divide,
+                        written_as_divisor || inner_divide,
+                        out,
+                    )?;
+                }
+            }
+            Ast::Negate(operand) => {
+                out.push((Expr::int(-1), f.span));
+                self.gather_factors(*operand, divide, written_as_divisor, out)?;
+            }
+            ast => {
+                let span = f.span;
+                let e = self.lower(Node { ast, span })?;
+                let fail = |err| self.algebra_error(err, Operation::Division, span);
+                if written_as_divisor && e.is_zero() {
+                    return Err(fail(AlgebraError::DivisionByZero));
+                }
+                if written_as_divisor && self.in_claim() && is_vector(&e) {
+                    return Err(claim_vectors::division_by_a_vector(self, span));
+                }
+                let e = if divide {
+                    e.checked_pow(&Expr::int(-1)).map_err(fail)?
+                } else {
+                    e
+                };
+                out.push((e, span));
+            }
+        }
+        Ok(())
+    }
+
+    /// The terms of a sum, each lowered with its sign, with the span of its text (the
+    /// sign between terms not included).
+    pub(super) fn sum_terms(
+        &mut self,
+        terms: Vec<(bool, Node)>,
+    ) -> Result<Vec<(Expr, Span)>, Diagnostic> {
+        let mut out = Vec::with_capacity(terms.len());
+        for (subtract, t) in terms {
+            let span = t.span;
+            let e = self.lower(t)?;
+            out.push((if subtract { -e } else { e }, span));
+        }
+        Ok(out)
+    }
+
+    /// The sum of lowered terms, its numbers bounded in digits before they are added (in a
+    /// claim, a scalar added to a vector refused at the scalar).
+    pub(super) fn add_terms(
+        &self,
+        terms: &[(Expr, Span)],
+        whole: Span,
+    ) -> Result<Expr, Diagnostic> {
+        if self.in_claim() {
+            claim_vectors::check_sum(self, terms)?;
+        }
+        let bits = Q::sum_bits(terms.iter().map(|(e, _)| e.coefficient()));
+        Q::check_bits("the sum of these numbers", bits)
+            .map_err(|err| self.algebra_error(err, Operation::Sum, whole))?;
+        Ok(Expr::add_all(terms.iter().map(|(e, _)| e.clone())))
+    }
+
+    /// The product of `factors` written at `whole`: each factor's factors gathered, the
+    /// numbers bounded in digits as they are met, then formed once (in a claim, a product
+    /// of two vectors refused).
+    fn product(&mut self, factors: Vec<(bool, Node)>, whole: Span) -> Result<Expr, Diagnostic> {
+        let mut out = Vec::with_capacity(factors.len());
+        let mut bits = 0u64;
+        let mut vectors = VectorFactors::default();
+        for (divide, f) in factors {
+            let (gathered, span) = (out.len(), f.span);
+            self.gather_factors(f, divide, divide, &mut out)?;
+            // Refused once the bound is crossed, before any number is folded.
+            bits = bits.saturating_add(Q::product_bits(
+                out[gathered..].iter().map(|(e, _)| e.coefficient()),
+            ));
+            self.check_product_bits(bits, whole)?;
+            if self.in_claim() {
+                vectors.note(self, span, &out[gathered..])?;
+            }
+        }
+        Ok(Expr::mul_all(out.into_iter().map(|(e, _)| e)))
+    }
+
+    /// `name(args)`: the count of arguments checked, then the function applied (in a
+    /// claim, a function of a vector refused).
+    fn call(&mut self, name: &str, args: Vec<Node>, whole: Span) -> Result<Expr, Diagnostic> {
+        let pair = name == CROSS || name == DOT;
+        let arity = if pair { 2 } else { 1 };
+        if args.len() != arity {
+            let wanted = if pair {
+                "two arguments"
+            } else {
+                "one argument"
+            };
+            let example = if pair {
+                format!("{name}(a, b)")
+            } else {
+                format!("{name}(x)")
+            };
+            return Err(self
+                .error_at(
+                    whole,
+                    format!("{name} takes {wanted}, found {}", args.len()),
+                )
+                .with_help(format!("write {example}, arguments separated by commas")));
+        }
+        let mut operands = Vec::with_capacity(arity);
+        for arg in args {
+            let span = arg.span;
+            operands.push((self.lower(arg)?, span));
+        }
+        if pair {
+            let (b, a) = (operands.pop(), operands.pop());
+            return match (a, b) {
+                (Some(a), Some(b)) if name == CROSS => self.cross(&a, &b),
+                (Some(a), Some(b)) => self.dot(&a, &b),
+                _ => Err(self.error_at(whole, format!("{name} takes two arguments"))),
+            };
+        }
+        let Some((arg, arg_span)) = operands.pop() else {
+            return Err(self.error_at(whole, format!("{name} takes one argument")));
+        };
+        if self.in_claim() && is_vector(&arg) {
+            return Err(claim_vectors::function_of_a_vector(
+                self, name, whole, arg_span,
+            ));
+        }
+        match Func::from_name(name) {
+            Some(f) => f
+                .checked_apply(arg)
+                .map_err(|e| self.algebra_error(e, Operation::Function, whole)),
+            None => arg
+                .checked_pow(&Expr::rational(1, 2))
+                .map_err(|e| self.algebra_error(e, Operation::Power, whole)),
+        }
+    }
+
+    pub(super) fn lower(&mut self, node: Node) -> Result<Expr, Diagnostic> {
+        let whole = node.span;
+        Ok(match node.ast {
+            Ast::Number(q) => Expr::num(q),
+            // The degree is the number π/180: `cos(90 deg)` is `cos(π/2)`, which is 0.
+            Ast::Symbol(name) if name == DEGREE => Expr::pi() / Expr::int(180),
+            Ast::Symbol(name) => match self.names.as_mut() {
+                Some(names) => names.value(&name).map_err(|help| {
+                    self.error_at(whole, format!("unknown name '{name}'"))
+                        .with_help(help)
+                })?,
+                None => Expr::symbol(&name),
+            },
+            Ast::Error(d) => return Err(d),
+            Ast::Negate(inner) => -self.lower(*inner)?,
+            Ast::Call(name, args) => self.call(&name, args, whole)?,
+            Ast::Sum(terms) => {
+                let terms = self.sum_terms(terms)?;
+                self.add_terms(&terms, whole)?
+            }
+            Ast::Product(factors)
+                if self.in_claim() && cross_letter::has_cross_letter(&factors) =>
+            {
+                self.product_with_cross_letters(factors)?
+            }
+            Ast::Product(factors) => self.product(factors, whole)?,
+            Ast::Cross(operands) => self.cross_chain(operands)?,
+            Ast::Power(base, exponent) => {
+                let b = self.lower(*base)?;
+                let e = self.lower(*exponent)?;
+                if has_unit_vectors(&b) || has_unit_vectors(&e) {
+                    return Err(self.power_of_a_vector(whole));
+                }
+                b.checked_pow(&e)
+                    .map_err(|err| self.algebra_error(err, Operation::Power, whole))?
+            }
+        })
+    }
 }
 
 /// The text the user wrote, for a one-line message: trimmed, line breaks as spaces, and
@@ -151,79 +393,4 @@ fn quoted(written: &str) -> String {
     }
     let head: String = written.chars().take(LONGEST).collect();
     format!("'{head}...'")
-}
-
-/// A power of an expression holding `i`, `j` or `k` (or such an exponent) is no vector:
-/// `(3*v - i)^2` is refused as written, before anything is multiplied out.
-fn power_of_a_vector(span: (usize, usize), source_name: &str, source: &str) -> Diagnostic {
-    let (start, end) = span;
-    let written = quoted(&source[start..end]);
-    Diagnostic::at(
-        source_name,
-        source,
-        start,
-        end.max(start + 1),
-        format!("a power of a vector, {written}, has no meaning"),
-    )
-    .with_help("write the components, like a*i + b*j + c*k")
-}
-
-pub(super) fn lower(node: Node, source_name: &str, source: &str) -> Result<Expr, Diagnostic> {
-    let whole = node.span;
-    let fail =
-        |err: AlgebraError, operation| lowering_error(err, operation, whole, source_name, source);
-    Ok(match node.ast {
-        Ast::Number(q) => Expr::num(q),
-        // The degree is the number π/180: `cos(90 deg)` is `cos(π/2)`, which is 0.
-        Ast::Symbol(name) if name == DEGREE => Expr::pi() / Expr::int(180),
-        Ast::Symbol(name) => Expr::symbol(&name),
-        Ast::Error(d) => return Err(d),
-        Ast::Negate(inner) => -lower(*inner, source_name, source)?,
-        Ast::Call(name, arg) => {
-            let arg = lower(*arg, source_name, source)?;
-            match Func::from_name(&name) {
-                Some(f) => f
-                    .checked_apply(arg)
-                    .map_err(|e| fail(e, Operation::Function))?,
-                None => arg
-                    .checked_pow(&Expr::rational(1, 2))
-                    .map_err(|e| fail(e, Operation::Power))?,
-            }
-        }
-        Ast::Sum(terms) => {
-            let mut out = Vec::with_capacity(terms.len());
-            for (subtract, t) in terms {
-                let e = lower(t, source_name, source)?;
-                out.push(if subtract { -e } else { e });
-            }
-            let bits = Q::sum_bits(out.iter().map(Expr::coefficient));
-            Q::check_bits("the sum of these numbers", bits)
-                .map_err(|err| fail(err, Operation::Sum))?;
-            Expr::add_all(out)
-        }
-        Ast::Product(factors) => {
-            let mut out = Vec::with_capacity(factors.len());
-            let mut bits = 0u64;
-            for (divide, f) in factors {
-                let gathered = out.len();
-                gather_factors(f, divide, divide, &mut out, source_name, source)?;
-                // Refused once the bound is crossed, before any number is folded.
-                bits = bits.saturating_add(Q::product_bits(
-                    out[gathered..].iter().map(Expr::coefficient),
-                ));
-                Q::check_bits("the product of these numbers", bits)
-                    .map_err(|err| fail(err, Operation::Product))?;
-            }
-            Expr::mul_all(out)
-        }
-        Ast::Power(base, exponent) => {
-            let b = lower(*base, source_name, source)?;
-            let e = lower(*exponent, source_name, source)?;
-            if has_unit_vectors(&b) || has_unit_vectors(&e) {
-                return Err(power_of_a_vector(whole, source_name, source));
-            }
-            b.checked_pow(&e)
-                .map_err(|err| fail(err, Operation::Power))?
-        }
-    })
 }

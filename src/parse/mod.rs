@@ -1,12 +1,17 @@
 //! Parsers of user input, with located diagnostics.
 
 pub mod claim;
+mod claim_vectors;
+mod cross_letter;
+mod cross_product;
 pub mod diagnostic;
 pub mod expression;
 pub mod limits;
 pub mod long_numbers;
 mod lower;
+mod names;
 
+pub use claim::parse_claim;
 pub use diagnostic::Diagnostic;
 pub use expression::{parse_equation, parse_expression, parse_statement, Equation, Statement};
 pub use lower::DEGREE;

@@ -1,6 +1,7 @@
 //! The command line: argument parsing (clap) and one module per command.
 
 mod bench;
+mod check;
 mod derive;
 mod error;
 mod input;
@@ -36,6 +37,9 @@ enum Command {
     Derive(derive::Args),
     /// Solve a scene file and write the worked solution.
     Solve(solve::Args),
+    /// Check hand-written claims against the derivations: holds, differs (and what is
+    /// wrong), or undecided.
+    Check(check::Args),
     /// Show which derivations a scene's requests pull, in order.
     Plan(solve::PlanArgs),
     /// Integrate Euler's equations and the orientation for a scene's body.
@@ -50,7 +54,7 @@ enum Command {
 pub fn run() -> ExitCode {
     let cli = Cli::parse();
     match execute(cli.command) {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(code) => code,
         Err(e) => {
             let mut message = e.to_string();
             if !message.ends_with('\n') {
@@ -63,9 +67,11 @@ pub fn run() -> ExitCode {
     }
 }
 
-/// Runs one command and writes its output, if any, as a line.
-fn execute(command: Command) -> Result<(), CliError> {
+/// Runs one command and writes its output, if any, as a line. `check` writes its own and
+/// sets its own exit status (a verdict per claim).
+fn execute(command: Command) -> Result<ExitCode, CliError> {
     let output = match command {
+        Command::Check(args) => return Ok(check::run(args)),
         Command::Latex(args) => show::run(args),
         Command::Simplify(args) => simplify::run(args),
         Command::Derive(args) => derive::run(args),
@@ -75,10 +81,11 @@ fn execute(command: Command) -> Result<(), CliError> {
         Command::Bench(b) => bench::run(b),
     }?;
     if output.is_empty() {
-        return Ok(());
+        return Ok(ExitCode::SUCCESS);
     }
     let mut stdout = std::io::stdout().lock();
     writeln!(stdout, "{output}")
         .and_then(|()| stdout.flush())
-        .map_err(CliError::io("write"))
+        .map_err(CliError::io("write"))?;
+    Ok(ExitCode::SUCCESS)
 }

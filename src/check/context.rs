@@ -1,0 +1,347 @@
+//! What a claim is checked against: the names it may use and what each stands for.
+//!
+//! - A general body in body-fixed axes (Ω = ω), the symbols of `kinetics derive --general`:
+//!   `H_x H_y H_z` (and the vector `H_G`) are `{H_G} = [I]{ω}`, `H_O = H_G + r̄ × m v̄`, `T`
+//!   the kinetic energy with `½ m v̄²`, `M_x` (or `SumM_x`) the right sides of Euler's
+//!   equations, `Hdot_x` the rate `[I]{ω̇} + ω × H_G`; `--principal` drops the products of
+//!   inertia. Other names are free symbols, for claims of pure algebra, except a name that
+//!   misspells one of the chapter's (`I_xx`, `H_w`), which is refused with a suggestion.
+//! - Rotation about the fixed axis z (`--fixed-axis`): `SumM_x SumM_y SumM_z` (also `M_x`)
+//!   the moments of §18.7 in `w` and `alpha`, and the dynamic bearing reactions.
+//! - A scene: its givens, its unknowns (standing for their solved values) and every quantity
+//!   its analysis can derive (`omega`, `vbar`, `H_G`, `H_O`, `T`, `Hdot_G`, ...); any other
+//!   name is unknown.
+//!
+//! Every derived value comes from the mechanics functions `derive` and `solve` print (the
+//! catalogue, or the scene's analysis), never from a copy.
+
+use crate::algebra::{AlgebraError, Domains, Expr, Symbol, Vector};
+use crate::mechanics::catalogue::derive_general;
+use crate::parse::claim::Name;
+use crate::parse::Diagnostic;
+use crate::scene::model::{Quantity, Request, Span};
+use crate::scene::units::{dimension_of, Dimension, Dimensions};
+use crate::scene::{analyse, Scene, Value};
+use std::collections::HashMap;
+
+/// What a name stands for in a context.
+#[derive(Debug, Clone)]
+enum Meaning {
+    /// A derived quantity's value (a vector as `a i + b j + c k`).
+    Derived(Expr),
+    /// Another spelling of a symbol (`omega_x` for `w_x`).
+    Alias(Expr),
+    /// A scene quantity its analysis could not derive: why.
+    Underivable(String),
+}
+
+/// The names a claim may use, what each stands for, and the symbols' dimensions and domains.
+#[derive(Debug, Clone)]
+pub struct Context {
+    /// In words, for the report: "a general body in body-fixed axes".
+    pub description: String,
+    meanings: HashMap<String, Meaning>,
+    /// The symbols this context knows, with their dimensions.
+    dimensions: Dimensions,
+    /// Whether a name the context does not know is a free symbol (no scene) or an error.
+    free_symbols: bool,
+    domains: Domains,
+}
+
+/// The chapter's bases whose subscripts a general-body claim must spell right.
+const CHAPTER_BASES: [&str; 9] = ["I", "w", "wdot", "vbar", "H", "M", "SumM", "Hdot", "omega"];
+
+fn unit_vector_sum(v: &Vector) -> Expr {
+    let [i, j, k] = crate::algebra::vector::unit_vectors();
+    &(&(&v[0] * &i) + &(&v[1] * &j)) + &(&v[2] * &k)
+}
+
+fn symbols(names: &[&str], dimension: Dimension, into: &mut Dimensions) {
+    for name in names {
+        into.insert(Symbol::new(name), dimension);
+    }
+}
+
+/// The symbols of the general body, with their dimensions.
+fn general_dimensions() -> Dimensions {
+    let mut d = Dimensions::new();
+    symbols(
+        &["I_x", "I_y", "I_z", "I_xy", "I_yz", "I_xz"],
+        Dimension::INERTIA,
+        &mut d,
+    );
+    symbols(&["m"], Dimension::MASS, &mut d);
+    symbols(
+        &["w_x", "w_y", "w_z", "w"],
+        Dimension::ANGULAR_VELOCITY,
+        &mut d,
+    );
+    symbols(
+        &["wdot_x", "wdot_y", "wdot_z", "alpha"],
+        Dimension::ANGULAR_ACCELERATION,
+        &mut d,
+    );
+    symbols(&["vbar_x", "vbar_y", "vbar_z"], Dimension::VELOCITY, &mut d);
+    symbols(&["xbar", "ybar", "zbar", "l"], Dimension::LENGTH, &mut d);
+    d
+}
+
+impl Context {
+    /// A general body in body-fixed axes (Ω = ω); `principal`: every product of inertia zero.
+    pub fn general(principal: bool) -> Result<Context, AlgebraError> {
+        let mut c = Context::empty("a general body in body-fixed axes", general_dimensions());
+        if principal {
+            c.description.push_str(", principal axes");
+        }
+        let h_g = c.derive_vector("H_G", principal)?;
+        c.components("H", &h_g);
+        c.derived("H_G", unit_vector_sum(&h_g));
+        c.derived("H_O", unit_vector_sum(&c.derive_vector("H_O", principal)?));
+        c.derived("T", c.derive_scalar("T", principal)?);
+        let euler = c.derive_vector("euler", principal)?;
+        c.components("M", &euler);
+        c.components("SumM", &euler);
+        c.derived("SumM", unit_vector_sum(&euler));
+        // Body-fixed axes: the frame turns with the body, Ω = ω.
+        let body_fixed = |s: Symbol| match s.name() {
+            "Omega_x" => Some(Expr::symbol("w_x")),
+            "Omega_y" => Some(Expr::symbol("w_y")),
+            "Omega_z" => Some(Expr::symbol("w_z")),
+            _ => None,
+        };
+        let hdot = c.derive_vector("Hdot", principal)?.map(|e| {
+            e.subs(&body_fixed)
+                .expect("substituting symbols for symbols cannot fail")
+        });
+        c.components("Hdot", &hdot);
+        c.derived("Hdot_G", unit_vector_sum(&hdot));
+        for (vector, parts) in [
+            ("omega", ["w_x", "w_y", "w_z"]),
+            ("wdot", ["wdot_x", "wdot_y", "wdot_z"]),
+            ("vbar", ["vbar_x", "vbar_y", "vbar_z"]),
+            ("rbar", ["xbar", "ybar", "zbar"]),
+        ] {
+            c.derived(
+                vector,
+                unit_vector_sum(&Vector::from_iterator(parts.map(Expr::symbol))),
+            );
+        }
+        for axis in ["x", "y", "z"] {
+            for alias in ["omega", "alpha", "a"] {
+                let target = if alias == "omega" { "w" } else { "wdot" };
+                c.alias(&format!("{alias}_{axis}"), &format!("{target}_{axis}"));
+            }
+        }
+        Ok(c)
+    }
+
+    /// Rotation about the fixed axis z at `w`, `alpha` (§18.7): the moments and the bearings'
+    /// dynamic reactions.
+    pub fn fixed_axis() -> Result<Context, AlgebraError> {
+        let mut c = Context::empty("rotation about the fixed axis z", general_dimensions());
+        let moments = c.derive_vector("fixed_axis", false)?;
+        c.components("M", &moments);
+        c.components("SumM", &moments);
+        c.derived("SumM", unit_vector_sum(&moments));
+        let reactions = derive_general("reactions", false).expect("a catalogue name")?;
+        for r in reactions.result() {
+            c.derived(r.lhs.to_string().as_str(), r.rhs.clone());
+        }
+        c.alias("a", "alpha");
+        c.alias("omega", "w");
+        Ok(c)
+    }
+
+    /// A scene: its givens, its unknowns (their solved values) and the quantities its
+    /// analysis derives. A quantity the scene cannot derive is an error where a claim uses it,
+    /// saying why.
+    pub fn scene(scene: &Scene) -> Context {
+        let mut dimensions = Dimensions::new();
+        for g in &scene.givens {
+            dimensions.insert(g.symbol, g.dimension);
+        }
+        for (u, d) in &scene.unknowns {
+            dimensions.insert(*u, *d);
+        }
+        let title = scene.title.as_deref().unwrap_or(&scene.source_name);
+        let mut c = Context::empty(&format!("the scene {title}"), dimensions);
+        c.free_symbols = false;
+        c.domains = scene.domains();
+        let mut quantities: Vec<(String, Quantity)> = Quantity::NAMED
+            .iter()
+            .filter(|(name, _)| !name.contains('*'))
+            .map(|(name, q)| (name.to_string(), *q))
+            .collect();
+        quantities.extend(
+            scene
+                .unknowns
+                .iter()
+                .map(|(u, _)| (u.name().to_string(), Quantity::Unknown(*u))),
+        );
+        for (name, quantity) in quantities {
+            let meaning = match derive_in(scene, &name, quantity) {
+                Ok(Value::Scalar(e)) => Meaning::Derived(e),
+                Ok(Value::Vector(v)) => {
+                    if quantity == Quantity::AngularMomentumAboutG {
+                        c.components("H", &v);
+                    }
+                    Meaning::Derived(unit_vector_sum(&v))
+                }
+                Err(d) => Meaning::Underivable(d.message),
+            };
+            c.meanings.insert(name, meaning);
+        }
+        c
+    }
+
+    fn empty(description: &str, dimensions: Dimensions) -> Context {
+        Context {
+            description: description.to_string(),
+            meanings: HashMap::new(),
+            dimensions,
+            free_symbols: true,
+            domains: Domains::chapter_defaults(),
+        }
+    }
+
+    fn derive_vector(&self, name: &str, principal: bool) -> Result<Vector, AlgebraError> {
+        let d = derive_general(name, principal).expect("a catalogue name")?;
+        Ok(Vector::from_iterator(
+            d.result().iter().map(|r| r.rhs.clone()),
+        ))
+    }
+
+    fn derive_scalar(&self, name: &str, principal: bool) -> Result<Expr, AlgebraError> {
+        let d = derive_general(name, principal).expect("a catalogue name")?;
+        Ok(d.result()[0].rhs.clone())
+    }
+
+    fn derived(&mut self, name: &str, value: Expr) {
+        self.meanings
+            .insert(name.to_string(), Meaning::Derived(value));
+    }
+
+    fn alias(&mut self, name: &str, of: &str) {
+        self.meanings
+            .insert(name.to_string(), Meaning::Alias(Expr::symbol(of)));
+    }
+
+    /// `base_x`, `base_y`, `base_z` for the components of `v`.
+    fn components(&mut self, base: &str, v: &Vector) {
+        for (axis, value) in ["x", "y", "z"].iter().zip(v.iter()) {
+            self.derived(&format!("{base}_{axis}"), value.clone());
+        }
+    }
+
+    /// What a written name stands for here: the resolver of [`crate::parse::parse_claim`].
+    pub fn name(&self, written: &str) -> Name {
+        // `w1` is the symbol `w_1`: a name is looked up as written and as the symbol's.
+        let symbol = Symbol::new(written);
+        let meaning = self
+            .meanings
+            .get(written)
+            .or_else(|| self.meanings.get(symbol.name()));
+        match meaning {
+            Some(Meaning::Derived(e) | Meaning::Alias(e)) => return Name::Derived(e.clone()),
+            Some(Meaning::Underivable(why)) => {
+                return Name::Unknown(format!("the scene cannot derive {written}: {why}"))
+            }
+            None => {}
+        }
+        if self.dimensions.contains_key(&symbol) {
+            return Name::Symbol;
+        }
+        let base = written.split('_').next().unwrap_or(written);
+        let misspelt = written.contains('_') && CHAPTER_BASES.contains(&base);
+        if self.free_symbols && !misspelt {
+            return Name::Symbol;
+        }
+        Name::Unknown(self.suggestion(written))
+    }
+
+    /// Whether `name`, written in a claim, is another spelling of a symbol (not a derived
+    /// quantity): its side is not thereby the derived one.
+    pub fn is_alias(&self, name: &str) -> bool {
+        let meaning = self
+            .meanings
+            .get(name)
+            .or_else(|| self.meanings.get(Symbol::new(name).name()));
+        matches!(meaning, Some(Meaning::Alias(_)))
+    }
+
+    /// The help for an unknown name: the known names nearest to it.
+    fn suggestion(&self, written: &str) -> String {
+        let fold = |s: &str| s.to_lowercase().replace('_', "");
+        let known = self
+            .meanings
+            .keys()
+            .map(String::as_str)
+            .chain(self.dimensions.keys().map(|s| s.name()));
+        let mut near: Vec<&str> = known
+            .filter(|k| fold(k) == fold(written) || close(k, written))
+            .collect();
+        near.sort_unstable();
+        near.dedup();
+        if near.is_empty() {
+            let mut names: Vec<&str> = self.meanings.keys().map(String::as_str).collect();
+            names.extend(self.dimensions.keys().map(|s| s.name()));
+            names.sort_unstable();
+            names.dedup();
+            format!("{} knows: {}", self.description, names.join(", "))
+        } else {
+            format!("did you mean {}?", near.join(" or "))
+        }
+    }
+
+    /// A symbol's dimension, when the context knows it.
+    pub fn dimension(&self, s: Symbol) -> Option<Dimension> {
+        self.dimensions.get(&s).copied().or_else(|| {
+            self.meanings.get(s.name()).and_then(|m| match m {
+                Meaning::Derived(e) | Meaning::Alias(e) => dimension_of(e, &self.dimensions).ok(),
+                Meaning::Underivable(_) => None,
+            })
+        })
+    }
+
+    /// The symbols' domains (masses and lengths positive, ...).
+    pub fn domains(&self) -> &Domains {
+        &self.domains
+    }
+}
+
+/// Whether two names are one edit apart (a letter added, dropped or changed).
+fn close(a: &str, b: &str) -> bool {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    if a.len().abs_diff(b.len()) > 1 || a.len() < 2 {
+        return false;
+    }
+    let prefix = a.iter().zip(&b).take_while(|(x, y)| x == y).count();
+    let suffix = a[prefix..]
+        .iter()
+        .rev()
+        .zip(b[prefix..].iter().rev())
+        .take_while(|(x, y)| x == y)
+        .count();
+    a.len().max(b.len()) - prefix - suffix <= 1
+}
+
+/// One quantity of a scene, derived by its analysis as `find NAME` would.
+fn derive_in(scene: &Scene, name: &str, quantity: Quantity) -> Result<Value, Diagnostic> {
+    let mut alone = scene.clone();
+    alone.requests = vec![Request {
+        quantity,
+        name: name.to_string(),
+        span: Span {
+            start: scene.source.len(),
+            end: scene.source.len(),
+        },
+        unit: None,
+    }];
+    let analysis = analyse(&alone)?;
+    Ok(analysis
+        .results
+        .into_iter()
+        .next()
+        .map(|(_, v)| v)
+        .expect("one result per request"))
+}

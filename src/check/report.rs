@@ -1,0 +1,244 @@
+//! A check's report as a person reads it: text, LaTeX, or JSON.
+//!
+//! Each differing component shows the correct form beside the claimed one, both in the
+//! textbook's form ([`presented`]), the residual `claimed − correct`, the wrong, missing
+//! and extra terms, and the reading of the slip when one fits.
+
+use super::diagnosis::Diagnosis;
+use super::dimension::OddTerm;
+use super::verdict::{Component, Report, Verdict};
+use crate::algebra::{Axis, Domains, Expr};
+use crate::mechanics::derivation::presented;
+use crate::parse::parse_expression;
+use crate::print::{self, Notation};
+use serde_json::{json, Value as Json};
+
+impl Verdict {
+    /// The verdict as a word: `holds`, `differs`, `undecided`.
+    pub fn word(self) -> &'static str {
+        match self {
+            Verdict::Holds => "holds",
+            Verdict::Differs => "differs",
+            Verdict::Undecided => "undecided",
+        }
+    }
+}
+
+fn axis_name(axis: Option<Axis>) -> &'static str {
+    match axis {
+        None => "",
+        Some(Axis::X) => "i",
+        Some(Axis::Y) => "j",
+        Some(Axis::Z) => "k",
+    }
+}
+
+fn shown(e: &Expr, axis: Option<Axis>, notation: Notation, domains: &Domains) -> String {
+    print::render(&presented(e, domains), notation, axis.unwrap_or(Axis::Z))
+}
+
+/// The claim's report in text: the verdict, where the claim was written and the claim, then for each component that
+/// does not hold the claimed and the correct forms, the residual and the diagnosis.
+pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
+    let mut out = format!("{} ({label}): {}\n", report.verdict.word(), report.claim);
+    if let Some(odd) = &report.odd_term {
+        out.push_str(&format!(
+            "  inhomogeneous: the term {} {}\n",
+            odd.text, odd.reason
+        ));
+        return out;
+    }
+    let name = &report.correct_side;
+    for c in report
+        .components
+        .iter()
+        .filter(|c| c.verdict != Verdict::Holds)
+    {
+        let of = match c.axis {
+            None => name.clone(),
+            Some(_) => format!("{name}, {} component", axis_name(c.axis)),
+        };
+        let form = |e: &Expr| shown(e, c.axis, Notation::Text, domains);
+        out.push_str(&format!("  {of}, as claimed: {}\n", form(&c.claimed)));
+        out.push_str(&format!("  {of}, correct:    {}\n", form(&c.correct)));
+        if let Some(why) = &c.undecided_because {
+            out.push_str(&format!("  undecided: {why}\n"));
+        }
+        if let Some(d) = &c.diagnosis {
+            out.push_str(&diagnosis_text(d, c, domains));
+        }
+    }
+    out
+}
+
+fn terms_text(terms: &[Expr], c: &Component, domains: &Domains) -> String {
+    terms
+        .iter()
+        .map(|t| shown(t, c.axis, Notation::Text, domains))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
+    let mut out = String::new();
+    let residual = &c.claimed - &c.correct;
+    out.push_str(&format!(
+        "  residual (claimed - correct): {}\n",
+        shown(&residual, c.axis, Notation::Text, domains)
+    ));
+    if let Some(r) = &d.reading {
+        out.push_str(&format!("  {}: {}\n", r.name, r.explanation));
+    }
+    for w in &d.wrong {
+        out.push_str(&format!(
+            "  wrong term: {} (correct: {})\n",
+            shown(&w.claimed, c.axis, Notation::Text, domains),
+            shown(&w.correct, c.axis, Notation::Text, domains)
+        ));
+    }
+    if !d.missing.is_empty() {
+        out.push_str(&format!(
+            "  missing: {}\n",
+            terms_text(&d.missing, c, domains)
+        ));
+    }
+    if !d.extra.is_empty() {
+        out.push_str(&format!("  extra: {}\n", terms_text(&d.extra, c, domains)));
+    }
+    out
+}
+
+/// The side taken as correct in LaTeX (`2 T`, `\mathbf{H}_O`), read back from its text; the
+/// text itself, upright, where it does not read as an expression.
+fn side_latex(side: &str) -> String {
+    match parse_expression("side", side) {
+        Ok(e) => print::latex(&e),
+        Err(_) => format!(r"\text{{{}}}", side.replace(['{', '}', '\\'], "")),
+    }
+}
+
+/// The claim's report in LaTeX: a paragraph with the verdict, and for each component that
+/// does not hold an `align*` of the claimed and the correct forms.
+pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
+    let reading = report
+        .reading()
+        .map(|r| format!(" ({})", r.replace('-', " ")))
+        .unwrap_or_default();
+    let mut out = format!(
+        "\\paragraph{{{label} {}{reading}.}} \\texttt{{{}}}\n",
+        report.verdict.word(),
+        escape_text(&report.claim)
+    );
+    if let Some(odd) = &report.odd_term {
+        out.push_str(&format!(
+            "The term \\texttt{{{}}} {}.\n",
+            escape_text(&odd.text),
+            escape_text(&odd.reason)
+        ));
+        return out;
+    }
+    let name = side_latex(&report.correct_side);
+    for c in report
+        .components
+        .iter()
+        .filter(|c| c.verdict != Verdict::Holds)
+    {
+        let of = match c.axis {
+            None => name.clone(),
+            Some(_) => format!(
+                r"({name})_{}",
+                print::latex(&Expr::symbol(axis_name(c.axis)))
+            ),
+        };
+        let form = |e: &Expr| shown(e, c.axis, Notation::Latex, domains);
+        out.push_str("\\begin{align*}\n");
+        out.push_str(&format!(
+            "  {of} &= {} && \\text{{as claimed}} \\\\\n",
+            form(&c.claimed)
+        ));
+        out.push_str(&format!(
+            "  {of} &= {} && \\text{{correct}}\n",
+            form(&c.correct)
+        ));
+        out.push_str("\\end{align*}\n");
+        if let Some(why) = &c.undecided_because {
+            out.push_str(&format!("Undecided: {}.\n", escape_text(why)));
+        }
+        if let Some(r) = c.diagnosis.as_ref().and_then(|d| d.reading.as_ref()) {
+            out.push_str(&format!("{}.\n", escape_text(&r.explanation)));
+        }
+    }
+    out
+}
+
+fn escape_text(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for ch in s.chars() {
+        match ch {
+            '_' | '&' | '%' | '$' | '#' | '{' | '}' => {
+                out.push('\\');
+                out.push(ch);
+            }
+            '^' => out.push_str(r"\^{}"),
+            '~' => out.push_str(r"\~{}"),
+            '\\' => out.push_str(r"\textbackslash{}"),
+            '×' => out.push_str(r"$\times$"),
+            _ => out.push(ch),
+        }
+    }
+    out
+}
+
+fn both(e: &Expr, axis: Option<Axis>, domains: &Domains) -> Json {
+    json!({
+        "text": shown(e, axis, Notation::Text, domains),
+        "latex": shown(e, axis, Notation::Latex, domains),
+    })
+}
+
+fn diagnosis_json(d: &Diagnosis, axis: Option<Axis>, domains: &Domains) -> Json {
+    let list =
+        |terms: &[Expr]| -> Vec<Json> { terms.iter().map(|t| both(t, axis, domains)).collect() };
+    json!({
+        "reading": d.reading.as_ref().map(|r| r.name),
+        "explanation": d.reading.as_ref().map(|r| r.explanation.clone()),
+        "wrong": d.wrong.iter().map(|w| json!({
+            "claimed": both(&w.claimed, axis, domains),
+            "correct": both(&w.correct, axis, domains),
+        })).collect::<Vec<_>>(),
+        "missing": list(&d.missing),
+        "extra": list(&d.extra),
+    })
+}
+
+fn odd_term_json(odd: &OddTerm) -> Json {
+    json!({
+        "text": odd.text,
+        "span": [odd.span.0, odd.span.1],
+        "dimension": odd.dimension.map(|d| d.si_unit()),
+        "expected": odd.expected.si_unit(),
+        "reason": odd.reason,
+    })
+}
+
+/// The claim's report as a JSON object (its `line` and `error` added by the caller).
+pub fn json(report: &Report, domains: &Domains) -> Json {
+    json!({
+        "claim": report.claim,
+        "verdict": report.verdict.word(),
+        "reading": report.reading(),
+        "error": Json::Null,
+        "correct_side": report.correct_side,
+        "claimed_side": report.claimed_side,
+        "odd_term": report.odd_term.as_ref().map(odd_term_json),
+        "components": report.components.iter().map(|c| json!({
+            "axis": c.axis.map(|_| axis_name(c.axis)),
+            "verdict": c.verdict.word(),
+            "claimed": both(&c.claimed, c.axis, domains),
+            "correct": both(&c.correct, c.axis, domains),
+            "residual": both(&(&c.claimed - &c.correct), c.axis, domains),
+            "undecided_because": c.undecided_because,
+            "diagnosis": c.diagnosis.as_ref().map(|d| diagnosis_json(d, c.axis, domains)),
+        })).collect::<Vec<_>>(),
+    })
+}

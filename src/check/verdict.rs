@@ -1,0 +1,251 @@
+//! The verdict on a claim: `holds`, `differs` or `undecided`, never a guess.
+//!
+//! Each component (a scalar claim has one, a vector claim three) is decided twice:
+//! exactly, by the algebra — `correct − claimed` over one denominator with its numerator
+//! multiplied out, then `sin² + cos² = 1`, the double angles and the shortest form — and by a
+//! second opinion, both sides evaluated in double-double at random points
+//! ([`second_opinion`]). The claim holds when both find the difference zero, differs when
+//! both find it not zero; any disagreement, or an algebra beyond its bounds with no
+//! numerical counterexample, is `undecided`.
+//!
+//! The side taken as correct is the one that names a derived quantity (`T`, `H_O`): its
+//! value is the derivation's. Without one (pure algebra, `(w1 i + w2 j) × (L i − r j) = ...`)
+//! the left side is computed and the right side is the claim. An equation that is a nonzero
+//! multiple of the correct one (`2T = ...`) holds: the derived value stands in it.
+
+use super::context::Context;
+use super::diagnosis::{diagnose, Diagnosis};
+use super::dimension::{odd_term, OddTerm};
+use super::second_opinion::{second_opinion, Opinion};
+use crate::algebra::vector::{components, has_unit_vectors};
+use crate::algebra::{AlgebraError, Axis, Domains, Expr, Vector};
+use crate::parse::claim::{parse_claim, Claim, ClaimSide};
+use crate::parse::Diagnostic;
+
+/// What a check concludes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Verdict {
+    Holds,
+    Differs,
+    Undecided,
+}
+
+/// One component of a claim (the only one of a scalar claim) and its verdict.
+#[derive(Debug, Clone)]
+pub struct Component {
+    /// The axis of a vector claim's component; `None` for a scalar claim.
+    pub axis: Option<Axis>,
+    /// The value of the side taken as correct.
+    pub correct: Expr,
+    /// The value of the other side, as claimed.
+    pub claimed: Expr,
+    pub verdict: Verdict,
+    /// Why the verdict is `undecided`, in words.
+    pub undecided_because: Option<String>,
+    /// What differs, term by term, when the verdict is `differs`.
+    pub diagnosis: Option<Diagnosis>,
+}
+
+/// The check of one claim.
+#[derive(Debug, Clone)]
+pub struct Report {
+    /// The claim as written.
+    pub claim: String,
+    /// The text of the side taken as correct, and of the claimed side.
+    pub correct_side: String,
+    pub claimed_side: String,
+    pub verdict: Verdict,
+    /// The components checked (both sides zero are left out of a vector claim).
+    pub components: Vec<Component>,
+    /// A term whose dimension differs from the others': the claim is not checked further.
+    pub odd_term: Option<OddTerm>,
+}
+
+impl Report {
+    /// The name of the slip: `inhomogeneous`, or the first differing component's reading.
+    pub fn reading(&self) -> Option<&'static str> {
+        if self.odd_term.is_some() {
+            return Some("inhomogeneous");
+        }
+        self.components
+            .iter()
+            .filter(|c| c.verdict == Verdict::Differs)
+            .find_map(|c| c.diagnosis.as_ref()?.reading.as_ref().map(|r| r.name))
+    }
+}
+
+/// Checks the claim `text` in `context`. A claim that cannot be read (a syntax error, an
+/// unknown name, no `=`, a vector equated to a scalar) is a located error.
+pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report, Diagnostic> {
+    let claim = parse_claim(source_name, text, &|name| context.name(name))?;
+    let derived = |side: &ClaimSide| side.resolved.iter().any(|n| !context.is_alias(n));
+    let (correct, claimed) = if derived(&claim.rhs) && !derived(&claim.lhs) {
+        (&claim.rhs, &claim.lhs)
+    } else {
+        (&claim.lhs, &claim.rhs)
+    };
+    let side_text = |side: &ClaimSide| text[side.span.0..side.span.1].to_string();
+    let mut report = Report {
+        claim: text.to_string(),
+        correct_side: side_text(correct),
+        claimed_side: side_text(claimed),
+        verdict: Verdict::Differs,
+        components: Vec::new(),
+        odd_term: odd_term(&claim, text, &|s| context.dimension(s)),
+    };
+    if report.odd_term.is_some() {
+        return Ok(report);
+    }
+    let seed = seed_of(text);
+    let algebra_error = |e: AlgebraError| {
+        Diagnostic::at(source_name, text, 0, text.len(), e.to_string())
+            .with_help("the claim is beyond the bounds of the algebra; write it in parts")
+    };
+    report.components = pairs(&claim, correct, claimed)
+        .map_err(algebra_error)?
+        .into_iter()
+        .map(|(axis, c, s)| component(axis, c, s, context.domains(), seed))
+        .collect();
+    report.verdict = overall(&report.components);
+    Ok(report)
+}
+
+/// The components to compare, `(axis, correct, claimed)`: one for scalars, and for vectors
+/// the three axes without those where both sides are zero.
+fn pairs(
+    claim: &Claim,
+    correct: &ClaimSide,
+    claimed: &ClaimSide,
+) -> Result<Vec<(Option<Axis>, Expr, Expr)>, AlgebraError> {
+    let is_vector = has_unit_vectors(&claim.lhs.value) || has_unit_vectors(&claim.rhs.value);
+    if !is_vector {
+        return Ok(vec![(None, correct.value.clone(), claimed.value.clone())]);
+    }
+    let as_vector = |e: &Expr| -> Result<Vector, AlgebraError> {
+        if e.is_zero() {
+            Ok(Vector::from_element(Expr::zero()))
+        } else {
+            components(e)
+        }
+    };
+    let (c, s) = (as_vector(&correct.value)?, as_vector(&claimed.value)?);
+    Ok([Axis::X, Axis::Y, Axis::Z]
+        .into_iter()
+        .enumerate()
+        .filter(|&(k, _)| !(c[k].is_zero() && s[k].is_zero()))
+        .map(|(k, axis)| (Some(axis), c[k].clone(), s[k].clone()))
+        .collect())
+}
+
+/// The claim's verdict from its components': differs if one differs, else undecided if one
+/// is, else holds.
+fn overall(components: &[Component]) -> Verdict {
+    let any = |v| components.iter().any(|c| c.verdict == v);
+    if any(Verdict::Differs) {
+        Verdict::Differs
+    } else if any(Verdict::Undecided) {
+        Verdict::Undecided
+    } else {
+        Verdict::Holds
+    }
+}
+
+/// What the exact route finds of `correct − claimed`.
+enum Exact {
+    Zero,
+    Nonzero,
+    Refused(AlgebraError),
+}
+
+/// One component decided by the algebra and by evaluation.
+fn component(
+    axis: Option<Axis>,
+    correct: Expr,
+    claimed: Expr,
+    domains: &Domains,
+    seed: u64,
+) -> Component {
+    let difference = &correct - &claimed;
+    let expanded = expanded_numerator(&difference);
+    let opinion = second_opinion(&correct, &claimed, domains, seed);
+    let exact = match (&expanded, &opinion) {
+        (Ok(true), _) => Exact::Zero,
+        // Multiplying out does not see trigonometric or radical identities: before saying
+        // `differs` against an evaluation that finds no difference, reduce them.
+        (Ok(false), Opinion::Zero) | (Ok(false), Opinion::Unsure(_)) => {
+            match reduced_is_zero(&difference, domains) {
+                Ok(true) => Exact::Zero,
+                Ok(false) => Exact::Nonzero,
+                Err(e) => Exact::Refused(e),
+            }
+        }
+        (Ok(false), Opinion::Nonzero { .. }) => Exact::Nonzero,
+        (Err(e), _) => Exact::Refused(e.clone()),
+    };
+    let (verdict, undecided_because) = match (&exact, &opinion) {
+        (Exact::Zero, Opinion::Zero) => (Verdict::Holds, None),
+        (Exact::Nonzero | Exact::Refused(_), Opinion::Nonzero { .. }) => (Verdict::Differs, None),
+        (Exact::Zero, Opinion::Nonzero { relative, .. }) => (
+            Verdict::Undecided,
+            Some(format!(
+                "the algebra finds the sides equal, but evaluation finds a relative \
+                 difference of {relative:.1e}"
+            )),
+        ),
+        (Exact::Nonzero, Opinion::Zero) => (
+            Verdict::Undecided,
+            Some(
+                "the algebra cannot show the sides equal, but they agree to 25 digits at \
+                 every point tried"
+                    .into(),
+            ),
+        ),
+        (Exact::Refused(e), Opinion::Zero) => (
+            Verdict::Undecided,
+            Some(format!(
+                "the sides agree to 25 digits at every point tried, and the algebra \
+                 could not decide: {e}"
+            )),
+        ),
+        (_, Opinion::Unsure(why)) => (Verdict::Undecided, Some(why.clone())),
+    };
+    let diagnosis = match verdict {
+        Verdict::Differs => diagnose(&claimed, &correct).ok(),
+        _ => None,
+    };
+    Component {
+        axis,
+        correct,
+        claimed,
+        verdict,
+        undecided_because,
+        diagnosis,
+    }
+}
+
+/// Whether `difference`, over one denominator, has a numerator that multiplies out to zero.
+fn expanded_numerator(difference: &Expr) -> Result<bool, AlgebraError> {
+    if difference.is_zero() {
+        return Ok(true);
+    }
+    let (numerator, _) = difference.together_parts()?;
+    Ok(numerator.expand()?.is_zero())
+}
+
+/// Whether `difference` is zero once `sin² + cos² = 1`, the double angles, roots and
+/// lowest terms are applied (the shortest form [`Expr::simplify`] reaches).
+fn reduced_is_zero(difference: &Expr, domains: &Domains) -> Result<bool, AlgebraError> {
+    let (numerator, _) = difference.together_parts()?;
+    if numerator.expand()?.simplify_trig()?.is_zero() {
+        return Ok(true);
+    }
+    Ok(difference.simplify(domains)?.is_zero())
+}
+
+/// A seed from the claim's text (FNV-1a), so that a check is the same on every run.
+fn seed_of(text: &str) -> u64 {
+    text.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    })
+}

@@ -1,0 +1,200 @@
+//! `kinetics check [SCENE] [--principal | --fixed-axis] --claim "<eq>"... [--claims FILE|-]
+//! [--format text|latex|json]`: hand-written claims checked against the derivations.
+//!
+//! Exit status: 0 when every claim holds, 1 when one differs, 3 when none differs and one is
+//! undecided, 2 when an input could not be read (the other claims are still checked).
+
+use super::error::CliError;
+use super::input::read_file;
+use kinetics::check::context::Context;
+use kinetics::check::report;
+use kinetics::check::verdict::{check, Report, Verdict};
+use kinetics::parse::Diagnostic;
+use kinetics::scene::parse_scene;
+use rayon::prelude::*;
+use std::io::Write;
+use std::process::ExitCode;
+
+#[derive(clap::Args)]
+#[command(
+    after_help = "Example:\n  kinetics check --principal --claim \"T = 1/2 (I_x w_x^2 + I_y w_y^2 + I_z w_z^2)\""
+)]
+pub struct Args {
+    /// A scene file whose givens, unknowns and derived quantities the claims may use;
+    /// without one, a general body in body-fixed axes.
+    pub scene: Option<String>,
+    /// A claim `lhs = rhs` (repeatable).
+    #[arg(long, allow_hyphen_values = true)]
+    pub claim: Vec<String>,
+    /// A file of claims, one a line (`#` starts a comment); `-` reads standard input.
+    #[arg(long)]
+    pub claims: Option<String>,
+    /// Principal axes: every product of inertia is zero.
+    #[arg(long, conflicts_with_all = ["scene", "fixed_axis"])]
+    pub principal: bool,
+    /// Rotation about the fixed axis z at w, alpha (§18.7).
+    #[arg(long, conflicts_with = "scene")]
+    pub fixed_axis: bool,
+    #[arg(long, value_enum, default_value_t = super::show::Format::Text)]
+    pub format: super::show::Format,
+}
+
+/// One claim to check: where it was written (its file and line, or its flag's place), how
+/// the report names it, and its text.
+struct Written {
+    source_name: String,
+    line: usize,
+    label: String,
+    text: String,
+}
+
+/// Exit status 2: an input could not be read.
+const INPUT_ERROR: u8 = 2;
+/// Exit status 3: no claim differs, and one is undecided.
+const UNDECIDED: u8 = 3;
+
+pub fn run(args: Args) -> ExitCode {
+    match checked(&args) {
+        Ok(code) => code,
+        Err(e) => {
+            let _ = writeln!(std::io::stderr(), "{}", e.to_string().trim_end());
+            ExitCode::from(INPUT_ERROR)
+        }
+    }
+}
+
+fn context(args: &Args) -> Result<Context, CliError> {
+    if let Some(path) = &args.scene {
+        let (name, source) = read_file(path)?;
+        let scene = parse_scene(&name, &source)?;
+        return Ok(Context::scene(&scene));
+    }
+    let general = if args.fixed_axis {
+        Context::fixed_axis()
+    } else {
+        Context::general(args.principal)
+    };
+    general.map_err(|source| CliError::Algebra { name: None, source })
+}
+
+/// The claims of `--claim` flags, then of `--claims`, blank lines and `#` comments skipped.
+fn claims(args: &Args) -> Result<Vec<Written>, CliError> {
+    let mut out: Vec<Written> = args
+        .claim
+        .iter()
+        .enumerate()
+        .map(|(k, text)| Written {
+            source_name: format!("claim {}", k + 1),
+            line: k + 1,
+            label: format!("claim {}", k + 1),
+            text: text.clone(),
+        })
+        .collect();
+    if let Some(path) = &args.claims {
+        let (name, source) = read_file(path)?;
+        for (k, line) in source.lines().enumerate() {
+            let text = line.split('#').next().unwrap_or_default();
+            if !text.trim().is_empty() {
+                out.push(Written {
+                    source_name: name.clone(),
+                    line: k + 1,
+                    label: format!("{name}:{}", k + 1),
+                    text: text.trim_end().to_string(),
+                });
+            }
+        }
+    }
+    if out.is_empty() {
+        return Err(CliError::Usage(
+            "no claim to check\n  = help: give one with --claim \"T = 1/2 m v^2\" or a file with --claims FILE".into(),
+        ));
+    }
+    Ok(out)
+}
+
+fn checked(args: &Args) -> Result<ExitCode, CliError> {
+    let context = context(args)?;
+    let claims = claims(args)?;
+    let outcomes: Vec<Result<Report, Box<Diagnostic>>> = claims
+        .par_iter()
+        .map(|w| {
+            check(&context, &w.source_name, &w.text).map_err(|mut d| {
+                // The claim was read alone: its line is the file's.
+                d.line = w.line;
+                Box::new(d)
+            })
+        })
+        .collect();
+    let count = |v: Verdict| {
+        outcomes
+            .iter()
+            .filter(|o| o.as_ref().is_ok_and(|r| r.verdict == v))
+            .count()
+    };
+    let (holds, differs, undecided) = (
+        count(Verdict::Holds),
+        count(Verdict::Differs),
+        count(Verdict::Undecided),
+    );
+    let errors = outcomes.iter().filter(|o| o.is_err()).count();
+    let domains = context.domains();
+    let mut stdout = String::new();
+    let mut stderr = String::new();
+    match args.format {
+        super::show::Format::Json => {
+            let claims: Vec<serde_json::Value> = claims
+                .iter()
+                .zip(&outcomes)
+                .map(|(w, o)| match o {
+                    Ok(r) => {
+                        let mut j = report::json(r, domains);
+                        j["line"] = w.line.into();
+                        j
+                    }
+                    Err(d) => {
+                        stderr.push_str(&d.render());
+                        serde_json::json!({"line": w.line, "claim": w.text, "verdict": "error",
+                            "reading": null, "error": d.to_string(), "components": [], "odd_term": null})
+                    }
+                })
+                .collect();
+            let summary = serde_json::json!({"holds": holds, "differs": differs,
+                "undecided": undecided, "errors": errors});
+            stdout = serde_json::json!({"context": context.description, "claims": claims,
+                "summary": summary})
+            .to_string();
+        }
+        format => {
+            for (w, o) in claims.iter().zip(&outcomes) {
+                match (o, format) {
+                    (Ok(r), super::show::Format::Latex) => {
+                        stdout.push_str(&report::latex(r, &w.label, domains))
+                    }
+                    (Ok(r), _) => stdout.push_str(&report::text(r, &w.label, domains)),
+                    (Err(d), _) => stderr.push_str(&d.render()),
+                }
+            }
+            let summary = format!(
+                "{} claims: {holds} hold, {differs} differ, {undecided} undecided, {errors} errors",
+                claims.len()
+            );
+            match format {
+                super::show::Format::Latex => stdout.push_str(&format!("% {summary}")),
+                _ => stdout.push_str(&summary),
+            }
+        }
+    }
+    let _ = writeln!(std::io::stdout(), "{stdout}");
+    if !stderr.is_empty() {
+        let _ = write!(std::io::stderr(), "{stderr}");
+    }
+    Ok(if errors > 0 {
+        ExitCode::from(INPUT_ERROR)
+    } else if differs > 0 {
+        ExitCode::FAILURE
+    } else if undecided > 0 {
+        ExitCode::from(UNDECIDED)
+    } else {
+        ExitCode::SUCCESS
+    })
+}

@@ -4,7 +4,8 @@
 //!   `H_x H_y H_z` (and the vector `H_G`) are `{H_G} = [I]{ω}`, `H_O = H_G + r̄ × m v̄`, `T`
 //!   the kinetic energy with `½ m v̄²`, `M_x` (or `SumM_x`) the right sides of Euler's
 //!   equations, `Hdot_x` the rate `[I]{ω̇} + ω × H_G`; `--principal` drops the products of
-//!   inertia. Other names are free symbols, for claims of pure algebra, except a name that
+//!   inertia; `v` is the speed |v̄|, and `omega_x`, `alpha_x`, `a_x`, `v_x` spell `w_x`, `wdot_x`,
+//!   `wdot_x`, `vbar_x`. Other names are free symbols, for claims of pure algebra, except a name that
 //!   misspells one of the chapter's (`I_xx`, `H_w`), which is refused with a suggestion.
 //! - Rotation about the fixed axis z (`--fixed-axis`): `SumM_x SumM_y SumM_z` (also `M_x`)
 //!   the moments of §18.7 in `w` and `alpha`, and the dynamic bearing reactions.
@@ -29,7 +30,8 @@ use std::collections::HashMap;
 enum Meaning {
     /// A derived quantity's value (a vector as `a i + b j + c k`).
     Derived(Expr),
-    /// Another spelling of a symbol (`omega_x` for `w_x`).
+    /// Another spelling of symbols the context knows (`omega_x` for `w_x`, `v` for
+    /// `√(vbar_x² + vbar_y² + vbar_z²)`, `omega` for `w_x i + w_y j + w_z k`): not derived.
     Alias(Expr),
     /// A scene quantity its analysis could not derive: why.
     Underivable(String),
@@ -49,11 +51,18 @@ pub struct Context {
 }
 
 /// The chapter's bases whose subscripts a general-body claim must spell right.
-const CHAPTER_BASES: [&str; 9] = ["I", "w", "wdot", "vbar", "H", "M", "SumM", "Hdot", "omega"];
+const CHAPTER_BASES: [&str; 10] = [
+    "I", "w", "wdot", "vbar", "H", "M", "SumM", "Hdot", "omega", "v",
+];
 
 fn unit_vector_sum(v: &Vector) -> Expr {
     let [i, j, k] = crate::algebra::vector::unit_vectors();
     &(&(&v[0] * &i) + &(&v[1] * &j)) + &(&v[2] * &k)
+}
+
+/// `a² + b² + c²` of the named symbols.
+fn expr_sum_of_squares(names: [&str; 3]) -> Expr {
+    Expr::add_all(names.map(|n| Expr::symbol(n).powi(2)))
 }
 
 fn symbols(names: &[&str], dimension: Dimension, into: &mut Dimensions) {
@@ -127,11 +136,19 @@ impl Context {
             );
         }
         for axis in ["x", "y", "z"] {
-            for alias in ["omega", "alpha", "a"] {
-                let target = if alias == "omega" { "w" } else { "wdot" };
+            for (alias, target) in [
+                ("omega", "w"),
+                ("alpha", "wdot"),
+                ("a", "wdot"),
+                ("v", "vbar"),
+            ] {
                 c.alias(&format!("{alias}_{axis}"), &format!("{target}_{axis}"));
             }
         }
+        // The speed of the mass centre, v = |v̄| (`T = 1/2 m v^2 + ...`).
+        let speed = expr_sum_of_squares(["vbar_x", "vbar_y", "vbar_z"])
+            .checked_pow(&Expr::rational(1, 2))?;
+        c.meanings.insert("v".into(), Meaning::Alias(speed));
         Ok(c)
     }
 
@@ -259,7 +276,7 @@ impl Context {
         Name::Unknown(self.suggestion(written))
     }
 
-    /// Whether `name`, written in a claim, is another spelling of a symbol (not a derived
+    /// Whether `name`, written in a claim, is another spelling of symbols (not a derived
     /// quantity): its side is not thereby the derived one.
     pub fn is_alias(&self, name: &str) -> bool {
         let meaning = self

@@ -108,13 +108,15 @@ fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
     out
 }
 
-/// The side taken as correct in LaTeX (`2 T`, `\mathbf{H}_O`), read back from its text; the
-/// text itself, upright, where it does not read as an expression.
-fn side_latex(side: &str) -> String {
-    match parse_expression("side", side) {
-        Ok(e) => print::latex(&e),
-        Err(_) => format!(r"\text{{{}}}", side.replace(['{', '}', '\\'], "")),
+/// The side taken as correct in LaTeX: a derived quantity's side read back from its text
+/// (`2 T`, `\Sigma M_x`); the side of a claim of pure algebra as written, in typewriter type
+/// (read back, its cross products would be worked out).
+fn side_latex(report: &Report) -> String {
+    let written = || format!(r"\text{{\texttt{{{}}}}}", escape_text(&report.correct_side));
+    if !report.correct_is_derived {
+        return written();
     }
+    parse_expression("side", &report.correct_side).map_or_else(|_| written(), |e| print::latex(&e))
 }
 
 /// The claim's report in LaTeX: a paragraph with the verdict, and for each component that
@@ -137,7 +139,7 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
         ));
         return out;
     }
-    let name = side_latex(&report.correct_side);
+    let name = side_latex(report);
     for c in report
         .components
         .iter()
@@ -165,10 +167,26 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
             out.push_str(&format!("Undecided: {}.\n", escape_text(why)));
         }
         if let Some(r) = c.diagnosis.as_ref().and_then(|d| d.reading.as_ref()) {
-            out.push_str(&format!("{}.\n", escape_text(&r.explanation)));
+            out.push_str(&format!("{}.\n", explanation_latex(&r.explanation)));
         }
     }
     out
+}
+
+/// An explanation in LaTeX: its words as text, each expression it marks with backticks
+/// typeset as mathematics (as written, where one does not read back).
+fn explanation_latex(explanation: &str) -> String {
+    explanation
+        .split('`')
+        .enumerate()
+        .map(
+            |(k, piece)| match (k % 2, parse_expression("explanation", piece)) {
+                (1, Ok(e)) => format!("${}$", print::latex(&e)),
+                (1, Err(_)) => format!(r"\texttt{{{}}}", escape_text(piece)),
+                _ => escape_text(piece),
+            },
+        )
+        .collect()
 }
 
 fn escape_text(s: &str) -> String {

@@ -55,6 +55,9 @@ pub struct Report {
     /// The text of the side taken as correct, and of the claimed side.
     pub correct_side: String,
     pub claimed_side: String,
+    /// Whether the correct side names a derived quantity (`T`, `2 H_x`); else it is the left
+    /// side of a claim of pure algebra, computed.
+    pub correct_is_derived: bool,
     pub verdict: Verdict,
     /// The components checked (both sides zero are left out of a vector claim).
     pub components: Vec<Component>,
@@ -90,6 +93,7 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
         claim: text.to_string(),
         correct_side: side_text(correct),
         claimed_side: side_text(claimed),
+        correct_is_derived: derived(correct),
         verdict: Verdict::Differs,
         components: Vec::new(),
         odd_term: odd_term(&claim, text, &|s| context.dimension(s)),

@@ -174,8 +174,10 @@ fn checked(args: &Args) -> Result<ExitCode, CliError> {
                     (Err(d), _) => stderr.push_str(&d.render()),
                 }
             }
+            let noun = if claims.len() == 1 { "claim" } else { "claims" };
+            let error_noun = if errors == 1 { "error" } else { "errors" };
             let summary = format!(
-                "{} claims: {holds} hold, {differs} differ, {undecided} undecided, {errors} errors",
+                "{} {noun}: {holds} hold, {differs} differ, {undecided} undecided, {errors} {error_noun}",
                 claims.len()
             );
             match format {

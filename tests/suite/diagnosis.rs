@@ -65,8 +65,14 @@ fn check(claimed: &str, correct: &str, reading: Option<&str>, expected: Expected
     d
 }
 
-fn explanation(d: &Diagnosis) -> &str {
-    &d.reading.as_ref().expect("a reading").explanation
+/// The explanation without the backticks that mark its expressions (checked apart, in
+/// `expressions_in_an_explanation_are_marked`).
+fn explanation(d: &Diagnosis) -> String {
+    d.reading
+        .as_ref()
+        .expect("a reading")
+        .explanation
+        .replace('`', "")
 }
 
 // The chapter's general-body formulas (`kinetics derive --general`).
@@ -260,7 +266,8 @@ fn swapped_subscripts() {
         },
     );
     assert!(
-        ["w_x and w_z are exchanged", "I_xy and I_yz are exchanged"].contains(&explanation(&d)),
+        ["w_x and w_z are exchanged", "I_xy and I_yz are exchanged"]
+            .contains(&explanation(&d).as_str()),
         "{d:?}"
     );
     check(
@@ -815,4 +822,21 @@ proptest! {
             "{d:?}"
         );
     }
+}
+
+/// Every expression an explanation names stands between backticks and reads back as the
+/// term it names, so a report can typeset it: here the notes' cross product's flipped sign.
+#[test]
+fn expressions_in_an_explanation_are_marked() {
+    let read = |text: &str| parse_expression("test", text).expect("reads");
+    let d = diagnose(&read("-r*w1 + L*w2"), &read("-r*w1 - L*w2")).expect("diagnosed");
+    let text = &d.reading.as_ref().expect("a reading").explanation;
+    assert_eq!(
+        text,
+        "the sign of `L*w_2` is flipped (the correct term is `-L*w_2`)"
+    );
+    let marked: Vec<&str> = text.split('`').skip(1).step_by(2).collect();
+    assert_eq!(marked.len(), 2, "{text}");
+    assert_eq!(read(marked[0]), read("L w2"));
+    assert_eq!(read(marked[1]), read("-L w2"));
 }

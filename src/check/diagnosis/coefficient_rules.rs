@@ -9,7 +9,7 @@
 //! ```
 
 use super::comparison::Differences;
-use super::words::{list, plural};
+use super::words::{list, plural, term};
 use crate::algebra::Q;
 
 /// `scaled`: the claim is `k` times the correct form, `k` rational and not 1 (`2T = …`
@@ -60,6 +60,7 @@ pub(super) fn factor_off(d: &Differences) -> Option<String> {
     }
     Some(format!(
         "the term {} is {k} times the correct one (the correct term is {})",
-        w.claimed, w.correct
+        term(&w.claimed),
+        term(&w.correct)
     ))
 }

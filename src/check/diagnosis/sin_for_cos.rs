@@ -3,6 +3,7 @@
 //! exchanged everywhere is `K` (and `C` holds at least one of them).
 
 use super::comparison::Differences;
+use super::words::term;
 use crate::algebra::{AlgebraError, Expr, Func, View};
 
 /// `sin-for-cos` (module documentation).
@@ -12,7 +13,9 @@ pub(super) fn sin_for_cos(d: &Differences) -> Option<String> {
         return None;
     }
     Some(format!(
-        "sin and cos are exchanged: {claimed} is written where the correct form has {correct}"
+        "sin and cos are exchanged: {} is written where the correct form has {}",
+        term(claimed),
+        term(correct)
     ))
 }
 

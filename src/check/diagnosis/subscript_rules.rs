@@ -17,7 +17,7 @@
 
 use super::comparison::Differences;
 use super::subscript_maps::{stem, transpose, AxisPermutation};
-use super::words::list;
+use super::words::{list, term};
 use crate::algebra::{Expr, Symbol, Q};
 
 /// Most distinct symbols on either side whose pairs are tried as swaps.
@@ -92,7 +92,7 @@ fn difference(k: &Q, a: Symbol, b: Symbol, rest: &Expr) -> String {
     } else {
         format!("*{rest}")
     };
-    format!("{factor}({a} - {b}){rest}")
+    term(format!("{factor}({a} - {b}){rest}"))
 }
 
 /// The principal moments (`I_x`, `I_y`, `I_z`: base `I`, one axis subscript) that are
@@ -117,8 +117,10 @@ fn permuted_cyclically(d: &Differences) -> Option<String> {
         sigma.moved_symbols(claimed) >= 2 && sigma.apply(claimed).ok().as_ref() == Some(correct)
     })?;
     Some(format!(
-        "the axes are in the wrong cyclic order: {claimed} is the correct {correct} with its \
+        "the axes are in the wrong cyclic order: {} is the correct {} with its \
          subscripts taken {}",
+        term(claimed),
+        term(correct),
         inverse.describe()
     ))
 }
@@ -140,9 +142,13 @@ pub(super) fn swapped_subscripts(d: &Differences) -> Option<String> {
         .find(|&(s, t)| transpose(claimed, s, t).ok().as_ref() == Some(correct))?;
     Some(
         if in_correct.contains(&written) || in_claimed.contains(&belongs) {
-            format!("{written} and {belongs} are exchanged")
+            format!("{} and {} are exchanged", term(written), term(belongs))
         } else {
-            format!("{written} is written where {belongs} belongs")
+            format!(
+                "{} is written where {} belongs",
+                term(written),
+                term(belongs)
+            )
         },
     )
 }
@@ -168,7 +174,7 @@ pub(super) fn repeated_term(d: &Differences) -> Option<String> {
     }
     Some(format!(
         "{} is written {n} times where the correct form has {}",
-        w.correct,
+        term(&w.correct),
         list(std::iter::once(&w.correct).chain(&d.missing))
     ))
 }

@@ -1,5 +1,6 @@
 //! Terms named in words for an explanation: `a`, `a and b`, `a, b and c`, each in ASCII
-//! (the `Display` of `Expr`); a long list names its first few and counts the rest, so an
+//! (the `Display` of `Expr`) between backticks, so that a report can typeset each as
+//! mathematics (it reads back); a long list names its first few and counts the rest, so an
 //! explanation stays a sentence whatever the claim.
 
 use crate::algebra::Expr;
@@ -7,14 +8,15 @@ use crate::algebra::Expr;
 /// How many terms a list names before it counts the rest.
 const MAX_NAMED: usize = 6;
 
+/// One expression as an explanation names it: its ASCII between backticks.
+pub(super) fn term(e: impl std::fmt::Display) -> String {
+    format!("`{e}`")
+}
+
 /// The terms as a list in words (module documentation).
 pub(super) fn list<'a>(terms: impl IntoIterator<Item = &'a Expr>) -> String {
     let terms: Vec<&Expr> = terms.into_iter().collect();
-    let named: Vec<String> = terms
-        .iter()
-        .take(MAX_NAMED)
-        .map(|t| t.to_string())
-        .collect();
+    let named: Vec<String> = terms.iter().take(MAX_NAMED).map(|t| term(t)).collect();
     let rest = terms.len() - named.len();
     match (named.as_slice(), rest) {
         ([], _) => String::new(),

@@ -16,7 +16,7 @@ pub(super) fn term(e: impl std::fmt::Display) -> String {
 /// The terms as a list in words (module documentation).
 pub(super) fn list<'a>(terms: impl IntoIterator<Item = &'a Expr>) -> String {
     let terms: Vec<&Expr> = terms.into_iter().collect();
-    let named: Vec<String> = terms.iter().take(MAX_NAMED).map(|t| term(t)).collect();
+    let named: Vec<String> = terms.iter().take(MAX_NAMED).map(term).collect();
     let rest = terms.len() - named.len();
     match (named.as_slice(), rest) {
         ([], _) => String::new(),

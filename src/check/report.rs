@@ -250,7 +250,7 @@ pub fn json(report: &Report, domains: &Domains) -> Json {
         "claimed_side": report.claimed_side,
         "odd_term": report.odd_term.as_ref().map(odd_term_json),
         "components": report.components.iter().map(|c| json!({
-            "axis": c.axis.map(|_| axis_name(c.axis)),
+            "axis": c.axis.map(|a| ["x", "y", "z"][a as usize]),
             "verdict": c.verdict.word(),
             "claimed": both(&c.claimed, c.axis, domains),
             "correct": both(&c.correct, c.axis, domains),

@@ -48,6 +48,8 @@ pub struct Context {
     /// Whether a name the context does not know is a free symbol (no scene) or an error.
     free_symbols: bool,
     domains: Domains,
+    /// The exact values (in SI) of a scene's givens that have one.
+    values: HashMap<Symbol, Expr>,
 }
 
 /// The chapter's bases whose subscripts a general-body claim must spell right.
@@ -184,6 +186,11 @@ impl Context {
         let mut c = Context::empty(&format!("the scene {title}"), dimensions);
         c.free_symbols = false;
         c.domains = scene.domains();
+        c.values = scene
+            .givens
+            .iter()
+            .filter_map(|g| Some((g.symbol, scene.exact_given(g.symbol)?)))
+            .collect();
         let mut quantities: Vec<(String, Quantity)> = Quantity::NAMED
             .iter()
             .filter(|(name, _)| !name.contains('*'))
@@ -218,6 +225,7 @@ impl Context {
             dimensions,
             free_symbols: true,
             domains: Domains::chapter_defaults(),
+            values: HashMap::new(),
         }
     }
 
@@ -318,6 +326,16 @@ impl Context {
                 Meaning::Underivable(_) => None,
             })
         })
+    }
+
+    /// The exact value in SI of a given the scene gives one (`beta = 60 deg` is π/3).
+    pub fn value(&self, s: Symbol) -> Option<Expr> {
+        self.values.get(&s).cloned()
+    }
+
+    /// Whether some given has a value (a claim may then be written in numbers).
+    pub fn has_values(&self) -> bool {
+        !self.values.is_empty()
     }
 
     /// The symbols' domains (masses and lengths positive, ...).

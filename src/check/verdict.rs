@@ -98,9 +98,14 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
         components: Vec::new(),
         odd_term: odd_term(&claim, text, &|s| context.dimension(s)),
     };
-    if report.odd_term.is_some() {
+    if report
+        .odd_term
+        .as_ref()
+        .is_some_and(|odd| !is_number_in_si(context, &claim, odd.span))
+    {
         return Ok(report);
     }
+    report.odd_term = None;
     let seed = seed_of(text);
     let algebra_error = |e: AlgebraError| {
         Diagnostic::at(source_name, text, 0, text.len(), e.to_string())
@@ -109,10 +114,47 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
     report.components = pairs(&claim, correct, claimed)
         .map_err(algebra_error)?
         .into_iter()
-        .map(|(axis, c, s)| component(axis, c, s, context.domains(), seed))
+        .map(|(axis, c, s)| {
+            let evaluated = evaluated_givens(context, &c, &s);
+            let (c, s) = if evaluated {
+                (in_values(context, &c), in_values(context, &s))
+            } else {
+                (c, s)
+            };
+            component(axis, c, s, context.domains(), seed)
+        })
         .collect();
     report.verdict = overall(&report.components);
     Ok(report)
+}
+
+/// Whether the claimed side was written with a given's value in place of its name: the
+/// correct side holds a given that has a value, and the claimed side does not hold it
+/// (`cos(beta) = 1/2` with `beta = 60 deg`, `A_y = 196.2`). Such a claim is decided at the
+/// givens' exact values; a claim in the givens' names is decided in their names.
+fn evaluated_givens(context: &Context, correct: &Expr, claimed: &Expr) -> bool {
+    correct
+        .symbols()
+        .into_iter()
+        .any(|s| context.value(s).is_some() && !claimed.contains(s))
+}
+
+/// `e` with every given that has a value replaced by it (exact, in SI).
+fn in_values(context: &Context, e: &Expr) -> Expr {
+    e.subs(&|s| context.value(s)).unwrap_or_else(|_| e.clone())
+}
+
+/// Whether the written term at `span` is a plain number in a scene whose givens have values:
+/// a number in SI units (`A_y = 196.2`), not a term without a unit.
+fn is_number_in_si(context: &Context, claim: &Claim, span: (usize, usize)) -> bool {
+    context.has_values()
+        && claim
+            .lhs
+            .terms
+            .iter()
+            .chain(&claim.rhs.terms)
+            .find(|t| t.span == span)
+            .is_some_and(|t| t.value.symbols().is_empty())
 }
 
 /// The components to compare, `(axis, correct, claimed)`: one for scalars, and for vectors

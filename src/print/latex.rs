@@ -34,6 +34,13 @@ fn compound(out: &mut String, layout: &Layout, compound: &Node) {
                 superscript(out, layout, *exponent);
                 function_argument(out, layout, *arg);
             }
+            // A power of a power: `(\omega_x^2)^{\frac{3}{2}}`, never a double superscript.
+            Node::Power(..) => {
+                out.push('(');
+                node(out, layout, *base);
+                out.push(')');
+                superscript(out, layout, *exponent);
+            }
             _ => {
                 factor(out, layout, *base);
                 superscript(out, layout, *exponent);

@@ -117,16 +117,17 @@ fn scaled() {
         },
     );
     assert_eq!(explanation(&d), "the whole side is 2 times the correct one");
+    // A side of one term with the wrong sign is that term's sign flipped, not a scaled side.
     let d = check(
         "-1/2*I*w^2",
         "1/2*I*w^2",
-        Some("scaled"),
+        Some("sign-flipped"),
         Expected {
             wrong: &[("-1/2*I*w^2", "1/2*I*w^2")],
             ..NONE
         },
     );
-    assert!(explanation(&d).contains("-1 times"), "{d:?}");
+    assert!(explanation(&d).starts_with("the sign of"), "{d:?}");
 }
 
 #[test]
@@ -631,11 +632,12 @@ fn precedence_between_overlapping_rules() {
             ..NONE
         },
     );
-    // A one-term side twice what it should be is scaled, not a factor off in one term.
+    // A one-term side twice what it should be is that term's factor off (scaled needs two
+    // terms or more, each off by the one factor).
     check(
         "I*w^2",
         "1/2*I*w^2",
-        Some("scaled"),
+        Some("factor-off"),
         Expected {
             wrong: &[("I*w^2", "1/2*I*w^2")],
             ..NONE
@@ -649,7 +651,7 @@ fn a_claim_with_a_denominator() {
     check(
         "m*r^3*w_1/(2*L)",
         "m*r^3*w_1/(4*L)",
-        Some("scaled"),
+        Some("factor-off"),
         Expected {
             wrong: &[("m*r^3*w_1/(2*L)", "m*r^3*w_1/(4*L)")],
             ..NONE
@@ -804,7 +806,8 @@ proptest! {
         prop_assert!(checked.is_ok(), "{d:?}: {}", checked.unwrap_err());
     }
 
-    /// A nonzero multiple `k ≠ 1` of any expression reads as `scaled` by `k`.
+    /// A nonzero multiple `k ≠ 1` of any expression reads as `scaled` by `k` (one term: as
+    /// its sign flipped or its factor off).
     #[test]
     fn a_multiple_reads_as_scaled(
         b in tree(NAMES.len()),
@@ -817,8 +820,12 @@ proptest! {
             return Ok(());
         };
         let name = d.reading.as_ref().map(|r| r.name);
+        let one_term = d.wrong.len() == 1;
         prop_assert!(
-            name == Some("scaled") || name == Some("product-sign-convention") && k == (-1, 1),
+            name == Some("scaled") && !one_term
+                || name == Some("sign-flipped") && one_term && k == (-1, 1)
+                || name == Some("factor-off") && one_term && k != (-1, 1)
+                || name == Some("product-sign-convention") && k == (-1, 1),
             "{d:?}"
         );
     }

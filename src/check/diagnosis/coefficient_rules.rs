@@ -3,7 +3,8 @@
 //! differing terms:
 //!
 //! ```text
-//! scaled        every term differs, all kᵢ = k      claimed = k · correct  (k ≠ 1)
+//! scaled        every term differs, all kᵢ = k      claimed = k · correct  (k ≠ 1, two
+//!                                                   terms or more: one is sign or factor)
 //! sign-flipped  every kᵢ = −1                       a few signs flipped
 //! factor-off    one term differs, k ≠ ±1            that term k times what it should be
 //! ```
@@ -15,7 +16,8 @@ use crate::algebra::Q;
 /// `scaled`: the claim is `k` times the correct form, `k` rational and not 1 (`2T = …`
 /// written as `T = …`, the whole side's sign wrong).
 pub(super) fn scaled(d: &Differences) -> Option<String> {
-    if !d.only_wrong() || d.wrong.len() != d.correct_terms {
+    // A side of one term off by a factor is that term's sign or factor, not a scaled side.
+    if !d.only_wrong() || d.wrong.len() != d.correct_terms || d.wrong.len() < 2 {
         return None;
     }
     let k = d.wrong[0].ratio()?;

@@ -343,6 +343,8 @@ impl Lowering<'_> {
         }
     }
 
+    /// The value of a node, through the canonical constructors; the first error met, at
+    /// the text it comes from.
     pub(super) fn lower(&mut self, node: Node) -> Result<Expr, Diagnostic> {
         let whole = node.span;
         Ok(match node.ast {

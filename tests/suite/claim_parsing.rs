@@ -271,6 +271,29 @@ fn expressions_read_the_new_operators() {
     assert!(d.message.contains("needs two vectors"), "{d}");
 }
 
+/// Calls of two arguments nested deep with an error inside are read once (no alternative
+/// of the grammar re-reads what a failed one read): the error is found at once, located.
+/// The guard only turns a hang (2^depth re-reads) into a failure.
+#[test]
+fn nested_calls_with_an_error_inside_are_read_in_linear_time() {
+    let depth = 60;
+    let text = format!(
+        "{}a + = 0{}",
+        "dot(i, cross(j, ".repeat(depth),
+        "))".repeat(depth)
+    );
+    let column = text.find('=').unwrap_or_default() + 1;
+    let (send, receive) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let _ = send.send(parse_claim("claim", &text, &symbols).map(|_| ()));
+    });
+    let outcome = receive.recv_timeout(std::time::Duration::from_secs(30));
+    let Ok(Err(d)) = outcome else {
+        panic!("not refused within 30 s: {outcome:?}");
+    };
+    assert_eq!(d.column, column, "{}", d.render());
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 2_000, ..ProptestConfig::default() })]
 

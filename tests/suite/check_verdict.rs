@@ -148,6 +148,12 @@ fn a_scene_claim_uses_its_givens_unknowns_and_quantities() {
         verdict(&c, "T = 1/8 m r^2 (6 + r^2/L^2) w1"),
         Verdict::Differs
     );
+    // The disk's motion differentiated by hand: the axle turns at −w2 j and the disk spins
+    // at w1 about it, so G = (L cos w2 t, 0, L sin w2 t) has ā = −L w2² i, and
+    // Ḣ_G = Ω × H_G with H_G = ½ m r² w1 i + ¼ m r² (−w2) j, Ω = −w2 j: ½ m r² w1 w2 k.
+    assert_eq!(verdict(&c, "abar = -L w2^2 i"), Verdict::Holds);
+    assert_eq!(verdict(&c, "Hdot_G = 1/2 m r^2 w1 w2 k"), Verdict::Holds);
+    assert_eq!(verdict(&c, "Hdot_G = 1/4 m r^2 w1 w2 k"), Verdict::Differs);
     // `w1` and `w_1` are one symbol; a name the scene does not know is refused, with the
     // near spelling it does know.
     assert_eq!(verdict(&c, "w2 = r w_1/L"), Verdict::Holds);
@@ -157,4 +163,23 @@ fn a_scene_claim_uses_its_givens_unknowns_and_quantities() {
         "{}",
         err.render()
     );
+}
+
+#[test]
+fn a_claim_written_with_the_givens_values_is_decided_at_them() {
+    let path = format!(
+        "{}/examples/scenes/sp18_3_rotating_rod.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).expect("the example exists");
+    let scene = parse_scene(&path, &text).unwrap_or_else(|d| panic!("{}", d.render()));
+    let c = Context::scene(&scene);
+    // beta = 60 deg: cos β = ½; ā = −½ L cos β ω² i = −¼ L ω² i; A_y = m g = 20 × 9.81 N.
+    assert_eq!(verdict(&c, "cos(beta) = 1/2"), Verdict::Holds);
+    assert_eq!(verdict(&c, "abar = -1/4 L w^2 i"), Verdict::Holds);
+    assert_eq!(verdict(&c, "A_y = 196.2"), Verdict::Holds);
+    assert_eq!(verdict(&c, "A_y = 196"), Verdict::Differs);
+    // Written in the givens' names, a claim is decided in their names.
+    assert_eq!(verdict(&c, "A_y = m g"), Verdict::Holds);
+    assert_eq!(verdict(&c, "abar = -1/2 L cos(beta) w^2 i"), Verdict::Holds);
 }

@@ -98,13 +98,16 @@ fn judge(value: &Expr, known: &dyn Fn(Symbol) -> Option<Dimension>) -> Judgement
     }
     match dimension_with(value, known) {
         Ok(d) => Judgement::Has(d),
+        // Exponents past ±127 cannot be told apart: such a term is not judged.
+        Err(DimensionError::ExponentRange(_)) => Judgement::NotJudged,
         Err(error) => Judgement::Inconsistent(error),
     }
 }
 
-/// The dimension most judged terms share, and how many share it; among tied ones, the
-/// first in writing order on the deciding side (the right when only it holds a derived
-/// name, else the left), then on the other. None when no term has a dimension.
+/// The dimension of the side that alone names a derived quantity, when its terms agree;
+/// else the one most judged terms share, and how many share it; among tied ones, the first
+/// in writing order on the deciding side (the right when only it holds a derived name, else
+/// the left), then on the other. None when no term has a dimension.
 fn claim_dimension(
     claim: &Claim,
     lhs: &[Judgement],
@@ -118,6 +121,29 @@ fn claim_dimension(
     }
     let most = counts.values().copied().max()?;
     let right_decides = claim.lhs.resolved.is_empty() && !claim.rhs.resolved.is_empty();
+    let left_decides = !claim.lhs.resolved.is_empty() && claim.rhs.resolved.is_empty();
+    // The side that names a derived quantity (`T`) has its dimension when its terms agree:
+    // `T = I_x w_x + I_y w_y` is odd in its right side, however many terms that has.
+    let deciding = match (left_decides, right_decides) {
+        (true, _) => Some(lhs),
+        (_, true) => Some(rhs),
+        _ => None,
+    };
+    if let Some(side) = deciding {
+        let mut dims = side.iter().filter_map(|j| match j {
+            Judgement::Has(d) => Some(*d),
+            _ => None,
+        });
+        if let Some(first) = dims.next() {
+            if dims.all(|d| d == first)
+                && side
+                    .iter()
+                    .all(|j| !matches!(j, Judgement::Inconsistent(_)))
+            {
+                return Some((first, counts[&first]));
+            }
+        }
+    }
     let mut in_order = if right_decides {
         rhs.iter().chain(lhs)
     } else {

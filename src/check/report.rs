@@ -42,10 +42,7 @@ fn shown(e: &Expr, axis: Option<Axis>, notation: Notation, domains: &Domains) ->
 pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
     let mut out = format!("{} ({label}): {}\n", report.verdict.word(), report.claim);
     if let Some(odd) = &report.odd_term {
-        out.push_str(&format!(
-            "  inhomogeneous: the term {} {}\n",
-            odd.text, odd.reason
-        ));
+        out.push_str(&format!("  inhomogeneous: {}\n", odd_term_sentence(odd)));
         return out;
     }
     let name = &report.correct_side;
@@ -71,6 +68,15 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
     out
 }
 
+/// `the term X is in kg·m/s where ...`, or `the term X: the argument of sin must ...`.
+fn odd_term_sentence(odd: &OddTerm) -> String {
+    if odd.reason.starts_with("is ") {
+        format!("the term {} {}", odd.text, odd.reason)
+    } else {
+        format!("the term {}: {}", odd.text, odd.reason)
+    }
+}
+
 fn terms_text(terms: &[Expr], c: &Component, domains: &Domains) -> String {
     terms
         .iter()
@@ -87,7 +93,11 @@ fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
         shown(&residual, c.axis, Notation::Text, domains)
     ));
     if let Some(r) = &d.reading {
-        out.push_str(&format!("  {}: {}\n", r.name, r.explanation));
+        out.push_str(&format!(
+            "  {}: {}\n",
+            r.name,
+            in_component(&r.explanation, c)
+        ));
     }
     for w in &d.wrong {
         out.push_str(&format!(
@@ -127,16 +137,13 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
         .map(|r| format!(" ({})", r.replace('-', " ")))
         .unwrap_or_default();
     let mut out = format!(
-        "\\paragraph{{{label} {}{reading}.}} \\texttt{{{}}}\n",
+        "\\paragraph{{{} {}{reading}.}} \\texttt{{{}}}\n",
+        escape_text(label),
         report.verdict.word(),
         escape_text(&report.claim)
     );
     if let Some(odd) = &report.odd_term {
-        out.push_str(&format!(
-            "The term \\texttt{{{}}} {}.\n",
-            escape_text(&odd.text),
-            escape_text(&odd.reason)
-        ));
+        out.push_str(&format!("{}.\n", escape_text(&odd_term_sentence(odd))));
         return out;
     }
     let name = side_latex(report);
@@ -159,18 +166,60 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
             form(&c.claimed)
         ));
         out.push_str(&format!(
-            "  {of} &= {} && \\text{{correct}}\n",
+            "  {of} &= {} && \\text{{correct}}",
             form(&c.correct)
         ));
-        out.push_str("\\end{align*}\n");
+        if c.diagnosis.is_some() {
+            out.push_str(&format!(
+                " \\\\\n  \\text{{claimed}} - \\text{{correct}} &= {} && \\text{{residual}}",
+                form(&(&c.claimed - &c.correct))
+            ));
+        }
+        out.push_str("\n\\end{align*}\n");
         if let Some(why) = &c.undecided_because {
             out.push_str(&format!("Undecided: {}.\n", escape_text(why)));
         }
-        if let Some(r) = c.diagnosis.as_ref().and_then(|d| d.reading.as_ref()) {
-            out.push_str(&format!("{}.\n", explanation_latex(&r.explanation)));
+        if let Some(d) = &c.diagnosis {
+            out.push_str(&diagnosis_latex(d, c, domains));
         }
     }
     out
+}
+
+/// An explanation said of a vector's component: "the whole side" is "the whole j
+/// component" there.
+fn in_component(explanation: &str, c: &Component) -> String {
+    match c.axis {
+        None => explanation.to_string(),
+        Some(_) => explanation.replace(
+            "the whole side",
+            &format!("the whole {} component", axis_name(c.axis)),
+        ),
+    }
+}
+
+/// The reading's explanation, then the wrong, missing and extra terms, typeset.
+fn diagnosis_latex(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
+    let math = |e: &Expr| format!("${}$", shown(e, c.axis, Notation::Latex, domains));
+    let list = |terms: &[Expr]| terms.iter().map(math).collect::<Vec<_>>().join(", ");
+    let mut parts = Vec::new();
+    if let Some(r) = &d.reading {
+        parts.push(explanation_latex(&in_component(&r.explanation, c)));
+    }
+    for w in &d.wrong {
+        parts.push(format!(
+            "wrong term {} (correct: {})",
+            math(&w.claimed),
+            math(&w.correct)
+        ));
+    }
+    if !d.missing.is_empty() {
+        parts.push(format!("missing {}", list(&d.missing)));
+    }
+    if !d.extra.is_empty() {
+        parts.push(format!("extra {}", list(&d.extra)));
+    }
+    format!("{}.\n", parts.join("; "))
 }
 
 /// An explanation in LaTeX: its words as text, each expression it marks with backticks

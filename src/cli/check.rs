@@ -46,6 +46,8 @@ struct Written {
     line: usize,
     label: String,
     text: String,
+    /// A line of a claims file (else a `--claim`, a line of its own).
+    from_file: bool,
 }
 
 /// Exit status 2: an input could not be read.
@@ -88,10 +90,13 @@ fn claims(args: &Args) -> Result<Vec<Written>, CliError> {
             line: k + 1,
             label: format!("claim {}", k + 1),
             text: text.clone(),
+            from_file: false,
         })
         .collect();
     if let Some(path) = &args.claims {
         let (name, source) = read_file(path)?;
+        // A byte-order mark some editors write is not part of the first claim.
+        let source = source.strip_prefix('\u{feff}').unwrap_or(&source);
         for (k, line) in source.lines().enumerate() {
             let text = line.split('#').next().unwrap_or_default();
             if !text.trim().is_empty() {
@@ -100,6 +105,7 @@ fn claims(args: &Args) -> Result<Vec<Written>, CliError> {
                     line: k + 1,
                     label: format!("{name}:{}", k + 1),
                     text: text.trim_end().to_string(),
+                    from_file: true,
                 });
             }
         }
@@ -119,8 +125,10 @@ fn checked(args: &Args) -> Result<ExitCode, CliError> {
         .par_iter()
         .map(|w| {
             check(&context, &w.source_name, &w.text).map_err(|mut d| {
-                // The claim was read alone: its line is the file's.
-                d.line = w.line;
+                // A claim of a file was read alone: its line is the file's.
+                if w.from_file {
+                    d.line = w.line;
+                }
                 Box::new(d)
             })
         })

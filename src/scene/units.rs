@@ -6,7 +6,7 @@
 //! length, `1/sqrt(a^2 + b^2)` per metre, `(a^3)^(1/3)` a length; a power that would give a
 //! fractional exponent (`sqrt(a)` of a length) is an error that says so.
 
-use crate::algebra::{Expr, Symbol, View, Q};
+use crate::algebra::{Expr, Func, Symbol, View, Q};
 use std::collections::HashMap;
 use std::fmt;
 
@@ -41,6 +41,15 @@ impl Dimension {
             self.length + o.length,
             self.time + o.time,
         )
+    }
+
+    /// [`Dimension::times`], none when an exponent would pass ±127.
+    pub fn checked_times(self, o: Dimension) -> Option<Dimension> {
+        Some(Dimension::new(
+            self.mass.checked_add(o.mass)?,
+            self.length.checked_add(o.length)?,
+            self.time.checked_add(o.time)?,
+        ))
     }
 
     pub fn power(self, n: i8) -> Dimension {
@@ -157,6 +166,8 @@ pub enum DimensionError {
     FunctionOfDimensioned(String, Dimension),
     /// A power whose unit would have a fractional exponent (`sqrt(a)` of a length).
     FractionalPower(String, Dimension),
+    /// A product or power whose unit's exponents pass ±127 (`m^200`): not judged.
+    ExponentRange(String),
 }
 
 impl fmt::Display for DimensionError {
@@ -171,6 +182,9 @@ impl fmt::Display for DimensionError {
                     f,
                     "the argument {e} of a function must have no unit, but it is in {d}"
                 )
+            }
+            DimensionError::ExponentRange(e) => {
+                write!(f, "the unit of {e} has an exponent beyond ±127")
             }
             DimensionError::FractionalPower(e, d) => write!(
                 f,
@@ -213,19 +227,27 @@ pub fn dimension_with(
             }
             Ok(first)
         }
-        View::Mul(factors) => factors
-            .iter()
-            .try_fold(Dimension::NONE, |acc, f| Ok(acc.times(dimension(f)?))),
+        View::Mul(factors) => factors.iter().try_fold(Dimension::NONE, |acc, f| {
+            acc.checked_times(dimension(f)?)
+                .ok_or_else(|| DimensionError::ExponentRange(e.to_string()))
+        }),
         View::Pow(b, x) => {
             let base = dimension(b)?;
             match x.as_num() {
                 _ if base == Dimension::NONE => Ok(Dimension::NONE),
-                Some(exponent) => base
-                    .rational_power(exponent)
-                    .ok_or_else(|| DimensionError::FractionalPower(e.to_string(), base)),
+                Some(exponent) => base.rational_power(exponent).ok_or_else(|| {
+                    // Whole exponents fail only by range; a fraction may also not divide.
+                    if exponent.is_integer() {
+                        DimensionError::ExponentRange(e.to_string())
+                    } else {
+                        DimensionError::FractionalPower(e.to_string(), base)
+                    }
+                }),
                 None => Err(DimensionError::FunctionOfDimensioned(e.to_string(), base)),
             }
         }
+        // |u| has the unit of u.
+        View::Func(Func::Abs, arg) => dimension(arg),
         View::Func(_, arg) => {
             let d = dimension(arg)?;
             if d == Dimension::NONE {

@@ -183,3 +183,17 @@ fn a_claim_written_with_the_givens_values_is_decided_at_them() {
     assert_eq!(verdict(&c, "A_y = m g"), Verdict::Holds);
     assert_eq!(verdict(&c, "abar = -1/2 L cos(beta) w^2 i"), Verdict::Holds);
 }
+
+#[test]
+fn dimensions_judge_what_the_student_wrote() {
+    let p = Context::general(true).expect("principal");
+    // |u| has the unit of u; exponents past a unit's range are not judged, never an error.
+    assert_eq!(verdict(&p, "abs(v) = v"), Verdict::Holds);
+    assert_eq!(verdict(&p, "w_x^129 = w_x^129"), Verdict::Holds);
+    assert_eq!(verdict(&p, "m^128 = m^128"), Verdict::Holds);
+    // The side naming T decides the dimension: the odd term is the student's.
+    let report = check(&p, "test", "T = I_x w_x + I_y w_y").expect("reads");
+    let odd = report.odd_term.expect("inhomogeneous");
+    assert_eq!(odd.text, "I_x w_x");
+    assert_eq!(report.verdict, Verdict::Differs);
+}

@@ -1,5 +1,6 @@
-//! Every example's `--standalone` LaTeX compiles with pdflatex (amsmath only). `.ci/run`
-//! installs pdflatex from Debian's packages when it is missing, so this test never skips.
+//! Every example's `--standalone` LaTeX compiles with pdflatex (amsmath only), and so does
+//! `kinetics check --format latex` in a minimal document. `.ci/run` installs pdflatex from
+//! Debian's packages when it is missing, so these tests never skip.
 
 use std::path::Path;
 use std::process::Command;
@@ -34,24 +35,7 @@ fn every_example_compiles_with_pdflatex() {
         );
         let tex = out_dir.join(format!("{stem}.tex"));
         std::fs::write(&tex, &latex.stdout).expect("the .tex is written");
-        let run = Command::new("pdflatex")
-            .args([
-                "-interaction=nonstopmode",
-                "-halt-on-error",
-                "-output-directory",
-            ])
-            .arg(&out_dir)
-            .arg(&tex)
-            .output()
-            .expect("pdflatex is installed (.ci/run installs it)");
-        let log = String::from_utf8_lossy(&run.stdout);
-        if !run.status.success() || log.contains("! ") {
-            let first_error = log
-                .lines()
-                .skip_while(|l| !l.starts_with('!'))
-                .take(6)
-                .collect::<Vec<_>>()
-                .join("\n");
+        if let Some(first_error) = pdflatex_error(&out_dir, &tex) {
             failures.push(format!("{stem}:\n{first_error}"));
         }
     }
@@ -60,5 +44,70 @@ fn every_example_compiles_with_pdflatex() {
         failures.is_empty(),
         "LaTeX errors:\n{}",
         failures.join("\n\n")
+    );
+}
+
+/// The first LaTeX error of compiling `tex` in `dir`, if any.
+fn pdflatex_error(dir: &Path, tex: &Path) -> Option<String> {
+    let run = Command::new("pdflatex")
+        .args([
+            "-interaction=nonstopmode",
+            "-halt-on-error",
+            "-output-directory",
+        ])
+        .arg(dir)
+        .arg(tex)
+        .output()
+        .expect("pdflatex is installed (.ci/run installs it)");
+    let log = String::from_utf8_lossy(&run.stdout);
+    (!run.status.success() || log.contains("! ")).then(|| {
+        log.lines()
+            .skip_while(|l| !l.starts_with('!'))
+            .take(6)
+            .collect::<Vec<_>>()
+            .join("\n")
+    })
+}
+
+/// A check's LaTeX report compiles: every verdict and reading, a vector claim, a claim of pure
+/// algebra, an odd term, a power of a power, and a claims file whose name has underscores.
+#[test]
+fn a_check_report_compiles_with_pdflatex() {
+    let dir = std::env::temp_dir().join(format!("kinetics-check-latex-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let claims = dir.join("my_class_set.claims");
+    std::fs::write(
+        &claims,
+        "T = 1/2 (I_x w_x^2 + I_x w_x^2 + I_x w_x^2) + 1/2 m v^2 # repeated term\n\
+         SumM_x = I_x wdot_x - (I_z - I_y) w_y w_z\n\
+         (w1 i + w2 j) × (L i - r j) = (L w2 - r w1) k\n\
+         H_G = I_x w_x i + I_y w_y j + I_z w_z k\n\
+         T = I_x w_x + I_y w_y\n\
+         (w_x^2)^(3/2) = w_x^3\n\
+         sin(t + pi) = -sin(t)\n\
+         H_x & = 1 % $ # not a claim: a located error on standard error\n",
+    )
+    .expect("the claims are written");
+    let report = Command::new(env!("CARGO_BIN_EXE_kinetics"))
+        .args(["check", "--principal", "--format", "latex", "--claims"])
+        .arg(&claims)
+        .output()
+        .expect("kinetics runs");
+    let body = String::from_utf8_lossy(&report.stdout);
+    assert!(body.contains(r"\paragraph{"), "{body}");
+    let tex = dir.join("check.tex");
+    std::fs::write(
+        &tex,
+        format!(
+            "\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\begin{{document}}\n{body}\n\\end{{document}}\n"
+        ),
+    )
+    .expect("the .tex is written");
+    let error = pdflatex_error(&dir, &tex);
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(
+        error.is_none(),
+        "LaTeX error:\n{}\n\n{body}",
+        error.unwrap_or_default()
     );
 }

@@ -41,6 +41,11 @@ pub fn check_input(source_name: &str, source: &str) -> Result<(), Diagnostic> {
                 i += 1;
                 b'/'
             }
+            // The minus sign − (U+2212, three bytes), as typed from a word processor, is '-'.
+            [0xE2, 0x88, 0x92, ..] => {
+                i += 2;
+                b'-'
+            }
             _ => bytes[i],
         };
         let depth = chains.len() - 1;

@@ -318,3 +318,11 @@ proptest! {
         prop_assert_eq!(total, c.rhs.value);
     }
 }
+
+/// The minus sign − (U+2212), as pasted from a word processor, is a minus.
+#[test]
+fn the_unicode_minus_sign_is_a_minus() {
+    let read = |text: &str| kinetics::parse_expression("test", text).expect("reads");
+    assert_eq!(read("I_x w_x − I_xy w_y"), read("I_x w_x - I_xy w_y"));
+    assert_eq!(read("−a"), read("-a"));
+}

@@ -3,6 +3,11 @@
 //! Each differing component shows the correct form beside the claimed one, both in the
 //! textbook's form ([`presented`]), the residual `claimed − correct`, the wrong, missing
 //! and extra terms, and the reading of the slip when one fits.
+//!
+//! A report stays short and quick however large the claim: a form over [`PRESENTED_SIZE`]
+//! is shown in canonical order (simplifying it for reading would take longer than the
+//! check), and a list of missing or extra terms shows its first [`LISTED_TERMS`] and counts
+//! the rest (`(a+b+c+d)^21 = 1/T` has thousands, each over T's denominator).
 
 use super::diagnosis::Diagnosis;
 use super::dimension::OddTerm;
@@ -33,8 +38,24 @@ fn axis_name(axis: Option<Axis>) -> &'static str {
     }
 }
 
+/// The largest form (in [`Expr::has_at_most_size`]'s measure) shown in the textbook's form.
+const PRESENTED_SIZE: usize = 2000;
+/// The most terms a list of missing or extra terms shows.
+const LISTED_TERMS: usize = 12;
+
 fn shown(e: &Expr, axis: Option<Axis>, notation: Notation, domains: &Domains) -> String {
-    print::render(&presented(e, domains), notation, axis.unwrap_or(Axis::Z))
+    let axis = axis.unwrap_or(Axis::Z);
+    if e.has_at_most_size(PRESENTED_SIZE) {
+        print::render(&presented(e, domains), notation, axis)
+    } else {
+        print::render(e, notation, axis)
+    }
+}
+
+/// The terms a list shows, and how many more it has.
+fn listed(terms: &[Expr]) -> (&[Expr], usize) {
+    let shown = terms.len().min(LISTED_TERMS);
+    (&terms[..shown], terms.len() - shown)
 }
 
 /// The claim's report in text: the verdict, where the claim was written and the claim, then for each component that
@@ -72,11 +93,16 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
 }
 
 fn terms_text(terms: &[Expr], c: &Component, domains: &Domains) -> String {
-    terms
+    let (terms, more) = listed(terms);
+    let mut out = terms
         .iter()
         .map(|t| shown(t, c.axis, Notation::Text, domains))
         .collect::<Vec<_>>()
-        .join(", ")
+        .join(", ");
+    if more > 0 {
+        out.push_str(&format!(", and {more} more"));
+    }
+    out
 }
 
 fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
@@ -215,8 +241,13 @@ fn both(e: &Expr, axis: Option<Axis>, domains: &Domains) -> Json {
 }
 
 fn diagnosis_json(d: &Diagnosis, axis: Option<Axis>, domains: &Domains) -> Json {
-    let list =
-        |terms: &[Expr]| -> Vec<Json> { terms.iter().map(|t| both(t, axis, domains)).collect() };
+    let list = |terms: &[Expr]| -> Vec<Json> {
+        listed(terms)
+            .0
+            .iter()
+            .map(|t| both(t, axis, domains))
+            .collect()
+    };
     json!({
         "reading": d.reading.as_ref().map(|r| r.name),
         "explanation": d.reading.as_ref().map(|r| r.explanation.clone()),
@@ -226,6 +257,9 @@ fn diagnosis_json(d: &Diagnosis, axis: Option<Axis>, domains: &Domains) -> Json 
         })).collect::<Vec<_>>(),
         "missing": list(&d.missing),
         "extra": list(&d.extra),
+        // The terms beyond those listed, counted.
+        "missing_more": listed(&d.missing).1,
+        "extra_more": listed(&d.extra).1,
     })
 }
 

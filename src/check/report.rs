@@ -43,13 +43,17 @@ const PRESENTED_SIZE: usize = 2000;
 /// The most terms a list of missing or extra terms shows.
 const LISTED_TERMS: usize = 12;
 
-fn shown(e: &Expr, axis: Option<Axis>, notation: Notation, domains: &Domains) -> String {
-    let axis = axis.unwrap_or(Axis::Z);
+/// The form a report shows: the textbook's, or the canonical one past [`PRESENTED_SIZE`].
+fn readable(e: &Expr, domains: &Domains) -> Expr {
     if e.has_at_most_size(PRESENTED_SIZE) {
-        print::render(&presented(e, domains), notation, axis)
+        presented(e, domains)
     } else {
-        print::render(e, notation, axis)
+        e.clone()
     }
+}
+
+fn shown(e: &Expr, axis: Option<Axis>, notation: Notation, domains: &Domains) -> String {
+    print::render(&readable(e, domains), notation, axis.unwrap_or(Axis::Z))
 }
 
 /// The terms a list shows, and how many more it has.
@@ -233,10 +237,12 @@ fn escape_text(s: &str) -> String {
     out
 }
 
+/// The form in text and in LaTeX, simplified once for both.
 fn both(e: &Expr, axis: Option<Axis>, domains: &Domains) -> Json {
+    let (form, axis) = (readable(e, domains), axis.unwrap_or(Axis::Z));
     json!({
-        "text": shown(e, axis, Notation::Text, domains),
-        "latex": shown(e, axis, Notation::Latex, domains),
+        "text": print::render(&form, Notation::Text, axis),
+        "latex": print::render(&form, Notation::Latex, axis),
     })
 }
 

@@ -1,9 +1,10 @@
 //! How many terms multiplying out an expression could give, estimated from its shape before
 //! any work: a sum has the sum of its terms' counts, a product the product of its factors',
-//! a whole power `n ≥ 0` of a sum of `t` terms `C(t + n − 1, n)` (the multinomial count),
-//! anything else one term. It overestimates (like terms are not combined), so the checker
-//! can leave to its second opinion a claim whose exact route would take seconds, before
-//! starting it.
+//! a whole power `±n` of a sum of `t` terms `C(t + n − 1, n)` (the multinomial count; a
+//! denominator is multiplied out too, by `cancel`), anything else one term. It overestimates
+//! (like terms are not combined), so the checker can leave to its second opinion a claim
+//! whose exact route would take seconds, and show such a form without simplifying it,
+//! before starting the work.
 
 use crate::algebra::{Expr, View};
 
@@ -13,9 +14,7 @@ pub fn estimated_terms(e: &Expr) -> f64 {
         View::Add(xs) => xs.iter().map(estimated_terms).sum(),
         View::Mul(xs) => xs.iter().map(estimated_terms).product(),
         View::Pow(base, exponent) => match exponent.as_num() {
-            Some(n) if n.is_integer() && !n.is_negative() => {
-                multinomial_terms(estimated_terms(base), n.to_f64())
-            }
+            Some(n) if n.is_integer() => multinomial_terms(estimated_terms(base), n.to_f64().abs()),
             _ => 1.0,
         },
         View::Num(_) | View::Sym(_) | View::Func(..) => 1.0,
@@ -46,6 +45,7 @@ mod tests {
         assert_eq!(estimated_terms(&(&sum * &(&a + &b))), 6.0);
         // (a + b + c)^4 has C(6, 4) = 15 monomials.
         assert_eq!(estimated_terms(&sum.powi(4)), 15.0);
+        assert_eq!(estimated_terms(&sum.powi(-4)), 15.0);
         assert!(estimated_terms(&sum.powi(1_000_000)) > 1e10);
     }
 }

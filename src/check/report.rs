@@ -5,12 +5,13 @@
 //! and extra terms, and the reading of the slip when one fits.
 //!
 //! A report stays short and quick however large the claim: a form over [`PRESENTED_SIZE`]
-//! is shown in canonical order (simplifying it for reading would take longer than the
-//! check), and a list of missing or extra terms shows its first [`LISTED_TERMS`] and counts
-//! the rest (`(a+b+c+d)^21 = 1/T` has thousands, each over T's denominator).
+//! (or that would multiply out to over [`PRESENTED_TERMS`]) is shown in canonical order (simplifying it for reading would take longer than the
+//! check), and a list of wrong, missing or extra terms shows its first [`LISTED_TERMS`] and
+//! counts the rest (`(a+b+c+d)^21 = 1/T` has thousands, each over T's denominator).
 
 use super::diagnosis::Diagnosis;
 use super::dimension::OddTerm;
+use super::expansion_size::estimated_terms;
 use super::verdict::{Component, Report, Verdict};
 use crate::algebra::{Axis, Domains, Expr};
 use crate::mechanics::derivation::presented;
@@ -40,12 +41,16 @@ fn axis_name(axis: Option<Axis>) -> &'static str {
 
 /// The largest form (in [`Expr::has_at_most_size`]'s measure) shown in the textbook's form.
 const PRESENTED_SIZE: usize = 2000;
-/// The most terms a list of missing or extra terms shows.
+/// The most terms a form shown in the textbook's form may multiply out to (estimated
+/// first): simplifying cancels, which multiplies out numerator and denominator.
+const PRESENTED_TERMS: f64 = 2000.0;
+/// The most terms a list of wrong, missing or extra terms shows.
 const LISTED_TERMS: usize = 12;
 
-/// The form a report shows: the textbook's, or the canonical one past [`PRESENTED_SIZE`].
+/// The form a report shows: the textbook's, or the canonical one past [`PRESENTED_SIZE`]
+/// or [`PRESENTED_TERMS`].
 fn readable(e: &Expr, domains: &Domains) -> Expr {
-    if e.has_at_most_size(PRESENTED_SIZE) {
+    if e.has_at_most_size(PRESENTED_SIZE) && estimated_terms(e) <= PRESENTED_TERMS {
         presented(e, domains)
     } else {
         e.clone()
@@ -57,7 +62,7 @@ fn shown(e: &Expr, axis: Option<Axis>, notation: Notation, domains: &Domains) ->
 }
 
 /// The terms a list shows, and how many more it has.
-fn listed(terms: &[Expr]) -> (&[Expr], usize) {
+fn listed<T>(terms: &[T]) -> (&[T], usize) {
     let shown = terms.len().min(LISTED_TERMS);
     (&terms[..shown], terms.len() - shown)
 }
@@ -119,12 +124,16 @@ fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
     if let Some(r) = &d.reading {
         out.push_str(&format!("  {}: {}\n", r.name, r.explanation));
     }
-    for w in &d.wrong {
+    let (wrong, more) = listed(&d.wrong);
+    for w in wrong {
         out.push_str(&format!(
             "  wrong term: {} (correct: {})\n",
             shown(&w.claimed, c.axis, Notation::Text, domains),
             shown(&w.correct, c.axis, Notation::Text, domains)
         ));
+    }
+    if more > 0 {
+        out.push_str(&format!("  and {more} more wrong terms\n"));
     }
     if !d.missing.is_empty() {
         out.push_str(&format!(
@@ -257,13 +266,14 @@ fn diagnosis_json(d: &Diagnosis, axis: Option<Axis>, domains: &Domains) -> Json 
     json!({
         "reading": d.reading.as_ref().map(|r| r.name),
         "explanation": d.reading.as_ref().map(|r| r.explanation.clone()),
-        "wrong": d.wrong.iter().map(|w| json!({
+        "wrong": listed(&d.wrong).0.iter().map(|w| json!({
             "claimed": both(&w.claimed, axis, domains),
             "correct": both(&w.correct, axis, domains),
         })).collect::<Vec<_>>(),
         "missing": list(&d.missing),
         "extra": list(&d.extra),
         // The terms beyond those listed, counted.
+        "wrong_more": listed(&d.wrong).1,
         "missing_more": listed(&d.missing).1,
         "extra_more": listed(&d.extra).1,
     })

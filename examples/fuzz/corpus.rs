@@ -1,6 +1,7 @@
 //! The seed corpus: issue 14's reproducers (`tests/reproducers/`); for expressions also the
 //! right sides of the shipped scenes' statements, for scenes the shipped scenes
-//! (`examples/scenes/`) and the malformed ones (`tests/bad_scenes/`).
+//! (`examples/scenes/`) and the malformed ones (`tests/bad_scenes/`), for claims the claims
+//! of `tests/data/check_corpus.txt`.
 
 use crate::target::Target;
 use std::path::Path;
@@ -8,11 +9,11 @@ use std::path::Path;
 /// The headers of a file in `tests/reproducers/` (see `tests/suite/reproducers.rs`).
 const HEADERS: [&str; 4] = ["# run: ", "# at: ", "# ok: ", "# refuse: "];
 
-/// The texts of the target's seeds: an expression each, or a scene each.
+/// The texts of the target's seeds: an expression, a scene or a claim each.
 pub fn seeds(target: Target) -> Vec<String> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let dirs: &[&str] = match target {
-        Target::Expr => &["tests/reproducers"],
+        Target::Expr | Target::Check => &["tests/reproducers"],
         Target::Scene => &["tests/reproducers", "examples/scenes", "tests/bad_scenes"],
     };
     let mut seeds = Vec::new();
@@ -30,8 +31,8 @@ pub fn seeds(target: Target) -> Vec<String> {
                 continue;
             };
             seeds.push(match target {
-                // The expression is the first line that is not a header.
-                Target::Expr => text
+                // The expression (or claim) is the first line that is not a header.
+                Target::Expr | Target::Check => text
                     .lines()
                     .find(|l| !l.starts_with("# "))
                     .unwrap_or_default()
@@ -45,10 +46,24 @@ pub fn seeds(target: Target) -> Vec<String> {
             });
         }
     }
-    if target == Target::Expr {
-        seeds.extend(scene_expressions(root));
+    match target {
+        Target::Expr => seeds.extend(scene_expressions(root)),
+        Target::Check => seeds.extend(corpus_claims(root)),
+        Target::Scene => {}
     }
     seeds
+}
+
+/// The claims of the checker's corpus: each line's text after its third `|`
+/// (`CONTEXT | VERDICT | READING | CLAIM`), comments left out.
+fn corpus_claims(root: &Path) -> Vec<String> {
+    let text =
+        std::fs::read_to_string(root.join("tests/data/check_corpus.txt")).unwrap_or_default();
+    text.lines()
+        .filter(|l| !l.starts_with('#'))
+        .filter_map(|l| l.splitn(4, '|').nth(3))
+        .map(|claim| claim.trim().to_string())
+        .collect()
 }
 
 /// The right sides of the shipped scenes' `=` (`0.3 kg`, `w*i`, `D_y*j + D_z*k at (L, 0, 0)`):

@@ -16,15 +16,17 @@ const OPERATORS: [&str; 6] = ["+", "-", "*", "/", " ", "^"];
 /// An expression, or now and then an equation `lhs = rhs`.
 pub fn statement(r: &mut Random) -> String {
     let depth = r.size(8);
-    let e = expression(r, depth);
+    let e = expression(r, depth, atom);
     if r.one_in(6) {
-        format!("{} = {e}", expression(r, 2))
+        format!("{} = {e}", expression(r, 2, atom))
     } else {
         e
     }
 }
 
-fn expression(r: &mut Random, depth: usize) -> String {
+/// An expression of at most `depth` levels over the leaves `atom` gives (a claim's names
+/// for `check`, else symbols, unit vectors and numbers).
+pub fn expression(r: &mut Random, depth: usize, atom: fn(&mut Random) -> String) -> String {
     if depth == 0 {
         return atom(r);
     }
@@ -35,14 +37,14 @@ fn expression(r: &mut Random, depth: usize) -> String {
             let right = if op == "^" {
                 power_exponent(r)
             } else {
-                expression(r, d)
+                expression(r, d, atom)
             };
-            format!("{}{op}{right}", expression(r, d))
+            format!("{}{op}{right}", expression(r, d, atom))
         }
-        4 => format!("({})", expression(r, d)),
-        5 => format!("{}({})", r.pick(&FUNCTIONS), expression(r, d)),
-        6 => format!("-{}", expression(r, d)),
-        7 => format!("({})^{}", expression(r, d), power_exponent(r)),
+        4 => format!("({})", expression(r, d, atom)),
+        5 => format!("{}({})", r.pick(&FUNCTIONS), expression(r, d, atom)),
+        6 => format!("-{}", expression(r, d, atom)),
+        7 => format!("({})^{}", expression(r, d, atom), power_exponent(r)),
         8 if r.one_in(4) => hostile::construct(r),
         _ => atom(r),
     }
@@ -56,6 +58,7 @@ fn power_exponent(r: &mut Random) -> String {
     }
 }
 
+/// A symbol, a unit vector, a hostile number or a small integer.
 fn atom(r: &mut Random) -> String {
     match r.below(8) {
         0..=3 => r.pick(&SYMBOLS).to_string(),

@@ -4,13 +4,16 @@
 //! ```text
 //! cargo run --release --example fuzz -- expr --seconds 600 --jobs 2
 //! cargo run --release --example fuzz -- scene --seconds 600 --jobs 2 --seed 7
+//! cargo run --release --example fuzz -- check --seconds 600 --jobs 2
 //! ```
 //!
-//! Targets: `expr` (expressions through `simplify`, `simplify --expand` and `latex`) and
-//! `scene` (scenes through `solve` and `simulate --until 1`), each input run in-process
-//! through the library functions those commands call (see `target.rs`). Inputs come from a
-//! seeded generator of the expression grammar and from mutations of the seed corpus
-//! (`tests/reproducers/`, `examples/scenes/`, `tests/bad_scenes/`). Findings are kept in
+//! Targets: `expr` (expressions through `simplify`, `simplify --expand` and `latex`),
+//! `scene` (scenes through `solve` and `simulate --until 1`) and `check` (claims through
+//! `check --claim` in the general body, `--principal`, `--fixed-axis` and a scene's
+//! context), each input run in-process through the library functions those commands call
+//! (see `target.rs`, `check.rs`). Inputs come from a seeded generator of the grammar
+//! (expressions, or claims) and from mutations of the seed corpus (`tests/reproducers/`,
+//! `examples/scenes/`, `tests/bad_scenes/`, the claims of `tests/data/check_corpus.txt`). Findings are kept in
 //! `target/fuzz/<target>/findings/`, one file per kind of failure, in the format of
 //! `tests/reproducers/`; the run prints inputs run, inputs per second and every finding,
 //! and exits with 1 when there is one.
@@ -18,9 +21,11 @@
 //! An example, not a binary: `cargo install` leaves it out, and `cargo test --release`
 //! compiles it (so it cannot rot) with the dependencies already built for the tests.
 
+mod check;
 mod corpus;
 mod finding;
 mod generate;
+mod generate_claim;
 mod hostile;
 mod mutate;
 mod random;
@@ -35,7 +40,7 @@ use std::time::{Duration, Instant};
 /// Fuzz `kinetics` with generated and mutated input.
 #[derive(Parser)]
 pub struct Options {
-    /// What to fuzz: expressions or scenes.
+    /// What to fuzz: expressions, scenes or claims.
     #[arg(value_enum)]
     pub target: target::Target,
     /// How long to run (s).

@@ -1,9 +1,10 @@
-//! The two fuzz targets, each input through the library entry points of the commands:
+//! The fuzz targets, each input through the library entry points of the commands:
 //! `expr` through `kinetics simplify [--expand]` and `kinetics latex` (parse, simplify or expand, print
 //! in text and LaTeX, a vector component by component), `scene` through `kinetics solve`
 //! (parse, analyse, the numbers asked for, the worked solution) and `kinetics simulate
 //! --until 1` (the body's problem, integrated or in closed form, 100 samples). `plan` is
-//! `solve`'s analysis without the rendering, so `solve` covers it.
+//! `solve`'s analysis without the rendering, so `solve` covers it. `check` (claims through
+//! `kinetics check`) is in [`crate::check`].
 //!
 //! Each run returns the first broken promise it sees (a panic aside: the worker catches it);
 //! a clean refusal is no finding.
@@ -23,6 +24,7 @@ use kinetics::solution::{render, Format};
 pub enum Target {
     Expr,
     Scene,
+    Check,
 }
 
 impl Target {
@@ -31,6 +33,7 @@ impl Target {
         match self {
             Target::Expr => &["simplify", "simplify --expand", "latex"],
             Target::Scene => &["solve", "simulate --until 1"],
+            Target::Check => &crate::check::RUNS,
         }
     }
 
@@ -39,11 +42,15 @@ impl Target {
         match self {
             Target::Expr => "expr",
             Target::Scene => "scene",
+            Target::Check => "claim",
         }
     }
 
     pub fn name(self) -> &'static str {
-        self.extension()
+        match self {
+            Target::Check => "check",
+            _ => self.extension(),
+        }
     }
 }
 
@@ -54,13 +61,14 @@ pub fn check(run: &str, text: &str) -> Option<Finding> {
         "latex" => expression(text, Form::AsWritten),
         "simplify --expand" => expression(text, Form::Expanded),
         "solve" => solve(text),
-        _ => simulate(text),
+        "simulate --until 1" => simulate(text),
+        _ => crate::check::claim(run, text),
     };
     outcome.err().flatten()
 }
 
 /// `Err(None)`: refused cleanly; `Err(Some(finding))`: a promise broken.
-type Outcome = Result<(), Option<Finding>>;
+pub type Outcome = Result<(), Option<Finding>>;
 
 /// The form a command shows: `latex` the canonical form, `simplify` the shortest,
 /// `simplify --expand` the expansion.
@@ -155,7 +163,7 @@ fn simulate(text: &str) -> Outcome {
 
 /// What is wrong with a refusal, if anything: a place outside the input or on a comment
 /// line of a scene, or a quoted number longer than any the input holds.
-fn located(d: &Diagnostic, text: &str, scene: bool) -> Option<Finding> {
+pub fn located(d: &Diagnostic, text: &str, scene: bool) -> Option<Finding> {
     let line = text.lines().nth(d.line.wrapping_sub(1));
     let said = format!("{} {}", d.message, d.help.as_deref().unwrap_or_default());
     // The end of the input is a place: where a missing line goes.
@@ -191,7 +199,7 @@ fn words(message: &str) -> String {
 }
 
 /// Checks printed output for an `inf` or `NaN` the input did not hold itself.
-fn printed(output: &str, input: &str) -> Result<(), Finding> {
+pub fn printed(output: &str, input: &str) -> Result<(), Finding> {
     match non_finite_word(output, input) {
         Some(word) => Err(Finding::new(Class::NonFinite, "prints ", word)),
         None => Ok(()),

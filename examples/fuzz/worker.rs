@@ -11,7 +11,7 @@
 use crate::finding::{Class, Finding};
 use crate::random::Random;
 use crate::target::{check, Target};
-use crate::{corpus, generate, mutate};
+use crate::{corpus, generate, generate_claim, mutate};
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
@@ -103,6 +103,7 @@ fn inputs(work: &Work, ran: &AtomicU64, started: &AtomicU64, epoch: Instant) {
     while Instant::now() < work.end {
         let text = match (work.target, r.below(8)) {
             (Target::Expr, 0..=2) => generate::statement(r),
+            (Target::Check, 0..=2) => generate_claim::claim(r),
             (_, 0) => r.pick(&seeds).clone(),
             _ => {
                 let (seed, other) = (r.pick(&seeds).clone(), r.pick(&seeds).clone());
@@ -110,8 +111,8 @@ fn inputs(work: &Work, ran: &AtomicU64, started: &AtomicU64, epoch: Instant) {
             }
         };
         let text = match work.target {
-            // An expression is one line, as an argument is.
-            Target::Expr => text.lines().next().unwrap_or_default().to_string(),
+            // An expression or a claim is one line, as an argument is.
+            Target::Expr | Target::Check => text.lines().next().unwrap_or_default().to_string(),
             Target::Scene => text,
         };
         for run in work.target.runs() {

@@ -3,9 +3,15 @@
 //! Each differing component shows the correct form beside the claimed one, both in the
 //! textbook's form ([`presented`]), the residual `claimed − correct`, the wrong, missing
 //! and extra terms, and the reading of the slip when one fits.
+//!
+//! A report stays short and quick however large the claim: a form over [`PRESENTED_SIZE`]
+//! (or that would multiply out to over [`PRESENTED_TERMS`]) is shown in canonical order (simplifying it for reading would take longer than the
+//! check), and a list of wrong, missing or extra terms shows its first [`LISTED_TERMS`] and
+//! counts the rest (`(a+b+c+d)^21 = 1/T` has thousands, each over T's denominator).
 
 use super::diagnosis::Diagnosis;
 use super::dimension::OddTerm;
+use super::expansion_size::estimated_terms;
 use super::verdict::{Component, Report, Verdict};
 use crate::algebra::{Axis, Domains, Expr};
 use crate::mechanics::derivation::presented;
@@ -33,8 +39,32 @@ fn axis_name(axis: Option<Axis>) -> &'static str {
     }
 }
 
+/// The largest form (in [`Expr::has_at_most_size`]'s measure) shown in the textbook's form.
+const PRESENTED_SIZE: usize = 2000;
+/// The most terms a form shown in the textbook's form may multiply out to (estimated
+/// first): simplifying cancels, which multiplies out numerator and denominator.
+const PRESENTED_TERMS: f64 = 2000.0;
+/// The most terms a list of wrong, missing or extra terms shows.
+const LISTED_TERMS: usize = 12;
+
+/// The form a report shows: the textbook's, or the canonical one past [`PRESENTED_SIZE`]
+/// or [`PRESENTED_TERMS`].
+fn readable(e: &Expr, domains: &Domains) -> Expr {
+    if e.has_at_most_size(PRESENTED_SIZE) && estimated_terms(e) <= PRESENTED_TERMS {
+        presented(e, domains)
+    } else {
+        e.clone()
+    }
+}
+
 fn shown(e: &Expr, axis: Option<Axis>, notation: Notation, domains: &Domains) -> String {
-    print::render(&presented(e, domains), notation, axis.unwrap_or(Axis::Z))
+    print::render(&readable(e, domains), notation, axis.unwrap_or(Axis::Z))
+}
+
+/// The terms a list shows, and how many more it has.
+fn listed<T>(terms: &[T]) -> (&[T], usize) {
+    let shown = terms.len().min(LISTED_TERMS);
+    (&terms[..shown], terms.len() - shown)
 }
 
 /// The claim's report in text: the verdict, where the claim was written and the claim, then for each component that
@@ -78,11 +108,16 @@ fn odd_term_sentence(odd: &OddTerm) -> String {
 }
 
 fn terms_text(terms: &[Expr], c: &Component, domains: &Domains) -> String {
-    terms
+    let (terms, more) = listed(terms);
+    let mut out = terms
         .iter()
         .map(|t| shown(t, c.axis, Notation::Text, domains))
         .collect::<Vec<_>>()
-        .join(", ")
+        .join(", ");
+    if more > 0 {
+        out.push_str(&format!(", and {more} more"));
+    }
+    out
 }
 
 fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
@@ -99,12 +134,16 @@ fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
             in_component(&r.explanation, c)
         ));
     }
-    for w in &d.wrong {
+    let (wrong, more) = listed(&d.wrong);
+    for w in wrong {
         out.push_str(&format!(
             "  wrong term: {} (correct: {})\n",
             shown(&w.claimed, c.axis, Notation::Text, domains),
             shown(&w.correct, c.axis, Notation::Text, domains)
         ));
+    }
+    if more > 0 {
+        out.push_str(&format!("  and {more} more wrong terms\n"));
     }
     if !d.missing.is_empty() {
         out.push_str(&format!(
@@ -256,25 +295,36 @@ fn escape_text(s: &str) -> String {
     out
 }
 
+/// The form in text and in LaTeX, simplified once for both.
 fn both(e: &Expr, axis: Option<Axis>, domains: &Domains) -> Json {
+    let (form, axis) = (readable(e, domains), axis.unwrap_or(Axis::Z));
     json!({
-        "text": shown(e, axis, Notation::Text, domains),
-        "latex": shown(e, axis, Notation::Latex, domains),
+        "text": print::render(&form, Notation::Text, axis),
+        "latex": print::render(&form, Notation::Latex, axis),
     })
 }
 
 fn diagnosis_json(d: &Diagnosis, axis: Option<Axis>, domains: &Domains) -> Json {
-    let list =
-        |terms: &[Expr]| -> Vec<Json> { terms.iter().map(|t| both(t, axis, domains)).collect() };
+    let list = |terms: &[Expr]| -> Vec<Json> {
+        listed(terms)
+            .0
+            .iter()
+            .map(|t| both(t, axis, domains))
+            .collect()
+    };
     json!({
         "reading": d.reading.as_ref().map(|r| r.name),
         "explanation": d.reading.as_ref().map(|r| r.explanation.clone()),
-        "wrong": d.wrong.iter().map(|w| json!({
+        "wrong": listed(&d.wrong).0.iter().map(|w| json!({
             "claimed": both(&w.claimed, axis, domains),
             "correct": both(&w.correct, axis, domains),
         })).collect::<Vec<_>>(),
         "missing": list(&d.missing),
         "extra": list(&d.extra),
+        // The terms beyond those listed, counted.
+        "wrong_more": listed(&d.wrong).1,
+        "missing_more": listed(&d.missing).1,
+        "extra_more": listed(&d.extra).1,
     })
 }
 

@@ -16,6 +16,7 @@
 use super::context::Context;
 use super::diagnosis::{diagnose, Diagnosis};
 use super::dimension::{odd_term, OddTerm};
+use super::expansion_size::estimated_terms;
 use super::second_opinion::{second_opinion, Opinion};
 use crate::algebra::vector::{components, has_unit_vectors};
 use crate::algebra::{AlgebraError, Axis, Domains, Expr, Vector};
@@ -256,8 +257,9 @@ fn component(
         ),
         (_, Opinion::Unsure(why)) => (Verdict::Undecided, Some(why.clone())),
     };
+    // A difference too large to multiply out is too large to read term by term.
     let diagnosis = match verdict {
-        Verdict::Differs => diagnose(&claimed, &correct).ok(),
+        Verdict::Differs if expanded.is_ok() => diagnose(&claimed, &correct).ok(),
         _ => None,
     };
     Component {
@@ -270,12 +272,25 @@ fn component(
     }
 }
 
+/// The most terms (estimated before the work, [`estimated_terms`]) the exact route
+/// multiplies a numerator out to: beyond, it would take seconds, and the second opinion
+/// decides alone (`differs` on a clear difference, else `undecided`).
+const EXPANDED_TERMS: usize = 20_000;
+
 /// Whether `difference`, over one denominator, has a numerator that multiplies out to zero.
 fn expanded_numerator(difference: &Expr) -> Result<bool, AlgebraError> {
     if difference.is_zero() {
         return Ok(true);
     }
     let (numerator, _) = difference.together_parts()?;
+    let size = estimated_terms(&numerator);
+    if size > EXPANDED_TERMS as f64 {
+        return Err(AlgebraError::TooLarge {
+            what: "multiplying out the difference of the sides".into(),
+            size: format!("about {size:.1e}"),
+            limit: EXPANDED_TERMS,
+        });
+    }
     Ok(numerator.expand()?.is_zero())
 }
 

@@ -7,10 +7,12 @@
 //! A reproducer is one file, its headers first, each `# key: value`:
 //! - `# run: ARGS` the command and its flags; the input is added last, after `--`: the
 //!   expression (the first line of a `.expr` file that is not a header) or the `.scene` file's
-//!   path. In ARGS, `MISSING` is a path in a directory that does not exist and `DANGLING` a
+//!   path; a `.claim` file's claim (its first line that is not a header) is added as the value
+//!   of the `--claim` that ends ARGS, and its errors are at `claim 1`. In ARGS, `MISSING` is a path in a directory that does not exist and `DANGLING` a
 //!   symbolic link to a file that does not exist.
 //! - `# at: LINE` the line the error must point at.
-//! - `# ok: TEXT` exit code 0 is a correct result when standard output holds TEXT.
+//! - `# ok: TEXT` exit code 0 is a correct result when standard output holds TEXT (for a
+//!   `.claim`, also 1 and 3: a verdict `differs` or `undecided`).
 //! - `# refuse: TEXT` an error about the command line, not the input: no location, but
 //!   standard error names TEXT (placeholders replaced) and nothing is written to standard
 //!   output (no CSV header, no samples).
@@ -38,8 +40,10 @@ struct Reproducer {
     text: String,
     /// The name diagnostics give the input: `input` or the scene's path.
     name: String,
-    /// The last argument: the expression, or the scene's path.
+    /// The last argument: the expression, the scene's path, or the claim.
     input: String,
+    /// A claim for `check`: the value of `--claim`, not after `--`.
+    claim: bool,
 }
 
 fn header<'a>(text: &'a str, key: &str) -> Option<&'a str> {
@@ -62,6 +66,7 @@ fn read(path: &Path, scratch: &Path) -> Reproducer {
     };
     let run = header(&text, "run").unwrap_or_else(|| panic!("{}: no '# run:'", path.display()));
     let scene = path.extension().is_some_and(|e| e == "scene");
+    let claim = path.extension().is_some_and(|e| e == "claim");
     let (name, input, body) = if scene {
         let shown = path.display().to_string();
         (shown.clone(), shown, text.clone())
@@ -71,7 +76,8 @@ fn read(path: &Path, scratch: &Path) -> Reproducer {
             .find(|l| !l.starts_with("# "))
             .unwrap_or_default()
             .to_string();
-        ("input".to_string(), expression.clone(), expression)
+        let name = if claim { "claim 1" } else { "input" };
+        (name.to_string(), expression.clone(), expression)
     };
     Reproducer {
         path: path.to_path_buf(),
@@ -82,6 +88,7 @@ fn read(path: &Path, scratch: &Path) -> Reproducer {
         text: body,
         name,
         input,
+        claim,
     }
 }
 
@@ -91,7 +98,10 @@ fn corpus() -> Vec<PathBuf> {
     let mut paths: Vec<PathBuf> = std::fs::read_dir(&dir)
         .expect("tests/reproducers exists")
         .map(|e| e.expect("readable").path())
-        .filter(|p| p.extension().is_some_and(|e| e == "expr" || e == "scene"))
+        .filter(|p| {
+            p.extension()
+                .is_some_and(|e| e == "expr" || e == "scene" || e == "claim")
+        })
         .collect();
     paths.sort();
     paths
@@ -122,9 +132,12 @@ fn drain(mut stream: impl Read + Send + 'static) -> std::thread::JoinHandle<Stri
 /// Runs the binary on the reproducer; `Err` when it is still running at the deadline (then
 /// it is killed).
 fn run(r: &Reproducer) -> Result<Outcome, String> {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_kinetics"))
-        .args(&r.args)
-        .arg("--")
+    let mut command = Command::new(env!("CARGO_BIN_EXE_kinetics"));
+    command.args(&r.args);
+    if !r.claim {
+        command.arg("--");
+    }
+    let mut child = command
         .arg(&r.input)
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
@@ -216,8 +229,10 @@ fn problems(r: &Reproducer) -> Vec<String> {
         }
     }
     let answered = r.ok.as_ref().is_some_and(|ok| o.stdout.contains(ok));
+    // A claim's verdicts `differs` and `undecided` are answers too.
+    let verdict = code == 0 || (r.claim && (code == 1 || code == 3));
     match code {
-        0 if answered => return found,
+        _ if answered && verdict => return found,
         0 => {
             found.push("accepted with exit code 0: no error".to_string());
             return found;

@@ -67,8 +67,17 @@ fn listed<T>(terms: &[T]) -> (&[T], usize) {
     (&terms[..shown], terms.len() - shown)
 }
 
-/// The claim's report in text: the verdict, where the claim was written and the claim, then for each component that
-/// does not hold the claimed and the correct forms, the residual and the diagnosis.
+/// The components a report shows: those that do not hold.
+fn not_holding(report: &Report) -> impl Iterator<Item = &Component> {
+    report
+        .components
+        .iter()
+        .filter(|c| c.verdict != Verdict::Holds)
+}
+
+/// The claim's report in text: the verdict, where the claim was written and the claim, then
+/// for each component that does not hold the claimed and the correct forms, the residual and
+/// the diagnosis.
 pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
     let mut out = format!("{} ({label}): {}\n", report.verdict.word(), report.claim);
     if let Some(odd) = &report.odd_term {
@@ -76,11 +85,7 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
         return out;
     }
     let name = &report.correct_side;
-    for c in report
-        .components
-        .iter()
-        .filter(|c| c.verdict != Verdict::Holds)
-    {
+    for c in not_holding(report) {
         let of = match c.axis {
             None => name.clone(),
             Some(_) => format!("{name}, {} component", axis_name(c.axis)),
@@ -186,11 +191,7 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
         return out;
     }
     let name = side_latex(report);
-    for c in report
-        .components
-        .iter()
-        .filter(|c| c.verdict != Verdict::Holds)
-    {
+    for c in not_holding(report) {
         let of = match c.axis {
             None => name.clone(),
             Some(_) => format!(

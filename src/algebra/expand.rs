@@ -352,7 +352,7 @@ fn has_power_of_sum(t: &Expr) -> bool {
 
 /// The number of monomials of degree `n` in `t` variables, C(t + n - 1, n), as a float
 /// so that huge cases do not overflow.
-fn multinomial_terms(t: usize, n: u64) -> f64 {
+pub(super) fn multinomial_terms(t: usize, n: u64) -> f64 {
     let k = (t as u64 - 1).min(n);
     let top = n + t as u64 - 1;
     (0..k).fold(1.0, |acc, i| acc * (top - i) as f64 / (i + 1) as f64)

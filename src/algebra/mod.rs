@@ -23,6 +23,7 @@ mod error;
 mod eval;
 mod exact_angle;
 mod expand;
+mod expansion_size;
 mod expr;
 mod function;
 pub mod linear_solve;

@@ -104,12 +104,15 @@ impl Context {
         if principal {
             c.description.push_str(", principal axes");
         }
-        let h_g = c.derive_vector("H_G", principal)?;
+        let h_g = Context::derive_vector("H_G", principal)?;
         c.components("H", &h_g);
         c.derived("H_G", unit_vector_sum(&h_g));
-        c.derived("H_O", unit_vector_sum(&c.derive_vector("H_O", principal)?));
-        c.derived("T", c.derive_scalar("T", principal)?);
-        let euler = c.derive_vector("euler", principal)?;
+        c.derived(
+            "H_O",
+            unit_vector_sum(&Context::derive_vector("H_O", principal)?),
+        );
+        c.derived("T", Context::derive_scalar("T", principal)?);
+        let euler = Context::derive_vector("euler", principal)?;
         c.components("M", &euler);
         c.components("SumM", &euler);
         c.derived("SumM", unit_vector_sum(&euler));
@@ -120,7 +123,7 @@ impl Context {
             "Omega_z" => Some(Expr::symbol("w_z")),
             _ => None,
         };
-        let hdot = c.derive_vector("Hdot", principal)?.map(|e| {
+        let hdot = Context::derive_vector("Hdot", principal)?.map(|e| {
             e.subs(&body_fixed)
                 .expect("substituting symbols for symbols cannot fail")
         });
@@ -158,7 +161,7 @@ impl Context {
     /// dynamic reactions.
     pub fn fixed_axis() -> Result<Context, AlgebraError> {
         let mut c = Context::empty("rotation about the fixed axis z", general_dimensions());
-        let moments = c.derive_vector("fixed_axis", false)?;
+        let moments = Context::derive_vector("fixed_axis", false)?;
         c.components("M", &moments);
         c.components("SumM", &moments);
         c.derived("SumM", unit_vector_sum(&moments));
@@ -229,14 +232,14 @@ impl Context {
         }
     }
 
-    fn derive_vector(&self, name: &str, principal: bool) -> Result<Vector, AlgebraError> {
+    fn derive_vector(name: &str, principal: bool) -> Result<Vector, AlgebraError> {
         let d = derive_general(name, principal).expect("a catalogue name")?;
         Ok(Vector::from_iterator(
             d.result().iter().map(|r| r.rhs.clone()),
         ))
     }
 
-    fn derive_scalar(&self, name: &str, principal: bool) -> Result<Expr, AlgebraError> {
+    fn derive_scalar(name: &str, principal: bool) -> Result<Expr, AlgebraError> {
         let d = derive_general(name, principal).expect("a catalogue name")?;
         Ok(d.result()[0].rhs.clone())
     }

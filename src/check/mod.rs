@@ -4,7 +4,6 @@
 pub mod context;
 pub mod diagnosis;
 pub mod dimension;
-pub mod expansion_size;
 pub mod report;
 pub mod second_opinion;
 pub mod verdict;

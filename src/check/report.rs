@@ -11,7 +11,6 @@
 
 use super::diagnosis::Diagnosis;
 use super::dimension::OddTerm;
-use super::expansion_size::estimated_terms;
 use super::verdict::{Component, Report, Verdict};
 use crate::algebra::{Axis, Domains, Expr};
 use crate::mechanics::derivation::presented;
@@ -50,7 +49,7 @@ const LISTED_TERMS: usize = 12;
 /// The form a report shows: the textbook's, or the canonical one past [`PRESENTED_SIZE`]
 /// or [`PRESENTED_TERMS`].
 fn readable(e: &Expr, domains: &Domains) -> Expr {
-    if e.has_at_most_size(PRESENTED_SIZE) && estimated_terms(e) <= PRESENTED_TERMS {
+    if e.has_at_most_size(PRESENTED_SIZE) && e.estimated_expanded_terms() <= PRESENTED_TERMS {
         presented(e, domains)
     } else {
         e.clone()

@@ -16,7 +16,6 @@
 use super::context::Context;
 use super::diagnosis::{diagnose, Diagnosis};
 use super::dimension::{odd_term, OddTerm};
-use super::expansion_size::estimated_terms;
 use super::second_opinion::{second_opinion, Opinion};
 use crate::algebra::vector::{components, has_unit_vectors};
 use crate::algebra::{AlgebraError, Axis, Domains, Expr, Vector};
@@ -217,17 +216,17 @@ fn component(
     let expanded = expanded_numerator(&difference);
     let opinion = second_opinion(&correct, &claimed, domains, seed);
     let exact = match (&expanded, &opinion) {
-        (Ok(true), _) => Exact::Zero,
+        (Ok(numerator), _) if numerator.is_zero() => Exact::Zero,
         // Multiplying out does not see trigonometric or radical identities: before saying
         // `differs` against an evaluation that finds no difference, reduce them.
-        (Ok(false), Opinion::Zero) | (Ok(false), Opinion::Unsure(_)) => {
-            match reduced_is_zero(&difference, domains) {
+        (Ok(numerator), Opinion::Zero | Opinion::Unsure(_)) => {
+            match reduced_is_zero(numerator, &difference, domains) {
                 Ok(true) => Exact::Zero,
                 Ok(false) => Exact::Nonzero,
                 Err(e) => Exact::Refused(e),
             }
         }
-        (Ok(false), Opinion::Nonzero { .. }) => Exact::Nonzero,
+        (Ok(_), Opinion::Nonzero { .. }) => Exact::Nonzero,
         (Err(e), _) => Exact::Refused(e.clone()),
     };
     let (verdict, undecided_because) = match (&exact, &opinion) {
@@ -272,18 +271,19 @@ fn component(
     }
 }
 
-/// The most terms (estimated before the work, [`estimated_terms`]) the exact route
+/// The most terms (estimated before the work, [`Expr::estimated_expanded_terms`]) the exact route
 /// multiplies a numerator out to: beyond, it would take seconds, and the second opinion
 /// decides alone (`differs` on a clear difference, else `undecided`).
 const EXPANDED_TERMS: usize = 20_000;
 
-/// Whether `difference`, over one denominator, has a numerator that multiplies out to zero.
-fn expanded_numerator(difference: &Expr) -> Result<bool, AlgebraError> {
+/// The numerator of `difference` over one denominator, multiplied out: zero exactly when the
+/// sides are equal as rational functions.
+fn expanded_numerator(difference: &Expr) -> Result<Expr, AlgebraError> {
     if difference.is_zero() {
-        return Ok(true);
+        return Ok(Expr::zero());
     }
     let (numerator, _) = difference.together_parts()?;
-    let size = estimated_terms(&numerator);
+    let size = numerator.estimated_expanded_terms();
     if size > EXPANDED_TERMS as f64 {
         return Err(AlgebraError::TooLarge {
             what: "multiplying out the difference of the sides".into(),
@@ -291,14 +291,18 @@ fn expanded_numerator(difference: &Expr) -> Result<bool, AlgebraError> {
             limit: EXPANDED_TERMS,
         });
     }
-    Ok(numerator.expand()?.is_zero())
+    numerator.expand()
 }
 
 /// Whether `difference` is zero once `sin² + cos² = 1`, the double angles, roots and
 /// lowest terms are applied (the shortest form [`Expr::simplify`] reaches).
-fn reduced_is_zero(difference: &Expr, domains: &Domains) -> Result<bool, AlgebraError> {
-    let (numerator, _) = difference.together_parts()?;
-    if numerator.expand()?.simplify_trig()?.is_zero() {
+/// `expanded_numerator` is [`expanded_numerator`] of `difference`, already at hand.
+fn reduced_is_zero(
+    expanded_numerator: &Expr,
+    difference: &Expr,
+    domains: &Domains,
+) -> Result<bool, AlgebraError> {
+    if expanded_numerator.simplify_trig()?.is_zero() {
         return Ok(true);
     }
     Ok(difference.simplify(domains)?.is_zero())

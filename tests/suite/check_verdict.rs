@@ -27,6 +27,14 @@ fn assert_same(a: &Expr, b: &Expr, what: &str) {
     assert!(difference.is_zero(), "{what}: {a} is not {b}");
 }
 
+/// The context of the shipped scene `examples/scenes/<name>.scene`.
+fn scene_context(name: &str) -> Context {
+    let path = crate::common::binary::scene(name);
+    let text = std::fs::read_to_string(&path).expect("the example exists");
+    let scene = parse_scene(&path, &text).unwrap_or_else(|d| panic!("{}", d.render()));
+    Context::scene(&scene)
+}
+
 fn verdict(context: &Context, claim: &str) -> Verdict {
     check(context, "test", claim)
         .unwrap_or_else(|d| panic!("{}", d.render()))
@@ -130,13 +138,7 @@ fn what_only_evaluation_sees_is_undecided_never_differs() {
 
 #[test]
 fn a_scene_claim_uses_its_givens_unknowns_and_quantities() {
-    let path = format!(
-        "{}/examples/scenes/sp18_2_rolling_disk.scene",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).expect("the example exists");
-    let scene = parse_scene(&path, &text).unwrap_or_else(|d| panic!("{}", d.render()));
-    let c = Context::scene(&scene);
+    let c = scene_context("sp18_2_rolling_disk");
     // Sample Problem 18.2 by hand: ω₂ = r ω₁/L from v_C = 0, and
     // T = ½ (½ m r² ω₁² + m (L² + ¼ r²) (r ω₁/L)²) + ½ m (r ω₁)² = m r² (6 L² + r²) ω₁²/(8 L²).
     assert_eq!(verdict(&c, "w2 = r w1/L"), Verdict::Holds);
@@ -167,13 +169,7 @@ fn a_scene_claim_uses_its_givens_unknowns_and_quantities() {
 
 #[test]
 fn a_claim_written_with_the_givens_values_is_decided_at_them() {
-    let path = format!(
-        "{}/examples/scenes/sp18_3_rotating_rod.scene",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).expect("the example exists");
-    let scene = parse_scene(&path, &text).unwrap_or_else(|d| panic!("{}", d.render()));
-    let c = Context::scene(&scene);
+    let c = scene_context("sp18_3_rotating_rod");
     // beta = 60 deg: cos β = ½; ā = −½ L cos β ω² i = −¼ L ω² i; A_y = m g = 20 × 9.81 N.
     assert_eq!(verdict(&c, "cos(beta) = 1/2"), Verdict::Holds);
     assert_eq!(verdict(&c, "abar = -1/4 L w^2 i"), Verdict::Holds);

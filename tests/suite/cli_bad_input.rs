@@ -2,54 +2,15 @@
 //! exit, and never a panic, a stack overflow or a hang. (A generous time-out turns a hang
 //! into a failure; no test asserts on how fast the program is.)
 
-use std::io::Write;
-use std::process::{Command, Stdio};
-use std::time::Duration;
+use crate::common::binary::{kinetics_with_input, Run};
 
-struct Outcome {
-    code: Option<i32>,
-    stdout: String,
-    stderr: String,
+/// `kinetics` with `args` and, when given, bytes on standard input.
+fn kinetics(args: &[&str], stdin: Option<Vec<u8>>) -> Run {
+    kinetics_with_input(args, stdin.unwrap_or_default())
 }
 
-fn kinetics(args: &[&str], stdin: Option<Vec<u8>>) -> Outcome {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_kinetics"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary starts");
-    let mut pipe = child.stdin.take().expect("stdin is piped");
-    let writer = std::thread::spawn(move || {
-        if let Some(bytes) = stdin {
-            // The program may stop reading at its size limit; a broken pipe is expected then.
-            let _ = pipe.write_all(&bytes);
-        }
-    });
-    // Collect the output on another thread so that a full pipe never blocks the child.
-    let pid = child.id();
-    let (done, finished) = std::sync::mpsc::channel();
-    std::thread::spawn(move || {
-        let _ = done.send(child.wait_with_output());
-    });
-    let out = match finished.recv_timeout(Duration::from_secs(30)) {
-        Ok(out) => out.expect("output is readable"),
-        Err(_) => {
-            let _ = Command::new("kill").args(["-9", &pid.to_string()]).status();
-            panic!("kinetics {args:?} did not finish: it hangs");
-        }
-    };
-    let _ = writer.join();
-    Outcome {
-        code: out.status.code(),
-        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
-        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
-    }
-}
-
-fn assert_clean_error(o: &Outcome, needle: &str) {
-    assert_eq!(o.code, Some(1), "exit code; stderr: {}", o.stderr);
+fn assert_clean_error(o: &Run, needle: &str) {
+    assert_eq!(o.code, 1, "exit code; stderr: {}", o.stderr);
     assert!(o.stdout.is_empty(), "nothing on stdout: {}", o.stdout);
     let first = o.stderr.lines().next().unwrap_or_default();
     assert!(
@@ -104,7 +65,7 @@ fn division_by_zero_and_nan() {
 fn long_sums_and_prefix_runs_stay_bounded() {
     let many: String = (0..50_000).map(|i| format!("x{i} + ")).collect::<String>() + "y";
     let o = kinetics(&["simplify", "-"], Some(many.into_bytes()));
-    assert_eq!(o.code, Some(0), "a long flat sum is fine: {}", o.stderr);
+    assert_eq!(o.code, 0, "a long flat sum is fine: {}", o.stderr);
     let o = kinetics(
         &["simplify", "-"],
         Some(format!("{}x", "-".repeat(10_000)).into_bytes()),
@@ -120,7 +81,7 @@ fn long_sums_and_prefix_runs_stay_bounded() {
 #[test]
 fn the_acceptance_example_prints_textbook_latex() {
     let o = kinetics(&["latex", "I_x*w_x - I_xy*w_y - I_xz*w_z"], None);
-    assert_eq!(o.code, Some(0));
+    assert_eq!(o.code, 0);
     assert_eq!(
         o.stdout.trim(),
         r"I_x \omega_x - I_{xy} \omega_y - I_{xz} \omega_z"

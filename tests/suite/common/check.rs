@@ -1,11 +1,9 @@
 //! `kinetics check` as a whole process, for the tests of the checker: its contexts as
 //! arguments, claims files in the temporary directory, and the verdicts of its JSON output.
 
+pub use super::binary::{kinetics_with_input, Run};
 use serde_json::Value;
-use std::io::Write;
 use std::path::PathBuf;
-use std::process::{Command, Stdio};
-use std::time::Duration;
 
 /// The arguments that select a context: `general` (none), `principal`, `fixed-axis`, or a
 /// scene file's path relative to the crate's root.
@@ -42,53 +40,6 @@ impl ClaimsFile {
 impl Drop for ClaimsFile {
     fn drop(&mut self) {
         let _ = std::fs::remove_file(&self.path);
-    }
-}
-
-/// How a run of `kinetics` ended: its exit code (-1 when killed by a signal), standard
-/// output and standard error.
-pub struct Run {
-    pub code: i32,
-    pub stdout: String,
-    pub stderr: String,
-}
-
-/// A run longer than this is a hang (the slowest, 300 claims, takes well under a second).
-const TIME_LIMIT: Duration = Duration::from_secs(60);
-
-/// Runs `kinetics` with `args`, `stdin` written to its standard input; a panic when it does
-/// not finish within [`TIME_LIMIT`].
-pub fn kinetics_with_input(args: &[&str], stdin: &str) -> Run {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_kinetics"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary starts");
-    let mut pipe = child.stdin.take().expect("stdin is piped");
-    let input = stdin.to_owned();
-    // Written from another thread so that a full output pipe never blocks the child.
-    let writer = std::thread::spawn(move || {
-        let _ = pipe.write_all(input.as_bytes());
-    });
-    let pid = child.id();
-    let (done, finished) = std::sync::mpsc::channel();
-    std::thread::spawn(move || {
-        let _ = done.send(child.wait_with_output());
-    });
-    let out = match finished.recv_timeout(TIME_LIMIT) {
-        Ok(out) => out.expect("output is readable"),
-        Err(_) => {
-            let _ = Command::new("kill").args(["-9", &pid.to_string()]).status();
-            panic!("kinetics {args:?} did not finish: it hangs");
-        }
-    };
-    let _ = writer.join();
-    Run {
-        code: out.status.code().unwrap_or(-1),
-        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
-        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
     }
 }
 

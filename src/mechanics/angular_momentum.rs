@@ -42,6 +42,7 @@ pub fn angular_momentum(
         name: format!("H_{point}"),
         title: format!("angular momentum about {point}"),
         steps: vec![Step {
+            table: None,
             title: format!(
                 "angular momentum about {point}, {{H_{point}}} = [I]{{ω}} (moments and products of inertia about {point}; products positive, entered with a minus sign)"
             ),
@@ -81,10 +82,12 @@ pub fn angular_momentum_about_point(
         title: "angular momentum about O".into(),
         steps: vec![
             Step {
+                table: None,
                 title: "moment of the linear momentum, r̄ × m v̄".into(),
                 relations: Relation::components("H", &moment_of_momentum),
             },
             Step {
+                table: None,
                 title: "angular momentum about O, H_O = H_G + r̄ × m v̄".into(),
                 relations: Relation::components("H", &h_o),
             },

@@ -39,6 +39,7 @@ pub fn dynamic_balancing(
         name: "balancing".into(),
         title: "dynamic balancing with two corrective masses".into(),
         steps: vec![Step {
+            table: None,
             title: "static balance (mass centre on the axis) and I_xz = I_yz = 0 after correction"
                 .into(),
             relations: vec![

@@ -77,6 +77,7 @@ pub fn composite_body(parts: &[MassPart]) -> Result<(MassProperties, Derivation)
         name: "body".into(),
         title: "mass, mass centre and centroidal inertia".into(),
         steps: vec![Step {
+            table: None,
             title: "mass, mass centre and centroidal inertia of the body (products of inertia positive, ∫xy dm)".into(),
             relations,
         }],

@@ -58,11 +58,33 @@ impl Relation {
     }
 }
 
-/// A step of a derivation: what was done, in words, and the relations it produced.
+/// A step of a derivation: what was done, in words, and the relations it produced; a
+/// composite body's step also lays out its parts' contributions as a table before the sum.
+///
+/// The title is words with mathematics between `$…$` in the LaTeX subset that
+/// `print::markup` reads, so every format typesets it:
+/// `r"angular momentum about O, $\mathbf{H}_O = [I_O]\{\boldsymbol{\omega}\}$"`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Step {
     pub title: String,
+    pub table: Option<Table>,
     pub relations: Vec<Relation>,
+}
+
+/// A table of a composite body's parts as a student lays it out: a row per part (its label,
+/// e.g. `1`, `rod AB`), a column per quantity (headers such as `m`, `xbar`, `I_x`, `I_xy`),
+/// each cell that part's contribution; the step's relations then give the sums.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    pub columns: Vec<Expr>,
+    pub rows: Vec<TableRow>,
+}
+
+/// One part's row of a [`Table`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct TableRow {
+    pub label: String,
+    pub cells: Vec<Expr>,
 }
 
 /// An expression as it is shown: [`Expr::simplify`], or the expression itself when it is
@@ -72,10 +94,31 @@ pub fn presented(e: &Expr, domains: &Domains) -> Expr {
 }
 
 impl Step {
-    /// The step as it is shown: every relation [`Relation::simplified`].
+    /// A step without a table.
+    pub fn new(title: impl Into<String>, relations: Vec<Relation>) -> Step {
+        Step {
+            title: title.into(),
+            table: None,
+            relations,
+        }
+    }
+
+    /// The step as it is shown: every relation [`Relation::simplified`], every table cell
+    /// in its shortest form.
     pub fn simplified(&self, domains: &Domains) -> Step {
         Step {
             title: self.title.clone(),
+            table: self.table.as_ref().map(|t| Table {
+                columns: t.columns.clone(),
+                rows: t
+                    .rows
+                    .iter()
+                    .map(|row| TableRow {
+                        label: row.label.clone(),
+                        cells: row.cells.iter().map(|c| presented(c, domains)).collect(),
+                    })
+                    .collect(),
+            }),
             relations: self
                 .relations
                 .iter()

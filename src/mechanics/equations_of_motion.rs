@@ -98,6 +98,7 @@ pub fn equations_of_motion(
         name: "motion".into(),
         title: "equations of motion".into(),
         steps: vec![Step {
+            table: None,
             title: format!(
                 "equations of motion: ΣF = m ā (x, y, z), then ΣM_{point} = Ḣ_G + r̄ × m ā (x, y, z)"
             ),

@@ -55,6 +55,7 @@ pub fn euler_equations(inertia: &InertiaTensor) -> Result<Derivation, AlgebraErr
     ))?;
     let mut steps = rate.steps;
     steps.push(Step {
+        table: None,
         title: "Euler's equations: ΣM_G = Ḣ_G with Ω = ω (axes fixed in the body)".into(),
         relations: Relation::components("SumM", &moments),
     });

@@ -46,11 +46,13 @@ pub fn fixed_axis_rotation(inertia: &InertiaTensor) -> Result<Derivation, Algebr
     let rate = rate_of_angular_momentum(inertia, &omega, &alpha, &omega)?;
     let moments = Vector::from_iterator(rate.result().iter().map(|r| r.rhs.clone()));
     let mut steps = vec![Step {
+        table: None,
         title: "z along the fixed axis: ω = ω k, Ω = ω, α = ω̇ (ω_x = ω_y = 0)".into(),
         relations: Relation::components("H", &(inertia.matrix() * &omega)),
     }];
     steps.extend(rate.steps);
     steps.push(Step {
+        table: None,
         title: "ΣM_O = Ḣ_O".into(),
         relations: Relation::components("SumM", &moments),
     });
@@ -103,6 +105,7 @@ pub fn bearing_reactions(
         title: "dynamic reactions of the bearings".into(),
         steps: vec![
             Step {
+                table: None,
                 title: "moments about A of the reaction at B: ΣM_x = -l B_y, ΣM_y = l B_x".into(),
                 relations: vec![
                     Relation::new(-(l * s("B_y")), moments[0].clone(), Axis::X),
@@ -110,6 +113,7 @@ pub fn bearing_reactions(
                 ],
             },
             Step {
+                table: None,
                 title: "ΣF = m ā with ā = α k × r̄ - ω² r̄".into(),
                 relations: vec![
                     Relation::new(s("A_x") + s("B_x"), mass * &a_bar_x, Axis::X),
@@ -117,6 +121,7 @@ pub fn bearing_reactions(
                 ],
             },
             Step {
+                table: None,
                 title: "the reactions".into(),
                 relations: vec![
                     Relation::new(s("B_x"), b_x, Axis::X),

@@ -58,6 +58,7 @@ pub fn impulse_momentum(p: &ImpulseMomentum) -> Result<Derivation, AlgebraError>
         name: "impulse".into(),
         title: "impulse and momentum".into(),
         steps: vec![Step {
+            table: None,
             title: "impulse and momentum: m v̄₁ + Σ F Δt = m v̄₂ (x, y, z), then H₁ + Σ M Δt = H₂ (x, y, z)".into(),
             relations: [
                 Relation::nonzero_components(&linear_before, &linear_after),

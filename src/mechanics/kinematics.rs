@@ -30,6 +30,7 @@ pub fn velocity_of_mass_centre(
         name: "vbar".into(),
         title: "velocity of the mass centre".into(),
         steps: vec![Step {
+            table: None,
             title: "velocity of the mass centre, v̄ = ω × r̄ (O fixed)".into(),
             relations: Relation::components("vbar", &vbar),
         }],
@@ -51,6 +52,7 @@ pub fn acceleration_of_mass_centre(
         name: "abar".into(),
         title: "acceleration of the mass centre".into(),
         steps: vec![Step {
+            table: None,
             title:
                 "acceleration of the mass centre, ā = α × r̄ + ω × (ω × r̄), α = (ω̇)_frame + Ω × ω"
                     .into(),

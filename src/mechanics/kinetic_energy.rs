@@ -44,6 +44,7 @@ pub fn kinetic_energy(
             let translational = (&half * m * dot(v, v)).expand()?;
             vec![
                 Step {
+                    table: None,
                     title: "kinetic energy, rotational part ½{ω}ᵀ[I]{ω}".into(),
                     relations: vec![Relation::new(
                         Expr::symbol("T_rot"),
@@ -52,6 +53,7 @@ pub fn kinetic_energy(
                     )],
                 },
                 Step {
+                    table: None,
                     title: "kinetic energy, T = ½ m v̄² + ½{ω}ᵀ[I]{ω}: add the translational part"
                         .into(),
                     relations: vec![Relation::new(t, &translational + &rotational, Axis::X)],
@@ -59,6 +61,7 @@ pub fn kinetic_energy(
             ]
         }
         None => vec![Step {
+            table: None,
             title: "kinetic energy about the fixed point O, T = ½{ω}ᵀ[I_O]{ω}".into(),
             relations: vec![Relation::new(t, rotational, Axis::X)],
         }],

@@ -22,5 +22,5 @@ pub mod rotating_frame;
 pub mod shapes;
 pub mod validation;
 
-pub use derivation::{Derivation, Relation, Step};
+pub use derivation::{Derivation, Relation, Step, Table, TableRow};
 pub use inertia::InertiaTensor;

@@ -54,14 +54,17 @@ pub fn rate_of_angular_momentum(
         title: "rate of change of angular momentum".into(),
         steps: vec![
             Step {
+                table: None,
                 title: "rate relative to the rotating frame, (Ḣ)_Gxyz = [I]{ω̇}".into(),
                 relations: Relation::components("Hdot", &expand_each(&relative)?),
             },
             Step {
+                table: None,
                 title: "transport term Ω × H".into(),
                 relations: Relation::components("Hdot", &expand_each(&transport)?),
             },
             Step {
+                table: None,
                 title: "Ḣ = (Ḣ)_Gxyz + Ω × H".into(),
                 relations: Relation::components("Hdot", &total),
             },

@@ -311,6 +311,7 @@ impl<'a> Analyser<'a> {
             (Some(given), _) => {
                 let v = self.known_vector(given, at)?;
                 self.plan.push(Step {
+                    table: None,
                     title: "velocity of the mass centre (given)".into(),
                     relations: Relation::components("vbar", &v),
                 });
@@ -340,6 +341,7 @@ impl<'a> Analyser<'a> {
             self.kinematics(at)?;
             let a = self.known_vector(given, at)?;
             self.plan.push(Step {
+                table: None,
                 title: "acceleration of the mass centre (given)".into(),
                 relations: Relation::components("abar", &a),
             });
@@ -445,6 +447,7 @@ impl<'a> Analyser<'a> {
                 free,
             } = solve_linear(&equations, &wanted).map_err(|e| self.solve_error(at, e))?;
             self.plan.push(Step {
+                table: None,
                 title: "solve the equations for the unknowns".into(),
                 relations: solution
                     .iter()

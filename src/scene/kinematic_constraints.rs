@@ -131,6 +131,7 @@ pub fn solve_constraints(
                 .map(|(u, v)| Relation::new(Expr::sym(*u), v.clone(), Axis::X)),
         );
         steps.push(Step {
+            table: None,
             title: "kinematic constraints, solved for the unknown rates".into(),
             relations,
         });
@@ -151,6 +152,7 @@ pub fn solve_constraints(
         relations.extend(Relation::components("Omega", &frame_rate));
     }
     steps.push(Step {
+        table: None,
         title: if scene.frame_rate.is_some() {
             "angular velocity ω of the body and Ω of the frame (Ω ≠ ω: [I] is constant in this frame)".into()
         } else {

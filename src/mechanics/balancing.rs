@@ -40,7 +40,7 @@ pub fn dynamic_balancing(
         title: "dynamic balancing with two corrective masses".into(),
         steps: vec![Step {
             table: None,
-            title: "static balance (mass centre on the axis) and I_xz = I_yz = 0 after correction"
+            title: "static balance (mass centre on the axis) and $I_{xz} = I_{yz} = 0$ after correction"
                 .into(),
             relations: vec![
                 Relation::new(s("m_1") * s("x_1"), x1, Axis::X),

@@ -78,7 +78,7 @@ pub fn composite_body(parts: &[MassPart]) -> Result<(MassProperties, Derivation)
         title: "mass, mass centre and centroidal inertia".into(),
         steps: vec![Step {
             table: None,
-            title: "mass, mass centre and centroidal inertia of the body (products of inertia positive, ∫xy dm)".into(),
+            title: r"mass, mass centre and centroidal inertia of the body (products of inertia positive, $\int xy\,dm$)".into(),
             relations,
         }],
     };

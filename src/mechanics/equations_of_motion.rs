@@ -100,7 +100,7 @@ pub fn equations_of_motion(
         steps: vec![Step {
             table: None,
             title: format!(
-                "equations of motion: ΣF = m ā (x, y, z), then ΣM_{point} = Ḣ_G + r̄ × m ā (x, y, z)"
+                r"equations of motion: $\Sigma\mathbf{{F}} = m\bar{{\mathbf{{a}}}}$ ($x, y, z$), then $\Sigma\mathbf{{M}}_{point} = \dot{{\mathbf{{H}}}}_G + \bar{{\mathbf{{r}}}} \times m\bar{{\mathbf{{a}}}}$ ($x, y, z$)"
             ),
             relations: [
                 Relation::nonzero_components(&forces, &ma),

@@ -47,13 +47,13 @@ pub fn fixed_axis_rotation(inertia: &InertiaTensor) -> Result<Derivation, Algebr
     let moments = Vector::from_iterator(rate.result().iter().map(|r| r.rhs.clone()));
     let mut steps = vec![Step {
         table: None,
-        title: "z along the fixed axis: ω = ω k, Ω = ω, α = ω̇ (ω_x = ω_y = 0)".into(),
+        title: r"$z$ along the fixed axis: $\boldsymbol{\omega} = \omega\mathbf{k}$, $\boldsymbol{\Omega} = \boldsymbol{\omega}$, $\alpha = \dot{\omega}$ ($\omega_x = \omega_y = 0$)".into(),
         relations: Relation::components("H", &(inertia.matrix() * &omega)),
     }];
     steps.extend(rate.steps);
     steps.push(Step {
         table: None,
-        title: "ΣM_O = Ḣ_O".into(),
+        title: r"$\Sigma\mathbf{M}_O = \dot{\mathbf{H}}_O$".into(),
         relations: Relation::components("SumM", &moments),
     });
     Ok(Derivation {
@@ -106,7 +106,7 @@ pub fn bearing_reactions(
         steps: vec![
             Step {
                 table: None,
-                title: "moments about A of the reaction at B: ΣM_x = -l B_y, ΣM_y = l B_x".into(),
+                title: r"moments about $A$ of the reaction at $B$: $\Sigma M_x = -l B_y$, $\Sigma M_y = l B_x$".into(),
                 relations: vec![
                     Relation::new(-(l * s("B_y")), moments[0].clone(), Axis::X),
                     Relation::new(l * s("B_x"), moments[1].clone(), Axis::Y),
@@ -114,7 +114,7 @@ pub fn bearing_reactions(
             },
             Step {
                 table: None,
-                title: "ΣF = m ā with ā = α k × r̄ - ω² r̄".into(),
+                title: r"$\Sigma\mathbf{F} = m\bar{\mathbf{a}}$ with $\bar{\mathbf{a}} = \alpha\mathbf{k} \times \bar{\mathbf{r}} - \omega^2\bar{\mathbf{r}}$".into(),
                 relations: vec![
                     Relation::new(s("A_x") + s("B_x"), mass * &a_bar_x, Axis::X),
                     Relation::new(s("A_y") + s("B_y"), mass * &a_bar_y, Axis::Y),

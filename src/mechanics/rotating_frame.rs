@@ -55,17 +55,17 @@ pub fn rate_of_angular_momentum(
         steps: vec![
             Step {
                 table: None,
-                title: "rate relative to the rotating frame, (Ḣ)_Gxyz = [I]{ω̇}".into(),
+                title: r"rate relative to the rotating frame, $(\dot{\mathbf{H}})_{Gxyz} = [I]\{\dot{\boldsymbol{\omega}}\}$".into(),
                 relations: Relation::components("Hdot", &expand_each(&relative)?),
             },
             Step {
                 table: None,
-                title: "transport term Ω × H".into(),
+                title: r"transport term $\boldsymbol{\Omega} \times \mathbf{H}$".into(),
                 relations: Relation::components("Hdot", &expand_each(&transport)?),
             },
             Step {
                 table: None,
-                title: "Ḣ = (Ḣ)_Gxyz + Ω × H".into(),
+                title: r"$\dot{\mathbf{H}} = (\dot{\mathbf{H}})_{Gxyz} + \boldsymbol{\Omega} \times \mathbf{H}$".into(),
                 relations: Relation::components("Hdot", &total),
             },
         ],

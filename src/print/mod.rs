@@ -14,6 +14,7 @@
 
 pub mod latex;
 pub mod layout;
+pub mod markup;
 pub mod text;
 
 use crate::algebra::{Axis, Expr, Symbol, Vector};

@@ -7,7 +7,8 @@
 //! { "title": string|null,
 //!   "plan": [string],                               the steps done, in order
 //!   "givens": [{"name", "written": string|null, "si_value": number|null, "unit"}],
-//!   "steps": [{"title", "relations": [{"text", "latex"}]}],
+//!   "steps": [{"title", "title_latex", "relations": [{"text", "latex"}]}],
+//!                                                 title: plain text; title_latex: LaTeX text mode
 //!   "results": [{"name", "text", "latex",
 //!                "value": number | [x, y, z] | null,  when every given has a value
 //!                "unit": string|null}] }
@@ -16,7 +17,7 @@
 use super::numbers::{format_value, result_unit, scene_dimensions, unit, value};
 use crate::algebra::{Expr, Vector};
 use crate::mechanics::derivation::Relation;
-use crate::print::{self, Notation};
+use crate::print::{self, markup, Notation};
 use crate::scene::model::{Quantity, Request};
 use crate::scene::units::Dimensions;
 use crate::scene::{Analysis, Scene, Value};
@@ -133,63 +134,6 @@ fn latex_unit(u: &str) -> String {
     u.replace('·', r"\cdot ").replace('²', "^2")
 }
 
-/// Unicode in step titles, as LaTeX text that pdflatex reads with amsmath alone.
-fn latex_text(s: &str) -> String {
-    let mut out = String::new();
-    let chars: Vec<char> = s.chars().collect();
-    let mut i = 0;
-    while i < chars.len() {
-        let c = chars[i];
-        let accent = match chars.get(i + 1) {
-            Some('\u{0304}') => Some(r"\bar"),
-            Some('\u{0307}') => Some(r"\dot"),
-            _ => None,
-        };
-        let symbol = |c: char| -> Option<String> {
-            Some(
-                match c {
-                    'ω' => r"\omega",
-                    'Ω' => r"\Omega",
-                    'α' => r"\alpha",
-                    'Σ' => r"\Sigma",
-                    'Δ' => r"\Delta",
-                    '×' => r"\times",
-                    '≠' => r"\neq",
-                    '∫' => r"\int",
-                    '½' => r"\frac{1}{2}",
-                    'ā' => r"\bar{a}",
-                    'Ḣ' => r"\dot{H}",
-                    'ᵀ' => "^T",
-                    '²' => "^2",
-                    '₁' => "_1",
-                    '₂' => "_2",
-                    _ => return None,
-                }
-                .to_string(),
-            )
-        };
-        if let Some(acc) = accent {
-            let base = symbol(c).unwrap_or_else(|| c.to_string());
-            out.push_str(&format!("${acc}{{{base}}}$"));
-            i += 2;
-            continue;
-        }
-        match (symbol(c), c) {
-            (Some(sym), _) => out.push_str(&format!("${sym}$")),
-            (None, '_' | '%' | '&' | '#' | '{' | '}') => {
-                out.push('\\');
-                out.push(c);
-            }
-            (None, '^') => out.push_str(r"\^{}"),
-            (None, '~') => out.push_str(r"\~{}"),
-            (None, '\\') => out.push_str(r"\textbackslash{}"),
-            (None, _) => out.push(c),
-        }
-        i += 1;
-    }
-    out.replace("$$", "")
-}
-
 /// Renders the worked solution in the chosen format; `standalone` LaTeX is a whole document.
 ///
 /// A sphere spinning about z: `T = 1/5 m r² w² = 1/5 · 5 · 0.1² · 2² = 0.04 J`.
@@ -239,14 +183,18 @@ fn given_line(g: &crate::scene::model::Given) -> String {
 fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     let mut out = String::new();
     if let Some(t) = &scene.title {
-        out.push_str(&format!("{t}\n\n"));
+        out.push_str(&format!("{}\n\n", markup::text(t)));
     }
     out.push_str("Given\n");
     for g in &scene.givens {
         out.push_str(&format!("  {}\n", given_line(g)));
     }
     for (k, step) in analysis.plan.iter().enumerate() {
-        out.push_str(&format!("\nStep {}: {}\n", k + 1, step.title));
+        out.push_str(&format!(
+            "\nStep {}: {}\n",
+            k + 1,
+            markup::text(&step.title)
+        ));
         for r in &step.relations {
             let (l, rhs) = relation(r, Notation::Text);
             out.push_str(&format!("  {l} = {rhs}\n"));
@@ -311,7 +259,7 @@ fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: boo
         out.push_str("\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\begin{document}\n");
     }
     if let Some(t) = &scene.title {
-        out.push_str(&format!("\\section*{{{}}}\n", latex_text(t)));
+        out.push_str(&format!("\\section*{{{}}}\n", markup::latex(t)));
     }
     out.push_str("\\paragraph{Given}\n");
     let givens: Vec<String> = scene
@@ -334,7 +282,7 @@ fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: boo
         out.push_str(&format!(
             "\\paragraph{{Step {}}} {}\n",
             k + 1,
-            latex_text(&step.title)
+            markup::latex(&step.title)
         ));
         out.push_str(&latex_relations(&step.relations));
     }
@@ -349,7 +297,7 @@ fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: boo
 fn markdown(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     let mut out = String::new();
     if let Some(t) = &scene.title {
-        out.push_str(&format!("# {t}\n\n"));
+        out.push_str(&format!("# {}\n\n", markup::markdown(t)));
     }
     out.push_str("**Given:** ");
     let givens: Vec<String> = scene
@@ -362,7 +310,7 @@ fn markdown(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
         out.push_str(&format!(
             "## Step {}: {}\n\n$$\n{}$$\n\n",
             k + 1,
-            step.title,
+            markup::markdown(&step.title),
             latex_relations(&step.relations)
         ));
     }
@@ -384,7 +332,7 @@ pub fn relations_json(rs: &[Relation]) -> Vec<serde_json::Value> {
 fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::Value {
     serde_json::json!({
         "title": scene.title,
-        "plan": analysis.plan.iter().map(|s| s.title.clone()).collect::<Vec<_>>(),
+        "plan": analysis.plan.iter().map(|s| markup::text(&s.title)).collect::<Vec<_>>(),
         "givens": scene.givens.iter().map(|g| serde_json::json!({
             "name": g.symbol.name(),
             "written": g.written,
@@ -392,7 +340,8 @@ fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::V
             "unit": g.dimension.si_unit(),
         })).collect::<Vec<_>>(),
         "steps": analysis.plan.iter().map(|s| serde_json::json!({
-            "title": s.title,
+            "title": markup::text(&s.title),
+            "title_latex": markup::latex(&s.title),
             "relations": relations_json(&s.relations),
         })).collect::<Vec<_>>(),
         "results": results.iter().map(|r| serde_json::json!({

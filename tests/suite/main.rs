@@ -34,6 +34,7 @@ mod integrators;
 mod issue15_scenes;
 mod latex_compiles;
 mod layering;
+mod markup;
 mod nalgebra_ops;
 mod numeric_powers;
 mod operation_count;

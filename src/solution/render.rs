@@ -163,14 +163,23 @@ fn latex_unit(u: &str) -> String {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bool) -> String {
-    let dims = scene_dimensions(scene);
-    let results = results(scene, analysis, &dims);
-    match format {
-        Format::Text => text(scene, analysis, &results),
-        Format::Latex => latex(scene, analysis, &results, standalone),
-        Format::Markdown => markdown(scene, analysis, &results),
-        Format::Json => json(scene, analysis, &results).to_string(),
-    }
+    // One page: two symbols that would print alike (`w_x` and `omega_x`) are told apart.
+    let relations = analysis.plan.iter().flat_map(|s| &s.relations);
+    let page = scene
+        .givens
+        .iter()
+        .map(|g| g.symbol)
+        .chain(relations.flat_map(|r| r.lhs.symbols().into_iter().chain(r.rhs.symbols())));
+    print::on_one_page(page, || {
+        let dims = scene_dimensions(scene);
+        let results = results(scene, analysis, &dims);
+        match format {
+            Format::Text => text(scene, analysis, &results),
+            Format::Latex => latex(scene, analysis, &results, standalone),
+            Format::Markdown => markdown(scene, analysis, &results),
+            Format::Json => json(scene, analysis, &results).to_string(),
+        }
+    })
 }
 
 fn given_line(g: &crate::scene::model::Given) -> String {

@@ -41,6 +41,7 @@ mod operation_count;
 mod polynomial_gcd;
 mod principal_axes;
 mod print_parse_properties;
+mod readable_products;
 mod reproducers;
 mod robust_algebra;
 mod robust_bodies;

@@ -163,14 +163,16 @@ fn latex_unit(u: &str) -> String {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bool) -> String {
-    // One page: two symbols that would print alike (`w_x` and `omega_x`) are told apart.
-    let relations = analysis.plan.iter().flat_map(|s| &s.relations);
+    // One page: two symbols that would print alike (`w_x` and `omega_x`) are told apart,
+    // unless a relation `omega_x = w_x` states them one quantity.
+    let relations = || analysis.plan.iter().flat_map(|s| &s.relations);
     let page = scene
         .givens
         .iter()
         .map(|g| g.symbol)
-        .chain(relations.flat_map(|r| r.lhs.symbols().into_iter().chain(r.rhs.symbols())));
-    print::on_one_page(page, || {
+        .chain(relations().flat_map(|r| r.lhs.symbols().into_iter().chain(r.rhs.symbols())));
+    let identities = relations().filter_map(|r| Some((r.lhs.as_symbol()?, r.rhs.as_symbol()?)));
+    print::on_one_page(page, identities, || {
         let dims = scene_dimensions(scene);
         let results = results(scene, analysis, &dims);
         match format {

@@ -27,17 +27,17 @@ fn products_read_one_way() {
     }
 }
 
-/// A scene that gives `w_x` and derives `omega_x`: the given keeps its letter, `w_x`, and
-/// never prints as `\omega_x`, the derived component's name.
-#[test]
-fn a_given_w_and_a_derived_omega_print_apart() {
+/// The worked solution in LaTeX of a sphere spinning at `omega` (ASCII) with `w_x` given.
+fn sphere_spinning_at(omega: &str) -> String {
     let dir = std::env::temp_dir().join(format!("kinetics-spelling-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("a temporary folder");
-    let scene = dir.join("both.scene");
+    let scene = dir.join(format!("sphere-{}.scene", omega.len()));
     std::fs::write(
         &scene,
-        "given m = 5 kg\ngiven r = 0.1 m\ngiven w_x = 2 rad/s\nbody sphere(r) mass m\n\
-         vbar = 0\nomega = w_x*i\nfind T\n",
+        format!(
+            "given m = 5 kg\ngiven r = 0.1 m\ngiven w_x = 2 rad/s\nbody sphere(r) mass m\n\
+             vbar = 0\nomega = {omega}\nfind T\n"
+        ),
     )
     .expect("written");
     let run = Command::new(env!("CARGO_BIN_EXE_kinetics"))
@@ -45,15 +45,29 @@ fn a_given_w_and_a_derived_omega_print_apart() {
         .arg(&scene)
         .output()
         .expect("kinetics runs");
-    let _ = std::fs::remove_dir_all(&dir);
-    let out = String::from_utf8_lossy(&run.stdout);
+    let _ = std::fs::remove_file(&scene);
     assert!(
         run.status.success(),
         "{}",
         String::from_utf8_lossy(&run.stderr)
     );
-    assert!(out.contains(r"\omega_x &= w_x"), "{out}");
-    assert!(out.contains(r"$w_x = 2\ \mathrm{rad/s}$"), "{out}");
-    assert!(out.contains(r"T &= \frac{1}{5} m r^2 w_x^2"), "{out}");
-    assert!(!out.contains(r"\omega_x^2"), "{out}");
+    String::from_utf8_lossy(&run.stdout).into_owned()
+}
+
+/// A scene that gives `w_x` and derives a different `omega_x = 2 w_x`: the given keeps its
+/// letter, `w_x`, and never prints as `\omega_x`, the derived component's name. Where the
+/// scene makes them one quantity (`omega = w_x*i`) both are ω_x.
+#[test]
+fn a_given_w_and_a_derived_omega_print_apart_unless_they_are_one_quantity() {
+    let apart = sphere_spinning_at("2*w_x*i");
+    assert!(apart.contains(r"\omega_x &= 2 w_x"), "{apart}");
+    assert!(apart.contains(r"$w_x = 2\ \mathrm{rad/s}$"), "{apart}");
+    assert!(apart.contains(r"T &= \frac{4}{5} m r^2 w_x^2"), "{apart}");
+    assert!(!apart.contains(r"\omega_x^2"), "{apart}");
+    let same = sphere_spinning_at("w_x*i");
+    assert!(same.contains(r"\omega_x &= \omega_x"), "{same}");
+    assert!(
+        same.contains(r"T &= \frac{1}{5} m r^2 \omega_x^2"),
+        "{same}"
+    );
 }

@@ -15,9 +15,9 @@
 //! let (w, omega) = (Symbol::new("w_x"), Symbol::new("omega_x"));
 //! let difference = Expr::sym(w) - Expr::sym(omega);
 //! let apart = print::on_one_page([w, omega], [], || print::latex(&difference));
-//! assert_eq!(apart, r"w_x - \omega_x");
+//! assert_eq!(apart, r"-\omega_x + w_x");
 //! let same = print::on_one_page([w, omega], [(omega, w)], || print::latex(&difference));
-//! assert_eq!(same, r"\omega_x - \omega_x");
+//! assert_eq!(same, r"-\omega_x + \omega_x");
 //! assert_eq!(print::latex(&Expr::sym(w)), r"\omega_x");
 //! ```
 

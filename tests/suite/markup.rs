@@ -221,3 +221,44 @@ fn a_document_of_every_title_compiles_with_pdflatex() {
             .join("\n")
     );
 }
+
+/// Every title's HTML is well formed, and each MathML element that takes a fixed number of
+/// children has them: two for `msub`, `msup`, `mfrac`, `mover`, three for `msubsup`.
+#[test]
+fn every_title_is_well_formed_mathml() {
+    for title in every_title() {
+        let html = markup::html(&title);
+        // (tag, children so far) of each open element.
+        let mut open: Vec<(String, usize)> = Vec::new();
+        let mut rest = html.as_str();
+        while let Some(start) = rest.find('<') {
+            let end = rest[start..].find('>').expect("a tag closes") + start;
+            let tag = &rest[start + 1..end];
+            rest = &rest[end + 1..];
+            if let Some(name) = tag.strip_prefix('/') {
+                let (opened, children) = open.pop().expect("an element to close");
+                assert_eq!(opened, name, "{html}");
+                let expected = match name {
+                    "msub" | "msup" | "mfrac" | "mover" => Some(2),
+                    "msubsup" => Some(3),
+                    _ => None,
+                };
+                assert!(expected.is_none_or(|n| n == children), "<{name}> in {html}");
+                continue;
+            }
+            if let Some(parent) = open.last_mut() {
+                parent.1 += 1;
+            }
+            if !tag.ends_with('/') {
+                let name = tag.split(' ').next().unwrap_or_default().to_string();
+                open.push((name, 0));
+            }
+        }
+        assert!(open.is_empty(), "{html}");
+        assert_eq!(
+            html.matches("<math>").count(),
+            title.matches('$').count() / 2,
+            "{title}"
+        );
+    }
+}

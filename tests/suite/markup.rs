@@ -262,3 +262,20 @@ fn every_title_is_well_formed_mathml() {
         );
     }
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(512))]
+
+    /// Any title, however malformed, renders in every notation without a panic; a title
+    /// that validates reads as text without a `$`, a malformed one as itself.
+    #[test]
+    fn any_title_renders(title in r"[a-zA-Z0-9 $\\{}_^+=×()\[\],./|'ω̇¯%&#~-]{0,40}|[$\\a-z{}_^ ]{0,40}") {
+        let text = markup::text(&title);
+        let (_, _, _) = (markup::latex(&title), markup::markdown(&title), markup::html(&title));
+        if markup::validate(&title).is_ok() {
+            proptest::prop_assert!(!text.contains('$'), "{} reads {}", title, text);
+        } else {
+            proptest::prop_assert_eq!(text, title);
+        }
+    }
+}

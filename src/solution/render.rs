@@ -7,14 +7,18 @@
 //! { "title": string|null,
 //!   "plan": [string],                               the steps done, in order
 //!   "givens": [{"name", "written": string|null, "si_value": number|null, "unit"}],
-//!   "steps": [{"title", "title_latex", "relations": [{"text", "latex"}]}],
-//!                                                 title: plain text; title_latex: LaTeX text mode
+//!   "steps": [{"title", "title_latex",                title: plain text; title_latex: LaTeX text mode
+//!              "table": null | {"columns": [{"text", "latex"}],
+//!                                          "rows": [{"label", "cells": [{"text", "latex"}]}]},
+//!              "relations": [{"text", "latex"}]}],
 //!   "results": [{"name", "text", "latex",
 //!                "value": number | [x, y, z] | null,  when every given has a value
 //!                "unit": string|null}] }
 //! ```
 
 use super::numbers::{format_value, result_unit, scene_dimensions, unit, value};
+use super::parts_table;
+use super::unit_latex::quantity;
 use crate::algebra::{Expr, Vector};
 use crate::mechanics::derivation::Relation;
 use crate::print::{self, markup, Notation};
@@ -130,10 +134,6 @@ fn value_text(r: &Result) -> Option<String> {
     })
 }
 
-fn latex_unit(u: &str) -> String {
-    u.replace('·', r"\cdot ").replace('²', "^2")
-}
-
 /// Renders the worked solution in the chosen format; `standalone` LaTeX is a whole document.
 ///
 /// A sphere spinning about z: `T = 1/5 m r² w² = 1/5 · 5 · 0.1² · 2² = 0.04 J`.
@@ -159,7 +159,7 @@ fn latex_unit(u: &str) -> String {
 /// assert_eq!(t["unit"], "J");
 /// assert!((t["value"].as_f64().unwrap() - 0.04).abs() < 1e-12);
 /// let latex = render(&scene, &analysis, Format::Latex, false);
-/// assert!(latex.contains(r"T &= \frac{1}{5} m r^2 \omega^2 = 0.04\ \mathrm{J}"));
+/// assert!(latex.contains(r"T &= \frac{1}{5} m r^2 \omega^2 = 0.04\,\mathrm{J}"));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bool) -> String {
@@ -206,6 +206,9 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
             k + 1,
             markup::text(&step.title)
         ));
+        if let Some(table) = &step.table {
+            out.push_str(&parts_table::text(table));
+        }
         for r in &step.relations {
             let (l, rhs) = relation(r, Notation::Text);
             out.push_str(&format!("  {l} = {rhs}\n"));
@@ -221,7 +224,7 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     out
 }
 
-fn latex_relations(relations: &[Relation]) -> String {
+pub(super) fn latex_relations(relations: &[Relation]) -> String {
     let lines: Vec<String> = relations
         .iter()
         .map(|r| {
@@ -241,14 +244,9 @@ fn latex_results(results: &[Result]) -> String {
         .map(|r| {
             let value = r.value.as_ref().filter(|_| !r.is_number()).map(|_| {
                 let v = value_text(r).unwrap_or_default();
-                let (number, unit) = match &r.unit {
-                    Some(u) if !u.is_empty() => (
-                        v.trim_end_matches(u.as_str()).trim().to_string(),
-                        latex_unit(u),
-                    ),
-                    _ => (v, String::new()),
-                };
-                format!(r" = {number}\ \mathrm{{{unit}}}")
+                let unit = r.unit.as_deref().unwrap_or_default();
+                let number = v.trim_end_matches(unit).trim();
+                format!(" = {}", quantity(number, unit))
             });
             format!(
                 "{} &= {}{}",
@@ -264,10 +262,14 @@ fn latex_results(results: &[Result]) -> String {
     )
 }
 
+/// The preamble of a standalone LaTeX document: article class, amsmath and amssymb only.
+pub(super) const LATEX_PREAMBLE: &str =
+    "\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\begin{document}\n";
+
 fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: bool) -> String {
     let mut out = String::new();
     if standalone {
-        out.push_str("\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\begin{document}\n");
+        out.push_str(LATEX_PREAMBLE);
     }
     if let Some(t) = &scene.title {
         out.push_str(&format!("\\section*{{{}}}\n", markup::latex(t)));
@@ -281,8 +283,7 @@ fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: boo
             match &g.written {
                 Some(w) => {
                     let (number, unit) = w.split_once(' ').unwrap_or((w.as_str(), ""));
-                    let unit = unit.replace(' ', "").replace('*', r"\cdot ");
-                    format!(r"${name} = {number}\ \mathrm{{{unit}}}$")
+                    format!("${name} = {}$", quantity(number, unit))
                 }
                 None => format!("${name}$"),
             }
@@ -295,6 +296,9 @@ fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: boo
             k + 1,
             markup::latex(&step.title)
         ));
+        if let Some(table) = &step.table {
+            out.push_str(&parts_table::latex(table));
+        }
         out.push_str(&latex_relations(&step.relations));
     }
     out.push_str("\\paragraph{Results}\n");
@@ -319,11 +323,14 @@ fn markdown(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     out.push_str(&format!("{}\n\n", givens.join(", ")));
     for (k, step) in analysis.plan.iter().enumerate() {
         out.push_str(&format!(
-            "## Step {}: {}\n\n$$\n{}$$\n\n",
+            "## Step {}: {}\n\n",
             k + 1,
-            markup::markdown(&step.title),
-            latex_relations(&step.relations)
+            markup::markdown(&step.title)
         ));
+        if let Some(table) = &step.table {
+            out.push_str(&parts_table::markdown(table));
+        }
+        out.push_str(&format!("$$\n{}$$\n\n", latex_relations(&step.relations)));
     }
     out.push_str(&format!("## Results\n\n$$\n{}$$\n", latex_results(results)));
     out
@@ -353,6 +360,7 @@ fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::V
         "steps": analysis.plan.iter().map(|s| serde_json::json!({
             "title": markup::text(&s.title),
             "title_latex": markup::latex(&s.title),
+            "table": s.table.as_ref().map(parts_table::json),
             "relations": relations_json(&s.relations),
         })).collect::<Vec<_>>(),
         "results": results.iter().map(|r| serde_json::json!({

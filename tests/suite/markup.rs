@@ -134,10 +134,14 @@ fn a_malformed_title_is_words_and_validate_says_why() {
 }
 
 /// Every step and derivation title the program produces: `derive`'s catalogue (general and
-/// principal) and the plan of every example scene.
+/// principal, and each derivation's convention) and the plan of every example scene.
 fn every_title() -> Vec<String> {
-    use kinetics::mechanics::catalogue::{derive_general, NAMES};
+    use kinetics::algebra::Axis;
+    use kinetics::mechanics::catalogue::{convention, derive_general, NAMES};
     let mut titles = Vec::new();
+    for axis in [Axis::X, Axis::Y, Axis::Z] {
+        titles.extend(NAMES.iter().filter_map(|name| convention(name, axis)));
+    }
     for principal in [false, true] {
         for name in NAMES {
             let d = derive_general(name, principal)

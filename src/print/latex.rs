@@ -1,6 +1,7 @@
 //! LaTeX as a textbook writes it: `I_x \omega_x - I_{xy} \omega_y`, `\frac{1}{2} m v^2`,
 //! `\frac{6 F \Delta t}{m b}`, `-(I_y - I_z) \omega_y \omega_z`, `\sin\beta`, `\sqrt{x}`,
-//! with no redundant parentheses or braces and never `a + -b`.
+//! with no redundant parentheses or braces and never `a + -b`; a thin space where a product
+//! would otherwise read another way (`F\,\Delta t\,b`, `\cos\beta\,\omega^2`).
 
 use super::integer;
 use super::layout::{Integer, Layout, Node, NodeId, Number, Product, Span};

@@ -47,7 +47,12 @@ fn one(out: &mut String, node: &Node, face: Option<Face>) {
         Node::Letter(c) => letter(out, *c, face),
         Node::Number(digits) => element(out, "mn", digits),
         Node::Operator(c) => {
-            let c = if *c == '-' { '−' } else { *c };
+            // The minus sign and the prime, not the hyphen and the apostrophe typed.
+            let c = match c {
+                '-' => '−',
+                '\'' => '′',
+                c => *c,
+            };
             element(out, "mo", c.encode_utf8(&mut [0; 4]));
         }
         Node::Blank => {}

@@ -1,12 +1,12 @@
 //! `kinetics derive --general [--principal] [--only H_G,T,euler,...] [--steps]
-//! [--format text|latex|json]`: the chapter's equations for a general body.
+//! [--format text|latex|markdown|json] [--standalone] [--axis x|y|z]`: the chapter's
+//! equations for a general body, each under its heading with the reference point and axes it is about.
 
 use super::error::CliError;
-use kinetics::algebra::Domains;
-use kinetics::mechanics::catalogue::{derive_general, NAMES};
-use kinetics::mechanics::Derivation;
-use kinetics::print::{markup, Notation};
-use kinetics::solution::render::{relation, relations_json};
+use super::solve::SolutionFormat;
+use kinetics::algebra::{Axis, Domains};
+use kinetics::mechanics::catalogue::{derive_general_along, NAMES};
+use kinetics::solution::{render_derivations, Format, Shown};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -23,11 +23,43 @@ pub struct Args {
     /// Show every step, not only the results.
     #[arg(long)]
     pub steps: bool,
-    #[arg(long, value_enum, default_value_t = super::show::Format::Text)]
-    pub format: super::show::Format,
+    #[arg(long, value_enum, default_value_t = SolutionFormat::Text)]
+    pub format: SolutionFormat,
+    /// With `--format latex`: a complete document that compiles with pdflatex.
+    #[arg(long)]
+    pub standalone: bool,
+    /// The axis of rotation of fixed_axis, reactions and balancing (the chapter's shafts
+    /// often lie along x).
+    #[arg(long, value_enum, default_value_t = RotationAxis::Z)]
+    pub axis: RotationAxis,
+}
+
+/// An axis as the command line spells it.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum RotationAxis {
+    X,
+    Y,
+    Z,
+}
+
+impl From<RotationAxis> for Axis {
+    fn from(axis: RotationAxis) -> Axis {
+        match axis {
+            RotationAxis::X => Axis::X,
+            RotationAxis::Y => Axis::Y,
+            RotationAxis::Z => Axis::Z,
+        }
+    }
 }
 
 pub fn run(args: Args) -> Result<String, CliError> {
+    let format = Format::from(args.format);
+    let axis = Axis::from(args.axis);
+    if args.standalone && format != Format::Latex {
+        return Err(CliError::Usage(
+            "--standalone goes with --format latex".into(),
+        ));
+    }
     let names: Vec<&str> = if args.only.is_empty() {
         NAMES.to_vec()
     } else {
@@ -35,7 +67,7 @@ pub fn run(args: Args) -> Result<String, CliError> {
     };
     let mut derivations = Vec::new();
     for name in names {
-        let derived = derive_general(name, args.principal).ok_or_else(|| {
+        let derived = derive_general_along(name, args.principal, axis).ok_or_else(|| {
             CliError::Usage(format!(
                 "unknown derivation '{name}'\n  = help: choose from {}",
                 NAMES.join(", ")
@@ -47,74 +79,13 @@ pub fn run(args: Args) -> Result<String, CliError> {
         })?;
         derivations.push(derived.simplified(&Domains::chapter_defaults()));
     }
-    Ok(match args.format {
-        super::show::Format::Text => render(&derivations, Notation::Text, args.steps),
-        super::show::Format::Latex => render(&derivations, Notation::Latex, args.steps),
-        super::show::Format::Json => json(&derivations).to_string(),
-    })
-}
-
-/// Text: a heading per derivation and `lhs = rhs` lines. LaTeX: an `align*` block per step.
-fn render(derivations: &[Derivation], notation: Notation, all_steps: bool) -> String {
-    let mut out = String::new();
-    for d in derivations {
-        let steps = if all_steps {
-            &d.steps[..]
-        } else {
-            &d.steps[d.steps.len() - 1..]
-        };
-        match notation {
-            Notation::Text => out.push_str(&format!("# {}\n", markup::text(&d.title))),
-            Notation::Latex => out.push_str(&format!("% {}\n", markup::latex(&d.title))),
-        }
-        for step in steps {
-            if all_steps {
-                match notation {
-                    Notation::Text => out.push_str(&format!("## {}\n", markup::text(&step.title))),
-                    Notation::Latex => out.push_str(&format!("% {}\n", markup::latex(&step.title))),
-                }
-            }
-            let lines: Vec<String> = step
-                .relations
-                .iter()
-                .map(|r| {
-                    let (l, rhs) = relation(r, notation);
-                    match notation {
-                        Notation::Text => format!("{l} = {rhs}"),
-                        Notation::Latex => format!("{l} &= {rhs}"),
-                    }
-                })
-                .collect();
-            match notation {
-                Notation::Text => out.push_str(&(lines.join("\n") + "\n")),
-                Notation::Latex => out.push_str(&format!(
-                    "\\begin{{align*}}\n{}\n\\end{{align*}}\n",
-                    lines.join(" \\\\\n")
-                )),
-            }
-        }
-        out.push('\n');
-    }
-    out.trim_end().to_string()
-}
-
-fn json(derivations: &[Derivation]) -> serde_json::Value {
-    serde_json::Value::Array(
-        derivations
-            .iter()
-            .map(|d| {
-                serde_json::json!({
-                    "name": d.name,
-                    "title": markup::text(&d.title),
-                    "title_latex": markup::latex(&d.title),
-                    "result": relations_json(d.result()),
-                    "steps": d.steps.iter().map(|s| serde_json::json!({
-                        "title": markup::text(&s.title),
-                        "title_latex": markup::latex(&s.title),
-                        "relations": relations_json(&s.relations),
-                    })).collect::<Vec<_>>(),
-                })
-            })
-            .collect(),
-    )
+    Ok(render_derivations(
+        &derivations,
+        Shown {
+            format,
+            all_steps: args.steps,
+            standalone: args.standalone,
+            axis,
+        },
+    ))
 }

@@ -97,7 +97,7 @@ pub fn derive_general(name: &str, principal: bool) -> Option<Result<Derivation, 
 
 /// [`derive_general`] with the fixed-axis derivations (`fixed_axis`, `reactions`,
 /// `balancing`) about `axis` (the chapter's shafts often lie along x); the others do not
-/// depend on it.
+/// depend on it. The derivation is named as asked.
 pub fn derive_general_along(
     name: &str,
     principal: bool,
@@ -113,7 +113,7 @@ pub fn derive_general_along(
     let omega = body_angular_velocity();
     let m = Expr::symbol("m");
     let vbar = vector(["vbar_x", "vbar_y", "vbar_z"]);
-    Some(match name {
+    let derived = match name {
         "H_G" => angular_momentum(&inertia, &omega, "G"),
         "H_O" => {
             let h_g = inertia.matrix() * &omega;
@@ -173,5 +173,10 @@ pub fn derive_general_along(
             )
         }
         _ => return None,
-    })
+    };
+    // Named as asked (`T_O`, not the kinetic-energy function's `T`), so its convention is found.
+    Some(derived.map(|mut d| {
+        d.name = name.to_string();
+        d
+    }))
 }

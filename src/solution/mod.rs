@@ -2,9 +2,11 @@
 //! textbook form, and the results with values and units, as text, LaTeX, Markdown or JSON;
 //! and the derivations `kinetics derive` prints, in the same formats.
 
+pub mod derivations;
 pub mod numbers;
 pub mod parts_table;
 pub mod render;
 pub mod unit_latex;
 
+pub use derivations::{render_derivations, Shown};
 pub use render::{render, Format};

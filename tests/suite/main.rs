@@ -23,6 +23,7 @@ mod claim_parsing;
 mod cli_bad_input;
 mod cli_write_failure;
 mod derivations_numeric;
+mod derive_formats;
 mod derive_snapshots;
 mod dimension_powers;
 mod domains;

@@ -6,7 +6,7 @@ use kinetics::algebra::Domains;
 use kinetics::mechanics::catalogue::{derive_general, NAMES};
 use kinetics::mechanics::Derivation;
 use kinetics::print::Notation;
-use kinetics::solution::render::{relation, relations_json};
+use kinetics::solution::render::{latex_relations, relation, relations_json};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -74,23 +74,14 @@ fn render(derivations: &[Derivation], notation: Notation, all_steps: bool) -> St
                     Notation::Latex => out.push_str(&format!("% {}\n", step.title)),
                 }
             }
-            let lines: Vec<String> = step
-                .relations
-                .iter()
-                .map(|r| {
-                    let (l, rhs) = relation(r, notation);
-                    match notation {
-                        Notation::Text => format!("{l} = {rhs}"),
-                        Notation::Latex => format!("{l} &= {rhs}"),
-                    }
-                })
-                .collect();
             match notation {
-                Notation::Text => out.push_str(&(lines.join("\n") + "\n")),
-                Notation::Latex => out.push_str(&format!(
-                    "\\begin{{align*}}\n{}\n\\end{{align*}}\n",
-                    lines.join(" \\\\\n")
-                )),
+                Notation::Text => {
+                    for r in &step.relations {
+                        let (l, rhs) = relation(r, notation);
+                        out.push_str(&format!("{l} = {rhs}\n"));
+                    }
+                }
+                Notation::Latex => out.push_str(&latex_relations(&step.relations)),
             }
         }
         out.push('\n');

@@ -2,6 +2,7 @@
 //! `\frac{6 F \Delta t}{m b}`, `-(I_y - I_z) \omega_y \omega_z`, `\sin\beta`, `\sqrt{x}`,
 //! with no redundant parentheses or braces and never `a + -b`.
 
+use super::growing_parentheses::grows;
 use super::integer;
 use super::layout::{Integer, Layout, Node, NodeId, Number, Product, Span};
 use crate::algebra::Func;
@@ -117,18 +118,19 @@ fn fraction(out: &mut String, n: Integer, d: Integer) {
     out.push('}');
 }
 
-/// A factor inside a product or under an exponent: sums and products get parentheses.
+/// A factor inside a product or under an exponent: sums, products and fractions get
+/// parentheses, which grow around a fraction.
 fn factor(out: &mut String, layout: &Layout, id: NodeId) {
     match layout.node(id) {
         Node::Symbol(s) => out.push_str(s.latex()),
+        Node::Sum(_) | Node::Product(_) | Node::Number(_) if grows(layout, id) => {
+            out.push_str(r"\left(");
+            node(out, layout, id);
+            out.push_str(r"\right)");
+        }
         Node::Sum(_) | Node::Product(_) => {
             out.push('(');
             node(out, layout, id);
-            out.push(')');
-        }
-        Node::Number(n) if !layout.parts(*n).1.is_one() => {
-            out.push('(');
-            number(out, layout, *n);
             out.push(')');
         }
         other => compound(out, layout, other),

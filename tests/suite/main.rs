@@ -33,6 +33,7 @@ mod general_body_print;
 mod integrators;
 mod issue15_scenes;
 mod latex_compiles;
+mod latex_width;
 mod layering;
 mod nalgebra_ops;
 mod numeric_powers;

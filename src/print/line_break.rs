@@ -14,6 +14,7 @@
 //! next. In text such a line stays long. Every line is rendered through the notation's own
 //! printer ([`super::render_into`]), so a new notation breaks without change.
 
+use super::growing_parentheses::grows;
 use super::layout::{Layout, Node, NodeId};
 use super::width::{self, BIG_PARENTHESIS_EM, BINARY_OPERATOR_EM, RELATION_EM, UNARY_MINUS_EM};
 use super::{presented, render_into, Notation};
@@ -57,12 +58,12 @@ pub fn broken(
                 let terms = layout.entries(terms).to_vec();
                 for (i, (negative, term)) in terms.into_iter().enumerate() {
                     let sign = Sign::of(i == 0, negative);
-                    term_pieces(&mut pieces, layout, sign, term, later, notation);
+                    term_pieces(&mut pieces, layout, sign, term, later, notation, false);
                 }
             }
             _ => {
                 let sign = Sign::of(true, negative);
-                term_pieces(&mut pieces, layout, sign, root, later, notation);
+                term_pieces(&mut pieces, layout, sign, root, later, notation, false);
             }
         }
         pieces
@@ -82,6 +83,8 @@ pub fn width_em(e: &Expr, axis: Axis) -> f64 {
 /// line when long, and in LaTeX a component too wide alone broken inside big parentheses.
 pub fn broken_vector(v: &Vector, notation: Notation, first_em: f64, width_em: f64) -> Vec<String> {
     let later = width_em - CONTINUATION_EM;
+    // A vector that does not fit on its first line has a line for each component.
+    let line_each = vector_width_em(v) > width_em - first_em;
     let mut pieces = Vec::new();
     for (component, unit) in v.iter().zip(super::UNIT_VECTORS) {
         if component.is_zero() {
@@ -89,25 +92,29 @@ pub fn broken_vector(v: &Vector, notation: Notation, first_em: f64, width_em: f6
         }
         let unit = Symbol::new(unit);
         let first = pieces.is_empty();
+        let start = pieces.len();
         presented(component, Axis::X, |layout, negative, root| {
             let mut text = String::new();
             super::vector_component(&mut text, layout, negative, root, first, unit, notation);
             let sign = Sign::of(first, negative);
             let width = sign.width() + vector_component_width(layout, root, unit);
+            let text = text.trim_start().to_string();
             if width <= later || notation != Notation::Latex {
-                pieces.push(Piece::alone(text.trim_start().to_string(), width));
+                pieces.push(Piece::alone(text, width));
                 return;
             }
             let suffix = format!(" {}", unit.latex());
             if let Node::Sum(_) = layout.node(root) {
                 // `(a + b) \mathbf{i}` too wide: `\bigl(a \\ + b\bigr) \mathbf{i}`.
-                let opening = format!("{}\\bigl(", sign.latex());
-                let opening_width = sign.width() + BIG_PARENTHESIS_EM;
-                sum_pieces(&mut pieces, layout, (opening, opening_width), root, &suffix);
-            } else if !split_term(&mut pieces, layout, sign, root, &suffix) {
-                pieces.push(Piece::alone(text.trim_start().to_string(), width));
+                let opening = Piece::alone(sign.latex().to_string(), sign.width());
+                sum_pieces(&mut pieces, layout, opening, root, &suffix, later);
+            } else if !split_term(&mut pieces, layout, sign, root, &suffix, later, false) {
+                pieces.push(Piece::alone(text, width));
             }
         });
+        if let Some(piece) = pieces.get_mut(start) {
+            piece.new_line = line_each;
+        }
     }
     if pieces.is_empty() {
         return vec![super::vector(v, notation)];
@@ -183,6 +190,8 @@ struct Piece {
     /// Stays on the line of the piece before it (a big parenthesis and what it opens or
     /// closes on).
     joined: bool,
+    /// Starts a line of its own (a vector's component).
+    new_line: bool,
 }
 
 impl Piece {
@@ -191,6 +200,7 @@ impl Piece {
             text,
             width,
             joined: false,
+            new_line: false,
         }
     }
 }
@@ -211,7 +221,7 @@ fn signed_term(layout: &mut Layout, sign: Sign, term: NodeId, notation: Notation
 }
 
 /// The pieces of one term: itself, or in LaTeX when it is wider than a line, as
-/// [`split_term`] writes it.
+/// [`split_term`] writes it; `joined` to the piece before it or not.
 fn term_pieces(
     pieces: &mut Vec<Piece>,
     layout: &mut Layout,
@@ -219,14 +229,22 @@ fn term_pieces(
     term: NodeId,
     line_em: f64,
     notation: Notation,
+    joined: bool,
 ) {
     let width = sign.width() + width::node(layout, term);
-    if width > line_em && notation == Notation::Latex && split_term(pieces, layout, sign, term, "")
+    if width > line_em
+        && notation == Notation::Latex
+        && split_term(pieces, layout, sign, term, "", line_em, joined)
     {
         return;
     }
     let text = signed_term(layout, sign, term, notation);
-    pieces.push(Piece::alone(text, width));
+    pieces.push(Piece {
+        text,
+        width,
+        joined,
+        new_line: false,
+    });
 }
 
 /// In LaTeX, a product with a sum among its factors as the rest of the product before big
@@ -238,19 +256,24 @@ fn split_term(
     sign: Sign,
     term: NodeId,
     suffix: &str,
+    line_em: f64,
+    joined: bool,
 ) -> bool {
     let Some((rest, sum)) = taken_out_sum(layout, term) else {
         return false;
     };
-    let mut opening = signed_term(layout, sign, rest, Notation::Latex);
-    opening.push_str(r" \bigl(");
-    let opening_width = sign.width() + width::node(layout, rest) + BIG_PARENTHESIS_EM;
-    sum_pieces(pieces, layout, (opening, opening_width), sum, suffix);
+    let opening = Piece {
+        text: signed_term(layout, sign, rest, Notation::Latex),
+        width: sign.width() + width::node(layout, rest),
+        joined,
+        new_line: false,
+    };
+    sum_pieces(pieces, layout, opening, sum, suffix, line_em);
     true
 }
 
 /// The widest sum among a product's numerator factors (two terms or more), and the product
-/// without it, when the sum is most of the product's width.
+/// without it.
 fn taken_out_sum(layout: &mut Layout, term: NodeId) -> Option<(NodeId, NodeId)> {
     let Node::Product(p) = *layout.node(term) else {
         return None;
@@ -273,40 +296,54 @@ fn taken_out_sum(layout: &mut Layout, term: NodeId) -> Option<(NodeId, NodeId)> 
     Some((rest, sum))
 }
 
-/// The pieces of a sum broken inside big parentheses: the opening (with what comes before it
-/// on its line), the terms, then `\bigr)` and `suffix`.
+/// Big parentheses of a sum broken across lines: `\biggl(` around fractions, `\bigl(`
+/// otherwise (`\left(` cannot span lines).
+fn big_parentheses(layout: &Layout, sum: NodeId) -> (&'static str, &'static str) {
+    if grows(layout, sum) {
+        (r"\biggl(", r"\biggr)")
+    } else {
+        (r"\bigl(", r"\bigr)")
+    }
+}
+
+/// The pieces of a sum broken inside big parentheses: `opening` (what comes before them on
+/// its line) with the opening parenthesis, the terms (each split again if too wide), then
+/// the closing parenthesis and `suffix`.
 fn sum_pieces(
     pieces: &mut Vec<Piece>,
     layout: &mut Layout,
-    (opening, opening_width): (String, f64),
+    mut opening: Piece,
     sum: NodeId,
     suffix: &str,
+    line_em: f64,
 ) {
     let Node::Sum(terms) = *layout.node(sum) else {
         return;
     };
-    pieces.push(Piece::alone(opening, opening_width));
+    let (open, close) = big_parentheses(layout, sum);
+    if !opening.text.is_empty() && !opening.text.ends_with(' ') {
+        opening.text.push(' ');
+    }
+    opening.text.push_str(open);
+    opening.width += BIG_PARENTHESIS_EM;
+    pieces.push(opening);
     let terms = layout.entries(terms).to_vec();
     for (i, (negative, term)) in terms.into_iter().enumerate() {
         let sign = Sign::of(i == 0, negative);
-        let text = signed_term(layout, sign, term, Notation::Latex);
-        pieces.push(Piece {
-            width: sign.width() + width::node(layout, term),
-            text,
-            joined: i == 0,
-        });
+        term_pieces(pieces, layout, sign, term, line_em, Notation::Latex, i == 0);
     }
     pieces.push(Piece {
-        text: format!(r"\bigr){suffix}"),
+        text: format!("{close}{suffix}"),
         // A unit vector after it is narrower than an em.
         width: BIG_PARENTHESIS_EM + if suffix.is_empty() { 0.0 } else { 1.0 },
         joined: true,
+        new_line: false,
     });
 }
 
 /// The pieces laid into lines greedily: the first line `first_em` wide, the later ones
-/// `later_em`; a run of joined pieces stays on one line, and a run wider than a line has a
-/// line of its own.
+/// `later_em`; a run of joined pieces stays on one line, a run wider than a line has a
+/// line of its own, and a piece marked `new_line` starts one.
 fn lines(pieces: Vec<Piece>, first_em: f64, later_em: f64) -> Vec<String> {
     let mut lines: Vec<String> = Vec::new();
     let mut line = String::new();
@@ -321,12 +358,12 @@ fn lines(pieces: Vec<Piece>, first_em: f64, later_em: f64) -> Vec<String> {
     for run in runs {
         let width: f64 = run.iter().map(|p| p.width).sum();
         let room = if lines.is_empty() { first_em } else { later_em };
-        if !line.is_empty() && used + width > room {
+        if !line.is_empty() && (used + width > room || run[0].new_line) {
             lines.push(std::mem::take(&mut line));
             used = 0.0;
         }
         for piece in run {
-            if !line.is_empty() {
+            if !line.is_empty() && !line.ends_with('(') {
                 line.push(' ');
             }
             line.push_str(&piece.text);

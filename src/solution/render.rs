@@ -354,7 +354,9 @@ fn latex_results(results: &[Result]) -> String {
 fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: bool) -> String {
     let mut out = String::new();
     if standalone {
-        out.push_str("\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\begin{document}\n");
+        // `\sloppy`: a paragraph of long givens or a long title breaks between words rather than
+        // run past the margin.
+        out.push_str("\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\sloppy\n\\begin{document}\n");
     }
     if let Some(t) = &scene.title {
         out.push_str(&format!("\\section*{{{}}}\n", latex_text(t)));

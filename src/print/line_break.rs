@@ -144,7 +144,7 @@ pub fn vector_width_em(v: &Vector) -> f64 {
 /// A vector component's width with its parentheses and unit vector (the sign apart).
 fn vector_component_width(layout: &Layout, root: NodeId, unit: Symbol) -> f64 {
     let parentheses = match layout.node(root) {
-        Node::Sum(_) => 2.0 * BIG_PARENTHESIS_EM,
+        Node::Sum(_) => width::parenthesised(layout, root) - width::node(layout, root),
         _ => 0.0,
     };
     parentheses + width::node(layout, root) + width::symbol_em(unit.latex())

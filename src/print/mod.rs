@@ -200,13 +200,18 @@ fn vector_component(
         (false, false) => out.push_str(" + "),
     }
     let grouped = matches!(layout.node(root), Node::Sum(_));
+    // Parentheses grow around fractions in LaTeX, as a factor's do.
+    let (open, close) = match notation {
+        Notation::Latex if growing_parentheses::grows(layout, root) => (r"\left(", r"\right)"),
+        _ => ("(", ")"),
+    };
     if grouped {
-        out.push('(');
+        out.push_str(open);
     }
     let body = out.len();
     render_into(out, layout, false, root, notation);
     if grouped {
-        out.push(')');
+        out.push_str(close);
     } else if &out[body..] == "1" {
         // A unit coefficient is not written: `\mathbf{i}`, not `1 \mathbf{i}`.
         out.truncate(body);

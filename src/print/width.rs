@@ -109,7 +109,8 @@ fn script(layout: &Layout, id: NodeId) -> f64 {
     SCRIPT_SCALE * node(layout, id) + SCRIPT_SPACE_EM + delimiters
 }
 
-fn parenthesised(layout: &Layout, id: NodeId) -> f64 {
+/// A node in parentheses, grown around a fraction.
+pub(crate) fn parenthesised(layout: &Layout, id: NodeId) -> f64 {
     let parentheses = if grows(layout, id) {
         GROWN_PARENTHESIS_EM
     } else {

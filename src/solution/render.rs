@@ -325,8 +325,10 @@ fn latex_results(results: &[Result]) -> String {
                     ),
                     _ => (v, String::new()),
                 };
-                // Digits and letters of a value are narrower than 0.6 em.
-                let width = 0.6 * (number.len() + unit.len()) as f64 + RELATION_EM;
+                // A value's digits, commas and spaces are narrower than 0.55 em; its unit is
+                // upright, narrower than a symbol of the same letters.
+                let width =
+                    0.55 * number.len() as f64 + print::width::symbol_em(&unit) + RELATION_EM;
                 (format!(r"= {number}\ \mathrm{{{unit}}}"), width)
             });
             let mut lines = match r.form {

@@ -3,6 +3,7 @@
 //! with no redundant parentheses or braces and never `a + -b`; a thin space where a product
 //! would otherwise read another way (`F\,\Delta t\,b`, `\cos\beta\,\omega^2`).
 
+use super::growing_parentheses::grows;
 use super::integer;
 use super::layout::{Integer, Layout, Node, NodeId, Number, Product, Span};
 use super::spelling::latex_of;
@@ -120,18 +121,19 @@ fn fraction(out: &mut String, n: Integer, d: Integer) {
     out.push('}');
 }
 
-/// A factor inside a product or under an exponent: sums and products get parentheses.
+/// A factor inside a product or under an exponent: sums, products and fractions get
+/// parentheses, which grow around a fraction.
 fn factor(out: &mut String, layout: &Layout, id: NodeId) {
     match layout.node(id) {
         Node::Symbol(s) => out.push_str(latex_of(*s)),
+        Node::Sum(_) | Node::Product(_) | Node::Number(_) if grows(layout, id) => {
+            out.push_str(r"\left(");
+            node(out, layout, id);
+            out.push_str(r"\right)");
+        }
         Node::Sum(_) | Node::Product(_) => {
             out.push('(');
             node(out, layout, id);
-            out.push(')');
-        }
-        Node::Number(n) if !layout.parts(*n).1.is_one() => {
-            out.push('(');
-            number(out, layout, *n);
             out.push(')');
         }
         other => compound(out, layout, other),

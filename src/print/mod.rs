@@ -12,11 +12,18 @@
 //! assert_eq!(print::text(&h), "I_x*w_x - I_xy*w_y");
 //! ```
 
+mod growing_parentheses;
 pub mod latex;
 pub mod layout;
 pub mod markup;
 mod spelling;
+pub mod line_break;
 pub mod text;
+pub mod width;
+
+pub use line_break::{
+    aligned_room, broken, broken_vector, width_em, CONTINUATION_EM, PAGE_WIDTH_EM,
+};
 
 use crate::algebra::{Axis, Expr, Symbol, Vector};
 use layout::{Integer, Layout, Node, NodeId, Span};
@@ -38,8 +45,9 @@ thread_local! {
     static LAYOUT: RefCell<Layout> = RefCell::new(Layout::default());
 }
 
-/// Presents `e` about `axis` and hands the layout, the sign and the root to `render`.
-fn presented<R>(e: &Expr, axis: Axis, render: impl FnOnce(&Layout, bool, NodeId) -> R) -> R {
+/// Presents `e` about `axis` and hands the layout, the sign and the root to `render` (which
+/// may add nodes of its own, such as the lines of a broken sum).
+fn presented<R>(e: &Expr, axis: Axis, render: impl FnOnce(&mut Layout, bool, NodeId) -> R) -> R {
     let present = |layout: &mut Layout| {
         layout.clear();
         let (negative, root) = layout.present(e, axis);
@@ -150,49 +158,72 @@ pub fn render(e: &Expr, notation: Notation, axis: Axis) -> String {
     out
 }
 
+/// The names of the unit vectors, in the order of a vector's components.
+const UNIT_VECTORS: [&str; 3] = ["i", "j", "k"];
+
 /// A vector `a i + b j + c k`; a component with several terms is parenthesised:
 /// `\frac{1}{2} m r^2 \omega_1 \mathbf{i} - (...) \mathbf{j}`.
 pub fn vector(v: &Vector, notation: Notation) -> String {
-    let units = ["i", "j", "k"].map(Symbol::new);
     let mut out = String::new();
-    for (component, unit) in v.iter().zip(units) {
+    for (component, unit) in v.iter().zip(UNIT_VECTORS) {
         if component.is_zero() {
             continue;
         }
-        let unit = match notation {
-            Notation::Text => unit.name(),
-            Notation::Latex => unit.latex(),
-        };
+        let first = out.is_empty();
         presented(component, Axis::X, |layout, negative, root| {
-            match (out.is_empty(), negative) {
-                (true, true) => out.push('-'),
-                (true, false) => {}
-                (false, true) => out.push_str(" - "),
-                (false, false) => out.push_str(" + "),
-            }
-            let grouped = matches!(layout.node(root), Node::Sum(_));
-            if grouped {
-                out.push('(');
-            }
-            let body = out.len();
-            render_into(&mut out, layout, false, root, notation);
-            if grouped {
-                out.push(')');
-            } else if &out[body..] == "1" {
-                // A unit coefficient is not written: `\mathbf{i}`, not `1 \mathbf{i}`.
-                out.truncate(body);
-            }
-            if out.len() > body {
-                out.push_str(match notation {
-                    Notation::Text => "*",
-                    Notation::Latex => " ",
-                });
-            }
-            out.push_str(unit);
+            let unit = Symbol::new(unit);
+            vector_component(&mut out, layout, negative, root, first, unit, notation);
         });
     }
     if out.is_empty() {
         out.push('0');
     }
     out
+}
+
+/// Appends one component of a vector with its sign and unit vector: `(a + b) \mathbf{i}`
+/// first, `- c \mathbf{j}` after another.
+fn vector_component(
+    out: &mut String,
+    layout: &Layout,
+    negative: bool,
+    root: NodeId,
+    first: bool,
+    unit: Symbol,
+    notation: Notation,
+) {
+    let unit = match notation {
+        Notation::Text => unit.name(),
+        Notation::Latex => unit.latex(),
+    };
+    match (first, negative) {
+        (true, true) => out.push('-'),
+        (true, false) => {}
+        (false, true) => out.push_str(" - "),
+        (false, false) => out.push_str(" + "),
+    }
+    let grouped = matches!(layout.node(root), Node::Sum(_));
+    // Parentheses grow around fractions in LaTeX, as a factor's do.
+    let (open, close) = match notation {
+        Notation::Latex if growing_parentheses::grows(layout, root) => (r"\left(", r"\right)"),
+        _ => ("(", ")"),
+    };
+    if grouped {
+        out.push_str(open);
+    }
+    let body = out.len();
+    render_into(out, layout, false, root, notation);
+    if grouped {
+        out.push_str(close);
+    } else if &out[body..] == "1" {
+        // A unit coefficient is not written: `\mathbf{i}`, not `1 \mathbf{i}`.
+        out.truncate(body);
+    }
+    if out.len() > body {
+        out.push_str(match notation {
+            Notation::Text => "*",
+            Notation::Latex => " ",
+        });
+    }
+    out.push_str(unit);
 }

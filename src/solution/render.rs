@@ -19,9 +19,9 @@
 use super::numbers::{format_value, result_unit, scene_dimensions, unit, value};
 use super::parts_table;
 use super::unit_latex::quantity;
-use crate::algebra::{Expr, Vector};
+use crate::algebra::{Axis, Expr, Vector};
 use crate::mechanics::derivation::Relation;
-use crate::print::{self, markup, Notation};
+use crate::print::{self, markup, width::RELATION_EM, Notation};
 use crate::scene::model::{Quantity, Request};
 use crate::scene::units::Dimensions;
 use crate::scene::{Analysis, Scene, Value};
@@ -43,6 +43,7 @@ struct Result<'a> {
     latex: String,
     value: Option<Vec<f64>>,
     unit: Option<String>,
+    form: &'a Value,
 }
 
 impl Result<'_> {
@@ -69,7 +70,12 @@ fn in_requested_unit<'a>(request: &Request, mut r: Result<'a>) -> Result<'a> {
     r
 }
 
-fn computed<'a>(scene: &Scene, request: &'a Request, v: &Value, dims: &Dimensions) -> Result<'a> {
+fn computed<'a>(
+    scene: &Scene,
+    request: &'a Request,
+    v: &'a Value,
+    dims: &Dimensions,
+) -> Result<'a> {
     {
         match v {
             Value::Scalar(e) => Result {
@@ -79,6 +85,7 @@ fn computed<'a>(scene: &Scene, request: &'a Request, v: &Value, dims: &Dimension
                 latex: print::latex(e),
                 value: value(scene, e).map(|x| vec![x]),
                 unit: result_unit(request, dims, e),
+                form: v,
             },
             Value::Vector(vec) => Result {
                 name: &request.name,
@@ -87,6 +94,7 @@ fn computed<'a>(scene: &Scene, request: &'a Request, v: &Value, dims: &Dimension
                 latex: print::vector(vec, Notation::Latex),
                 value: vec.iter().map(|c| value(scene, c)).collect(),
                 unit: vector_unit(dims, vec),
+                form: v,
             },
         }
     }
@@ -224,47 +232,88 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     out
 }
 
-pub(super) fn latex_relations(relations: &[Relation]) -> String {
-    let lines: Vec<String> = relations
+/// Relations as one `align*` block, each right-hand side broken into lines that fit the page.
+pub fn latex_relations(relations: &[Relation]) -> String {
+    let lhs: Vec<String> = relations
         .iter()
-        .map(|r| {
-            let (l, rhs) = relation(r, Notation::Latex);
-            format!("{l} &= {rhs}")
+        .map(|r| print::render(&r.lhs, Notation::Latex, r.axis))
+        .collect();
+    let lhs_em = relations
+        .iter()
+        .map(|r| print::width_em(&r.lhs, r.axis))
+        .fold(0.0, f64::max);
+    let (first_em, width_em) = print::aligned_room(lhs_em);
+    let rows: Vec<String> = relations
+        .iter()
+        .zip(&lhs)
+        .map(|(r, l)| {
+            let lines = print::broken(&r.rhs, r.axis, Notation::Latex, first_em, width_em);
+            aligned_row(l, &lines)
         })
         .collect();
+    align(&rows)
+}
+
+/// `lhs &= line_1 \\ &\quad line_2 …`: a right-hand side's later lines indented by a quad.
+fn aligned_row(lhs: &str, lines: &[String]) -> String {
+    format!("{lhs} &= {}", lines.join(" \\\\\n&\\quad "))
+}
+
+fn align(rows: &[String]) -> String {
     format!(
         "\\begin{{align*}}\n{}\n\\end{{align*}}\n",
-        lines.join(" \\\\\n")
+        rows.join(" \\\\\n")
     )
 }
 
+/// Results as one `align*` block: each broken into lines that fit the page, its value and
+/// unit after the last line, or on a row of their own when the result took several lines or
+/// the value does not fit after it.
 fn latex_results(results: &[Result]) -> String {
-    let lines: Vec<String> = results
+    let lhs_em = results
+        .iter()
+        .map(|r| print::width::symbol_em(&quantity_latex(r.quantity)))
+        .fold(0.0, f64::max);
+    let (first_em, width_em) = print::aligned_room(lhs_em);
+    let rows: Vec<String> = results
         .iter()
         .map(|r| {
             let value = r.value.as_ref().filter(|_| !r.is_number()).map(|_| {
                 let v = value_text(r).unwrap_or_default();
                 let unit = r.unit.as_deref().unwrap_or_default();
                 let number = v.trim_end_matches(unit).trim();
-                format!(" = {}", quantity(number, unit))
+                // A value's digits, commas and spaces are narrower than 0.55 em; its unit is
+                // upright, narrower than a symbol of the same letters.
+                let width = 0.55 * number.len() as f64 + print::width::symbol_em(unit) + RELATION_EM;
+                (format!("= {}", quantity(number, unit)), width)
             });
-            format!(
-                "{} &= {}{}",
-                quantity_latex(r.quantity),
-                r.latex,
-                value.unwrap_or_default()
-            )
+            let mut lines = match r.form {
+                Value::Scalar(e) => print::broken(e, Axis::X, Notation::Latex, first_em, width_em),
+                Value::Vector(v) => print::broken_vector(v, Notation::Latex, first_em, width_em),
+            };
+            let name = quantity_latex(r.quantity);
+            if let Some((tail, tail_em)) = value {
+                let unbroken_em = match r.form {
+                    Value::Scalar(e) => print::width_em(e, Axis::X),
+                    Value::Vector(v) => print::line_break::vector_width_em(v),
+                };
+                if lines.len() > 1 || first_em + unbroken_em + tail_em > width_em {
+                    return format!("{} \\\\\n&{tail}", aligned_row(&name, &lines));
+                }
+                lines[0].push(' ');
+                lines[0].push_str(&tail);
+            }
+            aligned_row(&name, &lines)
         })
         .collect();
-    format!(
-        "\\begin{{align*}}\n{}\n\\end{{align*}}\n",
-        lines.join(" \\\\\n")
-    )
+    align(&rows)
 }
 
-/// The preamble of a standalone LaTeX document: article class, amsmath and amssymb only.
+/// The preamble of a standalone LaTeX document: article class, amsmath and amssymb only;
+/// `\\sloppy`, so a paragraph of long givens or a long title breaks between words rather than
+/// run past the margin.
 pub(super) const LATEX_PREAMBLE: &str =
-    "\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\begin{document}\n";
+    "\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\sloppy\n\\begin{document}\n";
 
 fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: bool) -> String {
     let mut out = String::new();

@@ -200,6 +200,46 @@ impl Layout {
         &self.entries[span.start as usize..(span.start + span.len) as usize]
     }
 
+    /// A sum of the given signed terms, nodes of this layout, as a new node: the printers
+    /// write a sum of some of a sum's terms (a line of a broken relation) as they write any
+    /// sum. Without terms it is written as nothing: a line that continues a sum is the sum of
+    /// that empty node and its terms, so that the notation writes its first sign.
+    pub fn sum_of(&mut self, terms: &[(bool, NodeId)]) -> NodeId {
+        let start = self.entries.len() as u32;
+        self.entries.extend_from_slice(terms);
+        let span = Span {
+            start,
+            len: terms.len() as u32,
+        };
+        self.push(Node::Sum(span))
+    }
+
+    /// A product of this layout's nodes as a new node (`coefficient · numerator /
+    /// denominator`): a term written with one of its factors taken out.
+    pub fn product_of(
+        &mut self,
+        coefficient: Number,
+        numerator: &[(bool, NodeId)],
+        denominator: &[(bool, NodeId)],
+    ) -> NodeId {
+        let start = self.entries.len() as u32;
+        self.entries.extend_from_slice(numerator);
+        self.entries.extend_from_slice(denominator);
+        let above = Span {
+            start,
+            len: numerator.len() as u32,
+        };
+        let below = Span {
+            start: start + above.len,
+            len: denominator.len() as u32,
+        };
+        self.push(Node::Product(Product {
+            coefficient,
+            numerator: above,
+            denominator: below,
+        }))
+    }
+
     fn push(&mut self, node: Node) -> NodeId {
         self.nodes.push(node);
         NodeId((self.nodes.len() - 1) as u32)

@@ -1,0 +1,103 @@
+//! Pages that fit (issue 17): every example's `solve --format latex --standalone`, and
+//! `derive --general --steps --format latex` in the same preamble, compiled with pdflatex
+//! at 10 pt and again as `\documentclass[12pt,a4paper]{article}`: no `Overfull \hbox` wider
+//! than 1 pt in the log. `examples/scenes/long_relations.scene` has results longer than a
+//! page is wide, so that line breaking is exercised.
+
+use std::path::Path;
+use std::process::Command;
+
+/// The class line of the standalone output, and the larger page it is also compiled on.
+const CLASS: &str = r"\documentclass{article}";
+const LARGE: &str = r"\documentclass[12pt,a4paper]{article}";
+
+fn kinetics(args: &[&str]) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_kinetics"))
+        .args(args)
+        .output()
+        .expect("kinetics runs");
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("UTF-8")
+}
+
+/// The overfull boxes wider than 1 pt in the log of compiling `tex` (named `name`) in `dir`,
+/// each with the line of material that overflows.
+fn overfull_boxes(dir: &Path, name: &str, tex: &str) -> Vec<String> {
+    let path = dir.join(format!("{name}.tex"));
+    std::fs::write(&path, tex).expect("the .tex is written");
+    Command::new("pdflatex")
+        .args(["-interaction=nonstopmode", "-output-directory"])
+        .arg(dir)
+        .arg(&path)
+        .output()
+        .expect("pdflatex is installed (.ci/run installs it)");
+    let log = std::fs::read_to_string(dir.join(format!("{name}.log"))).expect("a log");
+    let lines: Vec<&str> = log.lines().collect();
+    let mut found = Vec::new();
+    for (i, line) in lines.iter().enumerate() {
+        let Some(rest) = line.strip_prefix(r"Overfull \hbox (") else {
+            continue;
+        };
+        let points: f64 = rest
+            .split("pt")
+            .next()
+            .and_then(|p| p.parse().ok())
+            .unwrap_or(f64::INFINITY);
+        if points > 1.0 {
+            let material = lines.get(i + 1).unwrap_or(&"");
+            found.push(format!("{name}: {line}\n    {material}"));
+        }
+    }
+    found
+}
+
+#[test]
+fn every_example_fits_the_page_at_10_and_12_pt() {
+    let examples = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes");
+    let dir = std::env::temp_dir().join(format!("kinetics-pages-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let mut documents = Vec::new();
+    let mut scenes: Vec<_> = std::fs::read_dir(&examples)
+        .expect("examples/scenes exists")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "scene"))
+        .collect();
+    scenes.sort();
+    assert!(
+        scenes.iter().any(|s| s.ends_with("long_relations.scene")),
+        "the scene with long results is there"
+    );
+    for scene in &scenes {
+        let stem = scene
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .unwrap_or("scene");
+        let path = scene.to_str().expect("a UTF-8 path");
+        let tex = kinetics(&["solve", "--format", "latex", "--standalone", path]);
+        documents.push((stem.to_string(), tex));
+    }
+    let standalone = &documents[0].1;
+    let preamble = &standalone[..standalone.find(r"\begin{document}").expect("a document")];
+    let derived = kinetics(&["derive", "--general", "--steps", "--format", "latex"]);
+    documents.push((
+        "derive_general".to_string(),
+        format!("{preamble}\\begin{{document}}\n{derived}\n\\end{{document}}\n"),
+    ));
+    let mut failures = Vec::new();
+    for (name, tex) in &documents {
+        assert!(tex.starts_with(CLASS), "{name}: {CLASS}");
+        failures.extend(overfull_boxes(&dir, name, tex));
+        let large = tex.replacen(CLASS, LARGE, 1);
+        failures.extend(overfull_boxes(&dir, &format!("{name}_12pt_a4"), &large));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(
+        failures.is_empty(),
+        "overfull lines:\n{}",
+        failures.join("\n")
+    );
+}

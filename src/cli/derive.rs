@@ -48,14 +48,19 @@ pub fn run(args: Args) -> Result<String, CliError> {
         derivations.push(derived.simplified(&Domains::chapter_defaults()));
     }
     Ok(match args.format {
-        super::show::Format::Text => render(&derivations, Notation::Text, args.steps),
-        super::show::Format::Latex => render(&derivations, Notation::Latex, args.steps),
+        super::show::Format::Text => render(&derivations, false, args.steps),
+        super::show::Format::Latex => render(&derivations, true, args.steps),
         super::show::Format::Json => json(&derivations).to_string(),
     })
 }
 
 /// Text: a heading per derivation and `lhs = rhs` lines. LaTeX: an `align*` block per step.
-fn render(derivations: &[Derivation], notation: Notation, all_steps: bool) -> String {
+fn render(derivations: &[Derivation], latex: bool, all_steps: bool) -> String {
+    let notation = if latex {
+        Notation::Latex
+    } else {
+        Notation::Text
+    };
     let mut out = String::new();
     for d in derivations {
         let steps = if all_steps {
@@ -63,15 +68,15 @@ fn render(derivations: &[Derivation], notation: Notation, all_steps: bool) -> St
         } else {
             &d.steps[d.steps.len() - 1..]
         };
-        match notation {
-            Notation::Text => out.push_str(&format!("# {}\n", d.title)),
-            Notation::Latex => out.push_str(&format!("% {}\n", d.title)),
+        match latex {
+            false => out.push_str(&format!("# {}\n", d.title)),
+            true => out.push_str(&format!("% {}\n", d.title)),
         }
         for step in steps {
             if all_steps {
-                match notation {
-                    Notation::Text => out.push_str(&format!("## {}\n", step.title)),
-                    Notation::Latex => out.push_str(&format!("% {}\n", step.title)),
+                match latex {
+                    false => out.push_str(&format!("## {}\n", step.title)),
+                    true => out.push_str(&format!("% {}\n", step.title)),
                 }
             }
             let lines: Vec<String> = step
@@ -79,15 +84,15 @@ fn render(derivations: &[Derivation], notation: Notation, all_steps: bool) -> St
                 .iter()
                 .map(|r| {
                     let (l, rhs) = relation(r, notation);
-                    match notation {
-                        Notation::Text => format!("{l} = {rhs}"),
-                        Notation::Latex => format!("{l} &= {rhs}"),
+                    match latex {
+                        false => format!("{l} = {rhs}"),
+                        true => format!("{l} &= {rhs}"),
                     }
                 })
                 .collect();
-            match notation {
-                Notation::Text => out.push_str(&(lines.join("\n") + "\n")),
-                Notation::Latex => out.push_str(&format!(
+            match latex {
+                false => out.push_str(&(lines.join("\n") + "\n")),
+                true => out.push_str(&format!(
                     "\\begin{{align*}}\n{}\n\\end{{align*}}\n",
                     lines.join(" \\\\\n")
                 )),

@@ -68,3 +68,4 @@ mod work_precision_forced_truth;
 #[global_allocator]
 static ALLOCATOR: Counting = Counting;
 mod diagnosis;
+mod mathml;

@@ -35,13 +35,15 @@ pub enum Notation {
 }
 
 /// How a notation writes the marks around and between terms: a leading minus, the signs
-/// between terms, and the parentheses of a group.
+/// between terms, and the parentheses of a group, which `fit` sizes once the group is
+/// written (from where its opening parenthesis starts to the end of the output).
 struct Marks {
     leading_minus: &'static str,
     minus: &'static str,
     plus: &'static str,
     open: &'static str,
     close: &'static str,
+    fit: fn(&mut String, usize),
 }
 
 /// The marks of text and LaTeX.
@@ -51,6 +53,7 @@ const PLAIN_MARKS: Marks = Marks {
     plus: " + ",
     open: "(",
     close: ")",
+    fit: |_, _| {},
 };
 
 thread_local! {
@@ -112,12 +115,14 @@ fn signed_with(
     if negative {
         out.push_str(marks.leading_minus);
     }
+    let open_at = out.len();
     if grouped {
         out.push_str(marks.open);
     }
     node(out, layout, root);
     if grouped {
         out.push_str(marks.close);
+        (marks.fit)(out, open_at);
     }
 }
 
@@ -221,6 +226,7 @@ pub fn vector(v: &Vector, notation: Notation) -> String {
                 (false, false) => marks.plus,
             });
             let grouped = matches!(layout.node(root), Node::Sum(_));
+            let open_at = out.len();
             if grouped {
                 out.push_str(marks.open);
             }
@@ -228,6 +234,7 @@ pub fn vector(v: &Vector, notation: Notation) -> String {
             render_into(&mut out, layout, false, root, notation);
             if grouped {
                 out.push_str(marks.close);
+                (marks.fit)(&mut out, open_at);
             } else if &out[body..] == one {
                 out.truncate(body);
             }

@@ -28,21 +28,23 @@ pub enum Format {
     Latex,
     Markdown,
     Json,
+    /// One self-contained HTML page, the mathematics in MathML.
+    Html,
 }
 
 /// A result with its forms and value.
-struct Result<'a> {
+pub(super) struct Result<'a> {
     name: &'a str,
-    quantity: Quantity,
+    pub(super) quantity: Quantity,
     text: String,
     latex: String,
-    value: Option<Vec<f64>>,
-    unit: Option<String>,
+    pub(super) value: Option<Vec<f64>>,
+    pub(super) unit: Option<String>,
 }
 
 impl Result<'_> {
     /// Whether the symbolic form is already a plain number (its value adds nothing).
-    fn is_number(&self) -> bool {
+    pub(super) fn is_number(&self) -> bool {
         self.text.parse::<f64>().is_ok()
     }
 }
@@ -100,7 +102,7 @@ pub fn relation(r: &Relation, notation: Notation) -> (String, String) {
 }
 
 /// The quantity in LaTeX, as a textbook names it (`\mathbf{H}_G`, `T`, an unknown's symbol).
-fn quantity_latex(quantity: Quantity) -> String {
+pub(super) fn quantity_latex(quantity: Quantity) -> String {
     match quantity {
         Quantity::AngularVelocity => r"\boldsymbol{\omega}".into(),
         Quantity::MassCentreVelocity => r"\bar{\mathbf{v}}".into(),
@@ -226,6 +228,7 @@ pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bo
         Format::Latex => latex(scene, analysis, &results, standalone),
         Format::Markdown => markdown(scene, analysis, &results),
         Format::Json => json(scene, analysis, &results).to_string(),
+        Format::Html => super::html::page(scene, analysis, &results),
     }
 }
 

@@ -30,10 +30,12 @@ mod double_double_float;
 mod dual_numbers;
 mod expression_generator;
 mod general_body_print;
+mod html_page;
 mod integrators;
 mod issue15_scenes;
 mod latex_compiles;
 mod layering;
+mod mathml;
 mod nalgebra_ops;
 mod numeric_powers;
 mod operation_count;
@@ -68,4 +70,3 @@ mod work_precision_forced_truth;
 #[global_allocator]
 static ALLOCATOR: Counting = Counting;
 mod diagnosis;
-mod mathml;

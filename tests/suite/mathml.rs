@@ -25,6 +25,10 @@ fn sub(base: &str, subscript: &str) -> String {
 
 const TIMES: &str = "<mo>&#x2062;</mo>";
 
+/// Parentheses of the text's size, around what holds no fraction.
+const OPEN: &str = r#"<mrow><mo stretchy="false">(</mo>"#;
+const CLOSE: &str = r#"<mo stretchy="false">)</mo></mrow>"#;
+
 #[test]
 fn symbols_with_subscripts() {
     assert_eq!(mathml("m"), "<mi>m</mi>");
@@ -79,9 +83,11 @@ fn powers_of_subscripted_symbols_and_of_powers() {
     );
     assert_eq!(
         mathml("(w_x^2)^(3/2)"),
-        "<msup><mrow><mo>(</mo><msubsup><mrow><mi>ω</mi></mrow><mrow><mi>x</mi></mrow>\
-         <mrow><mn>2</mn></mrow></msubsup><mo>)</mo></mrow><mrow><mfrac><mn>3</mn><mn>2</mn>\
-         </mfrac></mrow></msup>"
+        format!(
+            "<msup>{OPEN}<msubsup><mrow><mi>ω</mi></mrow><mrow><mi>x</mi></mrow>\
+             <mrow><mn>2</mn></mrow></msubsup>{CLOSE}<mrow><mfrac><mn>3</mn><mn>2</mn>\
+             </mfrac></mrow></msup>"
+        )
     );
 }
 
@@ -90,14 +96,29 @@ fn parentheses_around_a_group() {
     assert_eq!(
         mathml("-(I_y - I_z)*w_y*w_z"),
         format!(
-            "<mo>\u{2212}</mo><mrow><mrow><mo>(</mo><mrow>{}<mo>\u{2212}</mo>{}</mrow><mo>)</mo>\
-             </mrow>{TIMES}{}{TIMES}{}</mrow>",
+            "<mo>\u{2212}</mo><mrow>{OPEN}<mrow>{}<mo>\u{2212}</mo>{}</mrow>{CLOSE}{TIMES}{}{TIMES}{}</mrow>",
             sub("I", "y"),
             sub("I", "z"),
             sub("ω", "y"),
             sub("ω", "z")
         )
     );
+}
+
+#[test]
+fn parentheses_grow_around_a_fraction() {
+    // As `\left( … \right)`: a vector's component and a factor holding a fraction.
+    let v: Vector = Vector::new(
+        Expr::symbol("a") / Expr::symbol("b") + Expr::symbol("c"),
+        Expr::int(0),
+        Expr::int(0),
+    );
+    let printed = print::vector(&v, Notation::MathMl);
+    assert!(printed.starts_with("<mrow><mo>(</mo>"), "{printed}");
+    assert!(printed.contains("<mo>)</mo></mrow>"), "{printed}");
+    let power = mathml("(a/b + c)^2");
+    assert!(power.contains("<mrow><mo>(</mo>"), "{power}");
+    assert!(!power.contains("stretchy"), "{power}");
 }
 
 #[test]
@@ -108,8 +129,10 @@ fn functions_roots_and_absolute_values() {
     );
     assert_eq!(
         mathml("cos(a + b)"),
-        "<mrow><mi>cos</mi><mo>&#x2061;</mo><mrow><mo>(</mo><mrow><mi>a</mi><mo>+</mo><mi>b</mi>\
-         </mrow><mo>)</mo></mrow></mrow>"
+        format!(
+            "<mrow><mi>cos</mi><mo>&#x2061;</mo>{OPEN}<mrow><mi>a</mi><mo>+</mo><mi>b</mi>\
+             </mrow>{CLOSE}</mrow>"
+        )
     );
     // The power of a function stands on its name, and a thin space follows its argument.
     assert_eq!(
@@ -167,7 +190,7 @@ fn vectors_with_bold_unit_vectors() {
     assert_eq!(
         print::vector(&w, Notation::MathMl),
         format!(
-            "<mrow><mo>(</mo><mrow><mi>a</mi><mo>\u{2212}</mo><mi>b</mi></mrow><mo>)</mo></mrow>\
+            "{OPEN}<mrow><mi>a</mi><mo>\u{2212}</mo><mi>b</mi></mrow>{CLOSE}\
              {TIMES}<mi>\u{1d422}</mi>"
         )
     );

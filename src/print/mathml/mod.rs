@@ -2,7 +2,9 @@
 //! `\frac{a}{b}` is `<mfrac>`, a power `<msup>` (`<msubsup>` on a subscripted symbol, as
 //! `\omega_x^2` is set), `\sqrt{x}` `<msqrt>`, `\sin\beta` `<mi>sin</mi><mo>&#x2061;</mo>`
 //! (function application) and `β`, factors joined by invisible times (`&#x2062;`), and
-//! parentheses `<mo>(</mo> … <mo>)</mo>`, which stretch to what they enclose. A symbol's
+//! parentheses `<mo>(</mo> … <mo>)</mo>`, which stretch to a fraction they enclose, as
+//! `\left( … \right)` does, and keep the size of the text otherwise (a stretched glyph
+//! around `m_1 + m_2`, taller than the text by its subscripts, would stand apart). A symbol's
 //! MathML is read from its LaTeX spelling ([`spelling`]), so the two never name it apart.
 //!
 //! The output is the content of a `<math>` element; wrapping it is the caller's.
@@ -15,15 +17,36 @@ use crate::algebra::{Func, Symbol};
 
 pub use spelling::escaped;
 
-/// The marks of MathML: the minus sign U+2212 (a hyphen is too short), parentheses that
-/// stretch.
+/// The marks of MathML: the minus sign U+2212 (a hyphen is too short), parentheses of the
+/// text's size until [`fit_parentheses`] lets them grow.
 pub(super) const MARKS: Marks = Marks {
     leading_minus: "<mo>\u{2212}</mo>",
     minus: "<mo>\u{2212}</mo>",
     plus: "<mo>+</mo>",
-    open: "<mrow><mo>(</mo>",
-    close: "<mo>)</mo></mrow>",
+    open: FIXED_OPEN,
+    close: FIXED_CLOSE,
+    fit: fit_parentheses,
 };
+
+const FIXED_OPEN: &str = r#"<mrow><mo stretchy="false">(</mo>"#;
+const FIXED_CLOSE: &str = r#"<mo stretchy="false">)</mo></mrow>"#;
+const GROWING_OPEN: &str = "<mrow><mo>(</mo>";
+const GROWING_CLOSE: &str = "<mo>)</mo></mrow>";
+
+/// The group written in `out` from `open_at` (between [`FIXED_OPEN`] and [`FIXED_CLOSE`])
+/// with parentheses that stretch when it holds a fraction.
+fn fit_parentheses(out: &mut String, open_at: usize) {
+    let Some(group) = out.get(open_at..) else {
+        return;
+    };
+    let fenced = group.starts_with(FIXED_OPEN) && group.ends_with(FIXED_CLOSE);
+    let inner = group.get(FIXED_OPEN.len()..group.len().saturating_sub(FIXED_CLOSE.len()));
+    if fenced && inner.is_some_and(|inner| inner.contains("<mfrac")) {
+        out.truncate(out.len() - FIXED_CLOSE.len());
+        out.push_str(GROWING_CLOSE);
+        out.replace_range(open_at..open_at + FIXED_OPEN.len(), GROWING_OPEN);
+    }
+}
 
 /// The number one, as [`number`] writes it.
 pub(super) const ONE: &str = "<mn>1</mn>";
@@ -48,6 +71,12 @@ pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
 /// Appends the MathML of a symbol.
 pub fn symbol(out: &mut String, s: Symbol) {
     spelling::write(out, s.latex(), None);
+}
+
+/// Appends the MathML of a name spelt in LaTeX as symbols are (`\mathbf{H}_G`,
+/// `\bar{\mathbf{v}}`, `\boldsymbol{\omega}`; see [`spelling`] for the subset).
+pub fn latex_name(out: &mut String, latex: &str) {
+    spelling::write(out, latex, None);
 }
 
 fn node(out: &mut String, layout: &Layout, id: NodeId) {
@@ -99,9 +128,7 @@ fn power(out: &mut String, layout: &Layout, base: NodeId, exponent: NodeId) {
         Node::Symbol(s) => spelling::write(out, s.latex(), Some(&raised)),
         Node::Power(..) => {
             out.push_str("<msup>");
-            out.push_str(MARKS.open);
-            node(out, layout, base);
-            out.push_str(MARKS.close);
+            parenthesised(out, layout, base);
             row(out, &raised);
             out.push_str("</msup>");
         }
@@ -137,9 +164,11 @@ fn function_argument(out: &mut String, layout: &Layout, arg: NodeId) {
 }
 
 fn parenthesised(out: &mut String, layout: &Layout, id: NodeId) {
+    let open_at = out.len();
     out.push_str(MARKS.open);
     node(out, layout, id);
     out.push_str(MARKS.close);
+    fit_parentheses(out, open_at);
 }
 
 fn number(out: &mut String, layout: &Layout, n: Number) {
@@ -168,11 +197,7 @@ fn fraction(out: &mut String, n: Integer, d: Integer) {
 fn factor(out: &mut String, layout: &Layout, id: NodeId) {
     match layout.node(id) {
         Node::Sum(_) | Node::Product(_) => parenthesised(out, layout, id),
-        Node::Number(n) if !layout.parts(*n).1.is_one() => {
-            out.push_str(MARKS.open);
-            number(out, layout, *n);
-            out.push_str(MARKS.close);
-        }
+        Node::Number(n) if !layout.parts(*n).1.is_one() => parenthesised(out, layout, id),
         _ => node(out, layout, id),
     }
 }

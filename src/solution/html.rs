@@ -1,0 +1,170 @@
+//! A worked solution as one self-contained HTML page, a preview without LaTeX: UTF-8, its
+//! style inline, no script and nothing fetched. The content and order are the LaTeX
+//! output's: the title, the givens, each step (its heading, its table of parts, its
+//! relations aligned at `=`), then the results with their values and units. The
+//! mathematics is MathML Core from the same layout as the LaTeX (`print::mathml`), which
+//! current browsers lay out natively; each step's relations are one
+//! `<math display="block">` of a three-column `<mtable>` (left side, `=`, right side),
+//! scrolled sideways where a relation is wider than the page.
+
+use super::mathml_value::{decimal, spaced_unit, value};
+use super::numbers::format_value;
+use super::render::{quantity_latex, relation, Result};
+use crate::algebra::{Axis, Expr};
+use crate::mechanics::derivation::{Relation, Table};
+use crate::print::{self, mathml::escaped, Notation};
+use crate::scene::model::Given;
+use crate::scene::{Analysis, Scene, Value};
+
+/// The page's style: a column of text, the maths in a maths font, the left sides of the
+/// relations to the right of their column and the right sides to the left (Chromium aligns
+/// a table cell of maths by `-webkit-right`, not by `right`; other browsers read the
+/// table's `columnalign`).
+const STYLE: &str = "\
+body { font-family: 'Latin Modern Roman', 'DejaVu Serif', serif; max-width: 48em; \
+margin: 2em auto; padding: 0 1em; line-height: 1.45; color: #111; }
+math { font-family: 'Latin Modern Math', 'STIX Two Math', 'DejaVu Math TeX Gyre', math; }
+math[display=\"block\"] { overflow-x: auto; overflow-y: hidden; padding: 0.25em 0; }
+mtd { padding: 0.2em 0; }
+mtd.lhs { text-align: right; text-align: -webkit-right; }
+mtd.eq { padding: 0.2em 0.3em; }
+mtd.rhs { text-align: left; text-align: -webkit-left; }
+h2 { font-size: 1.1em; margin: 1.4em 0 0.4em; }
+h2 .step { margin-right: 0.5em; }
+table.parts { border-collapse: collapse; margin: 0.5em 0; }
+table.parts th, table.parts td { border-bottom: 1px solid #bbb; padding: 0.2em 0.8em; }
+";
+
+/// The page of a worked solution (`results` in the order of `analysis.results`).
+pub fn page(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
+    let title = scene.title.as_deref().unwrap_or("Worked solution");
+    let mut out = format!(
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <title>{}</title>\n<style>\n{STYLE}</style>\n</head>\n<body>\n",
+        escaped(title)
+    );
+    if let Some(t) = &scene.title {
+        out.push_str(&format!("<h1>{}</h1>\n", title_html(t)));
+    }
+    let givens: Vec<String> = scene.givens.iter().map(given).collect();
+    out.push_str(&format!("<h2>Given</h2>\n<p>{}.</p>\n", givens.join(", ")));
+    for (k, step) in analysis.plan.iter().enumerate() {
+        out.push_str(&format!(
+            "<section>\n<h2><span class=\"step\">Step {}</span> {}</h2>\n",
+            k + 1,
+            title_html(&step.title)
+        ));
+        if let Some(table) = &step.table {
+            out.push_str(&parts(table));
+        }
+        let rows = step.relations.iter().map(relation_row);
+        out.push_str(&block(rows));
+        out.push_str("</section>\n");
+    }
+    out.push_str("<h2>Results</h2>\n");
+    let rows = analysis
+        .results
+        .iter()
+        .zip(results)
+        .map(|((_, v), r)| result_row(v, r));
+    out.push_str(&block(rows));
+    out.push_str("</body>\n</html>\n");
+    out
+}
+
+/// A step's title as HTML. (The words escaped; `print::markup` will typeset its maths.)
+fn title_html(title: &str) -> String {
+    escaped(title)
+}
+
+/// A given as inline maths: `m = 0.3 kg`, or its name alone when it is symbolic.
+fn given(g: &Given) -> String {
+    let name = print::mathml(&Expr::sym(g.symbol));
+    match &g.written {
+        Some(w) => {
+            let (number, unit) = w.split_once(' ').unwrap_or((w.as_str(), ""));
+            format!("<math>{name}<mo>=</mo>{}</math>", value(number, unit))
+        }
+        None => format!("<math>{name}</math>"),
+    }
+}
+
+/// Rows of a three-column table aligned at `=`, as one block of maths, its fractions set
+/// full size as in LaTeX's `align*` (a table's cells are otherwise in text style).
+fn block(rows: impl Iterator<Item = String>) -> String {
+    format!(
+        "<math display=\"block\"><mtable displaystyle=\"true\" columnalign=\"right center left\">\n{}</mtable></math>\n",
+        rows.collect::<String>()
+    )
+}
+
+/// `lhs = rhs` as a row of [`block`].
+fn row(lhs: &str, rhs: &str) -> String {
+    format!(
+        "<mtr><mtd class=\"lhs\">{lhs}</mtd><mtd class=\"eq\"><mo>=</mo></mtd>\
+         <mtd class=\"rhs\">{rhs}</mtd></mtr>\n"
+    )
+}
+
+fn relation_row(r: &Relation) -> String {
+    let (lhs, rhs) = relation(r, Notation::MathMl);
+    row(&lhs, &rhs)
+}
+
+/// A result: its quantity's name, its form and, when every given has a value, `= value unit`.
+fn result_row(v: &Value, r: &Result) -> String {
+    let mut name = String::new();
+    print::mathml::latex_name(&mut name, &quantity_latex(r.quantity));
+    let mut rhs = match v {
+        Value::Scalar(e) => print::mathml(e),
+        Value::Vector(v) => print::vector(v, Notation::MathMl),
+    };
+    if let Some(values) = r.value.as_ref().filter(|_| !r.is_number()) {
+        let unit = r.unit.as_deref().unwrap_or("");
+        rhs.push_str("<mo>=</mo>");
+        match values.as_slice() {
+            [x] => rhs.push_str(&value(&format_value(*x), unit)),
+            components => {
+                let numbers: Vec<String> = components
+                    .iter()
+                    .map(|x| decimal(&format_value(*x)))
+                    .collect();
+                // The unit of a vector stands after its parenthesis, as in the LaTeX.
+                rhs.push_str(&format!(
+                    "<mrow><mo>(</mo>{}<mo>)</mo></mrow>{}",
+                    numbers.join("<mo>,</mo>"),
+                    spaced_unit(unit)
+                ));
+            }
+        }
+    }
+    row(&name, &rhs)
+}
+
+/// A composite body's table of parts: a row per part, a column per quantity.
+fn parts(table: &Table) -> String {
+    let cell = |e: &Expr| {
+        format!(
+            "<math>{}</math>",
+            print::render(e, Notation::MathMl, Axis::X)
+        )
+    };
+    let header: String = table
+        .columns
+        .iter()
+        .map(|c| format!("<th>{}</th>", cell(c)))
+        .collect();
+    let rows: String = table
+        .rows
+        .iter()
+        .map(|row| {
+            let cells: String = row
+                .cells
+                .iter()
+                .map(|c| format!("<td>{}</td>", cell(c)))
+                .collect();
+            format!("<tr><th>{}</th>{cells}</tr>\n", title_html(&row.label))
+        })
+        .collect();
+    format!("<table class=\"parts\">\n<tr><th>part</th>{header}</tr>\n{rows}</table>\n")
+}

@@ -15,10 +15,11 @@
 //! | `\,`                           | `<mspace width="0.1667em"/>`                             |
 //!
 //! An unknown command is written as its name in upright letters and an unclosed brace ends
-//! at the end of the spelling: any text gives well-formed MathML, in time linear in its
-//! length (each character is read once, groups nest at most [`MAX_DEPTH`] deep).
+//! at the end of the spelling: any text gives well-formed MathML. Each character is read
+//! once, and groups and command arguments nest at most [`MAX_DEPTH`] deep (deeper ones are
+//! left empty), so reading never recurses without bound.
 
-/// How deep braces may nest; deeper groups are read as plain characters.
+/// How deep groups and command arguments may nest; deeper ones are left empty.
 const MAX_DEPTH: usize = 16;
 
 /// Lower-case Greek letters by their TeX names, in Unicode's order (final sigma is not one).
@@ -56,6 +57,15 @@ impl Atom {
         Atom {
             base,
             ..Atom::default()
+        }
+    }
+
+    /// Where a subscript (`below`) or a superscript goes.
+    fn slot(&mut self, below: bool) -> &mut Option<String> {
+        if below {
+            &mut self.sub
+        } else {
+            &mut self.sup
         }
     }
 
@@ -129,6 +139,21 @@ pub fn write(out: &mut String, latex: &str, exponent: Option<&str>) {
     }
 }
 
+/// Sets `script` below (`_`) or above (`^`) the last atom, as TeX does: on an atom already
+/// scripted there, it scripts the whole; with no atom before, an empty base.
+fn attach(atoms: &mut Vec<Atom>, below: bool, script: String) {
+    let mut atom = atoms
+        .pop()
+        .unwrap_or_else(|| Atom::new("<mrow></mrow>".into()));
+    if atom.slot(below).is_some() {
+        let mut written = String::new();
+        atom.write(&mut written);
+        atom = Atom::new(written);
+    }
+    *atom.slot(below) = Some(script);
+    atoms.push(atom);
+}
+
 /// The spelling as characters and the position reading has reached.
 struct Reader {
     chars: Vec<char>,
@@ -149,37 +174,7 @@ impl Reader {
                 '}' if depth > 0 => break,
                 '_' | '^' => {
                     let script = self.argument(style, depth);
-                    let Some(last) = atoms.last_mut() else {
-                        // A script on nothing: TeX sets it on an empty base.
-                        let mut empty = Atom::new("<mrow></mrow>".into());
-                        *(if c == '_' {
-                            &mut empty.sub
-                        } else {
-                            &mut empty.sup
-                        }) = Some(script);
-                        atoms.push(empty);
-                        continue;
-                    };
-                    let slot = if c == '_' {
-                        &mut last.sub
-                    } else {
-                        &mut last.sup
-                    };
-                    match slot {
-                        None => *slot = Some(script),
-                        // A double script reads as a script of the scripted atom.
-                        Some(_) => {
-                            let mut base = String::new();
-                            last.write(&mut base);
-                            let mut outer = Atom::new(base);
-                            *(if c == '_' {
-                                &mut outer.sub
-                            } else {
-                                &mut outer.sup
-                            }) = Some(script);
-                            *last = outer;
-                        }
-                    }
+                    attach(&mut atoms, c == '_', script);
                 }
                 ' ' => {}
                 '{' => {

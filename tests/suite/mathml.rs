@@ -106,6 +106,18 @@ fn parentheses_around_a_group() {
 }
 
 #[test]
+fn a_thin_space_after_a_name_of_several_letters() {
+    // `F Δt b`, never `FΔtb`: the b is not part of the interval's name.
+    assert_eq!(
+        mathml("F*Dt*b"),
+        format!(
+            "<mrow><mi>F</mi>{TIMES}<mrow><mi mathvariant=\"normal\">Δ</mi><mi>t</mi></mrow>\
+             <mspace width=\"0.1667em\"/>{TIMES}<mi>b</mi></mrow>"
+        )
+    );
+}
+
+#[test]
 fn parentheses_grow_around_a_fraction() {
     // As `\left( … \right)`: a vector's component and a factor holding a fraction.
     let v: Vector = Vector::new(

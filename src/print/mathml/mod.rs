@@ -203,11 +203,12 @@ fn factor(out: &mut String, layout: &Layout, id: NodeId) {
 }
 
 /// Factors joined by invisible times, after whatever `out` already holds of the same
-/// product; a thin space after a function's argument when a factor follows.
+/// product; a thin space before a factor that follows a function's argument or a name of
+/// several letters (`sin β  L`, `Δt  b`), which would otherwise run into it.
 fn factors(out: &mut String, layout: &Layout, mut separate: bool, span: Span) {
-    let mut after_function = false;
+    let mut spaced = false;
     for &(_, f) in layout.entries(span) {
-        if after_function {
+        if spaced {
             out.push_str(THIN_SPACE);
         }
         if separate {
@@ -215,9 +216,12 @@ fn factors(out: &mut String, layout: &Layout, mut separate: bool, span: Span) {
         }
         factor(out, layout, f);
         separate = true;
-        after_function = matches!(layout.node(f), Node::Function(..))
-            || matches!(layout.node(f), Node::Power(base, _)
-                if matches!(layout.node(*base), Node::Function(..)));
+        spaced = match layout.node(f) {
+            Node::Function(..) => true,
+            Node::Power(base, _) => matches!(layout.node(*base), Node::Function(..)),
+            Node::Symbol(s) => spelling::is_several_letters(s.latex()),
+            _ => false,
+        };
     }
 }
 

@@ -111,11 +111,7 @@ impl Atom {
 /// Appends the MathML of the spelling `latex`; with `exponent` (MathML already written),
 /// raised on its last element as `latex^{...}` would be (`\omega_x^2` as one `<msubsup>`).
 pub fn write(out: &mut String, latex: &str, exponent: Option<&str>) {
-    let mut reader = Reader {
-        chars: latex.chars().collect(),
-        at: 0,
-    };
-    let mut atoms = reader.row(Style::Math, 0);
+    let mut atoms = Reader::new(latex).row(Style::Math, 0);
     if let Some(exponent) = exponent {
         match atoms.last_mut() {
             Some(last) if last.sup.is_none() => last.sup = Some(exponent.to_string()),
@@ -154,6 +150,16 @@ fn attach(atoms: &mut Vec<Atom>, below: bool, script: String) {
     atoms.push(atom);
 }
 
+/// Whether the spelling reads as more than one letter (`\Delta t`, `\Sigma M_x`,
+/// `\mathit{Lb}`), so that a letter after it would seem to belong to it.
+pub fn is_several_letters(latex: &str) -> bool {
+    let atoms = Reader::new(latex).row(Style::Math, 0);
+    match atoms.as_slice() {
+        [one] => one.letter().is_some_and(|l| l.chars().count() > 1),
+        atoms => atoms.len() > 1,
+    }
+}
+
 /// The spelling as characters and the position reading has reached.
 struct Reader {
     chars: Vec<char>,
@@ -161,6 +167,13 @@ struct Reader {
 }
 
 impl Reader {
+    fn new(latex: &str) -> Reader {
+        Reader {
+            chars: latex.chars().collect(),
+            at: 0,
+        }
+    }
+
     fn peek(&self) -> Option<char> {
         self.chars.get(self.at).copied()
     }
@@ -485,6 +498,23 @@ mod tests {
             "<msub><mrow><mi>m</mi></mrow><mrow><mtext>body</mtext></mrow></msub>"
         );
         assert_eq!(mathml(r"\mathrm{N}"), r#"<mi mathvariant="normal">N</mi>"#);
+    }
+
+    #[test]
+    fn names_of_several_letters() {
+        use super::is_several_letters;
+        for several in [r"\Delta t", r"\Sigma M_x", r"\mathit{Lb}"] {
+            assert!(is_several_letters(several), "{several}");
+        }
+        for one in [
+            r"\omega_x",
+            "I_{xy}",
+            r"\bar{v}_x",
+            r"\dot{\omega}",
+            "m_{\text{body}}",
+        ] {
+            assert!(!is_several_letters(one), "{one}");
+        }
     }
 
     #[test]

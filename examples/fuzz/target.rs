@@ -98,7 +98,7 @@ fn expression(text: &str, form: Form) -> Outcome {
                 .map_err(at_input)?,
             Form::Expanded => side.expand().map_err(at_input)?,
         };
-        for notation in [Notation::Text, Notation::Latex] {
+        for notation in [Notation::Text, Notation::Latex, Notation::MathMl] {
             printed(&show(&side, notation).map_err(at_input)?, text)?;
         }
     }

@@ -1,4 +1,4 @@
-//! `kinetics solve SCENE [--format text|latex|markdown|json] [--standalone]` and
+//! `kinetics solve SCENE [--format text|latex|markdown|json|html] [--standalone]` and
 //! `kinetics plan SCENE`: a scene file (or `-` for standard input) analysed on demand.
 
 use super::error::CliError;
@@ -24,6 +24,8 @@ pub enum SolutionFormat {
     Latex,
     Markdown,
     Json,
+    /// One self-contained HTML page, the mathematics in MathML (a preview without LaTeX).
+    Html,
 }
 
 impl From<SolutionFormat> for Format {
@@ -33,6 +35,7 @@ impl From<SolutionFormat> for Format {
             SolutionFormat::Latex => Format::Latex,
             SolutionFormat::Markdown => Format::Markdown,
             SolutionFormat::Json => Format::Json,
+            SolutionFormat::Html => Format::Html,
         }
     }
 }

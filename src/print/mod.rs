@@ -1,7 +1,8 @@
-//! Printers: LaTeX in textbook form and plain text the parser reads back.
+//! Printers: LaTeX in textbook form, plain text the parser reads back, and MathML Core for
+//! a browser.
 //!
-//! Both render the same presented form ([`layout::Layout::present`]), so they always agree
-//! on order and grouping; only the notation differs. Each thread keeps one layout and reuses
+//! All three render the same presented form ([`layout::Layout::present`]), so they always
+//! agree on order and grouping; only the notation differs. Each thread keeps one layout and reuses
 //! it, and a renderer appends to one string, so printing allocates no node of its own.
 //!
 //! ```
@@ -15,9 +16,10 @@
 mod growing_parentheses;
 pub mod latex;
 pub mod layout;
-pub mod markup;
-mod spelling;
 pub mod line_break;
+pub mod markup;
+pub mod mathml;
+mod spelling;
 pub mod text;
 pub mod width;
 
@@ -38,7 +40,31 @@ pub enum Notation {
     #[default]
     Text,
     Latex,
+    /// MathML Core, the elements inside a `<math>` element.
+    MathMl,
 }
+
+/// How a notation writes the marks around and between terms: a leading minus, the signs
+/// between terms, and the parentheses of a group, which `fit` sizes once the group is
+/// written (from where its opening parenthesis starts to the end of the output).
+struct Marks {
+    leading_minus: &'static str,
+    minus: &'static str,
+    plus: &'static str,
+    open: &'static str,
+    close: &'static str,
+    fit: fn(&mut String, usize),
+}
+
+/// The marks of text and LaTeX.
+const PLAIN_MARKS: Marks = Marks {
+    leading_minus: "-",
+    minus: " - ",
+    plus: " + ",
+    open: "(",
+    close: ")",
+    fit: |_, _| {},
+};
 
 thread_local! {
     /// This thread's layout, reused so that printing allocates only the printed string.
@@ -71,10 +97,11 @@ fn render_into(
     match notation {
         Notation::Text => text::render(out, layout, negative, root),
         Notation::Latex => latex::render(out, layout, negative, root),
+        Notation::MathMl => mathml::render(out, layout, negative, root),
     }
 }
 
-/// Appends a signed root in either notation: `-x`, and `-(a + b)` for a sum; `node` writes a
+/// Appends a signed root in text or LaTeX: `-x`, and `-(a + b)` for a sum; `node` writes a
 /// node in the notation.
 fn signed(
     out: &mut String,
@@ -83,32 +110,57 @@ fn signed(
     root: NodeId,
     node: impl Fn(&mut String, &Layout, NodeId),
 ) {
+    signed_with(out, layout, negative, root, &PLAIN_MARKS, node);
+}
+
+/// Appends a signed root with the notation's `marks`.
+fn signed_with(
+    out: &mut String,
+    layout: &Layout,
+    negative: bool,
+    root: NodeId,
+    marks: &Marks,
+    node: impl Fn(&mut String, &Layout, NodeId),
+) {
     let grouped = negative && matches!(layout.node(root), Node::Sum(_));
     if negative {
-        out.push('-');
+        out.push_str(marks.leading_minus);
     }
+    let open_at = out.len();
     if grouped {
-        out.push('(');
+        out.push_str(marks.open);
     }
     node(out, layout, root);
     if grouped {
-        out.push(')');
+        out.push_str(marks.close);
+        (marks.fit)(out, open_at);
     }
 }
 
-/// Appends the terms of a sum in either notation, `a - b + c`, never `a + -b`.
+/// Appends the terms of a sum in text or LaTeX, `a - b + c`, never `a + -b`.
 fn sum(
     out: &mut String,
     layout: &Layout,
     terms: Span,
     node: impl Fn(&mut String, &Layout, NodeId),
 ) {
+    sum_with(out, layout, terms, &PLAIN_MARKS, node);
+}
+
+/// Appends the terms of a sum with the notation's `marks`.
+fn sum_with(
+    out: &mut String,
+    layout: &Layout,
+    terms: Span,
+    marks: &Marks,
+    node: impl Fn(&mut String, &Layout, NodeId),
+) {
     for (i, &(negative, term)) in layout.entries(terms).iter().enumerate() {
         out.push_str(match (i, negative) {
-            (0, true) => "-",
+            (0, true) => marks.leading_minus,
             (0, false) => "",
-            (_, true) => " - ",
-            (_, false) => " + ",
+            (_, true) => marks.minus,
+            (_, false) => marks.plus,
         });
         node(out, layout, term);
     }
@@ -176,9 +228,20 @@ pub fn vector(v: &Vector, notation: Notation) -> String {
         });
     }
     if out.is_empty() {
-        out.push('0');
+        out.push_str(match notation {
+            Notation::Text | Notation::Latex => "0",
+            Notation::MathMl => mathml::ZERO,
+        });
     }
     out
+}
+
+/// The marks `notation` writes around and between terms.
+fn marks(notation: Notation) -> &'static Marks {
+    match notation {
+        Notation::Text | Notation::Latex => &PLAIN_MARKS,
+        Notation::MathMl => &mathml::MARKS,
+    }
 }
 
 /// Appends one component of a vector with its sign and unit vector: `(a + b) \mathbf{i}`
@@ -192,22 +255,26 @@ fn vector_component(
     unit: Symbol,
     notation: Notation,
 ) {
-    let unit = match notation {
-        Notation::Text => unit.name(),
-        Notation::Latex => unit.latex(),
+    let marks = marks(notation);
+    // A unit coefficient is not written: `\mathbf{i}`, not `1 \mathbf{i}`.
+    let (one, times) = match notation {
+        Notation::Text => ("1", "*"),
+        Notation::Latex => ("1", " "),
+        Notation::MathMl => (mathml::ONE, mathml::INVISIBLE_TIMES),
     };
-    match (first, negative) {
-        (true, true) => out.push('-'),
-        (true, false) => {}
-        (false, true) => out.push_str(" - "),
-        (false, false) => out.push_str(" + "),
-    }
+    out.push_str(match (first, negative) {
+        (true, true) => marks.leading_minus,
+        (true, false) => "",
+        (false, true) => marks.minus,
+        (false, false) => marks.plus,
+    });
     let grouped = matches!(layout.node(root), Node::Sum(_));
-    // Parentheses grow around fractions in LaTeX, as a factor's do.
+    // Parentheses grow around fractions in LaTeX, as a factor's do (MathML's fit them).
     let (open, close) = match notation {
         Notation::Latex if growing_parentheses::grows(layout, root) => (r"\left(", r"\right)"),
-        _ => ("(", ")"),
+        _ => (marks.open, marks.close),
     };
+    let open_at = out.len();
     if grouped {
         out.push_str(open);
     }
@@ -215,15 +282,22 @@ fn vector_component(
     render_into(out, layout, false, root, notation);
     if grouped {
         out.push_str(close);
-    } else if &out[body..] == "1" {
-        // A unit coefficient is not written: `\mathbf{i}`, not `1 \mathbf{i}`.
+        (marks.fit)(out, open_at);
+    } else if &out[body..] == one {
         out.truncate(body);
     }
     if out.len() > body {
-        out.push_str(match notation {
-            Notation::Text => "*",
-            Notation::Latex => " ",
-        });
+        out.push_str(times);
     }
-    out.push_str(unit);
+    match notation {
+        Notation::Text => out.push_str(unit.name()),
+        Notation::Latex => out.push_str(spelling::latex_of(unit)),
+        Notation::MathMl => mathml::symbol(out, unit),
+    }
+}
+
+/// MathML of an expression, inertia groups ordered as for the x-equation: the children of
+/// a `<math>` element.
+pub fn mathml(e: &Expr) -> String {
+    render(e, Notation::MathMl, Axis::X)
 }

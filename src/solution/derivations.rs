@@ -35,6 +35,7 @@ pub fn render_derivations(derivations: &[Derivation], shown: Shown) -> String {
     } = shown;
     match format {
         Format::Json => json(derivations, axis).to_string(),
+        Format::Html => html(derivations, shown),
         _ => {
             let mut out = String::new();
             if standalone && format == Format::Latex {
@@ -125,6 +126,26 @@ fn relations(out: &mut String, format: Format, step: &Step) {
             }
         }
     }
+}
+
+/// One HTML page: a section per derivation, its convention, its steps (headings `<h3>`).
+fn html(derivations: &[Derivation], shown: Shown) -> String {
+    let mut out = super::html::page_start("Derivations");
+    for d in derivations {
+        out.push_str(&format!("<section>\n<h2>{}</h2>\n", markup::html(&d.title)));
+        if let Some(c) = convention(&d.name, shown.axis) {
+            out.push_str(&format!("<p>{}</p>\n", markup::html(&c)));
+        }
+        for step in steps(d, shown.all_steps) {
+            if shown.all_steps {
+                out.push_str(&format!("<h3>{}</h3>\n", markup::html(&step.title)));
+            }
+            out.push_str(&super::html::step_body(step));
+        }
+        out.push_str("</section>\n");
+    }
+    out.push_str(super::html::PAGE_END);
+    out
 }
 
 fn json(derivations: &[Derivation], axis: Axis) -> serde_json::Value {

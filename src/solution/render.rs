@@ -33,22 +33,24 @@ pub enum Format {
     Latex,
     Markdown,
     Json,
+    /// One self-contained HTML page, the mathematics in MathML.
+    Html,
 }
 
 /// A result with its forms and value.
-struct Result<'a> {
+pub(super) struct Result<'a> {
     name: &'a str,
-    quantity: Quantity,
+    pub(super) quantity: Quantity,
     text: String,
     latex: String,
-    value: Option<Vec<f64>>,
-    unit: Option<String>,
-    form: &'a Value,
+    pub(super) value: Option<Vec<f64>>,
+    pub(super) unit: Option<String>,
+    pub(super) form: &'a Value,
 }
 
 impl Result<'_> {
     /// Whether the symbolic form is already a plain number (its value adds nothing).
-    fn is_number(&self) -> bool {
+    pub(super) fn is_number(&self) -> bool {
         self.text.parse::<f64>().is_ok()
     }
 }
@@ -113,7 +115,7 @@ pub fn relation(r: &Relation, notation: Notation) -> (String, String) {
 }
 
 /// The quantity in LaTeX, as a textbook names it (`\mathbf{H}_G`, `T`, an unknown's symbol).
-fn quantity_latex(quantity: Quantity) -> String {
+pub(super) fn quantity_latex(quantity: Quantity) -> String {
     match quantity {
         Quantity::AngularVelocity => r"\boldsymbol{\omega}".into(),
         Quantity::MassCentreVelocity => r"\bar{\mathbf{v}}".into(),
@@ -188,6 +190,7 @@ pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bo
             Format::Latex => latex(scene, analysis, &results, standalone),
             Format::Markdown => markdown(scene, analysis, &results),
             Format::Json => json(scene, analysis, &results).to_string(),
+            Format::Html => super::html::page(scene, analysis, &results),
         }
     })
 }
@@ -284,7 +287,8 @@ fn latex_results(results: &[Result]) -> String {
                 let number = v.trim_end_matches(unit).trim();
                 // A value's digits, commas and spaces are narrower than 0.55 em; its unit is
                 // upright, narrower than a symbol of the same letters.
-                let width = 0.55 * number.len() as f64 + print::width::symbol_em(unit) + RELATION_EM;
+                let width =
+                    0.55 * number.len() as f64 + print::width::symbol_em(unit) + RELATION_EM;
                 (format!("= {}", quantity(number, unit)), width)
             });
             let mut lines = match r.form {

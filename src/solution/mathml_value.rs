@@ -1,0 +1,121 @@
+//! A number with its unit in MathML, as the LaTeX writes `-129.8\ \mathrm{N\cdot m}`: the
+//! sign a true minus, the digits one `<mn>`, a space, then the unit upright, its products
+//! `·`, quotients `/` and powers (`m^2`, `s²`, `kg^-1`) as `<msup>`.
+
+use crate::print::mathml::escaped;
+
+/// `number` (a decimal as written or printed: `-2`, `0.3`, `1.500e-7`) and its `unit`
+/// (`N*m`, `rad/s²`; empty for none).
+pub fn value(number: &str, unit: &str) -> String {
+    decimal(number) + &spaced_unit(unit)
+}
+
+/// A decimal, its minus a true minus sign (in a row of its own, so that after `=` it is
+/// the sign of the number, not an operator spaced as one).
+pub fn decimal(number: &str) -> String {
+    match number.strip_prefix('-') {
+        Some(magnitude) => format!(
+            "<mrow><mo>\u{2212}</mo><mn>{}</mn></mrow>",
+            escaped(magnitude)
+        ),
+        None => format!("<mn>{}</mn>", escaped(number)),
+    }
+}
+
+/// A unit after the space that separates it from its number; nothing for no unit.
+pub fn spaced_unit(unit: &str) -> String {
+    if unit.trim().is_empty() {
+        return String::new();
+    }
+    format!(r#"<mspace width="0.25em"/>{}"#, unit_mathml(unit))
+}
+
+/// A unit's MathML: names upright, `*` and `·` a centred dot, an exponent on the name before.
+fn unit_mathml(unit: &str) -> String {
+    let mut elements: Vec<String> = Vec::new();
+    let mut chars = unit.chars().peekable();
+    while let Some(c) = chars.next() {
+        let exponent = match c {
+            '²' => Some("2".to_string()),
+            '³' => Some("3".to_string()),
+            '^' => {
+                let mut e = String::new();
+                while let Some(d) =
+                    chars.next_if(|d| d.is_ascii_digit() || (*d == '-' && e.is_empty()))
+                {
+                    e.push(d);
+                }
+                Some(e)
+            }
+            _ => None,
+        };
+        if let Some(exponent) = exponent {
+            let base = elements.pop().unwrap_or_else(|| "<mrow></mrow>".into());
+            let raised = match exponent.strip_prefix('-') {
+                Some(e) => format!("<mo>\u{2212}</mo><mn>{e}</mn>"),
+                None => format!("<mn>{exponent}</mn>"),
+            };
+            elements.push(format!("<msup>{base}<mrow>{raised}</mrow></msup>"));
+            continue;
+        }
+        let element = match c {
+            ' ' => continue,
+            '*' | '·' => "<mo>\u{b7}</mo>".to_string(),
+            // `rad/s` is written close, as `\mathrm{rad/s}` sets it.
+            '/' => r#"<mo lspace="0" rspace="0">/</mo>"#.to_string(),
+            c if c.is_alphabetic() => {
+                let mut name = String::from(c);
+                while let Some(l) = chars.next_if(|l| l.is_alphabetic()) {
+                    name.push(l);
+                }
+                format!(r#"<mi mathvariant="normal">{}</mi>"#, escaped(&name))
+            }
+            c if c.is_ascii_digit() => format!("<mn>{c}</mn>"),
+            c => format!("<mo>{}</mo>", escaped(&c.to_string())),
+        };
+        elements.push(element);
+    }
+    format!("<mrow>{}</mrow>", elements.concat())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::value;
+
+    #[test]
+    fn numbers_and_units() {
+        let normal = |name: &str| format!(r#"<mi mathvariant="normal">{name}</mi>"#);
+        let space = r#"<mspace width="0.25em"/>"#;
+        assert_eq!(value("0.3", ""), "<mn>0.3</mn>");
+        assert_eq!(
+            value("-129.8", "N"),
+            format!(
+                "<mrow><mo>\u{2212}</mo><mn>129.8</mn></mrow>{space}<mrow>{}</mrow>",
+                normal("N")
+            )
+        );
+        assert_eq!(
+            value("6", "N*m"),
+            format!(
+                "<mn>6</mn>{space}<mrow>{}<mo>·</mo>{}</mrow>",
+                normal("N"),
+                normal("m")
+            )
+        );
+        assert_eq!(
+            value("3000", "rad/s²"),
+            format!(
+                "<mn>3000</mn>{space}<mrow>{}<mo lspace=\"0\" rspace=\"0\">/</mo><msup>{}<mrow><mn>2</mn></mrow></msup></mrow>",
+                normal("rad"),
+                normal("s")
+            )
+        );
+        assert_eq!(
+            value("1", "kg^-1"),
+            format!(
+                "<mn>1</mn>{space}<mrow><msup>{}<mrow><mo>\u{2212}</mo><mn>1</mn></mrow></msup></mrow>",
+                normal("kg")
+            )
+        );
+    }
+}

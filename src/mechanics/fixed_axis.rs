@@ -43,7 +43,7 @@ fn axis_vector(e: Expr) -> Vector {
 pub fn fixed_axis_rotation(inertia: &InertiaTensor) -> Result<Derivation, AlgebraError> {
     let omega = axis_vector(Expr::symbol("w"));
     let alpha = axis_vector(Expr::symbol("alpha"));
-    let rate = rate_of_angular_momentum(inertia, &omega, &alpha, &omega)?;
+    let rate = rate_of_angular_momentum(inertia, &omega, &alpha, &omega, "O")?;
     let moments = Vector::from_iterator(rate.result().iter().map(|r| r.rhs.clone()));
     let mut steps = vec![Step {
         table: None,

@@ -185,6 +185,15 @@ impl InertiaTensor {
             .collect()
     }
 
+    /// How a title writes the tensor about `point` (title markup): `[I]` about the mass
+    /// centre G, `[I_O]` about a fixed point O, as the chapter does.
+    pub fn written_about(point: &str) -> String {
+        match point {
+            "G" => "[I]".to_string(),
+            _ => format!("[I_{point}]"),
+        }
+    }
+
     /// The tensor of no mass: every moment and product zero.
     pub fn zero() -> InertiaTensor {
         InertiaTensor::diagonal([Expr::zero(), Expr::zero(), Expr::zero()])

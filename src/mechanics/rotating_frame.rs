@@ -53,11 +53,7 @@ pub fn rate_of_angular_momentum(
     let h = mat_vec(&matrix, omega);
     let transport = cross(frame_rate, &h);
     let total = expand_each(&(&relative + &transport))?;
-    // The chapter writes [I] about G and [I_O] about a fixed point O.
-    let tensor = match point {
-        "G" => "[I]".to_string(),
-        _ => format!("[I_{point}]"),
-    };
+    let tensor = InertiaTensor::written_about(point);
     Ok(Derivation {
         name: "Hdot".into(),
         title: "rate of change of angular momentum".into(),

@@ -12,7 +12,7 @@
 
 use super::derivation::{Derivation, Step};
 use super::inertia::{InertiaTensor, MassPart};
-use super::mass_centre::{mass_centre, MassCentre};
+use super::mass_centre::{first_moment, mass_centre, MassCentre};
 use super::parts_table::parts_table;
 use crate::algebra::{AlgebraError, Expr, Vector};
 
@@ -53,16 +53,29 @@ pub struct MassProperties {
 pub fn composite_body(parts: &[MassPart]) -> Result<(MassProperties, Derivation), AlgebraError> {
     let (MassCentre { mass, centroid }, centre) = mass_centre(parts)?;
     let inertia = InertiaTensor::composite(parts, &mass, &centroid)?;
-    let about_g: Vec<InertiaTensor> = parts
+    // Each part's offset from G over one denominator, r̄ᵢ − r̄ = (m r̄ᵢ − Σ mⱼ r̄ⱼ)/m, so that
+    // its contribution reads in lowest terms.
+    let moment = first_moment(parts);
+    let per_mass = mass.powi(-1);
+    let about_g = parts
         .iter()
-        .map(|p| p.inertia.parallel_axis(&p.mass, &(&p.position - &centroid)))
-        .collect();
+        .map(|p| {
+            let offset = p
+                .position
+                .iter()
+                .zip(moment.iter())
+                .map(|(x, first)| Ok(&(&mass * x - first).expand()? * &per_mass))
+                .collect::<Result<Vec<_>, AlgebraError>>()?;
+            Ok(p.inertia
+                .parallel_axis(&p.mass, &Vector::from_iterator(offset)))
+        })
+        .collect::<Result<Vec<_>, AlgebraError>>()?;
     let relations = [centre.result().to_vec(), inertia.relations()].concat();
     let derivation = Derivation {
         name: "body".into(),
         title: "mass, mass centre and centroidal inertia".into(),
         steps: vec![Step {
-            table: parts_table(parts, &about_g)?,
+            table: parts_table(parts, &about_g),
             title: "mass, mass centre and centroidal inertia of the body (products of inertia positive, ∫xy dm)".into(),
             relations,
         }],

@@ -42,11 +42,7 @@ pub struct MassCentre {
 /// ```
 pub fn mass_centre(parts: &[MassPart]) -> Result<(MassCentre, Derivation), AlgebraError> {
     let mass = Expr::add_all(parts.iter().map(|p| p.mass.clone())).expand()?;
-    let first_moment = parts
-        .iter()
-        .fold(Vector::from_element(Expr::zero()), |acc, p| {
-            acc + p.position.map(|x| &p.mass * &x)
-        });
+    let first_moment = first_moment(parts);
     let centroid = Vector::from_iterator(
         first_moment
             .iter()
@@ -67,4 +63,13 @@ pub fn mass_centre(parts: &[MassPart]) -> Result<(MassCentre, Derivation), Algeb
         )],
     };
     Ok((MassCentre { mass, centroid }, derivation))
+}
+
+/// `Σ mᵢ r̄ᵢ`, the first moment of the parts' masses about O (`m r̄`).
+pub fn first_moment(parts: &[MassPart]) -> Vector {
+    parts
+        .iter()
+        .fold(Vector::from_element(Expr::zero()), |acc, p| {
+            acc + p.position.map(|x| &p.mass * &x)
+        })
 }

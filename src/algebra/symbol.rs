@@ -12,7 +12,12 @@
 //! vbar_x    -> \bar{v}_x
 //! Dt        -> \Delta t
 //! SumM_x    -> \Sigma M_x        (a resultant)
+//! m_body    -> m_{\text{body}}   (a word as subscript is upright; axes stay italic)
+//! Lb        -> \mathit{Lb}       (a name of several letters, never read as L times b)
 //! ```
+//!
+//! `w` (ω) and `Dt` (Δt) are the chapter's aliases; [`Symbol::plain_latex`] is the spelling
+//! without them (`w`, `\mathit{Dt}`), which a page that also holds `omega` prints `w` in.
 //!
 //! The role decides the order of factors in a printed product (numbers, then inertia and
 //! mass, then other quantities, then lengths, then kinematic symbols) and which symbols
@@ -67,6 +72,8 @@ pub struct SymbolData {
     axis: Option<usize>,
     role: Role,
     latex: Box<str>,
+    /// The LaTeX without the aliases `w` → ω and `Dt` → Δt.
+    plain_latex: Box<str>,
 }
 
 /// An interned symbol; copying and comparing for equality are pointer operations.
@@ -191,6 +198,13 @@ impl Symbol {
         &self.0.latex
     }
 
+    /// The LaTeX form without the chapter's aliases: `w_x` (not `\omega_x`), `\mathit{Dt}`
+    /// (not `\Delta t`); the same as [`Symbol::latex`] for every other name. A page that holds
+    /// both `w_x` and `omega_x` prints the first so (`print::on_one_page`).
+    pub fn plain_latex(self) -> &'static str {
+        &self.0.plain_latex
+    }
+
     pub fn role(self) -> Role {
         self.0.role
     }
@@ -281,7 +295,8 @@ impl SymbolData {
             barred = true;
         }
         let role = classify(head, barred, dots, &subscript);
-        let latex = latex_of(head, barred, dots, &subscript);
+        let latex = latex_of(head, barred, dots, &subscript, true);
+        let plain_latex = latex_of(head, barred, dots, &subscript, false);
         let name = compose_name(head, barred, dots, &subscript);
         SymbolData {
             name_prefix: name_prefix(&name),
@@ -293,6 +308,7 @@ impl SymbolData {
             subscript: subscript.into(),
             role,
             latex: latex.into(),
+            plain_latex: plain_latex.into(),
         }
     }
 }
@@ -340,19 +356,28 @@ fn classify(base: &str, barred: bool, dots: u8, subscript: &str) -> Role {
     }
 }
 
-fn latex_of(base: &str, barred: bool, dots: u8, subscript: &str) -> String {
+/// The LaTeX of a name's parts; `aliases` spells `w` as ω and `Dt` as Δt. A base of several
+/// letters that is not Greek is `\mathit{Lb}` (one name, not the product `L b`); a subscript
+/// that is a word (two or more letters, one of them lower case and not an axis) is upright,
+/// `m_{\text{body}}`, while `I_{xy}`, `C_{AB}` and `\omega_{12}` stay italic.
+fn latex_of(base: &str, barred: bool, dots: u8, subscript: &str, aliases: bool) -> String {
     if let Some(rest) = base.strip_prefix("Sum").filter(|r| !r.is_empty()) {
         // `SumM_x` is the resultant ΣM_x.
-        return format!(r"\Sigma {}", latex_of(rest, barred, dots, subscript));
+        return format!(
+            r"\Sigma {}",
+            latex_of(rest, barred, dots, subscript, aliases)
+        );
     }
-    let mut core = if base == "w" {
+    let mut core = if base == "w" && aliases {
         r"\omega".to_string()
-    } else if base == "Dt" {
+    } else if base == "Dt" && aliases {
         r"\Delta t".to_string()
     } else if GREEK.contains(&base) {
         format!(r"\{base}")
     } else if matches!(base, "i" | "j" | "k") && subscript.is_empty() && !barred && dots == 0 {
         format!(r"\mathbf{{{base}}}")
+    } else if base.chars().count() > 1 {
+        format!(r"\mathit{{{base}}}")
     } else {
         base.to_string()
     };
@@ -367,11 +392,22 @@ fn latex_of(base: &str, barred: bool, dots: u8, subscript: &str) -> String {
     };
     if subscript.is_empty() {
         core
+    } else if is_word(subscript) {
+        format!(r"{core}_{{\text{{{subscript}}}}}")
     } else if subscript.len() == 1 {
         format!("{core}_{subscript}")
     } else {
         format!("{core}_{{{subscript}}}")
     }
+}
+
+/// A subscript that is a word, not axes, points or digits: `body`, `rot`, `frame`.
+fn is_word(subscript: &str) -> bool {
+    subscript.len() > 1
+        && subscript.chars().all(|c| c.is_ascii_alphabetic())
+        && subscript
+            .chars()
+            .any(|c| c.is_ascii_lowercase() && !matches!(c, 'x' | 'y' | 'z'))
 }
 
 impl PartialEq for Symbol {
@@ -458,12 +494,32 @@ mod tests {
             ("m", "m", Role::Mass),
             ("thetaddot", r"\ddot{\theta}", Role::Kinematic),
             ("SumM_x", r"\Sigma M_x", Role::Other),
+            ("m_body", r"m_{\text{body}}", Role::Mass),
+            ("T_rot", r"T_{\text{rot}}", Role::Other),
+            ("C_AB", "C_{AB}", Role::Other),
+            ("I_xy'", "I_{xy'}", Role::Inertia),
+            ("Lb", r"\mathit{Lb}", Role::Other),
+            ("SumLb", r"\Sigma \mathit{Lb}", Role::Other),
         ];
         for (name, latex, role) in cases {
             let s = Symbol::new(name);
             assert_eq!(s.latex(), latex, "{name}");
             assert_eq!(s.role(), role, "{name}");
         }
+    }
+
+    #[test]
+    fn the_plain_spelling_drops_only_the_aliases() {
+        for (name, plain) in [
+            ("w_x", "w_x"),
+            ("wdot_1", r"\dot{w}_1"),
+            ("Dt", r"\mathit{Dt}"),
+            ("omega_x", r"\omega_x"),
+            ("I_xy", "I_{xy}"),
+        ] {
+            assert_eq!(Symbol::new(name).plain_latex(), plain, "{name}");
+        }
+        assert_eq!(Symbol::new("w_x").latex(), Symbol::new("omega_x").latex());
     }
 
     #[test]

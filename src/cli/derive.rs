@@ -5,7 +5,7 @@ use super::error::CliError;
 use kinetics::algebra::Domains;
 use kinetics::mechanics::catalogue::{derive_general, NAMES};
 use kinetics::mechanics::Derivation;
-use kinetics::print::Notation;
+use kinetics::print::{markup, Notation};
 use kinetics::solution::render::{relation, relations_json};
 
 #[derive(clap::Args)]
@@ -64,14 +64,14 @@ fn render(derivations: &[Derivation], notation: Notation, all_steps: bool) -> St
             &d.steps[d.steps.len() - 1..]
         };
         match notation {
-            Notation::Text => out.push_str(&format!("# {}\n", d.title)),
-            Notation::Latex => out.push_str(&format!("% {}\n", d.title)),
+            Notation::Text => out.push_str(&format!("# {}\n", markup::text(&d.title))),
+            Notation::Latex => out.push_str(&format!("% {}\n", markup::latex(&d.title))),
         }
         for step in steps {
             if all_steps {
                 match notation {
-                    Notation::Text => out.push_str(&format!("## {}\n", step.title)),
-                    Notation::Latex => out.push_str(&format!("% {}\n", step.title)),
+                    Notation::Text => out.push_str(&format!("## {}\n", markup::text(&step.title))),
+                    Notation::Latex => out.push_str(&format!("% {}\n", markup::latex(&step.title))),
                 }
             }
             let lines: Vec<String> = step
@@ -105,10 +105,12 @@ fn json(derivations: &[Derivation]) -> serde_json::Value {
             .map(|d| {
                 serde_json::json!({
                     "name": d.name,
-                    "title": d.title,
+                    "title": markup::text(&d.title),
+                    "title_latex": markup::latex(&d.title),
                     "result": relations_json(d.result()),
                     "steps": d.steps.iter().map(|s| serde_json::json!({
-                        "title": s.title,
+                        "title": markup::text(&s.title),
+                        "title_latex": markup::latex(&s.title),
                         "relations": relations_json(&s.relations),
                     })).collect::<Vec<_>>(),
                 })

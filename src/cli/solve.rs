@@ -70,7 +70,7 @@ pub fn plan(args: PlanArgs) -> Result<String, CliError> {
         .plan
         .iter()
         .enumerate()
-        .map(|(k, s)| format!("{}. {}", k + 1, s.title))
+        .map(|(k, s)| format!("{}. {}", k + 1, kinetics::print::markup::text(&s.title)))
         .collect::<Vec<_>>()
         .join("\n"))
 }

@@ -40,7 +40,7 @@ pub fn angular_momentum(
     let h = expand_each(&mat_vec(&inertia.matrix(), omega))?;
     Ok(Derivation {
         name: format!("H_{point}"),
-        title: format!("angular momentum about {point}"),
+        title: format!("angular momentum about ${point}$"),
         steps: vec![Step {
             table: None,
             title: format!(
@@ -80,16 +80,16 @@ pub fn angular_momentum_about_point(
     let h_o = expand_each(&(h_g + &moment_of_momentum))?;
     Ok(Derivation {
         name: "H_O".into(),
-        title: "angular momentum about O".into(),
+        title: "angular momentum about $O$".into(),
         steps: vec![
             Step {
                 table: None,
-                title: "moment of the linear momentum, r̄ × m v̄".into(),
+                title: r"moment of the linear momentum, $\bar{\mathbf{r}} \times m\bar{\mathbf{v}}$".into(),
                 relations: Relation::components("H", &moment_of_momentum),
             },
             Step {
                 table: None,
-                title: "angular momentum about O, H_O = H_G + r̄ × m v̄".into(),
+                title: r"angular momentum about $O$, $\mathbf{H}_O = \mathbf{H}_G + \bar{\mathbf{r}} \times m\bar{\mathbf{v}}$".into(),
                 relations: Relation::components("H", &h_o),
             },
         ],

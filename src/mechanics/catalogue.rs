@@ -10,7 +10,7 @@ use super::impulse_momentum::{impulse_momentum, ImpulseMomentum};
 use super::inertia::InertiaTensor;
 use super::kinetic_energy::kinetic_energy;
 use super::rotating_frame::rate_of_angular_momentum;
-use crate::algebra::{AlgebraError, Expr, Vector};
+use crate::algebra::{AlgebraError, Axis, Expr, Vector};
 
 /// The derivations `derive` knows, in the chapter's order.
 pub const NAMES: [&str; 11] = [
@@ -26,6 +26,51 @@ pub const NAMES: [&str; 11] = [
     "reactions",
     "balancing",
 ];
+
+/// What each derivation of [`NAMES`] is about: the reference point and the axes, in the
+/// step-title markup (words, mathematics between `$…$`), so a reader knows which formula
+/// of the chapter is meant before reading it. `axis` is the axis of rotation of the
+/// fixed-axis derivations.
+pub fn convention(name: &str, axis: Axis) -> Option<String> {
+    let (a, unit) = match axis {
+        Axis::X => ("x", r"\mathbf{i}"),
+        Axis::Y => ("y", r"\mathbf{j}"),
+        Axis::Z => ("z", r"\mathbf{k}"),
+    };
+    Some(match name {
+        "fixed_axis" => format!(
+            r"About the fixed point O on the axis; rotation about ${a}$, $\boldsymbol{{\omega}} = \omega{unit}$."
+        ),
+        "reactions" => {
+            format!("Bearing A at O and bearing B at ${a} = l$ on the axis of rotation ${a}$.")
+        }
+        "balancing" => format!(
+            "Correcting masses in the planes ${a} = {a}_1$ and ${a} = {a}_2$; the axis of rotation is ${a}$."
+        ),
+        other => fixed_convention(other)?.to_string(),
+    })
+}
+
+/// [`convention`] of the derivations that do not depend on an axis of rotation.
+fn fixed_convention(name: &str) -> Option<&'static str> {
+    Some(match name {
+        "H_G" | "Hdot" | "impulse" => {
+            r"About the mass centre G; axes $x, y, z$ through G, products of inertia $I_{xy} = \int xy\,dm$."
+        }
+        "T" => {
+            r"About the mass centre G: $T = \frac{1}{2} m\bar{v}^2 + \frac{1}{2}\{\boldsymbol{\omega}\}^T[\bar{I}]\{\boldsymbol{\omega}\}$."
+        }
+        "H_O" => {
+            r"About a point O, from the mass centre G at $\bar{\mathbf{r}}$ moving at $\bar{\mathbf{v}}$."
+        }
+        "T_O" => r"About the fixed point O: moments and products of inertia about axes through O.",
+        "T_plane" => r"Plane motion: $z$ a principal axis through G, $\bar{\mathbf{v}}$ along $x$.",
+        "euler" => {
+            r"About G or a fixed point O; axes fixed in the body, $\boldsymbol{\Omega} = \boldsymbol{\omega}$."
+        }
+        _ => return None,
+    })
+}
 
 fn vector(names: [&str; 3]) -> Vector {
     Vector::from_iterator(names.into_iter().map(Expr::symbol))
@@ -47,6 +92,19 @@ fn vector(names: [&str; 3]) -> Vector {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn derive_general(name: &str, principal: bool) -> Option<Result<Derivation, AlgebraError>> {
+    derive_general_along(name, principal, Axis::Z)
+}
+
+/// [`derive_general`] with the fixed-axis derivations (`fixed_axis`, `reactions`,
+/// `balancing`) about `axis` (the chapter's shafts often lie along x); the others do not
+/// depend on it.
+pub fn derive_general_along(
+    name: &str,
+    principal: bool,
+    axis: Axis,
+) -> Option<Result<Derivation, AlgebraError>> {
+    let turn = |k: usize| ["x", "y", "z"][(axis.index() + k) % 3];
+    let bar = |k: usize| Expr::symbol(&format!("{}bar", turn(k)));
     let inertia = if principal {
         InertiaTensor::principal()
     } else {
@@ -95,21 +153,26 @@ pub fn derive_general(name: &str, principal: bool) -> Option<Result<Derivation, 
             "G",
         ),
         "euler" => euler_equations(&inertia),
-        "fixed_axis" => fixed_axis_rotation(&inertia),
-        "reactions" => bearing_reactions(
-            &inertia,
-            &m,
-            (&Expr::symbol("xbar"), &Expr::symbol("ybar")),
-            &Expr::symbol("l"),
-        ),
-        "balancing" => dynamic_balancing(
-            &Unbalance {
-                first_moment: (&(&m * Expr::symbol("xbar")), &(&m * Expr::symbol("ybar"))),
-                products: (&Expr::symbol("I_xz"), &Expr::symbol("I_yz")),
-            },
-            &Expr::symbol("z_1"),
-            &Expr::symbol("z_2"),
-        ),
+        "fixed_axis" => fixed_axis_rotation(&inertia, axis),
+        "reactions" => {
+            bearing_reactions(&inertia, &m, (&bar(1), &bar(2)), &Expr::symbol("l"), axis)
+        }
+        "balancing" => {
+            let product = |k: usize| {
+                let mut pair = [turn(0), turn(k)];
+                pair.sort_unstable();
+                Expr::symbol(&format!("I_{}{}", pair[0], pair[1]))
+            };
+            dynamic_balancing(
+                &Unbalance {
+                    first_moment: (&(&m * bar(1)), &(&m * bar(2))),
+                    products: (&product(1), &product(2)),
+                },
+                &Expr::symbol(&format!("{}_1", turn(0))),
+                &Expr::symbol(&format!("{}_2", turn(0))),
+                axis,
+            )
+        }
         _ => return None,
     })
 }

@@ -76,7 +76,7 @@ pub fn composite_body(parts: &[MassPart]) -> Result<(MassProperties, Derivation)
         title: "mass, mass centre and centroidal inertia".into(),
         steps: vec![Step {
             table: parts_table(parts, &about_g),
-            title: "mass, mass centre and centroidal inertia of the body (products of inertia positive, ∫xy dm)".into(),
+            title: r"mass, mass centre and centroidal inertia of the body (products of inertia positive, $\int xy\,dm$)".into(),
             relations,
         }],
     };

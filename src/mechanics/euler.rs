@@ -56,7 +56,7 @@ pub fn euler_equations(inertia: &InertiaTensor) -> Result<Derivation, AlgebraErr
     let mut steps = rate.steps;
     steps.push(Step {
         table: None,
-        title: "Euler's equations: ΣM_G = Ḣ_G with Ω = ω (axes fixed in the body)".into(),
+        title: r"Euler's equations: $\Sigma\mathbf{M}_G = \dot{\mathbf{H}}_G$ with $\boldsymbol{\Omega} = \boldsymbol{\omega}$ (axes fixed in the body)".into(),
         relations: Relation::components("SumM", &moments),
     });
     Ok(Derivation {

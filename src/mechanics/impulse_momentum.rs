@@ -59,7 +59,7 @@ pub fn impulse_momentum(p: &ImpulseMomentum) -> Result<Derivation, AlgebraError>
         title: "impulse and momentum".into(),
         steps: vec![Step {
             table: None,
-            title: "impulse and momentum: m v̄₁ + Σ F Δt = m v̄₂ (x, y, z), then H₁ + Σ M Δt = H₂ (x, y, z)".into(),
+            title: r"impulse and momentum: $m\bar{\mathbf{v}}_1 + \Sigma\mathbf{F}\,\Delta t = m\bar{\mathbf{v}}_2$ ($x, y, z$), then $\mathbf{H}_1 + \Sigma\mathbf{M}\,\Delta t = \mathbf{H}_2$ ($x, y, z$)".into(),
             relations: [
                 Relation::nonzero_components(&linear_before, &linear_after),
                 Relation::nonzero_components(&angular_before, &angular_after),

@@ -31,7 +31,7 @@ pub fn velocity_of_mass_centre(
         title: "velocity of the mass centre".into(),
         steps: vec![Step {
             table: None,
-            title: "velocity of the mass centre, v̄ = ω × r̄ (O fixed)".into(),
+            title: r"velocity of the mass centre, $\bar{\mathbf{v}} = \boldsymbol{\omega} \times \bar{\mathbf{r}}$ ($O$ fixed)".into(),
             relations: Relation::components("vbar", &vbar),
         }],
     })
@@ -53,9 +53,7 @@ pub fn acceleration_of_mass_centre(
         title: "acceleration of the mass centre".into(),
         steps: vec![Step {
             table: None,
-            title:
-                "acceleration of the mass centre, ā = α × r̄ + ω × (ω × r̄), α = (ω̇)_frame + Ω × ω"
-                    .into(),
+            title: r"acceleration of the mass centre, $\bar{\mathbf{a}} = \boldsymbol{\alpha} \times \bar{\mathbf{r}} + \boldsymbol{\omega} \times (\boldsymbol{\omega} \times \bar{\mathbf{r}})$, $\boldsymbol{\alpha} = (\dot{\boldsymbol{\omega}})_{\text{frame}} + \boldsymbol{\Omega} \times \boldsymbol{\omega}$".into(),
             relations: [
                 Relation::components("alpha", &alpha),
                 Relation::components("abar", &abar),

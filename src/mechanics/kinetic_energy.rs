@@ -45,7 +45,7 @@ pub fn kinetic_energy(
             vec![
                 Step {
                     table: None,
-                    title: "kinetic energy, rotational part ½{ω}ᵀ[I]{ω}".into(),
+                    title: r"kinetic energy, rotational part $\tfrac12\{\boldsymbol{\omega}\}^T[I]\{\boldsymbol{\omega}\}$".into(),
                     relations: vec![Relation::new(
                         Expr::symbol("T_rot"),
                         rotational.clone(),
@@ -54,15 +54,14 @@ pub fn kinetic_energy(
                 },
                 Step {
                     table: None,
-                    title: "kinetic energy, T = ½ m v̄² + ½{ω}ᵀ[I]{ω}: add the translational part"
-                        .into(),
+                    title: r"kinetic energy, $T = \tfrac12 m\bar{v}^2 + \tfrac12\{\boldsymbol{\omega}\}^T[I]\{\boldsymbol{\omega}\}$: add the translational part".into(),
                     relations: vec![Relation::new(t, &translational + &rotational, Axis::X)],
                 },
             ]
         }
         None => vec![Step {
             table: None,
-            title: "kinetic energy about the fixed point O, T = ½{ω}ᵀ[I_O]{ω}".into(),
+            title: r"kinetic energy about the fixed point $O$, $T = \tfrac12\{\boldsymbol{\omega}\}^T[I_O]\{\boldsymbol{\omega}\}$".into(),
             relations: vec![Relation::new(t, rotational, Axis::X)],
         }],
     };
@@ -71,7 +70,7 @@ pub fn kinetic_energy(
         title: if translation.is_some() {
             "kinetic energy".into()
         } else {
-            "kinetic energy about a fixed point O".into()
+            "kinetic energy about a fixed point $O$".into()
         },
         steps,
     })

@@ -1,9 +1,11 @@
 //! LaTeX as a textbook writes it: `I_x \omega_x - I_{xy} \omega_y`, `\frac{1}{2} m v^2`,
 //! `\frac{6 F \Delta t}{m b}`, `-(I_y - I_z) \omega_y \omega_z`, `\sin\beta`, `\sqrt{x}`,
-//! with no redundant parentheses or braces and never `a + -b`.
+//! with no redundant parentheses or braces and never `a + -b`; a thin space where a product
+//! would otherwise read another way (`F\,\Delta t\,b`, `\cos\beta\,\omega^2`).
 
 use super::integer;
 use super::layout::{Integer, Layout, Node, NodeId, Number, Product, Span};
+use super::spelling::latex_of;
 use crate::algebra::Func;
 
 /// Appends a signed layout to `out`.
@@ -15,7 +17,7 @@ pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
 #[inline]
 fn node(out: &mut String, layout: &Layout, id: NodeId) {
     match layout.node(id) {
-        Node::Symbol(s) => out.push_str(s.latex()),
+        Node::Symbol(s) => out.push_str(latex_of(*s)),
         other => compound(out, layout, other),
     }
 }
@@ -25,7 +27,7 @@ fn node(out: &mut String, layout: &Layout, id: NodeId) {
 fn compound(out: &mut String, layout: &Layout, compound: &Node) {
     match compound {
         Node::Number(n) => number(out, layout, *n),
-        Node::Symbol(s) => out.push_str(s.latex()),
+        Node::Symbol(s) => out.push_str(latex_of(*s)),
         Node::Sum(terms) => super::sum(out, layout, *terms, node),
         Node::Product(p) => product(out, layout, p),
         Node::Power(base, exponent) => match layout.node(*base) {
@@ -88,10 +90,11 @@ fn function_name(out: &mut String, f: Func) {
 fn function_argument(out: &mut String, layout: &Layout, arg: NodeId) {
     match layout.node(arg) {
         Node::Symbol(s) => {
-            if !s.latex().starts_with('\\') {
+            let name = latex_of(*s);
+            if !name.starts_with('\\') {
                 out.push(' ');
             }
-            out.push_str(s.latex());
+            out.push_str(name);
         }
         _ => {
             out.push('(');
@@ -120,7 +123,7 @@ fn fraction(out: &mut String, n: Integer, d: Integer) {
 /// A factor inside a product or under an exponent: sums and products get parentheses.
 fn factor(out: &mut String, layout: &Layout, id: NodeId) {
     match layout.node(id) {
-        Node::Symbol(s) => out.push_str(s.latex()),
+        Node::Symbol(s) => out.push_str(latex_of(*s)),
         Node::Sum(_) | Node::Product(_) => {
             out.push('(');
             node(out, layout, id);
@@ -135,14 +138,48 @@ fn factor(out: &mut String, layout: &Layout, id: NodeId) {
     }
 }
 
-/// Factors separated by spaces, after whatever `out` already holds of the same product.
+/// Factors separated by spaces, after whatever `out` already holds of the same product. The
+/// space is a thin one, `\,`, beside a name of several letters (`F_2\,\Delta t\,b`, never
+/// `F_2 \Delta t b`), and after a function whose argument has no parentheses unless another
+/// function follows (`\sin\beta\, L`, not `\sin\beta L`, which reads as the sine of βL;
+/// `\sin\beta \cos\beta`).
 fn factors(out: &mut String, layout: &Layout, mut separate: bool, span: Span) {
+    let mut previous = None;
     for &(_, f) in layout.entries(span) {
         if separate {
-            out.push(' ');
+            let thin = previous.is_some_and(|p| {
+                is_long_name(layout, p)
+                    || is_long_name(layout, f)
+                    || (is_function(layout, p, true) && !is_function(layout, f, false))
+            });
+            out.push_str(if thin { r"\," } else { " " });
         }
         factor(out, layout, f);
         separate = true;
+        previous = Some(f);
+    }
+}
+
+/// A symbol (or a power of one) printed as several letters: `\Delta t`, `\mathit{Lb}`.
+fn is_long_name(layout: &Layout, id: NodeId) -> bool {
+    match layout.node(id) {
+        Node::Power(base, _) => is_long_name(layout, *base),
+        Node::Symbol(s) => {
+            let name = latex_of(*s);
+            name.contains(' ') || name.starts_with(r"\mathit")
+        }
+        _ => false,
+    }
+}
+
+/// A function written with its name, `\sin\beta` or `\sin^2\beta`; with `bare_argument`,
+/// only one whose argument is a symbol without parentheses.
+fn is_function(layout: &Layout, id: NodeId, bare_argument: bool) -> bool {
+    match layout.node(id) {
+        Node::Power(base, _) => is_function(layout, *base, bare_argument),
+        Node::Function(Func::Abs, _) => false,
+        Node::Function(_, arg) => !bare_argument || matches!(layout.node(*arg), Node::Symbol(_)),
+        _ => false,
     }
 }
 

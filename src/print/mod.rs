@@ -14,10 +14,13 @@
 
 pub mod latex;
 pub mod layout;
+pub mod markup;
+mod spelling;
 pub mod text;
 
 use crate::algebra::{Axis, Expr, Symbol, Vector};
 use layout::{Integer, Layout, Node, NodeId, Span};
+pub use spelling::on_one_page;
 use std::cell::RefCell;
 use std::fmt::Write;
 

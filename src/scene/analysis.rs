@@ -95,7 +95,8 @@ struct Analyser<'a> {
 /// let analysis = analyse(&scene)?;
 /// let (_, Value::Scalar(t)) = &analysis.results[0] else { panic!("T is a scalar") };
 /// assert_eq!(*t, parse_expression("by hand", "1/5 m r^2 w^2")?);
-/// assert!(analysis.plan.iter().all(|step| !step.title.contains('Ḣ')));
+/// let words = |step: &kinetics::mechanics::Step| kinetics::print::markup::text(&step.title);
+/// assert!(analysis.plan.iter().all(|step| !words(step).contains('Ḣ')));
 /// # Ok::<(), kinetics::Diagnostic>(())
 /// ```
 pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {

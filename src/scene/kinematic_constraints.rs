@@ -154,9 +154,9 @@ pub fn solve_constraints(
     steps.push(Step {
         table: None,
         title: if scene.frame_rate.is_some() {
-            "angular velocity ω of the body and Ω of the frame (Ω ≠ ω: [I] is constant in this frame)".into()
+            r"angular velocity $\boldsymbol{\omega}$ of the body and $\boldsymbol{\Omega}$ of the frame ($\boldsymbol{\Omega} \neq \boldsymbol{\omega}$: $[I]$ is constant in this frame)".into()
         } else {
-            "angular velocity ω (axes fixed in the body, Ω = ω)".into()
+            r"angular velocity $\boldsymbol{\omega}$ (axes fixed in the body, $\boldsymbol{\Omega} = \boldsymbol{\omega}$)".into()
         },
         relations,
     });

@@ -7,16 +7,21 @@
 //! { "title": string|null,
 //!   "plan": [string],                               the steps done, in order
 //!   "givens": [{"name", "written": string|null, "si_value": number|null, "unit"}],
-//!   "steps": [{"title", "relations": [{"text", "latex"}]}],
+//!   "steps": [{"title", "title_latex",                title: plain text; title_latex: LaTeX text mode
+//!              "table": null | {"columns": [{"text", "latex"}],
+//!                                          "rows": [{"label", "cells": [{"text", "latex"}]}]},
+//!              "relations": [{"text", "latex"}]}],
 //!   "results": [{"name", "text", "latex",
 //!                "value": number | [x, y, z] | null,  when every given has a value
 //!                "unit": string|null}] }
 //! ```
 
 use super::numbers::{format_value, result_unit, scene_dimensions, unit, value};
+use super::parts_table;
+use super::unit_latex::quantity;
 use crate::algebra::{Expr, Vector};
 use crate::mechanics::derivation::Relation;
-use crate::print::{self, Notation};
+use crate::print::{self, markup, Notation};
 use crate::scene::model::{Quantity, Request};
 use crate::scene::units::Dimensions;
 use crate::scene::{Analysis, Scene, Value};
@@ -129,67 +134,6 @@ fn value_text(r: &Result) -> Option<String> {
     })
 }
 
-fn latex_unit(u: &str) -> String {
-    u.replace('·', r"\cdot ").replace('²', "^2")
-}
-
-/// Unicode in step titles, as LaTeX text that pdflatex reads with amsmath alone.
-fn latex_text(s: &str) -> String {
-    let mut out = String::new();
-    let chars: Vec<char> = s.chars().collect();
-    let mut i = 0;
-    while i < chars.len() {
-        let c = chars[i];
-        let accent = match chars.get(i + 1) {
-            Some('\u{0304}') => Some(r"\bar"),
-            Some('\u{0307}') => Some(r"\dot"),
-            _ => None,
-        };
-        let symbol = |c: char| -> Option<String> {
-            Some(
-                match c {
-                    'ω' => r"\omega",
-                    'Ω' => r"\Omega",
-                    'α' => r"\alpha",
-                    'Σ' => r"\Sigma",
-                    'Δ' => r"\Delta",
-                    '×' => r"\times",
-                    '≠' => r"\neq",
-                    '∫' => r"\int",
-                    '½' => r"\frac{1}{2}",
-                    'ā' => r"\bar{a}",
-                    'Ḣ' => r"\dot{H}",
-                    'ᵀ' => "^T",
-                    '²' => "^2",
-                    '₁' => "_1",
-                    '₂' => "_2",
-                    _ => return None,
-                }
-                .to_string(),
-            )
-        };
-        if let Some(acc) = accent {
-            let base = symbol(c).unwrap_or_else(|| c.to_string());
-            out.push_str(&format!("${acc}{{{base}}}$"));
-            i += 2;
-            continue;
-        }
-        match (symbol(c), c) {
-            (Some(sym), _) => out.push_str(&format!("${sym}$")),
-            (None, '_' | '%' | '&' | '#' | '{' | '}') => {
-                out.push('\\');
-                out.push(c);
-            }
-            (None, '^') => out.push_str(r"\^{}"),
-            (None, '~') => out.push_str(r"\~{}"),
-            (None, '\\') => out.push_str(r"\textbackslash{}"),
-            (None, _) => out.push(c),
-        }
-        i += 1;
-    }
-    out.replace("$$", "")
-}
-
 /// Renders the worked solution in the chosen format; `standalone` LaTeX is a whole document.
 ///
 /// A sphere spinning about z: `T = 1/5 m r² w² = 1/5 · 5 · 0.1² · 2² = 0.04 J`.
@@ -215,18 +159,29 @@ fn latex_text(s: &str) -> String {
 /// assert_eq!(t["unit"], "J");
 /// assert!((t["value"].as_f64().unwrap() - 0.04).abs() < 1e-12);
 /// let latex = render(&scene, &analysis, Format::Latex, false);
-/// assert!(latex.contains(r"T &= \frac{1}{5} m r^2 \omega^2 = 0.04\ \mathrm{J}"));
+/// assert!(latex.contains(r"T &= \frac{1}{5} m r^2 \omega^2 = 0.04\,\mathrm{J}"));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bool) -> String {
-    let dims = scene_dimensions(scene);
-    let results = results(scene, analysis, &dims);
-    match format {
-        Format::Text => text(scene, analysis, &results),
-        Format::Latex => latex(scene, analysis, &results, standalone),
-        Format::Markdown => markdown(scene, analysis, &results),
-        Format::Json => json(scene, analysis, &results).to_string(),
-    }
+    // One page: two symbols that would print alike (`w_x` and `omega_x`) are told apart,
+    // unless a relation `omega_x = w_x` states them one quantity.
+    let relations = || analysis.plan.iter().flat_map(|s| &s.relations);
+    let page = scene
+        .givens
+        .iter()
+        .map(|g| g.symbol)
+        .chain(relations().flat_map(|r| r.lhs.symbols().into_iter().chain(r.rhs.symbols())));
+    let identities = relations().filter_map(|r| Some((r.lhs.as_symbol()?, r.rhs.as_symbol()?)));
+    print::on_one_page(page, identities, || {
+        let dims = scene_dimensions(scene);
+        let results = results(scene, analysis, &dims);
+        match format {
+            Format::Text => text(scene, analysis, &results),
+            Format::Latex => latex(scene, analysis, &results, standalone),
+            Format::Markdown => markdown(scene, analysis, &results),
+            Format::Json => json(scene, analysis, &results).to_string(),
+        }
+    })
 }
 
 fn given_line(g: &crate::scene::model::Given) -> String {
@@ -239,14 +194,21 @@ fn given_line(g: &crate::scene::model::Given) -> String {
 fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     let mut out = String::new();
     if let Some(t) = &scene.title {
-        out.push_str(&format!("{t}\n\n"));
+        out.push_str(&format!("{}\n\n", markup::text(t)));
     }
     out.push_str("Given\n");
     for g in &scene.givens {
         out.push_str(&format!("  {}\n", given_line(g)));
     }
     for (k, step) in analysis.plan.iter().enumerate() {
-        out.push_str(&format!("\nStep {}: {}\n", k + 1, step.title));
+        out.push_str(&format!(
+            "\nStep {}: {}\n",
+            k + 1,
+            markup::text(&step.title)
+        ));
+        if let Some(table) = &step.table {
+            out.push_str(&parts_table::text(table));
+        }
         for r in &step.relations {
             let (l, rhs) = relation(r, Notation::Text);
             out.push_str(&format!("  {l} = {rhs}\n"));
@@ -262,7 +224,7 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     out
 }
 
-fn latex_relations(relations: &[Relation]) -> String {
+pub(super) fn latex_relations(relations: &[Relation]) -> String {
     let lines: Vec<String> = relations
         .iter()
         .map(|r| {
@@ -282,14 +244,9 @@ fn latex_results(results: &[Result]) -> String {
         .map(|r| {
             let value = r.value.as_ref().filter(|_| !r.is_number()).map(|_| {
                 let v = value_text(r).unwrap_or_default();
-                let (number, unit) = match &r.unit {
-                    Some(u) if !u.is_empty() => (
-                        v.trim_end_matches(u.as_str()).trim().to_string(),
-                        latex_unit(u),
-                    ),
-                    _ => (v, String::new()),
-                };
-                format!(r" = {number}\ \mathrm{{{unit}}}")
+                let unit = r.unit.as_deref().unwrap_or_default();
+                let number = v.trim_end_matches(unit).trim();
+                format!(" = {}", quantity(number, unit))
             });
             format!(
                 "{} &= {}{}",
@@ -305,13 +262,17 @@ fn latex_results(results: &[Result]) -> String {
     )
 }
 
+/// The preamble of a standalone LaTeX document: article class, amsmath and amssymb only.
+pub(super) const LATEX_PREAMBLE: &str =
+    "\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\begin{document}\n";
+
 fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: bool) -> String {
     let mut out = String::new();
     if standalone {
-        out.push_str("\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\begin{document}\n");
+        out.push_str(LATEX_PREAMBLE);
     }
     if let Some(t) = &scene.title {
-        out.push_str(&format!("\\section*{{{}}}\n", latex_text(t)));
+        out.push_str(&format!("\\section*{{{}}}\n", markup::latex(t)));
     }
     out.push_str("\\paragraph{Given}\n");
     let givens: Vec<String> = scene
@@ -322,8 +283,7 @@ fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: boo
             match &g.written {
                 Some(w) => {
                     let (number, unit) = w.split_once(' ').unwrap_or((w.as_str(), ""));
-                    let unit = unit.replace(' ', "").replace('*', r"\cdot ");
-                    format!(r"${name} = {number}\ \mathrm{{{unit}}}$")
+                    format!("${name} = {}$", quantity(number, unit))
                 }
                 None => format!("${name}$"),
             }
@@ -334,8 +294,11 @@ fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: boo
         out.push_str(&format!(
             "\\paragraph{{Step {}}} {}\n",
             k + 1,
-            latex_text(&step.title)
+            markup::latex(&step.title)
         ));
+        if let Some(table) = &step.table {
+            out.push_str(&parts_table::latex(table));
+        }
         out.push_str(&latex_relations(&step.relations));
     }
     out.push_str("\\paragraph{Results}\n");
@@ -349,7 +312,7 @@ fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: boo
 fn markdown(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     let mut out = String::new();
     if let Some(t) = &scene.title {
-        out.push_str(&format!("# {t}\n\n"));
+        out.push_str(&format!("# {}\n\n", markup::markdown(t)));
     }
     out.push_str("**Given:** ");
     let givens: Vec<String> = scene
@@ -360,11 +323,14 @@ fn markdown(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     out.push_str(&format!("{}\n\n", givens.join(", ")));
     for (k, step) in analysis.plan.iter().enumerate() {
         out.push_str(&format!(
-            "## Step {}: {}\n\n$$\n{}$$\n\n",
+            "## Step {}: {}\n\n",
             k + 1,
-            step.title,
-            latex_relations(&step.relations)
+            markup::markdown(&step.title)
         ));
+        if let Some(table) = &step.table {
+            out.push_str(&parts_table::markdown(table));
+        }
+        out.push_str(&format!("$$\n{}$$\n\n", latex_relations(&step.relations)));
     }
     out.push_str(&format!("## Results\n\n$$\n{}$$\n", latex_results(results)));
     out
@@ -384,7 +350,7 @@ pub fn relations_json(rs: &[Relation]) -> Vec<serde_json::Value> {
 fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::Value {
     serde_json::json!({
         "title": scene.title,
-        "plan": analysis.plan.iter().map(|s| s.title.clone()).collect::<Vec<_>>(),
+        "plan": analysis.plan.iter().map(|s| markup::text(&s.title)).collect::<Vec<_>>(),
         "givens": scene.givens.iter().map(|g| serde_json::json!({
             "name": g.symbol.name(),
             "written": g.written,
@@ -392,7 +358,9 @@ fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::V
             "unit": g.dimension.si_unit(),
         })).collect::<Vec<_>>(),
         "steps": analysis.plan.iter().map(|s| serde_json::json!({
-            "title": s.title,
+            "title": markup::text(&s.title),
+            "title_latex": markup::latex(&s.title),
+            "table": s.table.as_ref().map(parts_table::json),
             "relations": relations_json(&s.relations),
         })).collect::<Vec<_>>(),
         "results": results.iter().map(|r| serde_json::json!({

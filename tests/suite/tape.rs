@@ -342,6 +342,7 @@ fn bearing_reaction_sweep_in_parallel_equals_serial() {
         &s("m"),
         (&s("xbar"), &s("ybar")),
         &s("l"),
+        kinetics::Axis::Z,
     )
     .unwrap();
     let outputs = rhs(&d);

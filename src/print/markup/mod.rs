@@ -1,0 +1,86 @@
+//! Titles with mathematics: words, and mathematics between `$…$` in a small LaTeX subset,
+//! rendered in four notations from one tree ([`parse`]):
+//!
+//! ```
+//! use kinetics::print::markup;
+//! let title = r"rate relative to the rotating frame, $(\dot{\mathbf{H}}_G)_{Gxyz} = [I]\{\dot{\boldsymbol{\omega}}\}$";
+//! assert_eq!(markup::text(title), "rate relative to the rotating frame, (Ḣ_G)_Gxyz = [I]{ω̇}");
+//! assert_eq!(
+//!     markup::latex(r"products of inertia positive, $\int xy\,dm$ (I_xy)"),
+//!     r"products of inertia positive, $\int xy\,dm$ (I\_xy)"
+//! );
+//! assert_eq!(markup::markdown("about $O$, [I_O]"), r"about $O$, \[I\_O\]");
+//! assert_eq!(markup::html("$T$ & more"), "<math><mi>T</mi></math> &amp; more");
+//! assert!(markup::validate(r"$\foo$").is_err());
+//! ```
+//!
+//! The subset: letters, digits, `+ - = × · ( ) [ ] , . / | : ' < >`, `\{ \}`, scripts
+//! `_x`, `_{Gxyz}`, `^2`, `^{T}`, and the commands of [`commands`]. A malformed title never
+//! panics: every renderer shows it as words, escaped, and [`validate`] says why.
+
+mod commands;
+mod html;
+mod latex;
+mod markdown;
+mod parse;
+mod text;
+
+pub use parse::{MarkupError, MarkupErrorKind};
+use parse::{Node, Segment};
+
+/// Unicode plain text: `(Ḣ_G)_Gxyz = [I]{ω̇}`.
+pub fn text(title: &str) -> String {
+    render(
+        title,
+        |out, words| out.push_str(words),
+        |out, nodes| out.push_str(&text::maths(nodes)),
+    )
+}
+
+/// LaTeX text mode: words escaped, each mathematics as `$…$` in the subset's one spelling.
+pub fn latex(title: &str) -> String {
+    render(title, latex::words, |out, nodes| {
+        out.push('$');
+        latex::maths(out, nodes);
+        out.push('$');
+    })
+}
+
+/// Markdown: words escaped for Markdown, each mathematics as `$…$` (LaTeX).
+pub fn markdown(title: &str) -> String {
+    render(title, markdown::words, |out, nodes| {
+        out.push('$');
+        latex::maths(out, nodes);
+        out.push('$');
+    })
+}
+
+/// HTML: words escaped, each mathematics a `<math>` element (MathML Core).
+pub fn html(title: &str) -> String {
+    render(title, html::words, html::maths)
+}
+
+/// Whether the title is well formed: the first unknown command, unbalanced brace or `$`,
+/// missing argument or character outside the subset, at its byte offset.
+pub fn validate(title: &str) -> Result<(), MarkupError> {
+    parse::parse(title).map(|_| ())
+}
+
+/// A title's words and mathematics, each through its renderer; a malformed title all words.
+/// Mathematics with nothing in it is left out (`$$` would open display mathematics).
+fn render(title: &str, words: fn(&mut String, &str), maths: fn(&mut String, &[Node])) -> String {
+    let mut out = String::with_capacity(title.len() + title.len() / 2);
+    match parse::parse(title) {
+        Ok(segments) => {
+            for segment in &segments {
+                match segment {
+                    Segment::Words(w) => words(&mut out, w),
+                    Segment::Maths(nodes) if nodes.iter().all(|n| *n == Node::Blank) => {}
+                    Segment::Maths(nodes) => maths(&mut out, nodes),
+                }
+            }
+        }
+        Err(_) => words(&mut out, title),
+    }
+    out
+}

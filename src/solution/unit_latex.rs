@@ -1,0 +1,69 @@
+//! A number with its unit in LaTeX, as a textbook sets it: a thin space and upright unit
+//! letters (`6\,\mathrm{N\cdot m}`, `2.4\,\mathrm{m}`, `3000\,\mathrm{rad/s^2}`), an angle in
+//! degrees with the degree sign and no space (`60^\circ`).
+//!
+//! A unit arrives as the user wrote it in the scene (`N*m`, `N m`, `N·m`, `kg*m^2`, `deg`)
+//! or as the program prints it (`N·m`, `kg·m²`); both read the same.
+
+/// `number` followed by `unit` (empty: the number alone).
+///
+/// ```
+/// use kinetics::solution::unit_latex::quantity;
+/// assert_eq!(quantity("6", "N*m"), r"6\,\mathrm{N\cdot m}");
+/// assert_eq!(quantity("6", "N m"), r"6\,\mathrm{N\cdot m}");
+/// assert_eq!(quantity("0.3", "kg·m²"), r"0.3\,\mathrm{kg\cdot m^2}");
+/// assert_eq!(quantity("60", "deg"), r"60^\circ");
+/// assert_eq!(quantity("9.81", "m/s^2"), r"9.81\,\mathrm{m/s^2}");
+/// assert_eq!(quantity("2", ""), "2");
+/// ```
+pub fn quantity(number: &str, unit: &str) -> String {
+    let unit = unit.trim();
+    match unit {
+        "" => number.to_string(),
+        "deg" | "°" | "degree" | "degrees" => format!(r"{number}^\circ"),
+        _ => format!(r"{number}\,\mathrm{{{}}}", unit_letters(unit)),
+    }
+}
+
+/// The unit inside `\mathrm{…}`: products as `\cdot`, powers as superscripts.
+fn unit_letters(unit: &str) -> String {
+    let mut out = String::new();
+    let mut chars = unit.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '*' | '·' => out.push_str(r"\cdot "),
+            // `N m`: a space between two unit names is a product.
+            ' ' => {
+                while chars.peek() == Some(&' ') {
+                    chars.next();
+                }
+                if !matches!(chars.peek(), Some('/' | '*' | '·' | '^') | None)
+                    && !out.ends_with(' ')
+                    && !out.ends_with('/')
+                {
+                    out.push_str(r"\cdot ");
+                }
+            }
+            '²' => out.push_str("^2"),
+            '³' => out.push_str("^3"),
+            '^' => {
+                out.push('^');
+                let exponent: String =
+                    std::iter::from_fn(|| chars.next_if(|d| d.is_ascii_digit() || *d == '-'))
+                        .collect();
+                if exponent.chars().count() == 1 {
+                    out.push_str(&exponent);
+                } else {
+                    out.push_str(&format!("{{{exponent}}}"));
+                }
+            }
+            '%' | '&' | '#' | '_' | '{' | '}' | '$' => {
+                out.push('\\');
+                out.push(c);
+            }
+            '\\' | '~' => {}
+            c => out.push(c),
+        }
+    }
+    out.trim_end().to_string()
+}

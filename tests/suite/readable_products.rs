@@ -1,0 +1,73 @@
+//! Products that read one way only (issue 17, item 4): a thin space beside a name of several
+//! letters and after a function's bare argument, a name of several letters never read as a
+//! product, a word subscript upright, and two symbols of one page never printed alike.
+
+use kinetics::parse_expression;
+use kinetics::print;
+use std::process::Command;
+
+fn latex(text: &str) -> String {
+    print::latex(&parse_expression("test", text).expect("parses"))
+}
+
+#[test]
+fn products_read_one_way() {
+    for (text, expected) in [
+        ("1/2*F_2*Dt*b", r"\frac{1}{2} F_2\,\Delta t\,b"),
+        ("6*F*Dt/(m*b)", r"\frac{6 F\,\Delta t}{m b}"),
+        ("w^2*sin(beta)*cos(beta)", r"\sin\beta \cos\beta\,\omega^2"),
+        ("sin(beta)^2*L*w", r"L \sin^2\beta\,\omega"),
+        ("sin(a + b)*L", r"L \sin(a + b)"),
+        ("Lb*c", r"\mathit{Lb}\,c"),
+        ("L*b", "L b"),
+        ("m_body*g", r"m_{\text{body}} g"),
+        ("I_xy*w_x", r"I_{xy} \omega_x"),
+    ] {
+        assert_eq!(latex(text), expected, "{text}");
+    }
+}
+
+/// The worked solution in LaTeX of a sphere spinning at `omega` (ASCII) with `w_x` given.
+fn sphere_spinning_at(omega: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("kinetics-spelling-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let scene = dir.join(format!("sphere-{}.scene", omega.len()));
+    std::fs::write(
+        &scene,
+        format!(
+            "given m = 5 kg\ngiven r = 0.1 m\ngiven w_x = 2 rad/s\nbody sphere(r) mass m\n\
+             vbar = 0\nomega = {omega}\nfind T\n"
+        ),
+    )
+    .expect("written");
+    let run = Command::new(env!("CARGO_BIN_EXE_kinetics"))
+        .args(["solve", "--format", "latex"])
+        .arg(&scene)
+        .output()
+        .expect("kinetics runs");
+    let _ = std::fs::remove_file(&scene);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    String::from_utf8_lossy(&run.stdout).into_owned()
+}
+
+/// A scene that gives `w_x` and derives a different `omega_x = 2 w_x`: the given keeps its
+/// letter, `w_x`, and never prints as `\omega_x`, the derived component's name. Where the
+/// scene makes them one quantity (`omega = w_x*i`) both are ω_x.
+#[test]
+fn a_given_w_and_a_derived_omega_print_apart_unless_they_are_one_quantity() {
+    let apart = sphere_spinning_at("2*w_x*i");
+    assert!(apart.contains(r"\omega_x &= 2 w_x"), "{apart}");
+    assert!(apart.contains(r"$w_x = 2"), "{apart}");
+    assert!(apart.contains(r"T &= \frac{4}{5} m r^2 w_x^2"), "{apart}");
+    assert!(!apart.contains(r"\omega_x^2"), "{apart}");
+    let same = sphere_spinning_at("w_x*i");
+    assert!(same.contains(r"\omega_x &= \omega_x"), "{same}");
+    assert!(
+        same.contains(r"T &= \frac{1}{5} m r^2 \omega_x^2"),
+        "{same}"
+    );
+}

@@ -52,7 +52,7 @@ fn moments() -> Vec<Expr> {
         Expr::symbol("Omega_y"),
         Expr::symbol("Omega_z"),
     );
-    let d = rate_of_angular_momentum(&InertiaTensor::general(), &omega, &alpha, &frame)
+    let d = rate_of_angular_momentum(&InertiaTensor::general(), &omega, &alpha, &frame, "G")
         .expect("the general tensor expands");
     d.result().iter().map(|r| r.rhs.clone()).collect()
 }

@@ -44,7 +44,8 @@ pub fn angular_momentum(
         steps: vec![Step {
             table: None,
             title: format!(
-                r"angular momentum about ${point}$, $\{{\mathbf{{H}}_{{{point}}}\}} = [I]\{{\boldsymbol{{\omega}}\}}$ (moments and products of inertia about ${point}$; products positive, entered with a minus sign)"
+                r"angular momentum about ${point}$, $\{{\mathbf{{H}}_{{{point}}}\}} = {tensor}\{{\boldsymbol{{\omega}}\}}$ (moments and products of inertia about ${point}$; products positive, entered with a minus sign)",
+                tensor = InertiaTensor::written_about(point)
             ),
             relations: Relation::components("H", &h),
         }],

@@ -150,6 +150,7 @@ pub fn derive_general_along(
             &omega,
             &vector(["wdot_x", "wdot_y", "wdot_z"]),
             &vector(["Omega_x", "Omega_y", "Omega_z"]),
+            "G",
         ),
         "euler" => euler_equations(&inertia),
         "fixed_axis" => fixed_axis_rotation(&inertia, axis),

@@ -7,11 +7,14 @@
 //!
 //! Each part's centroidal tensor is moved to the common origin O, the tensors are added, and
 //! the sum is moved back to the body's mass centre G. Products of inertia are the positive
-//! integrals `∫xy dm` throughout.
+//! integrals `∫xy dm` throughout. A body of several parts shows each part's contribution
+//! about G (`Īᵢ` moved by `r̄ᵢ − r̄`) in a table before the sums.
 
-use super::derivation::{Derivation, Relation, Step};
+use super::derivation::{Derivation, Step};
 use super::inertia::{InertiaTensor, MassPart};
-use crate::algebra::{AlgebraError, Axis, Expr, Vector};
+use super::mass_centre::{first_moment, mass_centre, MassCentre};
+use super::parts_table::parts_table;
+use crate::algebra::{AlgebraError, Expr, Vector};
 
 /// The body as a whole: mass, position of the mass centre G from O, inertia about G.
 #[derive(Debug, Clone, PartialEq)]
@@ -48,36 +51,31 @@ pub struct MassProperties {
 /// # Ok::<(), kinetics::AlgebraError>(())
 /// ```
 pub fn composite_body(parts: &[MassPart]) -> Result<(MassProperties, Derivation), AlgebraError> {
-    let mass = Expr::add_all(parts.iter().map(|p| p.mass.clone())).expand()?;
-    let first_moment = parts
-        .iter()
-        .fold(Vector::from_element(Expr::zero()), |acc, p| {
-            acc + p.position.map(|x| &p.mass * &x)
-        });
-    let centroid = Vector::from_iterator(
-        first_moment
-            .iter()
-            .map(|x| x.checked_div(&mass)?.expand())
-            .collect::<Result<Vec<_>, _>>()?,
-    );
+    let (MassCentre { mass, centroid }, centre) = mass_centre(parts)?;
     let inertia = InertiaTensor::composite(parts, &mass, &centroid)?;
-    let s = Expr::symbol;
-    let relations = [
-        vec![Relation::new(s("m_body"), mass.clone(), Axis::X)],
-        Relation::components("rbar", &centroid),
-        [("I_x", 0), ("I_y", 1), ("I_z", 2)]
-            .map(|(n, k)| Relation::new(s(n), inertia.moments[k].clone(), Axis::X))
-            .to_vec(),
-        [("I_xy", 0), ("I_yz", 1), ("I_xz", 2)]
-            .map(|(n, k)| Relation::new(s(n), inertia.products[k].clone(), Axis::X))
-            .to_vec(),
-    ]
-    .concat();
+    // Each part's offset from G over one denominator, r̄ᵢ − r̄ = (m r̄ᵢ − Σ mⱼ r̄ⱼ)/m, so that
+    // its contribution reads in lowest terms.
+    let moment = first_moment(parts);
+    let per_mass = mass.powi(-1);
+    let about_g = parts
+        .iter()
+        .map(|p| {
+            let offset = p
+                .position
+                .iter()
+                .zip(moment.iter())
+                .map(|(x, first)| Ok(&(&mass * x - first).expand()? * &per_mass))
+                .collect::<Result<Vec<_>, AlgebraError>>()?;
+            Ok(p.inertia
+                .parallel_axis(&p.mass, &Vector::from_iterator(offset)))
+        })
+        .collect::<Result<Vec<_>, AlgebraError>>()?;
+    let relations = [centre.result().to_vec(), inertia.relations()].concat();
     let derivation = Derivation {
         name: "body".into(),
         title: "mass, mass centre and centroidal inertia".into(),
         steps: vec![Step {
-            table: None,
+            table: parts_table(parts, &about_g),
             title: r"mass, mass centre and centroidal inertia of the body (products of inertia positive, $\int xy\,dm$)".into(),
             relations,
         }],

@@ -49,7 +49,7 @@ pub fn body_angular_velocity() -> Vector {
 pub fn euler_equations(inertia: &InertiaTensor) -> Result<Derivation, AlgebraError> {
     let omega = body_angular_velocity();
     let omega_dot = Vector::new(omega[0].d_dt()?, omega[1].d_dt()?, omega[2].d_dt()?);
-    let rate = rate_of_angular_momentum(inertia, &omega, &omega_dot, &omega)?;
+    let rate = rate_of_angular_momentum(inertia, &omega, &omega_dot, &omega, "G")?;
     let moments = expand_each(&Vector::from_iterator(
         rate.result().iter().map(|r| r.rhs.clone()),
     ))?;

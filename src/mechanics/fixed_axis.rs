@@ -68,7 +68,7 @@ pub fn fixed_axis_rotation(
     let (a, b, c) = across(axis);
     let omega = along(a, Expr::symbol("w"));
     let alpha = along(a, Expr::symbol("alpha"));
-    let rate = rate_of_angular_momentum(inertia, &omega, &alpha, &omega)?;
+    let rate = rate_of_angular_momentum(inertia, &omega, &alpha, &omega, "O")?;
     let moments = Vector::from_iterator(rate.result().iter().map(|r| r.rhs.clone()));
     let (la, lb, lc) = (LETTERS[a], LETTERS[b], LETTERS[c]);
     let mut steps = vec![Step {

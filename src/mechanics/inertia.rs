@@ -14,7 +14,8 @@
 //! `I_x = Ī_x + m(ȳ² + z̄²)`, `I_xy = Ī_xy + m x̄ ȳ`; composite bodies add tensors about a
 //! common point.
 
-use crate::algebra::{AlgebraError, Expr, Matrix, Vector};
+use super::derivation::Relation;
+use crate::algebra::{AlgebraError, Axis, Expr, Matrix, Vector};
 
 /// An inertia tensor by its six components: products of inertia are the positive integrals
 /// `∫xy dm`, entered in the matrix with a minus sign.
@@ -169,17 +170,43 @@ impl InertiaTensor {
         let about_o = parts
             .iter()
             .map(|p| p.inertia.parallel_axis(&p.mass, &p.position))
-            .fold(
-                InertiaTensor::diagonal([Expr::zero(), Expr::zero(), Expr::zero()]),
-                |sum, part| sum.add(&part),
-            );
-        let about_g = about_o.parallel_axis(&-mass, centroid);
+            .fold(InertiaTensor::zero(), |sum, part| sum.add(&part));
+        about_o.parallel_axis(&-mass, centroid).expanded()
+    }
+
+    /// The six relations `I_x = …`, `I_y = …`, `I_z = …`, `I_xy = …`, `I_yz = …`, `I_xz = …`
+    /// that show the tensor in a step.
+    pub fn relations(&self) -> Vec<Relation> {
+        ["I_x", "I_y", "I_z"]
+            .into_iter()
+            .zip(&self.moments)
+            .chain(["I_xy", "I_yz", "I_xz"].into_iter().zip(&self.products))
+            .map(|(name, value)| Relation::new(Expr::symbol(name), value.clone(), Axis::X))
+            .collect()
+    }
+
+    /// How a title writes the tensor about `point` (title markup): `[I]` about the mass
+    /// centre G, `[I_O]` about a fixed point O, as the chapter does.
+    pub fn written_about(point: &str) -> String {
+        match point {
+            "G" => "[I]".to_string(),
+            _ => format!("[I_{point}]"),
+        }
+    }
+
+    /// The tensor of no mass: every moment and product zero.
+    pub fn zero() -> InertiaTensor {
+        InertiaTensor::diagonal([Expr::zero(), Expr::zero(), Expr::zero()])
+    }
+
+    /// The same tensor with each component multiplied out ([`Expr::expand`]).
+    pub fn expanded(&self) -> Result<InertiaTensor, AlgebraError> {
         let expand = |c: &[Expr; 3]| -> Result<[Expr; 3], AlgebraError> {
             Ok([c[0].expand()?, c[1].expand()?, c[2].expand()?])
         };
         Ok(InertiaTensor {
-            moments: expand(&about_g.moments)?,
-            products: expand(&about_g.products)?,
+            moments: expand(&self.moments)?,
+            products: expand(&self.products)?,
         })
     }
 

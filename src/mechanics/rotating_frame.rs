@@ -7,7 +7,8 @@
 //! `(Ḣ_G)_Gxyz = [I]{ω̇}` because the moments and products of inertia are constant in a
 //! frame in which the body's mass distribution looks the same: the body-fixed frame
 //! (Ω = ω), or, for an axisymmetric body, a frame that does not spin with the body (Ω ≠ ω).
-//! The same holds about a fixed point O with `[I_O]`.
+//! The same holds about a fixed point O with `[I_O]` (§18.7):
+//! `Ḣ_O = (Ḣ_O)_Oxyz + Ω × H_O`, `(Ḣ_O)_Oxyz = [I_O]{ω̇}`.
 
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
@@ -16,7 +17,8 @@ use crate::algebra::vector_products::{cross, mat_vec};
 use crate::algebra::{AlgebraError, Vector};
 
 /// `Ḣ = [I]{ω̇} + Ω × ([I]{ω})`. `omega_dot` holds the rates of the components of ω as
-/// seen in the rotating frame; `frame_rate` is Ω.
+/// seen in the rotating frame; `frame_rate` is Ω; `point` names the point the moments and
+/// products of `inertia` are about (`G`, or a fixed point `O`).
 ///
 /// The gyroscopic moment: a rotor spinning steadily at `w_z` about its axis z while the frame
 /// turns at `Omega_x` about x. `(Ḣ)_Gxyz = 0` and `Ω × H = Omega_x i × I_z w_z k`, so
@@ -33,6 +35,7 @@ use crate::algebra::{AlgebraError, Vector};
 ///     &vector("0", "0", "w_z"),
 ///     &vector("0", "0", "0"),
 ///     &vector("Omega_x", "0", "0"),
+///     "G",
 /// )?;
 /// let components: Vec<&Expr> = hdot.result().iter().map(|r| &r.rhs).collect();
 /// assert_eq!(components, [&hand("0"), &hand("-I_z Omega_x w_z"), &hand("0")]);
@@ -43,31 +46,34 @@ pub fn rate_of_angular_momentum(
     omega: &Vector,
     omega_dot: &Vector,
     frame_rate: &Vector,
+    point: &str,
 ) -> Result<Derivation, AlgebraError> {
     let matrix = inertia.matrix();
     let relative = mat_vec(&matrix, omega_dot);
     let h = mat_vec(&matrix, omega);
     let transport = cross(frame_rate, &h);
     let total = expand_each(&(&relative + &transport))?;
+    let tensor = InertiaTensor::written_about(point);
     Ok(Derivation {
         name: "Hdot".into(),
         title: "rate of change of angular momentum".into(),
         steps: vec![
-            Step {
-                table: None,
-                title: r"rate relative to the rotating frame, $(\dot{\mathbf{H}})_{Gxyz} = [I]\{\dot{\boldsymbol{\omega}}\}$".into(),
-                relations: Relation::components("Hdot", &expand_each(&relative)?),
-            },
-            Step {
-                table: None,
-                title: r"transport term $\boldsymbol{\Omega} \times \mathbf{H}$".into(),
-                relations: Relation::components("Hdot", &expand_each(&transport)?),
-            },
-            Step {
-                table: None,
-                title: r"$\dot{\mathbf{H}} = (\dot{\mathbf{H}})_{Gxyz} + \boldsymbol{\Omega} \times \mathbf{H}$".into(),
-                relations: Relation::components("Hdot", &total),
-            },
+            Step::new(
+                format!(
+                    r"rate relative to the rotating frame, $(\dot{{\mathbf{{H}}}}_{point})_{{{point}xyz}} = {tensor}\{{\dot{{\boldsymbol{{\omega}}}}\}}$"
+                ),
+                Relation::components("Hdot", &expand_each(&relative)?),
+            ),
+            Step::new(
+                format!(r"transport term $\boldsymbol{{\Omega}} \times \mathbf{{H}}_{point}$"),
+                Relation::components("Hdot", &expand_each(&transport)?),
+            ),
+            Step::new(
+                format!(
+                    r"$\dot{{\mathbf{{H}}}}_{point} = (\dot{{\mathbf{{H}}}}_{point})_{{{point}xyz}} + \boldsymbol{{\Omega}} \times \mathbf{{H}}_{point}$"
+                ),
+                Relation::components("Hdot", &total),
+            ),
         ],
     })
 }

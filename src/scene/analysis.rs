@@ -3,16 +3,21 @@
 //! Every quantity comes from a [`crate::mechanics`] function, and the plan shows that
 //! function's steps: the analysis chooses, caches and substitutes, and derives nothing itself.
 //!
-//! | request | pulls |
-//! |---|---|
-//! | `omega` | kinematics (constraints solved) |
-//! | `vbar`, `mvbar` | kinematics, motion of the mass centre |
-//! | `abar`, `mabar` | kinematics, acceleration of the mass centre |
-//! | `H_G` | inertia, kinematics, angular momentum |
-//! | `H_O` | inertia, kinematics, angular momentum, motion of the mass centre |
-//! | `T` | inertia, kinematics, motion of the mass centre, kinetic energy |
-//! | `Hdot_G` | inertia, kinematics, rate of change of angular momentum |
-//! | an unknown | impulse and momentum (a scene with impulses), else the equations of motion; then the solution |
+//! With a fixed point O (and no `about G`) the route is the textbook's (§18.7–18.8): the
+//! moments and products of inertia about O, `{H_O} = [I_O]{ω}`, `T = ½{ω}ᵀ[I_O]{ω}` and
+//! `ΣM_O = Ḣ_O`; the mass centre only where `ΣF = m ā` or v̄ needs it. Otherwise the
+//! centroidal route: `[Ī]`, `H_G`, `H_O = H_G + r̄ × m v̄`, `ΣM = Ḣ_G + r̄ × m ā`.
+//!
+//! | request | pulls (about O) | pulls (about G) |
+//! |---|---|---|
+//! | `omega` | kinematics (constraints solved) | the same |
+//! | `vbar`, `mvbar` | kinematics, mass centre, its motion | kinematics, body about G, motion of G |
+//! | `abar`, `mabar` | kinematics, mass centre, its acceleration | kinematics, body about G, acceleration of G |
+//! | `H_G` | body about G, kinematics, angular momentum | the same |
+//! | `H_O` | inertia about O, kinematics, angular momentum | body about G, kinematics, `H_G`, motion of G, `H_O` |
+//! | `T` | inertia about O, kinematics, kinetic energy | body about G, kinematics, motion of G, kinetic energy |
+//! | `Hdot_G` | body about G, kinematics, rate of change of angular momentum | the same |
+//! | an unknown | the equations of motion with `Ḣ_O` (or impulse and momentum); then the solution | the same with `Ḣ_G` |
 
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
 use super::model::{ConstraintKind, Quantity, Request, Scene, Span};
@@ -23,10 +28,13 @@ use crate::mechanics::composite_body::{composite_body, MassProperties};
 use crate::mechanics::derivation::{presented, Derivation, Relation, Step};
 use crate::mechanics::equations_of_motion::{equations_of_motion, Loads, MomentCentre};
 use crate::mechanics::impulse_momentum::{impulse_momentum, ImpulseMomentum};
+use crate::mechanics::inertia::InertiaTensor;
 use crate::mechanics::inertia::MassPart;
+use crate::mechanics::inertia_about_point::inertia_about_fixed_point;
 use crate::mechanics::kinematics::{acceleration_of_mass_centre, velocity_of_mass_centre};
 use crate::mechanics::kinetic_energy::kinetic_energy;
 use crate::mechanics::linear_momentum::{effective_force, linear_momentum};
+use crate::mechanics::mass_centre::{mass_centre, MassCentre};
 use crate::mechanics::resultant::{resultant_force, resultant_moment, AppliedForce};
 use crate::mechanics::rotating_frame::rate_of_angular_momentum;
 use crate::parse::Diagnostic;
@@ -51,11 +59,16 @@ struct Analyser<'a> {
     scene: &'a Scene,
     plan: Vec<Step>,
     body: Option<MassProperties>,
+    /// The mass and mass centre, when the route about O needs them without the body about G.
+    centre: Option<MassCentre>,
+    /// The moments and products of inertia about the fixed point O.
+    inertia_o: Option<InertiaTensor>,
     kinematics: Option<SolvedConstraints>,
     vbar: Option<Vector>,
     abar: Option<Vector>,
     h_g: Option<Vector>,
     hdot_g: Option<Vector>,
+    hdot_o: Option<Vector>,
     unknowns: Option<HashMap<Symbol, Expr>>,
     /// Unknowns solved in general that the givens' values leave undetermined.
     undetermined_with_values: HashMap<Symbol, Expr>,
@@ -137,11 +150,14 @@ impl<'a> Analyser<'a> {
             scene,
             plan: Vec::new(),
             body: None,
+            centre: None,
+            inertia_o: None,
             kinematics: None,
             vbar: None,
             abar: None,
             h_g: None,
             hdot_g: None,
+            hdot_o: None,
             unknowns: None,
             undetermined_with_values: HashMap::new(),
         }
@@ -175,18 +191,20 @@ impl<'a> Analyser<'a> {
             Quantity::AngularVelocity => Value::Vector(self.kinematics(at)?.omega.clone()),
             Quantity::MassCentreVelocity => Value::Vector(self.vbar(at)?),
             Quantity::LinearMomentum => {
-                let (m, v) = (self.body(at)?.mass.clone(), self.vbar(at)?);
+                let (m, v) = (self.mass_centre(at)?.mass, self.vbar(at)?);
                 Value::Vector(linear_momentum(&m, &v).map_err(self.algebra(at))?)
             }
             Quantity::MassCentreAcceleration => Value::Vector(self.abar(at)?),
             Quantity::EffectiveForce => {
-                let (m, a) = (self.body(at)?.mass.clone(), self.abar(at)?);
+                let (m, a) = (self.mass_centre(at)?.mass, self.abar(at)?);
                 Value::Vector(effective_force(&m, &a).map_err(self.algebra(at))?)
             }
             Quantity::AngularMomentumAboutG => Value::Vector(self.h_g(at)?),
             Quantity::AngularMomentumAboutO => Value::Vector(self.h_o(at)?),
             Quantity::KineticEnergy => Value::Scalar(self.kinetic_energy(at)?),
-            Quantity::RateOfAngularMomentum => Value::Vector(self.hdot_g(at)?),
+            Quantity::RateOfAngularMomentum => {
+                Value::Vector(self.rate_of_angular_momentum(at, false)?)
+            }
             Quantity::Unknown(s) => Value::Scalar(self.unknown(at, s)?),
         })
     }
@@ -224,41 +242,95 @@ impl<'a> Analyser<'a> {
         })
     }
 
+    /// The scene's parts, each with its centroidal inertia in the frame's axes.
+    fn parts(&self, at: Span) -> Result<Vec<MassPart>, Diagnostic> {
+        let parts = &self.scene.parts;
+        if parts.is_empty() {
+            return Err(self.fail(
+                at,
+                "the scene has no body",
+                "add a line such as 'body disk(r) mass m at (L, 0, 0)'",
+            ));
+        }
+        parts
+            .iter()
+            .map(|p| {
+                Ok(MassPart {
+                    mass: p.mass.clone(),
+                    position: p.position.clone(),
+                    inertia: p.shape.centroidal_inertia(&p.mass)?.rotated(&p.rotation)?,
+                })
+            })
+            .collect::<Result<_, AlgebraError>>()
+            .map_err(self.algebra(at))
+    }
+
+    /// An algebra error met while finding the mass centre: a division by zero is a total
+    /// mass of zero.
+    fn mass_error(&self, at: Span) -> impl Fn(AlgebraError) -> Diagnostic + '_ {
+        move |e| match e {
+            AlgebraError::DivisionByZero => self.fail(
+                at,
+                "the total mass of the body is zero",
+                "give every body a positive mass",
+            ),
+            e => self.algebra(at)(e),
+        }
+    }
+
     fn body(&mut self, at: Span) -> Result<&MassProperties, Diagnostic> {
         if self.body.is_none() {
-            let parts = &self.scene.parts;
-            if parts.is_empty() {
-                return Err(self.fail(
-                    at,
-                    "the scene has no body",
-                    "add a line such as 'body disk(r) mass m at (L, 0, 0)'",
-                ));
-            }
-            let parts: Vec<MassPart> = parts
-                .iter()
-                .map(|p| {
-                    Ok(MassPart {
-                        mass: p.mass.clone(),
-                        position: p.position.clone(),
-                        inertia: p.shape.centroidal_inertia(&p.mass)?.rotated(&p.rotation)?,
-                    })
-                })
-                .collect::<Result<_, AlgebraError>>()
-                .map_err(self.algebra(at))?;
-            let (body, derivation) = composite_body(&parts).map_err(|e| match e {
-                AlgebraError::DivisionByZero => self.fail(
-                    at,
-                    "the total mass of the body is zero",
-                    "give every body a positive mass",
-                ),
-                e => self.algebra(at)(e),
-            })?;
+            let parts = self.parts(at)?;
+            let (body, derivation) = composite_body(&parts).map_err(self.mass_error(at))?;
             self.plan.extend(derivation.steps);
             self.body = Some(body);
         }
         Ok(self
             .body
             .as_ref()
+            .unwrap_or_else(|| unreachable!("set above")))
+    }
+
+    /// The mass and mass centre: from the body about G when it is derived (or the route is
+    /// about G), else from the parts alone (the route about O needs no inertia about G).
+    fn mass_centre(&mut self, at: Span) -> Result<MassCentre, Diagnostic> {
+        if let Some(body) = &self.body {
+            return Ok(MassCentre {
+                mass: body.mass.clone(),
+                centroid: body.centroid.clone(),
+            });
+        }
+        if !self.scene.about_fixed_point() {
+            let body = self.body(at)?;
+            return Ok(MassCentre {
+                mass: body.mass.clone(),
+                centroid: body.centroid.clone(),
+            });
+        }
+        if self.centre.is_none() {
+            let parts = self.parts(at)?;
+            let (centre, derivation) = mass_centre(&parts).map_err(self.mass_error(at))?;
+            self.plan.extend(derivation.steps);
+            self.centre = Some(centre);
+        }
+        Ok(self
+            .centre
+            .clone()
+            .unwrap_or_else(|| unreachable!("set above")))
+    }
+
+    /// `[I_O]`: the moments and products of inertia about the fixed point O.
+    fn inertia_about_o(&mut self, at: Span) -> Result<InertiaTensor, Diagnostic> {
+        if self.inertia_o.is_none() {
+            let parts = self.parts(at)?;
+            let (inertia, derivation) =
+                inertia_about_fixed_point(&parts).map_err(self.algebra(at))?;
+            self.plan.extend(derivation.steps);
+            self.inertia_o = Some(inertia);
+        }
+        Ok(self
+            .inertia_o
+            .clone()
             .unwrap_or_else(|| unreachable!("set above")))
     }
 
@@ -307,7 +379,7 @@ impl<'a> Analyser<'a> {
         }
         let omega = self.kinematics(at)?.omega.clone();
         // The body comes first in the plan, as in the chapter's solutions.
-        let centroid = self.body(at)?.centroid.clone();
+        let centroid = self.mass_centre(at)?.centroid;
         let v = match (&self.scene.vbar, self.scene.fixed_point) {
             (Some(given), _) => {
                 let v = self.known_vector(given, at)?;
@@ -351,7 +423,7 @@ impl<'a> Analyser<'a> {
             let k = self.kinematics(at)?;
             let (omega, omega_dot, frame) =
                 (k.omega.clone(), k.omega_dot.clone(), k.frame_rate.clone());
-            let centroid = self.body(at)?.centroid.clone();
+            let centroid = self.mass_centre(at)?.centroid;
             let d = acceleration_of_mass_centre(&omega, &omega_dot, &frame, &centroid)
                 .map_err(self.algebra(at))?;
             // The step shows α, then ā: the acceleration is its last three relations.
@@ -379,7 +451,14 @@ impl<'a> Analyser<'a> {
         Ok(h)
     }
 
+    /// About O: `{H_O} = [I_O]{ω}`; about G: `H_O = H_G + r̄ × m v̄`.
     fn h_o(&mut self, at: Span) -> Result<Vector, Diagnostic> {
+        if self.scene.about_fixed_point() {
+            let omega = self.kinematics(at)?.omega.clone();
+            let inertia = self.inertia_about_o(at)?;
+            let d = angular_momentum(&inertia, &omega, "O").map_err(self.algebra(at))?;
+            return Ok(self.record_vector(d));
+        }
         let h_g = self.h_g(at)?;
         let v = self.vbar(at)?;
         let body = self.body(at)?;
@@ -388,27 +467,43 @@ impl<'a> Analyser<'a> {
         Ok(self.record_vector(d))
     }
 
+    /// About O: `T = ½{ω}ᵀ[I_O]{ω}`; about G: `T = ½ m v̄² + ½{ω}ᵀ[Ī]{ω}`.
     fn kinetic_energy(&mut self, at: Span) -> Result<Expr, Diagnostic> {
         let omega = self.kinematics(at)?.omega.clone();
-        let v = self.vbar(at)?;
-        let body = self.body(at)?;
-        let d = kinetic_energy(&body.inertia, &omega, Some((&body.mass, &v)))
-            .map_err(self.algebra(at))?;
-        Ok(self.record(d)[0].clone())
+        let d = if self.scene.about_fixed_point() {
+            let inertia = self.inertia_about_o(at)?;
+            kinetic_energy(&inertia, &omega, None)
+        } else {
+            let v = self.vbar(at)?;
+            let body = self.body(at)?;
+            kinetic_energy(&body.inertia, &omega, Some((&body.mass, &v)))
+        };
+        Ok(self.record(d.map_err(self.algebra(at))?)[0].clone())
     }
 
-    fn hdot_g(&mut self, at: Span) -> Result<Vector, Diagnostic> {
-        if let Some(h) = &self.hdot_g {
+    /// `Ḣ = [I]{ω̇} + Ω × H` about G (`[Ī]`) or about O (`[I_O]`).
+    fn rate_of_angular_momentum(&mut self, at: Span, about_o: bool) -> Result<Vector, Diagnostic> {
+        let cached = if about_o { &self.hdot_o } else { &self.hdot_g };
+        if let Some(h) = cached {
             return Ok(h.clone());
         }
         let k = self.kinematics(at)?;
         let (omega, omega_dot, frame) =
             (k.omega.clone(), k.omega_dot.clone(), k.frame_rate.clone());
-        let inertia = self.body(at)?.inertia.clone();
-        let d = rate_of_angular_momentum(&inertia, &omega, &omega_dot, &frame)
+        let (inertia, point) = if about_o {
+            (self.inertia_about_o(at)?, "O")
+        } else {
+            (self.body(at)?.inertia.clone(), "G")
+        };
+        let d = rate_of_angular_momentum(&inertia, &omega, &omega_dot, &frame, point)
             .map_err(self.algebra(at))?;
         let hdot = self.record_vector(d);
-        self.hdot_g = Some(hdot.clone());
+        let cache = if about_o {
+            &mut self.hdot_o
+        } else {
+            &mut self.hdot_g
+        };
+        *cache = Some(hdot.clone());
         Ok(hdot)
     }
 
@@ -512,11 +607,17 @@ impl<'a> Analyser<'a> {
             .collect()
     }
 
-    /// `ΣF = m ā` and `ΣM_P = Ḣ_G + r̄_{G/P} × m ā` about P = O (fixed point) or G.
+    /// `ΣF = m ā` and the moments: `ΣM_O = Ḣ_O` about a fixed point O, or with the rate
+    /// about G, `ΣM_O = Ḣ_G + r̄ × m ā` (`about G`), or `ΣM_G = Ḣ_G` (no fixed point).
     fn equations_of_motion(&mut self, at: Span) -> Result<Derivation, Diagnostic> {
-        let a = self.abar(at)?;
-        let hdot = self.hdot_g(at)?;
         let scene = self.scene;
+        let a = self.abar(at)?;
+        let about = match (scene.fixed_point, scene.about_mass_centre) {
+            (true, false) => MomentCentre::FixedPoint,
+            (true, true) => MomentCentre::FixedPointThroughMassCentre,
+            (false, _) => MomentCentre::MassCentre,
+        };
+        let rate = self.rate_of_angular_momentum(at, about == MomentCentre::FixedPoint)?;
         let forces: Vec<AppliedForce> = scene
             .forces
             .iter()
@@ -525,17 +626,12 @@ impl<'a> Analyser<'a> {
                 point: &f.point,
             })
             .collect();
-        let about = if scene.fixed_point {
-            MomentCentre::FixedPoint
-        } else {
-            MomentCentre::MassCentre
-        };
         let loads = Loads {
             forces: &forces,
             couples: &scene.couples,
         };
-        let body = self.body(at)?;
-        equations_of_motion(body, &a, &hdot, loads, about).map_err(self.algebra(at))
+        let body = self.mass_centre(at)?;
+        equations_of_motion(&body, &a, &rate, loads, about).map_err(self.algebra(at))
     }
 
     /// `m v̄₂ = Σ F Δt` and `[I]{ω₂} = Σ r × F Δt` about G, for an impact from rest.

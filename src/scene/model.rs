@@ -183,6 +183,9 @@ pub struct Scene {
     pub parts: Vec<Part>,
     /// Whether the origin O is a fixed point of the body.
     pub fixed_point: bool,
+    /// `about G`: with a fixed point, derive about the mass centre G (`H_G`, then
+    /// `H_O = H_G + r̄ × m v̄`, `ΣM_O = Ḣ_G + r̄ × m ā`) instead of about O with `[I_O]`.
+    pub about_mass_centre: bool,
     pub omega: Option<Vector>,
     /// Rates of ω's components as seen in the frame (`(dω/dt)_frame`).
     pub omega_dot: Option<Vector>,
@@ -266,6 +269,12 @@ impl Scene {
             domains.declare(given.symbol, given.domain);
         }
         domains
+    }
+
+    /// Whether the solution works about the fixed point O with `[I_O]`, as §18.7–18.8 do: the
+    /// scene has a fixed point and does not ask for the centroidal route (`about G`).
+    pub fn about_fixed_point(&self) -> bool {
+        self.fixed_point && !self.about_mass_centre
     }
 
     pub fn is_unknown(&self, s: Symbol) -> bool {

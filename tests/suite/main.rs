@@ -9,6 +9,7 @@ mod common;
 
 use common::counting_allocator::Counting;
 
+mod about_fixed_point;
 mod algebra_properties;
 mod bad_scenes;
 mod cancel;

@@ -387,7 +387,7 @@ fn factoring_recovers_the_structure_of_the_expanded_rate_of_angular_momentum() {
     let alpha = v(["wdot_x", "wdot_y", "wdot_z"]);
     let frame = v(["Omega_x", "Omega_y", "Omega_z"]);
     let general = InertiaTensor::general();
-    let expanded = rhs(&rate_of_angular_momentum(&general, &omega, &alpha, &frame).unwrap());
+    let expanded = rhs(&rate_of_angular_momentum(&general, &omega, &alpha, &frame, "G").unwrap());
     // The same vector as the chapter writes it, [I]ω̇ + Ω × ([I]ω), never expanded.
     let matrix = general.matrix();
     let factored: Vec<Expr> = (&matrix * &alpha + frame.cross(&(&matrix * &omega)))

@@ -140,6 +140,7 @@ fn rotating_frame_euler() -> &'static (Vec<Expr>, Vec<Symbol>, Tape, NativeTape)
             &body_angular_velocity(),
             &vector(["wdot_x", "wdot_y", "wdot_z"]),
             &vector(["Omega_x", "Omega_y", "Omega_z"]),
+            "G",
         )
         .unwrap();
         let outputs: Vec<Expr> = derivation.result().iter().map(|r| r.rhs.clone()).collect();

@@ -77,6 +77,7 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
             givens: vec![],
             parts: vec![],
             fixed_point: false,
+            about_mass_centre: false,
             omega: None,
             omega_dot: None,
             frame_rate: None,
@@ -141,6 +142,10 @@ impl Reader<'_> {
             Rule::given => self.given(inner)?,
             Rule::body => self.body(inner, at)?,
             Rule::fixed_point => self.scene.fixed_point = true,
+            Rule::about_g => {
+                self.only_once(self.scene.about_mass_centre, at)?;
+                self.scene.about_mass_centre = true
+            }
             Rule::omega => {
                 self.only_once(self.scene.omega.is_some(), at)?;
                 self.scene.omega = Some(self.vector(&inner[0], Dimension::ANGULAR_VELOCITY)?)

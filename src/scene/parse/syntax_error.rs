@@ -5,7 +5,7 @@
 use crate::parse::Diagnostic;
 
 /// Each statement with the form it is written in, for the hint of a syntax error.
-const STATEMENT_FORMS: [(&str, &str); 15] = [
+const STATEMENT_FORMS: [(&str, &str); 16] = [
     ("title", "title Sample Problem 18.4"),
     (
         "given",
@@ -13,6 +13,7 @@ const STATEMENT_FORMS: [(&str, &str); 15] = [
     ),
     ("body", "body rod(c) mass m at (L/2, c/2, 0) along y"),
     ("fixed", "fixed point"),
+    ("about", "about G"),
     ("omega", "omega = w1*i - w2*j"),
     ("omegadot", "omegadot = alpha*i"),
     ("frame", "frame rate = -w2*j  or  frame body-fixed"),

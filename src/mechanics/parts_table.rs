@@ -1,0 +1,61 @@
+//! A composite body's table of parts, as a student lays it out before adding: a row per
+//! part (`1`, `2`, …), the columns `m, x̄, ȳ, z̄` (the part's mass and the position of its
+//! mass centre from O) and `I_x, I_y, I_z, I_xy, I_yz, I_xz` (the part's moments and
+//! products of inertia about the point the body's are taken about).
+
+use super::derivation::{Table, TableRow};
+use super::inertia::{InertiaTensor, MassPart};
+use crate::algebra::Expr;
+
+/// The columns of the table, in order.
+const COLUMNS: [&str; 10] = [
+    "m", "xbar", "ybar", "zbar", "I_x", "I_y", "I_z", "I_xy", "I_yz", "I_xz",
+];
+
+/// The table of `parts`, each with its tensor `about` the common point (`about[i]` is part
+/// i's), each cell as given (the step shows it in its shortest form); `None` for a body of
+/// one part, where the table would repeat the sum.
+///
+/// ```
+/// use kinetics::mechanics::{inertia::MassPart, parts_table::parts_table};
+/// use kinetics::{Expr, InertiaTensor, Vector};
+///
+/// let particle = |x: &str| MassPart {
+///     mass: Expr::symbol("m"),
+///     position: Vector::new(Expr::symbol(x), Expr::zero(), Expr::zero()),
+///     inertia: InertiaTensor::diagonal([(); 3].map(|_| Expr::zero())),
+/// };
+/// let parts = [particle("a"), particle("b")];
+/// let about: Vec<InertiaTensor> = parts.iter().map(|p| p.inertia.clone()).collect();
+/// let table = parts_table(&parts, &about).expect("two parts");
+/// assert_eq!(table.columns.len(), 10);
+/// assert_eq!(table.rows[1].label, "2");
+/// assert_eq!(table.rows[1].cells[1], Expr::symbol("b"));
+/// assert!(parts_table(&parts[..1], &about[..1]).is_none());
+/// ```
+pub fn parts_table(parts: &[MassPart], about: &[InertiaTensor]) -> Option<Table> {
+    if parts.len() < 2 {
+        return None;
+    }
+    let rows = parts
+        .iter()
+        .zip(about)
+        .enumerate()
+        .map(|(k, (part, tensor))| {
+            let cells = std::iter::once(&part.mass)
+                .chain(part.position.iter())
+                .chain(&tensor.moments)
+                .chain(&tensor.products)
+                .cloned()
+                .collect();
+            TableRow {
+                label: (k + 1).to_string(),
+                cells,
+            }
+        })
+        .collect();
+    Some(Table {
+        columns: COLUMNS.map(Expr::symbol).to_vec(),
+        rows,
+    })
+}

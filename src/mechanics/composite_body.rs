@@ -12,8 +12,8 @@
 
 use super::derivation::{Derivation, Step};
 use super::inertia::{InertiaTensor, MassPart};
-use super::mass_centre::{first_moment, mass_centre, MassCentre};
-use super::parts_table::parts_table;
+use super::mass_centre::{mass_centre, MassCentre};
+use super::parts_table::{parts_table, Columns};
 use crate::algebra::{AlgebraError, Expr, Vector};
 
 /// The body as a whole: mass, position of the mass centre G from O, inertia about G.
@@ -53,30 +53,17 @@ pub struct MassProperties {
 pub fn composite_body(parts: &[MassPart]) -> Result<(MassProperties, Derivation), AlgebraError> {
     let (MassCentre { mass, centroid }, centre) = mass_centre(parts)?;
     let inertia = InertiaTensor::composite(parts, &mass, &centroid)?;
-    // Each part's offset from G over one denominator, r̄ᵢ − r̄ = (m r̄ᵢ − Σ mⱼ r̄ⱼ)/m, so that
-    // its contribution reads in lowest terms.
-    let moment = first_moment(parts);
-    let per_mass = mass.powi(-1);
-    let about_g = parts
-        .iter()
-        .map(|p| {
-            let offset = p
-                .position
-                .iter()
-                .zip(moment.iter())
-                .map(|(x, first)| Ok(&(&mass * x - first).expand()? * &per_mass))
-                .collect::<Result<Vec<_>, AlgebraError>>()?;
-            Ok(p.inertia
-                .parallel_axis(&p.mass, &Vector::from_iterator(offset)))
-        })
-        .collect::<Result<Vec<_>, AlgebraError>>()?;
+    // The table lists what a student looks up for each part, its mass, position and own
+    // centroidal moments and products; the relations are their sums by the parallel-axis
+    // theorem (each part's contribution about G in full is longer than the sum itself).
+    let own: Vec<InertiaTensor> = parts.iter().map(|p| p.inertia.clone()).collect();
     let relations = [centre.result().to_vec(), inertia.relations()].concat();
     let derivation = Derivation {
         name: "body".into(),
         title: "mass, mass centre and centroidal inertia".into(),
         steps: vec![Step {
-            table: parts_table(parts, &about_g),
-            title: r"mass, mass centre and centroidal inertia of the body (products of inertia positive, $\int xy\,dm$)".into(),
+            table: parts_table(parts, &own, Columns::OwnCentroidal),
+            title: r"mass, mass centre and centroidal inertia of the body: $\bar{I}_x = \Sigma(\bar{I}_{x'} + m((y - \bar{y})^2 + (z - \bar{z})^2))$, $\bar{I}_{xy} = \Sigma(\bar{I}_{x'y'} + m(x - \bar{x})(y - \bar{y}))$ (products of inertia positive, $\int xy\,dm$)".into(),
             relations,
         }],
     };

@@ -12,7 +12,7 @@
 
 use super::derivation::{Derivation, Step};
 use super::inertia::{InertiaTensor, MassPart};
-use super::parts_table::parts_table;
+use super::parts_table::{parts_table, Columns};
 use crate::algebra::AlgebraError;
 
 /// `[I_O]` of the parts together, with the step that shows the parts and the sums.
@@ -55,7 +55,7 @@ pub fn inertia_about_fixed_point(
         .expanded()?;
     let step = Step {
         title: r"moments and products of inertia about $O$, $I_x = \Sigma(\bar{I}_{x'} + m(\bar{y}^2 + \bar{z}^2))$, $I_{xy} = \Sigma(\bar{I}_{x'y'} + m\bar{x}\bar{y})$ (products positive, $I_{xy} = \int xy\,dm$)".into(),
-        table: parts_table(parts, &about_o),
+        table: parts_table(parts, &about_o, Columns::AboutPoint),
         relations: total.relations(),
     };
     Ok((

@@ -7,17 +7,45 @@ use super::derivation::{Table, TableRow};
 use super::inertia::{InertiaTensor, MassPart};
 use crate::algebra::Expr;
 
-/// The columns of the table, in order.
-const COLUMNS: [&str; 10] = [
-    "m", "xbar", "ybar", "zbar", "I_x", "I_y", "I_z", "I_xy", "I_yz", "I_xz",
-];
+/// What the inertia columns of a table hold.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Columns {
+    /// Each part's moments and products about the common point (O): their sums are the body's.
+    AboutPoint,
+    /// Each part's own centroidal moments and products (`Ī_x'`, …), before the parallel-axis
+    /// theorem.
+    OwnCentroidal,
+}
+
+impl Columns {
+    fn names(self) -> [&'static str; 10] {
+        match self {
+            Columns::AboutPoint => [
+                "m", "xbar", "ybar", "zbar", "I_x", "I_y", "I_z", "I_xy", "I_yz", "I_xz",
+            ],
+            Columns::OwnCentroidal => [
+                "m",
+                "xbar",
+                "ybar",
+                "zbar",
+                "Ibar_x'",
+                "Ibar_y'",
+                "Ibar_z'",
+                "Ibar_x'y'",
+                "Ibar_y'z'",
+                "Ibar_x'z'",
+            ],
+        }
+    }
+}
 
 /// The table of `parts`, each with its tensor `about` the common point (`about[i]` is part
 /// i's), each cell as given (the step shows it in its shortest form); `None` for a body of
 /// one part, where the table would repeat the sum.
 ///
 /// ```
-/// use kinetics::mechanics::{inertia::MassPart, parts_table::parts_table};
+/// use kinetics::mechanics::inertia::MassPart;
+/// use kinetics::mechanics::parts_table::{parts_table, Columns};
 /// use kinetics::{Expr, InertiaTensor, Vector};
 ///
 /// let particle = |x: &str| MassPart {
@@ -27,13 +55,13 @@ const COLUMNS: [&str; 10] = [
 /// };
 /// let parts = [particle("a"), particle("b")];
 /// let about: Vec<InertiaTensor> = parts.iter().map(|p| p.inertia.clone()).collect();
-/// let table = parts_table(&parts, &about).expect("two parts");
+/// let table = parts_table(&parts, &about, Columns::AboutPoint).expect("two parts");
 /// assert_eq!(table.columns.len(), 10);
 /// assert_eq!(table.rows[1].label, "2");
 /// assert_eq!(table.rows[1].cells[1], Expr::symbol("b"));
-/// assert!(parts_table(&parts[..1], &about[..1]).is_none());
+/// assert!(parts_table(&parts[..1], &about[..1], Columns::AboutPoint).is_none());
 /// ```
-pub fn parts_table(parts: &[MassPart], about: &[InertiaTensor]) -> Option<Table> {
+pub fn parts_table(parts: &[MassPart], about: &[InertiaTensor], columns: Columns) -> Option<Table> {
     if parts.len() < 2 {
         return None;
     }
@@ -55,7 +83,7 @@ pub fn parts_table(parts: &[MassPart], about: &[InertiaTensor]) -> Option<Table>
         })
         .collect();
     Some(Table {
-        columns: COLUMNS.map(Expr::symbol).to_vec(),
+        columns: columns.names().map(Expr::symbol).to_vec(),
         rows,
     })
 }

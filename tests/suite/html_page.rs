@@ -132,6 +132,7 @@ fn sample_problem_18_4_renders_as_maths() {
     assert!(fractions >= 30, "{fractions} fractions");
 }
 
+/// Every example's page and derive's, together on one page (one Chromium launch).
 #[test]
 fn every_example_renders_as_maths() {
     let scenes = examples();
@@ -147,6 +148,14 @@ fn every_example_renders_as_maths() {
             body(&page)
         ));
     }
+    // derive's page of every derivation and step, in the same launch.
+    let (code, derived, stderr) = kinetics(&["derive", "--general", "--steps", "--format", "html"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(derived.contains("<h3>"), "derive's steps are headings");
+    all.push_str(&format!(
+        "<article id=\"derive\">\n{}</article>\n",
+        body(&derived)
+    ));
     all.push_str("</body>\n</html>\n");
     let (formulas, fractions) = verdict(&all, "examples");
     assert!(formulas >= 10 * scenes.len(), "{formulas} formulas");

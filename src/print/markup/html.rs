@@ -53,7 +53,15 @@ fn one(out: &mut String, node: &Node, face: Option<Face>) {
                 '\'' => '′',
                 c => *c,
             };
-            element(out, "mo", c.encode_utf8(&mut [0; 4]));
+            if matches!(c, '(' | ')' | '[' | ']' | '{' | '}' | '|') {
+                // A title's fences are inline, the height of the text: never stretched
+                // around `{ω}ᵀ` as a display's would be.
+                out.push_str(r#"<mo stretchy="false">"#);
+                words(out, c.encode_utf8(&mut [0; 4]));
+                out.push_str("</mo>");
+            } else {
+                element(out, "mo", c.encode_utf8(&mut [0; 4]));
+            }
         }
         Node::Blank => {}
         Node::ThinSpace => out.push_str(r#"<mspace width="0.1667em"/>"#),

@@ -19,15 +19,14 @@
 //! | `Hdot_G` | body about G, kinematics, rate of change of angular momentum | the same |
 //! | an unknown | the equations of motion with `Ḣ_O` (or impulse and momentum); then the solution | the same with `Ḣ_G` |
 
+mod unknowns;
+
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
 use super::model::{ConstraintKind, Quantity, Request, Scene, Span};
-use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
-use crate::algebra::{AlgebraError, Axis, Domains, Expr, Symbol, Vector};
+use crate::algebra::{AlgebraError, Domains, Expr, Symbol, Vector};
 use crate::mechanics::angular_momentum::{angular_momentum, angular_momentum_about_point};
 use crate::mechanics::composite_body::{composite_body, MassProperties};
 use crate::mechanics::derivation::{presented, Derivation, Relation, Step};
-use crate::mechanics::equations_of_motion::{equations_of_motion, Loads, MomentCentre};
-use crate::mechanics::impulse_momentum::{impulse_momentum, ImpulseMomentum};
 use crate::mechanics::inertia::InertiaTensor;
 use crate::mechanics::inertia::MassPart;
 use crate::mechanics::inertia_about_point::inertia_about_fixed_point;
@@ -35,7 +34,6 @@ use crate::mechanics::kinematics::{acceleration_of_mass_centre, velocity_of_mass
 use crate::mechanics::kinetic_energy::kinetic_energy;
 use crate::mechanics::linear_momentum::{effective_force, linear_momentum};
 use crate::mechanics::mass_centre::{mass_centre, MassCentre};
-use crate::mechanics::resultant::{resultant_force, resultant_moment, AppliedForce};
 use crate::mechanics::rotating_frame::rate_of_angular_momentum;
 use crate::parse::Diagnostic;
 use std::collections::HashMap;
@@ -505,158 +503,5 @@ impl<'a> Analyser<'a> {
         };
         *cache = Some(hdot.clone());
         Ok(hdot)
-    }
-
-    fn solve_error(&self, at: Span, e: SolveError) -> Diagnostic {
-        super::kinematic_constraints::solve_error(self.scene, at, e)
-    }
-
-    fn unknown(&mut self, at: Span, s: Symbol) -> Result<Expr, Diagnostic> {
-        if let Some(v) = self.kinematics(at)?.solved.iter().find(|(u, _)| *u == s) {
-            return Ok(v.1.clone());
-        }
-        if self.unknowns.is_none() {
-            let derivation = if self.scene.impulses.is_empty() {
-                self.equations_of_motion(at)?
-            } else {
-                self.impulse_momentum(at)?
-            };
-            let equations: Vec<Expr> = derivation
-                .result()
-                .iter()
-                .map(|r| self.known(&r.residual()))
-                .collect::<Result<Vec<_>, _>>()
-                .map_err(self.algebra(at))?
-                .into_iter()
-                .filter(|e| !e.is_zero())
-                .collect();
-            self.plan.extend(derivation.steps);
-            let wanted: Vec<Symbol> = self
-                .scene
-                .unknowns
-                .iter()
-                .map(|u| u.0)
-                .filter(|u| equations.iter().any(|e| e.contains(*u)))
-                .collect();
-            let Solution {
-                values: solution,
-                free,
-            } = solve_linear(&equations, &wanted).map_err(|e| self.solve_error(at, e))?;
-            self.plan.push(Step {
-                table: None,
-                title: "solve the equations for the unknowns".into(),
-                relations: solution
-                    .iter()
-                    .map(|(u, v)| Relation::new(Expr::sym(*u), v.clone(), Axis::X))
-                    .collect(),
-            });
-            let mut map: HashMap<Symbol, Expr> = solution.into_iter().collect();
-            for f in free {
-                map.remove(&f);
-            }
-            self.unknowns = Some(map);
-            self.undetermined_with_values = self.undetermined_with_values(&equations, &wanted);
-        }
-        if let Some(equations) = self.undetermined_with_values.get(&s) {
-            // Named as the request is written when it asks for this unknown (`T_BC in N`).
-            let scene = self.scene;
-            let named = scene
-                .requests
-                .iter()
-                .find(|r| r.span == at && r.quantity == Quantity::Unknown(s))
-                .map_or_else(|| s.name().to_string(), Request::as_written);
-            return Err(scene.division_by_zero_at(at, &named, equations));
-        }
-        self.unknowns
-            .as_ref()
-            .and_then(|m| m.get(&s).cloned())
-            .ok_or_else(|| self.solve_error(at, SolveError::UnderDetermined(vec![s])))
-    }
-
-    /// The unknowns that the equations determine in general, dividing by a symbolic pivot,
-    /// but not with the givens' values, where the pivot is zero (a shaft of length L = 0):
-    /// found by solving again with every given's exact value. Each comes with the equations
-    /// (their sum), whose zero givens the error names. Empty when a given in the equations
-    /// has no value.
-    fn undetermined_with_values(
-        &self,
-        equations: &[Expr],
-        wanted: &[Symbol],
-    ) -> HashMap<Symbol, Expr> {
-        let scene = self.scene;
-        let value = |s: Symbol| scene.exact_value(s).map(Expr::num);
-        let all_valued = equations
-            .iter()
-            .flat_map(|e| e.symbols())
-            .all(|s| wanted.contains(&s) || scene.value(s).is_some());
-        let with_values: Option<Vec<Expr>> =
-            equations.iter().map(|e| e.subs(&value).ok()).collect();
-        let (true, Some(with_values)) = (all_valued, with_values) else {
-            return HashMap::new();
-        };
-        let undetermined = match solve_linear(&with_values, wanted) {
-            Ok(solution) => solution.free,
-            Err(SolveError::UnderDetermined(free)) => free,
-            Err(SolveError::Inconsistent { .. }) => wanted.to_vec(),
-            Err(_) => Vec::new(),
-        };
-        let together = Expr::add_all(equations.iter().cloned());
-        undetermined
-            .into_iter()
-            .map(|u| (u, together.clone()))
-            .collect()
-    }
-
-    /// `ΣF = m ā` and the moments: `ΣM_O = Ḣ_O` about a fixed point O, or with the rate
-    /// about G, `ΣM_O = Ḣ_G + r̄ × m ā` (`about G`), or `ΣM_G = Ḣ_G` (no fixed point).
-    fn equations_of_motion(&mut self, at: Span) -> Result<Derivation, Diagnostic> {
-        let scene = self.scene;
-        let a = self.abar(at)?;
-        let about = match (scene.fixed_point, scene.about_mass_centre) {
-            (true, false) => MomentCentre::FixedPoint,
-            (true, true) => MomentCentre::FixedPointThroughMassCentre,
-            (false, _) => MomentCentre::MassCentre,
-        };
-        let rate = self.rate_of_angular_momentum(at, about == MomentCentre::FixedPoint)?;
-        let forces: Vec<AppliedForce> = scene
-            .forces
-            .iter()
-            .map(|f| AppliedForce {
-                value: &f.value,
-                point: &f.point,
-            })
-            .collect();
-        let loads = Loads {
-            forces: &forces,
-            couples: &scene.couples,
-        };
-        let body = self.mass_centre(at)?;
-        equations_of_motion(&body, &a, &rate, loads, about).map_err(self.algebra(at))
-    }
-
-    /// `m v̄₂ = Σ F Δt` and `[I]{ω₂} = Σ r × F Δt` about G, for an impact from rest.
-    fn impulse_momentum(&mut self, at: Span) -> Result<Derivation, Diagnostic> {
-        let v = self.vbar(at)?;
-        let h = self.h_g(at)?;
-        let scene = self.scene;
-        let body = self.body(at)?;
-        let impulses: Vec<AppliedForce> = scene
-            .impulses
-            .iter()
-            .map(|(value, point)| AppliedForce { value, point })
-            .collect();
-        let rest = zero_vector();
-        let derive = || -> Result<Derivation, AlgebraError> {
-            impulse_momentum(&ImpulseMomentum {
-                mass: &body.mass,
-                velocity_before: &rest,
-                velocity_after: &v,
-                angular_momentum_before: &rest,
-                angular_momentum_after: &h,
-                linear_impulse: &resultant_force(&impulses)?,
-                angular_impulse: &resultant_moment(&impulses, &[], &body.centroid)?,
-            })
-        };
-        derive().map_err(self.algebra(at))
     }
 }

@@ -24,6 +24,12 @@ pub struct MassProperties {
     pub inertia: InertiaTensor,
 }
 
+/// The step of a body of several parts: the parallel-axis sums its relations are.
+const PARTS_TITLE: &str = r"mass, mass centre and centroidal inertia of the body: $\bar{I}_x = \Sigma(\bar{I}_{x'} + m((y - \bar{y})^2 + (z - \bar{z})^2))$, $\bar{I}_{xy} = \Sigma(\bar{I}_{x'y'} + m(x - \bar{x})(y - \bar{y}))$ (products of inertia positive, $\int xy\,dm$)";
+
+/// The step of a body of one part, whose inertia is its shape's.
+const ONE_PART_TITLE: &str = r"mass, mass centre and centroidal inertia of the body (products of inertia positive, $\int xy\,dm$)";
+
 /// The mass, mass centre and centroidal inertia of the parts together, with the step that
 /// shows them. A total mass that is zero is refused ([`AlgebraError::DivisionByZero`]): the
 /// mass centre is `Σ mᵢ r̄ᵢ / m`.
@@ -63,7 +69,11 @@ pub fn composite_body(parts: &[MassPart]) -> Result<(MassProperties, Derivation)
         title: "mass, mass centre and centroidal inertia".into(),
         steps: vec![Step {
             table: parts_table(parts, &own, Columns::OwnCentroidal),
-            title: r"mass, mass centre and centroidal inertia of the body: $\bar{I}_x = \Sigma(\bar{I}_{x'} + m((y - \bar{y})^2 + (z - \bar{z})^2))$, $\bar{I}_{xy} = \Sigma(\bar{I}_{x'y'} + m(x - \bar{x})(y - \bar{y}))$ (products of inertia positive, $\int xy\,dm$)".into(),
+            title: if parts.len() > 1 {
+                PARTS_TITLE.into()
+            } else {
+                ONE_PART_TITLE.into()
+            },
             relations,
         }],
     };

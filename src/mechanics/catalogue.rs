@@ -39,10 +39,10 @@ pub fn convention(name: &str, axis: Axis) -> Option<String> {
     };
     Some(match name {
         "fixed_axis" => format!(
-            r"About the fixed point O on the axis; rotation about ${a}$, $\boldsymbol{{\omega}} = \omega{unit}$."
+            r"About the fixed point $O$ on the axis; rotation about ${a}$, $\boldsymbol{{\omega}} = \omega{unit}$."
         ),
         "reactions" => {
-            format!("Bearing A at O and bearing B at ${a} = l$ on the axis of rotation ${a}$.")
+            format!("Bearing $A$ at $O$ and bearing $B$ at ${a} = l$ on the axis of rotation ${a}$.")
         }
         "balancing" => format!(
             "Correcting masses in the planes ${a} = {a}_1$ and ${a} = {a}_2$; the axis of rotation is ${a}$."
@@ -55,18 +55,22 @@ pub fn convention(name: &str, axis: Axis) -> Option<String> {
 fn fixed_convention(name: &str) -> Option<&'static str> {
     Some(match name {
         "H_G" | "Hdot" | "impulse" => {
-            r"About the mass centre G; axes $x, y, z$ through G, products of inertia $I_{xy} = \int xy\,dm$."
+            r"About the mass centre $G$; axes $x, y, z$ through $G$, products of inertia $I_{xy} = \int xy\,dm$."
         }
         "T" => {
-            r"About the mass centre G: $T = \frac{1}{2} m\bar{v}^2 + \frac{1}{2}\{\boldsymbol{\omega}\}^T[\bar{I}]\{\boldsymbol{\omega}\}$."
+            r"About the mass centre $G$: $T = \frac{1}{2} m\bar{v}^2 + \frac{1}{2}\{\boldsymbol{\omega}\}^T[\bar{I}]\{\boldsymbol{\omega}\}$."
         }
         "H_O" => {
-            r"About a point O, from the mass centre G at $\bar{\mathbf{r}}$ moving at $\bar{\mathbf{v}}$."
+            r"About a point $O$, from the mass centre $G$ at $\bar{\mathbf{r}}$ moving at $\bar{\mathbf{v}}$."
         }
-        "T_O" => r"About the fixed point O: moments and products of inertia about axes through O.",
-        "T_plane" => r"Plane motion: $z$ a principal axis through G, $\bar{\mathbf{v}}$ along $x$.",
+        "T_O" => {
+            r"About the fixed point $O$: moments and products of inertia about axes through $O$."
+        }
+        "T_plane" => {
+            r"Plane motion: $z$ a principal axis through $G$, $\bar{\mathbf{v}}$ along $x$."
+        }
         "euler" => {
-            r"About G or a fixed point O; axes fixed in the body, $\boldsymbol{\Omega} = \boldsymbol{\omega}$."
+            r"About $G$ or a fixed point $O$; axes fixed in the body, $\boldsymbol{\Omega} = \boldsymbol{\omega}$."
         }
         _ => return None,
     })

@@ -7,7 +7,7 @@
 //! `.ci/run` installs Debian's `chromium` when it is missing, so the test never skips.
 
 use crate::common::binary::{kinetics, scene};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
 /// The browser, as Debian installs it.
@@ -111,18 +111,6 @@ fn chromium(dir: &Path, file: &Path, flags: &[&str]) -> String {
     String::from_utf8_lossy(&run.stdout).into_owned()
 }
 
-/// Every scene of `examples/scenes`, sorted.
-fn examples() -> Vec<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes");
-    let mut scenes: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .expect("examples/scenes exists")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "scene"))
-        .collect();
-    scenes.sort();
-    scenes
-}
-
 #[test]
 fn sample_problem_18_4_renders_as_maths() {
     let page = page(&scene("sp18_4_shaft_reactions"));
@@ -135,7 +123,7 @@ fn sample_problem_18_4_renders_as_maths() {
 /// Every example's page and derive's, together on one page (one Chromium launch).
 #[test]
 fn every_example_renders_as_maths() {
-    let scenes = examples();
+    let scenes = crate::common::examples::example_scenes();
     assert!(scenes.len() >= 5, "the sample problems are there");
     let first = page(&scenes[0].to_string_lossy());
     let head = &first[..first.find("<body>").expect("a body")];

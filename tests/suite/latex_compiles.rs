@@ -2,20 +2,15 @@
 //! `kinetics check --format latex` in a minimal document. `.ci/run` installs pdflatex from
 //! Debian's packages when it is missing, so these tests never skip.
 
+use crate::common::pdflatex::pdflatex;
 use std::path::Path;
 use std::process::Command;
 
 #[test]
 fn every_example_compiles_with_pdflatex() {
-    let examples = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes");
     let out_dir = std::env::temp_dir().join(format!("kinetics-latex-{}", std::process::id()));
     std::fs::create_dir_all(&out_dir).expect("a temporary folder");
-    let mut scenes: Vec<_> = std::fs::read_dir(&examples)
-        .expect("examples/scenes exists")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "scene"))
-        .collect();
-    scenes.sort();
+    let scenes = crate::common::examples::example_scenes();
     assert!(scenes.len() >= 5, "the sample problems are there");
     let mut failures = Vec::new();
     for scene in &scenes {
@@ -49,24 +44,7 @@ fn every_example_compiles_with_pdflatex() {
 
 /// The first LaTeX error of compiling `tex` in `dir`, if any.
 fn pdflatex_error(dir: &Path, tex: &Path) -> Option<String> {
-    let run = Command::new("pdflatex")
-        .args([
-            "-interaction=nonstopmode",
-            "-halt-on-error",
-            "-output-directory",
-        ])
-        .arg(dir)
-        .arg(tex)
-        .output()
-        .expect("pdflatex is installed (.ci/run installs it)");
-    let log = String::from_utf8_lossy(&run.stdout);
-    (!run.status.success() || log.contains("! ")).then(|| {
-        log.lines()
-            .skip_while(|l| !l.starts_with('!'))
-            .take(6)
-            .collect::<Vec<_>>()
-            .join("\n")
-    })
+    pdflatex(dir, tex).first_error()
 }
 
 /// A check's LaTeX report compiles: every verdict and reading, a vector claim, a claim of pure

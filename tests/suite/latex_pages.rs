@@ -25,19 +25,18 @@ fn kinetics(args: &[&str]) -> String {
 }
 
 /// The overfull boxes wider than 1 pt in the log of compiling `tex` (named `name`) in `dir`,
-/// each with the line of material that overflows.
+/// each with the line of material that overflows; a LaTeX error is a failure too.
 fn overfull_boxes(dir: &Path, name: &str, tex: &str) -> Vec<String> {
     let path = dir.join(format!("{name}.tex"));
     std::fs::write(&path, tex).expect("the .tex is written");
-    Command::new("pdflatex")
-        .args(["-interaction=nonstopmode", "-output-directory"])
-        .arg(dir)
-        .arg(&path)
-        .output()
-        .expect("pdflatex is installed (.ci/run installs it)");
+    let compiled = crate::common::pdflatex::pdflatex(dir, &path);
+    let mut found: Vec<String> = compiled
+        .first_error()
+        .map(|error| format!("{name}: {error}"))
+        .into_iter()
+        .collect();
     let log = std::fs::read_to_string(dir.join(format!("{name}.log"))).expect("a log");
     let lines: Vec<&str> = log.lines().collect();
-    let mut found = Vec::new();
     for (i, line) in lines.iter().enumerate() {
         let Some(rest) = line.strip_prefix(r"Overfull \hbox (") else {
             continue;
@@ -57,16 +56,10 @@ fn overfull_boxes(dir: &Path, name: &str, tex: &str) -> Vec<String> {
 
 #[test]
 fn every_example_fits_the_page_at_10_and_12_pt() {
-    let examples = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes");
     let dir = std::env::temp_dir().join(format!("kinetics-pages-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("a temporary folder");
     let mut documents = Vec::new();
-    let mut scenes: Vec<_> = std::fs::read_dir(&examples)
-        .expect("examples/scenes exists")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "scene"))
-        .collect();
-    scenes.sort();
+    let scenes = crate::common::examples::example_scenes();
     assert!(
         scenes.iter().any(|s| s.ends_with("long_relations.scene")),
         "the scene with long results is there"
@@ -80,12 +73,16 @@ fn every_example_fits_the_page_at_10_and_12_pt() {
         let tex = kinetics(&["solve", "--format", "latex", "--standalone", path]);
         documents.push((stem.to_string(), tex));
     }
-    let standalone = &documents[0].1;
-    let preamble = &standalone[..standalone.find(r"\begin{document}").expect("a document")];
-    let derived = kinetics(&["derive", "--general", "--steps", "--format", "latex"]);
     documents.push((
         "derive_general".to_string(),
-        format!("{preamble}\\begin{{document}}\n{derived}\n\\end{{document}}\n"),
+        kinetics(&[
+            "derive",
+            "--general",
+            "--steps",
+            "--format",
+            "latex",
+            "--standalone",
+        ]),
     ));
     let mut failures = Vec::new();
     for (name, tex) in &documents {

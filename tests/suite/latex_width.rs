@@ -9,8 +9,6 @@ use kinetics::print::{self, line_break, Notation};
 use kinetics::{analyse, parse_scene, Axis, Expr, Value};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, TestRunner};
-use std::path::Path;
-use std::process::Command;
 
 /// A printed expression and the model's width of it, in ems.
 struct Sample {
@@ -27,13 +25,7 @@ fn scalar(e: &Expr, axis: Axis) -> Sample {
 
 /// Every side of every relation and every result of the shipped examples.
 fn example_samples() -> Vec<Sample> {
-    let examples = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes");
-    let mut paths: Vec<_> = std::fs::read_dir(&examples)
-        .expect("examples/scenes exists")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "scene"))
-        .collect();
-    paths.sort();
+    let paths = crate::common::examples::example_scenes();
     let mut samples = Vec::new();
     for path in paths {
         let text = std::fs::read_to_string(&path).expect("the scene reads");
@@ -94,15 +86,11 @@ fn measured_em(samples: &[Sample]) -> Vec<f64> {
     tex.push_str("\\end{document}\n");
     let path = dir.join("widths.tex");
     std::fs::write(&path, tex).expect("the .tex is written");
-    let run = Command::new("pdflatex")
-        .args(["-interaction=nonstopmode", "-output-directory"])
-        .arg(&dir)
-        .arg(&path)
-        .output()
-        .expect("pdflatex is installed (.ci/run installs it)");
-    let log = String::from_utf8_lossy(&run.stdout);
+    let compiled = crate::common::pdflatex::pdflatex(&dir, &path);
     let _ = std::fs::remove_dir_all(&dir);
-    log.lines()
+    compiled
+        .log
+        .lines()
         .filter_map(|l| l.strip_prefix("WIDTH:"))
         .map(|w| w.trim_end_matches("pt").parse::<f64>().expect("a width") / 10.0)
         .collect()

@@ -151,13 +151,7 @@ fn every_title() -> Vec<String> {
             titles.extend(d.steps.iter().map(|s| s.title.clone()));
         }
     }
-    let examples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes");
-    let mut scenes: Vec<_> = std::fs::read_dir(&examples)
-        .expect("examples/scenes exists")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "scene"))
-        .collect();
-    scenes.sort();
+    let scenes = crate::common::examples::example_scenes();
     for path in scenes {
         let source = std::fs::read_to_string(&path).expect("readable");
         let scene = kinetics::parse_scene(&path.display().to_string(), &source).expect("parses");
@@ -203,27 +197,11 @@ fn a_document_of_every_title_compiles_with_pdflatex() {
     tex.push_str("\n\\end{document}\n");
     let file = dir.join("titles.tex");
     std::fs::write(&file, &tex).expect("written");
-    let run = std::process::Command::new("pdflatex")
-        .args([
-            "-interaction=nonstopmode",
-            "-halt-on-error",
-            "-output-directory",
-        ])
-        .arg(&dir)
-        .arg(&file)
-        .output()
-        .expect("pdflatex is installed");
-    let log = String::from_utf8_lossy(&run.stdout).to_string();
+    let compiled = crate::common::pdflatex::pdflatex(&dir, &file);
     let _ = std::fs::remove_dir_all(&dir);
-    assert!(
-        run.status.success() && !log.contains("! "),
-        "{tex}\n{}",
-        log.lines()
-            .skip_while(|l| !l.starts_with('!'))
-            .take(8)
-            .collect::<Vec<_>>()
-            .join("\n")
-    );
+    if let Some(error) = compiled.first_error() {
+        panic!("{tex}\n{error}");
+    }
 }
 
 /// Every title's HTML is well formed, and each MathML element that takes a fixed number of

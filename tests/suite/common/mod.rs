@@ -3,4 +3,6 @@
 pub mod binary;
 pub mod check;
 pub mod counting_allocator;
+pub mod examples;
 pub mod expression_tree;
+pub mod pdflatex;

@@ -9,29 +9,11 @@
 use kinetics::algebra::{Expr, Symbol};
 use kinetics::mechanics::angular_momentum::{angular_momentum, angular_momentum_about_point};
 use kinetics::mechanics::InertiaTensor;
-use kinetics::scene::{analyse, parse_scene, Analysis, Scene, Value};
+use kinetics::scene::{analyse, parse_scene, Analysis, Value};
+
+use crate::common::examples::{analysed_example as load, result};
 
 type V3 = [f64; 3];
-
-fn load(name: &str, extra: &str) -> (Scene, Analysis) {
-    let path = format!(
-        "{}/examples/scenes/{name}.scene",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).expect("the example exists") + extra;
-    let scene = parse_scene(&path, &text).unwrap_or_else(|d| panic!("{}", d.render()));
-    let analysis = analyse(&scene).unwrap_or_else(|d| panic!("{}", d.render()));
-    (scene, analysis)
-}
-
-fn result<'a>(analysis: &'a Analysis, name: &str) -> &'a Value {
-    &analysis
-        .results
-        .iter()
-        .find(|(r, _)| r.name == name)
-        .unwrap_or_else(|| panic!("{name} requested"))
-        .1
-}
 
 fn eval(e: &Expr, values: &dyn Fn(Symbol) -> Option<f64>) -> f64 {
     e.eval(values).expect("every symbol has a value")

@@ -1,34 +1,14 @@
 //! The sample problems end to end: each scene is parsed, analysed on demand and solved, and
 //! the results are compared with the notes (symbolic forms by expansion, figures by value).
 
+use crate::common::examples::{analysed_example, result};
 use kinetics::algebra::Expr;
 use kinetics::parse::parse_expression;
 use kinetics::scene::{analyse, parse_scene, Analysis, Scene, Value};
 use kinetics::solution::{render, Format};
 
 fn load(name: &str) -> (Scene, Analysis) {
-    load_with(name, "")
-}
-
-/// The example with `extra` lines added (a statement such as `about G`).
-fn load_with(name: &str, extra: &str) -> (Scene, Analysis) {
-    let path = format!(
-        "{}/examples/scenes/{name}.scene",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).expect("the example exists") + extra;
-    let scene = parse_scene(&path, &text).unwrap_or_else(|d| panic!("{}", d.render()));
-    let analysis = analyse(&scene).unwrap_or_else(|d| panic!("{}", d.render()));
-    (scene, analysis)
-}
-
-fn result<'a>(analysis: &'a Analysis, name: &str) -> &'a Value {
-    &analysis
-        .results
-        .iter()
-        .find(|(r, _)| r.name == name)
-        .expect("requested")
-        .1
+    analysed_example(name, "")
 }
 
 fn scalar(analysis: &Analysis, name: &str) -> Expr {
@@ -238,7 +218,7 @@ fn answers_asked_in_a_unit_are_converted() {
 fn the_h_o_steps_of_a_scene_are_those_of_derive() {
     use kinetics::algebra::Symbol;
     use kinetics::mechanics::catalogue::derive_general;
-    let (_, a) = load_with("sp18_2_rolling_disk", "about G\n");
+    let (_, a) = analysed_example("sp18_2_rolling_disk", "about G\n");
     let general = derive_general("H_O", false)
         .expect("derive knows H_O")
         .expect("derives");

@@ -13,3 +13,26 @@ pub fn example_scenes() -> Vec<PathBuf> {
     scenes.sort();
     scenes
 }
+
+/// The example `examples/scenes/<name>.scene` with `extra` lines added (a statement such as
+/// `about G`, or nothing), parsed and analysed; a located error is a panic that shows it.
+pub fn analysed_example(name: &str, extra: &str) -> (kinetics::Scene, kinetics::Analysis) {
+    let path = format!(
+        "{}/examples/scenes/{name}.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).expect("the example exists") + extra;
+    let scene = kinetics::parse_scene(&path, &text).unwrap_or_else(|d| panic!("{}", d.render()));
+    let analysis = kinetics::analyse(&scene).unwrap_or_else(|d| panic!("{}", d.render()));
+    (scene, analysis)
+}
+
+/// The value of the request named `name` (as written in the scene's `find`).
+pub fn result<'a>(analysis: &'a kinetics::Analysis, name: &str) -> &'a kinetics::Value {
+    &analysis
+        .results
+        .iter()
+        .find(|(r, _)| r.name == name)
+        .unwrap_or_else(|| panic!("{name} requested"))
+        .1
+}

@@ -32,6 +32,7 @@ mod double_double_float;
 mod dual_numbers;
 mod expression_generator;
 mod general_body_print;
+mod html_angles;
 mod html_page;
 mod integrators;
 mod issue15_scenes;

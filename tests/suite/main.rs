@@ -33,6 +33,7 @@ mod dual_numbers;
 mod expression_generator;
 mod general_body_print;
 mod html_angles;
+mod html_headings;
 mod html_page;
 mod integrators;
 mod issue15_scenes;

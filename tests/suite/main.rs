@@ -71,6 +71,7 @@ mod tape;
 mod tape_native;
 mod tape_native_memory;
 mod time_derivative;
+mod title_axes;
 mod torque_free;
 mod trigonometry;
 mod work_precision;

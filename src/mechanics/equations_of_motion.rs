@@ -95,17 +95,17 @@ pub fn equations_of_motion(
         MomentCentre::MassCentre => (
             &body.centroid,
             rate.clone(),
-            r"equations of motion: $\Sigma\mathbf{F} = m\bar{\mathbf{a}}$ (x, y, z), then $\Sigma\mathbf{M}_G = \dot{\mathbf{H}}_G$ (x, y, z)",
+            r"equations of motion: $\Sigma\mathbf{F} = m\bar{\mathbf{a}}$ ($x, y, z$), then $\Sigma\mathbf{M}_G = \dot{\mathbf{H}}_G$ ($x, y, z$)",
         ),
         MomentCentre::FixedPoint => (
             &origin,
             rate.clone(),
-            r"equations of motion: $\Sigma\mathbf{F} = m\bar{\mathbf{a}}$ (x, y, z), then $\Sigma\mathbf{M}_O = \dot{\mathbf{H}}_O$ (x, y, z)",
+            r"equations of motion: $\Sigma\mathbf{F} = m\bar{\mathbf{a}}$ ($x, y, z$), then $\Sigma\mathbf{M}_O = \dot{\mathbf{H}}_O$ ($x, y, z$)",
         ),
         MomentCentre::FixedPointThroughMassCentre => (
             &origin,
             expand_each(&(rate + cross(&body.centroid, &ma)))?,
-            r"equations of motion: $\Sigma\mathbf{F} = m\bar{\mathbf{a}}$ (x, y, z), then $\Sigma\mathbf{M}_O = \dot{\mathbf{H}}_G + \bar{\mathbf{r}} \times m\bar{\mathbf{a}}$ (x, y, z)",
+            r"equations of motion: $\Sigma\mathbf{F} = m\bar{\mathbf{a}}$ ($x, y, z$), then $\Sigma\mathbf{M}_O = \dot{\mathbf{H}}_G + \bar{\mathbf{r}} \times m\bar{\mathbf{a}}$ ($x, y, z$)",
         ),
     };
     let moments = resultant_moment(loads.forces, loads.couples, reference)?;

@@ -17,7 +17,8 @@ use crate::print::{self, markup, mathml::escaped, Notation};
 use crate::scene::model::Given;
 use crate::scene::{Analysis, Scene, Value};
 
-/// The page's style: a column of text, the maths in a maths font, the left sides of the
+/// The page's style: a column of text, headings smaller a level down (derive's steps,
+/// `<h3>`, under their derivation's `<h2>`), the maths in a maths font, the left sides of the
 /// relations to the right of their column and the right sides to the left (Chromium aligns
 /// a table cell of maths by `-webkit-right`, not by `right`; other browsers read the
 /// table's `columnalign`).
@@ -32,6 +33,7 @@ mtd.eq { padding: 0.2em 0.3em; }
 mtd.rhs { text-align: left; text-align: -webkit-left; }
 h2 { font-size: 1.1em; margin: 1.4em 0 0.4em; }
 h2 .step { margin-right: 0.5em; }
+h3 { font-size: 1em; margin: 1em 0 0.3em; }
 table.parts { border-collapse: collapse; margin: 0.5em 0; }
 table.parts th, table.parts td { border-bottom: 1px solid #bbb; padding: 0.2em 0.8em; }
 ";

@@ -1,12 +1,17 @@
 //! A number with its unit in MathML, as the LaTeX writes `-129.8\ \mathrm{N\cdot m}`: the
 //! sign a true minus, the digits one `<mn>`, a space, then the unit upright, its products
-//! `·`, quotients `/` and powers (`m^2`, `s²`, `kg^-1`) as `<msup>`.
+//! `·`, quotients `/` and powers (`m^2`, `s²`, `kg^-1`) as `<msup>`; an angle in degrees
+//! as the LaTeX's `60^\circ`, the degree sign close after the number.
 
+use super::unit_latex::is_degrees;
 use crate::print::mathml::escaped;
 
 /// `number` (a decimal as written or printed: `-2`, `0.3`, `1.500e-7`) and its `unit`
-/// (`N*m`, `rad/s²`; empty for none).
+/// (`N*m`, `rad/s²`, `deg`; empty for none).
 pub fn value(number: &str, unit: &str) -> String {
+    if is_degrees(unit) {
+        return decimal(number) + r#"<mo lspace="0" rspace="0">°</mo>"#;
+    }
     decimal(number) + &spaced_unit(unit)
 }
 
@@ -116,6 +121,10 @@ mod tests {
                 "<mn>1</mn>{space}<mrow><msup>{}<mrow><mo>\u{2212}</mo><mn>1</mn></mrow></msup></mrow>",
                 normal("kg")
             )
+        );
+        assert_eq!(
+            value("30", "deg"),
+            "<mn>30</mn><mo lspace=\"0\" rspace=\"0\">°</mo>"
         );
     }
 }

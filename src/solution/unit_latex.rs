@@ -20,9 +20,15 @@ pub fn quantity(number: &str, unit: &str) -> String {
     let unit = unit.trim();
     match unit {
         "" => number.to_string(),
-        "deg" | "°" | "degree" | "degrees" => format!(r"{number}^\circ"),
+        _ if is_degrees(unit) => format!(r"{number}^\circ"),
         _ => format!(r"{number}\,\mathrm{{{}}}", unit_letters(unit)),
     }
+}
+
+/// Whether `unit` is the degree of angle, which every notation sets as a sign after the
+/// number (`60°`), not as a unit name.
+pub fn is_degrees(unit: &str) -> bool {
+    matches!(unit.trim(), "deg" | "°" | "degree" | "degrees")
 }
 
 /// The unit inside `\mathrm{…}`: products as `\cdot`, powers as superscripts.

@@ -66,6 +66,7 @@ mod simulate_cli_memory;
 mod simulate_cli_methods;
 mod simulate_extreme_momentum;
 mod simulate_memory;
+mod solved_unknowns;
 mod splitting_time_torque;
 mod tape;
 mod tape_native;

@@ -7,7 +7,7 @@ use super::super::kinematic_constraints;
 use super::super::model::{Quantity, Request, Span};
 use super::{zero_vector, Analyser};
 use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
-use crate::algebra::{AlgebraError, Axis, Expr, Symbol};
+use crate::algebra::{AlgebraError, Axis, Expr, Symbol, View};
 use crate::mechanics::derivation::{Derivation, Relation, Step};
 use crate::mechanics::equations_of_motion::{equations_of_motion, Loads, MomentCentre};
 use crate::mechanics::impulse_momentum::{impulse_momentum, ImpulseMomentum};
@@ -51,6 +51,16 @@ impl Analyser<'_> {
                 values: solution,
                 free,
             } = solve_linear(&equations, &wanted).map_err(|e| self.solve_error(at, e))?;
+            // Elimination can leave fractions inside fractions (a pivot over a pivot): such a
+            // value in lowest terms over one denominator, when that is within the algebra's
+            // bounds; the others as they are (their shortest form is chosen when shown).
+            let solution: Vec<(Symbol, Expr)> = solution
+                .into_iter()
+                .map(|(u, v)| match has_nested_fraction(&v) {
+                    true => (u, v.cancel().unwrap_or(v)),
+                    false => (u, v),
+                })
+                .collect();
             self.plan.push(Step {
                 table: None,
                 title: "solve the equations for the unknowns".into(),
@@ -167,5 +177,37 @@ impl Analyser<'_> {
             })
         };
         derive().map_err(self.algebra(at))
+    }
+}
+
+/// Whether `e` has a fraction inside a denominator: a negative power whose base holds
+/// another negative power (`1/(a/(b + c) - d)`).
+fn has_nested_fraction(e: &Expr) -> bool {
+    fn inside(e: &Expr, under_bar: bool) -> bool {
+        match e.view() {
+            View::Num(_) | View::Sym(_) => false,
+            View::Add(items) | View::Mul(items) => items.iter().any(|x| inside(x, under_bar)),
+            View::Func(_, argument) => inside(argument, under_bar),
+            View::Pow(base, exponent) => {
+                let reciprocal = exponent.as_num().is_some_and(|q| q.is_negative());
+                (reciprocal && under_bar) || inside(base, under_bar || reciprocal)
+            }
+        }
+    }
+    inside(e, false)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::has_nested_fraction;
+    use crate::parse::parse_expression;
+
+    #[test]
+    fn a_fraction_inside_a_denominator_is_nested() {
+        let nested = |t: &str| has_nested_fraction(&parse_expression("test", t).unwrap());
+        assert!(nested("1/(a/(b + c) - d)"));
+        assert!(nested("x + P/(m*(1 - k/(m*r^2)))"));
+        assert!(!nested("3*M/(8*c) - 3/8*m*c*w^2"));
+        assert!(!nested("a*(m_2*b - m_1*l)/(4*l) + sin(1/t)"));
     }
 }

@@ -4,25 +4,12 @@
 //! A free solid cylinder (radius r, length h, axis along x before it is turned by θ about z),
 //! at rest, struck by the impulse P k at (h/2, r, 0) from G: by hand, m v̄ = P k and
 //! [I]{ω} = r × P k with [I] = R diag(m r²/2, m(3r² + h²)/12, m(3r² + h²)/12) Rᵀ, R the turn
-//! by θ about z. Solved here numerically (Cramer's rule) and compared with kinetics' forms.
+//! by θ about z (examples/scenes/free_cylinder_struck_off_centre.scene). Solved here
+//! numerically (Cramer's rule) and compared with kinetics' forms.
 
-use crate::common::examples::result;
+use crate::common::examples::{analysed_example, result};
 use kinetics::algebra::{Expr, Symbol};
-use kinetics::scene::{analyse, parse_scene, Value};
-
-const SCENE: &str = "given m : kg
-given r : m
-given h : m
-given P : N*s
-given theta : rad
-unknown vbar_x, vbar_y, vbar_z : m/s
-unknown w_x, w_y, w_z : rad/s
-body cylinder(r, h) mass m rotated theta about z
-vbar = vbar_x*i + vbar_y*j + vbar_z*k
-omega = w_x*i + w_y*j + w_z*k
-impulse P*k at (h/2, r, 0)
-find w_x, w_y, w_z, T
-";
+use kinetics::scene::Value;
 
 fn determinant(a: [[f64; 3]; 3]) -> f64 {
     a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1])
@@ -44,8 +31,7 @@ fn solve(a: [[f64; 3]; 3], b: [f64; 3]) -> [f64; 3] {
 
 #[test]
 fn a_free_cylinder_struck_off_centre_is_solved_in_lowest_terms() {
-    let scene = parse_scene("cylinder.scene", SCENE).unwrap_or_else(|d| panic!("{}", d.render()));
-    let analysis = analyse(&scene).unwrap_or_else(|d| panic!("{}", d.render()));
+    let (_, analysis) = analysed_example("free_cylinder_struck_off_centre", "");
     let (m, r, h, p, theta) = (2.0, 0.3, 1.1, 5.0, 0.7_f64);
     let values = |s: Symbol| match s.name() {
         "m" => Some(m),

@@ -328,20 +328,7 @@ fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: boo
         out.push_str(&format!("\\section*{{{}}}\n", markup::latex(t)));
     }
     out.push_str("\\paragraph{Given}\n");
-    let givens: Vec<String> = scene
-        .givens
-        .iter()
-        .map(|g| {
-            let name = print::latex(&Expr::sym(g.symbol));
-            match &g.written {
-                Some(w) => {
-                    let (number, unit) = w.split_once(' ').unwrap_or((w.as_str(), ""));
-                    format!("${name} = {}$", quantity(number, unit))
-                }
-                None => format!("${name}$"),
-            }
-        })
-        .collect();
+    let givens: Vec<String> = scene.givens.iter().map(latex_given).collect();
     out.push_str(&format!("{}.\n\n", givens.join(", ")));
     for (k, step) in analysis.plan.iter().enumerate() {
         out.push_str(&format!(
@@ -362,17 +349,26 @@ fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: boo
     out
 }
 
+/// A given as inline LaTeX maths, for the LaTeX and Markdown pages: `$m = 0.3\,\mathrm{kg}$`,
+/// `$\beta = 60^\circ$`, or its name alone when it is symbolic.
+fn latex_given(g: &crate::scene::model::Given) -> String {
+    let name = print::latex(&Expr::sym(g.symbol));
+    match &g.written {
+        Some(w) => {
+            let (number, unit) = w.split_once(' ').unwrap_or((w.as_str(), ""));
+            format!("${name} = {}$", quantity(number, unit))
+        }
+        None => format!("${name}$"),
+    }
+}
+
 fn markdown(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     let mut out = String::new();
     if let Some(t) = &scene.title {
         out.push_str(&format!("# {}\n\n", markup::markdown(t)));
     }
     out.push_str("**Given:** ");
-    let givens: Vec<String> = scene
-        .givens
-        .iter()
-        .map(|g| format!("`{}`", given_line(g)))
-        .collect();
+    let givens: Vec<String> = scene.givens.iter().map(latex_given).collect();
     out.push_str(&format!("{}\n\n", givens.join(", ")));
     for (k, step) in analysis.plan.iter().enumerate() {
         out.push_str(&format!(

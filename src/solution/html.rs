@@ -10,7 +10,7 @@
 
 use super::mathml_value::{decimal, spaced_unit, value};
 use super::numbers::format_value;
-use super::render::{quantity_latex, Result};
+use super::render::{quantity_latex, relations_room, results_room, Result};
 use crate::algebra::{Axis, Expr};
 use crate::mechanics::derivation::{Relation, Step, Table};
 use crate::print::{self, markup, mathml::escaped, Notation};
@@ -56,7 +56,7 @@ pub(super) fn step_body(step: &Step) -> String {
     if let Some(table) = &step.table {
         out.push_str(&parts(table));
     }
-    let (first_em, width_em) = room(step.relations.iter().map(|r| (&r.lhs, r.axis)));
+    let (first_em, width_em) = relations_room(&step.relations);
     let rows = step
         .relations
         .iter()
@@ -84,11 +84,7 @@ pub fn page(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
         out.push_str("</section>\n");
     }
     out.push_str("<h2>Results</h2>\n");
-    let lhs_em = results
-        .iter()
-        .map(|r| print::width::symbol_em(&quantity_latex(r.quantity)))
-        .fold(0.0, f64::max);
-    let (first_em, width_em) = print::aligned_room(lhs_em);
+    let (first_em, width_em) = results_room(results);
     let rows = results.iter().map(|r| result_rows(r, first_em, width_em));
     out.push_str(&block(rows));
     out.push_str(PAGE_END);
@@ -114,15 +110,6 @@ fn block(rows: impl Iterator<Item = String>) -> String {
         "<math display=\"block\"><mtable displaystyle=\"true\" columnalign=\"right center left\">\n{}</mtable></math>\n",
         rows.collect::<String>()
     )
-}
-
-/// The room the right-hand sides of a block have, from its widest left-hand side: as the
-/// LaTeX's `align*` has ([`print::aligned_room`]).
-fn room<'a>(sides: impl Iterator<Item = (&'a Expr, Axis)>) -> (f64, f64) {
-    let lhs_em = sides
-        .map(|(e, axis)| print::width_em(e, axis))
-        .fold(0.0, f64::max);
-    print::aligned_room(lhs_em)
 }
 
 /// `lhs = line₁`, then a row per continuation line (indented by a quad, as in the LaTeX).

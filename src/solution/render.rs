@@ -241,11 +241,7 @@ pub fn latex_relations(relations: &[Relation]) -> String {
         .iter()
         .map(|r| print::render(&r.lhs, Notation::Latex, r.axis))
         .collect();
-    let lhs_em = relations
-        .iter()
-        .map(|r| print::width_em(&r.lhs, r.axis))
-        .fold(0.0, f64::max);
-    let (first_em, width_em) = print::aligned_room(lhs_em);
+    let (first_em, width_em) = relations_room(relations);
     let rows: Vec<String> = relations
         .iter()
         .zip(&lhs)
@@ -255,6 +251,25 @@ pub fn latex_relations(relations: &[Relation]) -> String {
         })
         .collect();
     align(&rows)
+}
+
+/// The room the right-hand sides of a block of relations have, from its widest left-hand
+/// side ([`print::aligned_room`]): the LaTeX's `align*` and the HTML's table alike.
+pub(super) fn relations_room(relations: &[Relation]) -> (f64, f64) {
+    let lhs_em = relations
+        .iter()
+        .map(|r| print::width_em(&r.lhs, r.axis))
+        .fold(0.0, f64::max);
+    print::aligned_room(lhs_em)
+}
+
+/// [`relations_room`] of the results, whose left-hand sides are the quantities' names.
+pub(super) fn results_room(results: &[Result]) -> (f64, f64) {
+    let lhs_em = results
+        .iter()
+        .map(|r| print::width::symbol_em(&quantity_latex(r.quantity)))
+        .fold(0.0, f64::max);
+    print::aligned_room(lhs_em)
 }
 
 /// `lhs &= line_1 \\ &\quad line_2 …`: a right-hand side's later lines indented by a quad.
@@ -273,11 +288,7 @@ fn align(rows: &[String]) -> String {
 /// unit after the last line, or on a row of their own when the result took several lines or
 /// the value does not fit after it.
 fn latex_results(results: &[Result]) -> String {
-    let lhs_em = results
-        .iter()
-        .map(|r| print::width::symbol_em(&quantity_latex(r.quantity)))
-        .fold(0.0, f64::max);
-    let (first_em, width_em) = print::aligned_room(lhs_em);
+    let (first_em, width_em) = results_room(results);
     let rows: Vec<String> = results
         .iter()
         .map(|r| {

@@ -71,6 +71,18 @@ struct PointMasses(Vec<(f64, V3)>);
 const GAUSS: [f64; 2] = [0.5 - 0.288_675_134_594_812_9, 0.5 + 0.288_675_134_594_812_9];
 
 impl PointMasses {
+    /// The analysis's `H_O` and `T` equal these point masses' `Σ r × m (ω × r)` and
+    /// `Σ ½ m |ω × r|²`.
+    fn agrees_on_h_o_and_t(&self, a: &Analysis, values: &dyn Fn(Symbol) -> Option<f64>, omega: V3) {
+        close_vector(
+            "H_O",
+            vector(a, "H_O", values),
+            self.angular_momentum(omega),
+        );
+        let t = self.kinetic_energy(omega);
+        close("T", scalar(a, "T", values), t, t);
+    }
+
     /// A slender rod of mass `m` from `from` to `to`, cut into `n` segments.
     fn rod(&mut self, m: f64, from: V3, to: V3, n: usize) {
         let edge = add(to, scale(-1.0, from));
@@ -138,13 +150,7 @@ fn bent_rod_on_a_vertical_shaft_agrees_with_point_masses() {
     body.rod(m_1, [0.0; 3], [arm_a, 0.0, 0.0], 500);
     body.rod(m_2, [arm_a, 0.0, 0.0], [arm_a, arm_b, 0.0], 500);
     let (omega, rate) = ([0.0, w, 0.0], [0.0, alpha, 0.0]);
-    close_vector(
-        "H_O",
-        vector(&a, "H_O", &values),
-        body.angular_momentum(omega),
-    );
-    let t = body.kinetic_energy(omega);
-    close("T", scalar(&a, "T", &values), t, t);
+    body.agrees_on_h_o_and_t(&a, &values, omega);
     // ΣF = Σ m a and ΣM_O = Σ r × m a with C at (0, -l, 0), D at (0, l, 0), the weights at
     // the arms' centres and the couple M j (worked by hand in the scene's comment):
     // x: C_x + D_x = F_x, z: l(C_x − D_x) − g a(m_1/2 + m_2) = M_z;
@@ -194,13 +200,7 @@ fn three_part_composite_agrees_with_point_masses() {
     );
     body.0.push((given("m_3"), [arm, b, c]));
     let omega = [given("w_x"), given("w_y"), given("w_z")];
-    close_vector(
-        "H_O",
-        vector(&a, "H_O", &values),
-        body.angular_momentum(omega),
-    );
-    let t = body.kinetic_energy(omega);
-    close("T", scalar(&a, "T", &values), t, t);
+    body.agrees_on_h_o_and_t(&a, &values, omega);
 }
 
 /// The step that shows the parts: its table's columns, added over the rows, are the sums the

@@ -292,13 +292,7 @@ impl<'a> Analyser<'a> {
     /// The mass and mass centre: from the body about G when it is derived (or the route is
     /// about G), else from the parts alone (the route about O needs no inertia about G).
     fn mass_centre(&mut self, at: Span) -> Result<MassCentre, Diagnostic> {
-        if let Some(body) = &self.body {
-            return Ok(MassCentre {
-                mass: body.mass.clone(),
-                centroid: body.centroid.clone(),
-            });
-        }
-        if !self.scene.about_fixed_point() {
+        if self.body.is_some() || !self.scene.about_fixed_point() {
             let body = self.body(at)?;
             return Ok(MassCentre {
                 mass: body.mass.clone(),

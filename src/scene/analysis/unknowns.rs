@@ -56,9 +56,12 @@ impl Analyser<'_> {
             // bounds; the others as they are (their shortest form is chosen when shown).
             let solution: Vec<(Symbol, Expr)> = solution
                 .into_iter()
-                .map(|(u, v)| match has_nested_fraction(&v) {
-                    true => (u, v.cancel().unwrap_or(v)),
-                    false => (u, v),
+                .map(|(u, v)| {
+                    if has_nested_fraction(&v) {
+                        (u, v.cancel().unwrap_or(v))
+                    } else {
+                        (u, v)
+                    }
                 })
                 .collect();
             self.plan.push(Step {

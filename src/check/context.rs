@@ -214,6 +214,9 @@ impl Context {
                     }
                     Meaning::Derived(unit_vector_sum(&v))
                 }
+                Ok(Value::Balance(_)) => {
+                    Meaning::Underivable("a balance is not a quantity of a claim".into())
+                }
                 Err(d) => Meaning::Underivable(d.message),
             };
             c.meanings.insert(name, meaning);

@@ -23,6 +23,7 @@ pub mod principal_axes;
 pub mod resultant;
 pub mod rotating_frame;
 pub mod shapes;
+pub mod two_plane_balance;
 pub mod validation;
 
 pub use derivation::{Derivation, Relation, Step, Table, TableRow};

@@ -109,6 +109,8 @@ pub enum Quantity {
     RateOfAngularMomentum,
     /// A declared unknown, solved from the equations of the scene.
     Unknown(Symbol),
+    /// `balance in planes z = a, z = b at radius r`: two correction masses ([`Scene::balance`]).
+    Balance,
 }
 
 impl Quantity {
@@ -140,6 +142,7 @@ impl Quantity {
             Quantity::KineticEnergy => "the kinetic energy",
             Quantity::RateOfAngularMomentum => "the rate of change of the angular momentum about G",
             Quantity::Unknown(_) => "an unknown",
+            Quantity::Balance => "the two-plane balance",
         }
     }
 
@@ -150,6 +153,15 @@ impl Quantity {
             .find(|(n, _)| *n == name)
             .map(|(_, q)| *q)
     }
+}
+
+/// `find balance in planes z = a, z = b at radius r`: the shaft axis the planes are across,
+/// the planes' positions along it and the radius of the correction masses.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BalancePlanes {
+    pub axis: crate::algebra::Axis,
+    pub planes: (Expr, Expr),
+    pub radius: Expr,
 }
 
 /// A quantity asked for, by the name written in the scene.
@@ -202,6 +214,8 @@ pub struct Scene {
     pub constraints: Vec<Constraint>,
     pub unknowns: Vec<(Symbol, Dimension)>,
     pub requests: Vec<Request>,
+    /// Where `find balance ...` puts the correction masses.
+    pub balance: Option<BalancePlanes>,
     pub places: Places,
 }
 

@@ -10,12 +10,12 @@
 
 use super::mathml_value::{decimal, spaced_unit, value};
 use super::numbers::format_value;
-use super::render::{quantity_latex, relations_room, results_room, Result};
+use super::render::{form_lines, relations_room, results_room, Result};
 use crate::algebra::{Axis, Expr};
 use crate::mechanics::derivation::{Relation, Step, Table};
 use crate::print::{self, markup, mathml::escaped, Notation};
 use crate::scene::model::Given;
-use crate::scene::{Analysis, Scene, Value};
+use crate::scene::{Analysis, Scene};
 
 /// The page's style: a column of text, headings smaller a level down (derive's steps,
 /// `<h3>`, under their derivation's `<h2>`), the maths in a maths font, the left sides of the
@@ -141,15 +141,14 @@ fn relation_rows(r: &Relation, first_em: f64, width_em: f64) -> String {
 /// has a value, `= value unit` after its last line.
 fn result_rows(r: &Result, first_em: f64, width_em: f64) -> String {
     let mut name = String::new();
-    print::mathml::latex_name(&mut name, &quantity_latex(r.quantity));
-    let mut lines = match r.form {
-        Value::Scalar(e) => print::broken(e, Axis::X, Notation::MathMl, first_em, width_em),
-        Value::Vector(v) => print::broken_vector(v, Notation::MathMl, first_em, width_em),
-    };
+    print::mathml::latex_name(&mut name, &r.name_latex);
+    let mut lines = form_lines(r, Notation::MathMl, first_em, width_em);
     let mut rhs = lines.pop().unwrap_or_default();
     if let Some(values) = r.value.as_ref().filter(|_| !r.is_number()) {
         let unit = r.unit.as_deref().unwrap_or("");
-        rhs.push_str("<mo>=</mo>");
+        if r.form.is_some() {
+            rhs.push_str("<mo>=</mo>");
+        }
         match values.as_slice() {
             [x] => rhs.push_str(&value(&format_value(*x), unit)),
             components => {

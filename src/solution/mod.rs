@@ -2,6 +2,7 @@
 //! textbook form, and the results with values and units, as text, LaTeX, Markdown, JSON or
 //! an HTML page; and the derivations `kinetics derive` prints, in the same formats.
 
+mod balance_rows;
 pub mod derivations;
 mod html;
 mod mathml_value;

@@ -49,6 +49,10 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
         let components: Vec<&Expr> = match value {
             Value::Scalar(e) => vec![e],
             Value::Vector(v) => v.iter().collect(),
+            Value::Balance(corrections) => corrections
+                .iter()
+                .flat_map(|k| [&k.mass, &k.p, &k.q])
+                .collect(),
         };
         for e in components.into_iter().filter(|e| !e.is_zero()) {
             let missing: Vec<&str> = e

@@ -25,6 +25,7 @@ use crate::print::{self, markup, width::RELATION_EM, Notation};
 use crate::scene::model::{Quantity, Request};
 use crate::scene::units::Dimensions;
 use crate::scene::{Analysis, Scene, Value};
+use std::borrow::Cow;
 
 /// The output formats of a worked solution.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -39,19 +40,21 @@ pub enum Format {
 
 /// A result with its forms and value.
 pub(super) struct Result<'a> {
-    name: &'a str,
-    pub(super) quantity: Quantity,
-    text: String,
-    latex: String,
+    pub(super) name: Cow<'a, str>,
+    /// The quantity's name in LaTeX (`\mathbf{H}_G`, `T`, `m_1`).
+    pub(super) name_latex: String,
+    pub(super) text: String,
+    pub(super) latex: String,
     pub(super) value: Option<Vec<f64>>,
     pub(super) unit: Option<String>,
-    pub(super) form: &'a Value,
+    /// The symbolic form; none for a number found only from the values (an angle by atan2).
+    pub(super) form: Option<Cow<'a, Value>>,
 }
 
 impl Result<'_> {
     /// Whether the symbolic form is already a plain number (its value adds nothing).
     pub(super) fn is_number(&self) -> bool {
-        self.text.parse::<f64>().is_ok()
+        self.form.is_some() && self.text.parse::<f64>().is_ok()
     }
 }
 
@@ -59,7 +62,7 @@ fn results<'a>(scene: &Scene, analysis: &'a Analysis, dims: &Dimensions) -> Vec<
     analysis
         .results
         .iter()
-        .map(|(request, v)| in_requested_unit(request, computed(scene, request, v, dims)))
+        .flat_map(|(request, v)| computed(scene, request, v, dims))
         .collect()
 }
 
@@ -72,33 +75,71 @@ fn in_requested_unit<'a>(request: &Request, mut r: Result<'a>) -> Result<'a> {
     r
 }
 
+/// A scalar result named `name` (`name_latex` in LaTeX), in `unit`.
+pub(super) fn scalar<'a>(
+    scene: &Scene,
+    name: Cow<'a, str>,
+    name_latex: String,
+    e: Expr,
+    unit: Option<String>,
+) -> Result<'a> {
+    Result {
+        name,
+        name_latex,
+        text: print::text(&e),
+        latex: print::latex(&e),
+        value: value(scene, &e).map(|x| vec![x]),
+        unit,
+        form: Some(Cow::Owned(Value::Scalar(e))),
+    }
+}
+
+/// A request's result: one, or a balance's rows ([`super::balance_rows`]).
 fn computed<'a>(
     scene: &Scene,
     request: &'a Request,
     v: &'a Value,
     dims: &Dimensions,
-) -> Result<'a> {
-    {
-        match v {
-            Value::Scalar(e) => Result {
-                name: &request.name,
-                quantity: request.quantity,
-                text: print::text(e),
-                latex: print::latex(e),
-                value: value(scene, e).map(|x| vec![x]),
-                unit: result_unit(request, dims, e),
-                form: v,
-            },
-            Value::Vector(vec) => Result {
-                name: &request.name,
-                quantity: request.quantity,
-                text: print::vector(vec, Notation::Text),
-                latex: print::vector(vec, Notation::Latex),
-                value: vec.iter().map(|c| value(scene, c)).collect(),
-                unit: vector_unit(dims, vec),
-                form: v,
-            },
+) -> Vec<Result<'a>> {
+    let name = Cow::Borrowed(request.name.as_str());
+    let name_latex = quantity_latex(request.quantity);
+    let result = match v {
+        Value::Scalar(e) => {
+            let unit = result_unit(request, dims, e);
+            scalar(scene, name, name_latex, e.clone(), unit)
         }
+        Value::Vector(vec) => Result {
+            name,
+            name_latex,
+            text: print::vector(vec, Notation::Text),
+            latex: print::vector(vec, Notation::Latex),
+            value: vec.iter().map(|c| value(scene, c)).collect(),
+            unit: vector_unit(dims, vec),
+            form: Some(Cow::Borrowed(v)),
+        },
+        Value::Balance(corrections) => return super::balance_rows::rows(scene, corrections),
+    };
+    vec![in_requested_unit(request, result)]
+}
+
+/// The lines of a result's form in `notation`, broken to fit (a balance: its rows, each a
+/// result of its own, have them).
+pub(super) fn form_lines(
+    r: &Result,
+    notation: Notation,
+    first_em: f64,
+    width_em: f64,
+) -> Vec<String> {
+    match r.form.as_deref() {
+        Some(Value::Scalar(e)) => print::broken(e, Axis::X, notation, first_em, width_em),
+        Some(Value::Vector(v)) => print::broken_vector(v, notation, first_em, width_em),
+        Some(Value::Balance(_)) => Vec::new(),
+        // Known only as a number (its value follows), or undefined (said in words).
+        None if r.value.is_some() => Vec::new(),
+        None => vec![match notation {
+            Notation::MathMl => "<mtext>undefined</mtext>".into(),
+            _ => r.latex.clone(),
+        }],
     }
 }
 
@@ -127,6 +168,7 @@ pub(super) fn quantity_latex(quantity: Quantity) -> String {
         Quantity::KineticEnergy => "T".into(),
         Quantity::RateOfAngularMomentum => r"\dot{\mathbf{H}}_G".into(),
         Quantity::Unknown(s) => print::latex(&Expr::sym(s)),
+        Quantity::Balance => r"\text{balance}".into(),
     }
 }
 
@@ -228,6 +270,7 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     out.push_str("\nResults\n");
     for r in results {
         match value_text(r).filter(|_| !r.is_number()) {
+            Some(v) if r.form.is_none() => out.push_str(&format!("  {} = {v}\n", r.name)),
             Some(v) => out.push_str(&format!("  {} = {} = {v}\n", r.name, r.text)),
             None => out.push_str(&format!("  {} = {}\n", r.name, r.text)),
         }
@@ -267,7 +310,7 @@ pub(super) fn relations_room(relations: &[Relation]) -> (f64, f64) {
 pub(super) fn results_room(results: &[Result]) -> (f64, f64) {
     let lhs_em = results
         .iter()
-        .map(|r| print::width::symbol_em(&quantity_latex(r.quantity)))
+        .map(|r| print::width::symbol_em(&r.name_latex))
         .fold(0.0, f64::max);
     print::aligned_room(lhs_em)
 }
@@ -302,23 +345,27 @@ fn latex_results(results: &[Result]) -> String {
                     0.55 * number.len() as f64 + print::width::symbol_em(unit) + RELATION_EM;
                 (format!("= {}", quantity(number, unit)), width)
             });
-            let mut lines = match r.form {
-                Value::Scalar(e) => print::broken(e, Axis::X, Notation::Latex, first_em, width_em),
-                Value::Vector(v) => print::broken_vector(v, Notation::Latex, first_em, width_em),
-            };
-            let name = quantity_latex(r.quantity);
+            let mut lines = form_lines(r, Notation::Latex, first_em, width_em);
+            let name = &r.name_latex;
             if let Some((tail, tail_em)) = value {
-                let unbroken_em = match r.form {
-                    Value::Scalar(e) => print::width_em(e, Axis::X),
-                    Value::Vector(v) => print::line_break::vector_width_em(v),
+                let unbroken_em = match r.form.as_deref() {
+                    Some(Value::Scalar(e)) => print::width_em(e, Axis::X),
+                    Some(Value::Vector(v)) => print::line_break::vector_width_em(v),
+                    Some(Value::Balance(_)) | None => 0.0,
                 };
                 if lines.len() > 1 || first_em + unbroken_em + tail_em > width_em {
-                    return format!("{} \\\\\n&{tail}", aligned_row(&name, &lines));
+                    return format!("{} \\\\\n&{tail}", aligned_row(name, &lines));
                 }
-                lines[0].push(' ');
-                lines[0].push_str(&tail);
+                match lines.first_mut() {
+                    Some(line) => {
+                        line.push(' ');
+                        line.push_str(&tail);
+                    }
+                    // Known only as a number: `\theta_1 &= 63.43^\circ`.
+                    None => lines.push(tail.trim_start_matches("= ").to_string()),
+                }
             }
-            aligned_row(&name, &lines)
+            aligned_row(name, &lines)
         })
         .collect();
     align(&rows)

@@ -36,13 +36,16 @@ fn example_samples() -> Vec<Sample> {
             samples.push(scalar(&relation.rhs, relation.axis));
         }
         for (_, value) in &analysis.results {
-            samples.push(match value {
-                Value::Scalar(e) => scalar(e, Axis::X),
-                Value::Vector(v) => Sample {
+            match value {
+                Value::Scalar(e) => samples.push(scalar(e, Axis::X)),
+                Value::Vector(v) => samples.push(Sample {
                     latex: print::vector(v, Notation::Latex),
                     model_em: line_break::vector_width_em(v),
-                },
-            });
+                }),
+                Value::Balance(corrections) => {
+                    samples.extend(corrections.iter().map(|k| scalar(&k.mass, Axis::X)))
+                }
+            }
         }
     }
     samples

@@ -19,6 +19,7 @@
 //! | `Hdot_G` | body about G, kinematics, rate of change of angular momentum | the same |
 //! | an unknown | the equations of motion with `Ḣ_O` (or impulse and momentum); then the solution | the same with `Ḣ_G` |
 
+mod balance;
 mod unknowns;
 
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
@@ -35,6 +36,7 @@ use crate::mechanics::kinetic_energy::kinetic_energy;
 use crate::mechanics::linear_momentum::{effective_force, linear_momentum};
 use crate::mechanics::mass_centre::{mass_centre, MassCentre};
 use crate::mechanics::rotating_frame::rate_of_angular_momentum;
+use crate::mechanics::two_plane_balance::{Correction, CorrectionAngle};
 use crate::parse::Diagnostic;
 use std::collections::HashMap;
 
@@ -43,6 +45,8 @@ use std::collections::HashMap;
 pub enum Value {
     Scalar(Expr),
     Vector(Vector),
+    /// `find balance ...`: the two correction masses and their angles.
+    Balance(Box<[Correction; 2]>),
 }
 
 /// The outcome: the plan (steps in the order done) and each request's result.
@@ -122,6 +126,17 @@ impl Value {
         match self {
             Value::Scalar(e) => Value::Scalar(presented(&e, domains)),
             Value::Vector(v) => Value::Vector(v.map(|c| presented(&c, domains))),
+            Value::Balance(corrections) => Value::Balance(Box::new(corrections.map(|k| {
+                let angle = match k.angle {
+                    CorrectionAngle::Atan2 { q, p } => CorrectionAngle::Atan2 {
+                        q: presented(&q, domains),
+                        p: presented(&p, domains),
+                    },
+                    exact_or_undefined => exact_or_undefined,
+                };
+                let mass = presented(&k.mass, domains);
+                Correction { mass, angle, ..k }
+            }))),
         }
     }
 }
@@ -204,6 +219,7 @@ impl<'a> Analyser<'a> {
                 Value::Vector(self.rate_of_angular_momentum(at, false)?)
             }
             Quantity::Unknown(s) => Value::Scalar(self.unknown(at, s)?),
+            Quantity::Balance => self.balance(at)?,
         })
     }
 
@@ -212,6 +228,8 @@ impl<'a> Analyser<'a> {
         let mut exprs: Vec<Expr> = match &value {
             Value::Scalar(e) => vec![e.clone()],
             Value::Vector(v) => v.iter().cloned().collect(),
+            // In the givens alone: the body's masses and inertia hold no unknown.
+            Value::Balance(_) => return Ok(value),
         };
         let pending: Vec<Symbol> = self
             .scene
@@ -237,6 +255,7 @@ impl<'a> Analyser<'a> {
         Ok(match value {
             Value::Scalar(_) => Value::Scalar(exprs.remove(0)),
             Value::Vector(_) => Value::Vector(Vector::from_iterator(exprs)),
+            Value::Balance(_) => value,
         })
     }
 

@@ -92,7 +92,7 @@ impl Reader<'_> {
 
     /// Refuses `e` (a length or a mass, written `written`) at `at` unless it is positive,
     /// naming the givens with a value that is not (and their lines) in the help.
-    fn positive(
+    pub(super) fn positive(
         &self,
         quantity: &str,
         kind: &str,

@@ -10,6 +10,7 @@ use pest::iterators::Pair;
 use pest::Parser;
 use syntax_error::{expected_words, syntax_error};
 
+mod balance;
 mod before_grammar;
 mod body;
 mod given;
@@ -89,6 +90,7 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
             constraints: vec![],
             unknowns: vec![],
             requests: vec![],
+            balance: None,
             places: Places::default(),
         },
     };
@@ -216,11 +218,13 @@ impl Reader<'_> {
             Rule::find => {
                 for r in inner {
                     let (start, end) = span(&r);
-                    let mut parts = r.into_inner();
+                    let mut parts = r.into_inner().peekable();
+                    if let Some(balance) = parts.next_if(|p| p.as_rule() == Rule::balance) {
+                        self.balance(balance)?;
+                    }
                     let name = parts
                         .next()
-                        .map(|n| n.as_str().to_string())
-                        .unwrap_or_default();
+                        .map_or("balance".to_string(), |n| n.as_str().to_string());
                     let unit = match parts.next() {
                         Some(u) => Some((u.as_str().to_string(), self.unit(&u)?)),
                         None => None,
@@ -230,9 +234,14 @@ impl Reader<'_> {
                             .error((start, end), format!("{name} is asked for twice"))
                             .with_help("name each quantity once in 'find'"));
                     }
+                    let balance =
+                        self.scene.balance.is_some() && name == "balance" && unit.is_none();
                     self.scene.requests.push(Request {
                         // Resolved against the declarations once the whole file is read.
-                        quantity: Quantity::Unknown(Symbol::new(&name)),
+                        quantity: match balance {
+                            true => Quantity::Balance,
+                            false => Quantity::Unknown(Symbol::new(&name)),
+                        },
                         name,
                         span: Span { start, end },
                         unit,
@@ -261,6 +270,9 @@ impl Reader<'_> {
     fn resolve_requests(&mut self) -> Result<(), Diagnostic> {
         for k in 0..self.scene.requests.len() {
             let request = &self.scene.requests[k];
+            if request.quantity == Quantity::Balance {
+                continue;
+            }
             let at = (request.span.start, request.span.end);
             let symbol = Symbol::new(&request.name);
             let is_unknown = self.scene.is_unknown(symbol);

@@ -76,9 +76,14 @@ fn product_index(i: usize, j: usize) -> usize {
     }
 }
 
-/// `I_{ij}` in LaTeX, its subscripts in alphabetical order.
+/// The symbol `I_ij`, its subscripts in alphabetical order.
 fn product_name(i: usize, j: usize) -> String {
     format!("I_{}{}", LETTERS[i.min(j)], LETTERS[i.max(j)])
+}
+
+/// `I_{ij}` in a step title's markup.
+fn product_markup(i: usize, j: usize) -> String {
+    format!("I_{{{}{}}}", LETTERS[i.min(j)], LETTERS[i.max(j)])
 }
 
 /// `m = √(P² + Q²)/r`; over a common denominator `D`, `√(p² + q²)/(|D| r)`.
@@ -161,8 +166,8 @@ pub fn two_plane_balance(
     let mut steps = vec![Step::new(
         format!(
             r"the unbalance about $O$: first moments $S_{lb} = m\bar{{{lb}}}$, $S_{lc} = m\bar{{{lc}}}$ across the axis ${la}$ and the products ${}$, ${}$",
-            product_name(a, b),
-            product_name(a, c)
+            product_markup(a, b),
+            product_markup(a, c)
         ),
         vec![
             Relation::new(name_s_b.clone(), s_b.clone(), AXES[b]),
@@ -176,8 +181,8 @@ pub fn two_plane_balance(
     steps.push(Step::new(
         format!(
             r"correction masses $m_k$ at radius $r$ in the planes ${la} = {la}_k$, at $\theta_k$ about ${la}$ from ${lb}$ toward ${lc}$: with $P_k = m_k r\,\mathrm{{cos}}\,\theta_k$, $Q_k = m_k r\,\mathrm{{sin}}\,\theta_k$ the corrected body has $\bar{{{lb}}} = \bar{{{lc}}} = 0$ and ${} = {} = 0$",
-            product_name(a, b),
-            product_name(a, c)
+            product_markup(a, b),
+            product_markup(a, c)
         ),
         vec![
             Relation::new(sum("P"), -s_b, AXES[b]),
@@ -287,8 +292,8 @@ fn residual(
             lb = LETTERS[b],
             lc = LETTERS[c],
             la = LETTERS[a],
-            ab = product_name(a, b),
-            ac = product_name(a, c),
+            ab = product_markup(a, b),
+            ac = product_markup(a, c),
         ),
         vec![
             Relation::new(

@@ -12,6 +12,7 @@ use common::counting_allocator::Counting;
 mod about_fixed_point;
 mod algebra_properties;
 mod bad_scenes;
+mod balancing_request;
 mod cancel;
 mod cancel_agrees_with_sympy;
 mod cancel_corpus_parses;

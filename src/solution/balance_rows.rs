@@ -1,9 +1,11 @@
 //! A balance's results, a row each: the correction mass `m_k` (kg) and its angle `θ_k` about
 //! the shaft axis, in degrees in the numbers: exact (`θ_1 = π/2 = 90°`), `tan θ_k = Q_k/P_k`
-//! and the number `atan2(Q_k, P_k)` from the givens' values, or undefined (no correction).
+//! and the number `atan2(Q_k, P_k)` from the givens' values, or undefined (no correction,
+//! in general or with the givens' values exactly).
 
 use super::numbers::{format_value, value};
 use super::render::{scalar, Result};
+use crate::algebra::{Expr, Symbol};
 use crate::mechanics::two_plane_balance::{Correction, CorrectionAngle};
 use crate::scene::units::Dimension;
 use crate::scene::{Scene, Value};
@@ -25,6 +27,8 @@ pub(super) fn rows<'a>(scene: &Scene, corrections: &[Correction; 2]) -> Vec<Resu
         let (name, name_latex) = (format!("theta_{k}"), format!(r"\theta_{k}"));
         let in_degrees = |radians: f64| radians.to_degrees();
         match &correction.angle {
+            // Symbolically a correction, but none with the givens' values.
+            _ if no_correction(scene, correction) => rows.push(undefined(name, name_latex)),
             CorrectionAngle::Exact(t) => {
                 let mut row = scalar(scene, Cow::Owned(name), name_latex, t.clone(), None);
                 row.value = row.value.map(|v| v.into_iter().map(in_degrees).collect());
@@ -42,18 +46,30 @@ pub(super) fn rows<'a>(scene: &Scene, corrections: &[Correction; 2]) -> Vec<Resu
                     rows.push(number(name, name_latex, degrees));
                 }
             }
-            CorrectionAngle::Undefined => rows.push(Result {
-                name: Cow::Owned(name),
-                name_latex,
-                text: "undefined".into(),
-                latex: r"\text{undefined}".into(),
-                value: None,
-                unit: None,
-                form: None,
-            }),
+            CorrectionAngle::Undefined => rows.push(undefined(name, name_latex)),
         }
     }
     rows
+}
+
+/// Whether `P = Q = 0` exactly with the givens' values (each the decimal it reads as).
+fn no_correction(scene: &Scene, correction: &Correction) -> bool {
+    let exact = |s: Symbol| scene.exact_value(s).map(Expr::num);
+    let zero = |e: &Expr| e.subs(&exact).is_ok_and(|v| v.is_zero());
+    zero(&correction.p) && zero(&correction.q)
+}
+
+/// The angle of no correction.
+fn undefined<'a>(name: String, name_latex: String) -> Result<'a> {
+    Result {
+        name: Cow::Owned(name),
+        name_latex,
+        text: "undefined".into(),
+        latex: r"\text{undefined}".into(),
+        value: None,
+        unit: None,
+        form: None,
+    }
 }
 
 /// An angle known only as a number, in degrees.

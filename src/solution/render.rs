@@ -15,6 +15,9 @@
 //!                "value": number | [x, y, z] | null,  when every given has a value
 //!                "unit": string|null}] }
 //! ```
+//!
+//! A balance is four result rows or more: `m_1`, `theta_1` (in `deg`; `text` "undefined" and
+//! `value` null for no correction), `tan(theta_1)` where the angle is not exact, then plane 2.
 
 use super::numbers::{format_value, result_unit, scene_dimensions, unit, value};
 use super::parts_table;

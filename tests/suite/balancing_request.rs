@@ -255,3 +255,41 @@ fn a_shaft_along_x_without_bearings_is_balanced_by_two_masses_opposite() {
     let text = render(&scene, &analysis, Format::Text, false);
     assert!(text.contains("theta_1 = pi"), "{text}");
 }
+
+#[test]
+fn no_correction_in_a_plane_is_mass_zero_and_no_angle() {
+    // One mass m at (e, e, a) in the plane z = a itself: P_1 = Q_1 = -m e, nothing at z = b,
+    // so m_1 = √2 m e/r at -135°, m_2 = 0 and θ_2 undefined. With c = e the mass is on the
+    // axis: symbolically a correction m |c - e|/r, with the values none at all.
+    let scene = |position: &str| {
+        let text = format!(
+            "given m = 20 g\ngiven e = 60 mm\ngiven c = 60 mm\ngiven a = 100 mm\n\
+             given b = 300 mm\ngiven r = 40 mm\ngiven w = 1500 rpm\n\
+             body point() mass m at {position}\nfixed point\nomega = w*k\n\
+             find balance in planes z = a, z = b at radius r\n"
+        );
+        let scene = parse_scene("one.scene", &text).unwrap_or_else(|d| panic!("{}", d.render()));
+        let analysis = analyse(&scene).unwrap_or_else(|d| panic!("{}", d.render()));
+        render(&scene, &analysis, Format::Text, false)
+    };
+    let in_plane = scene("(e, e, a)");
+    // √2 · 0.02 kg · 0.06 m / 0.04 m = 0.042426 kg.
+    close(2f64.sqrt() * M1 * E1 / 0.04, 0.042426, 1e-5, "m_1 by hand");
+    assert!(
+        in_plane.contains("m_1 = sqrt(2)*m*e/r = 0.04243 kg"),
+        "{in_plane}"
+    );
+    assert!(
+        in_plane.contains("theta_1 = -3/4*pi = -135 deg"),
+        "{in_plane}"
+    );
+    assert!(
+        in_plane.contains("m_2 = 0\n  theta_2 = undefined"),
+        "{in_plane}"
+    );
+    let on_axis = scene("(e - c, 0, a)");
+    assert!(
+        on_axis.contains("= 0 kg\n  theta_1 = undefined"),
+        "{on_axis}"
+    );
+}

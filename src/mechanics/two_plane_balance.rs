@@ -26,7 +26,8 @@ use super::balancing::{dynamic_balancing, Unbalance};
 use super::derivation::{Derivation, Relation, Step};
 use super::fixed_axis::{bearing_reactions, fixed_axis_rotation};
 use super::inertia::InertiaTensor;
-use crate::algebra::{AlgebraError, Axis, Domains, Expr, Func};
+use crate::algebra::{AlgebraError, Axis, Domains, Expr, Func, Symbol};
+use std::f64::consts::PI;
 
 const AXES: [Axis; 3] = [Axis::X, Axis::Y, Axis::Z];
 const LETTERS: [&str; 3] = ["x", "y", "z"];
@@ -102,27 +103,46 @@ fn correction_mass(p: &Expr, q: &Expr, radius: &Expr) -> Result<Expr, AlgebraErr
 }
 
 /// `atan2(q, p)` exactly at the multiples of 15°, where the signs of the domains decide it.
-fn angle(p: &Expr, q: &Expr, domains: &Domains) -> Result<CorrectionAngle, AlgebraError> {
+/// Only the multiple nearest the angle at a probe point (each symbol a number in [1, 2) from
+/// its name) is tried exactly, unless the probe has no angle; a test too large to expand
+/// leaves the angle to `atan2` of the values.
+fn angle(p: &Expr, q: &Expr, domains: &Domains) -> CorrectionAngle {
     if p.is_zero() && q.is_zero() {
-        return Ok(CorrectionAngle::Undefined);
+        return CorrectionAngle::Undefined;
     }
+    let probe = |s: Symbol| {
+        let spread = s
+            .name()
+            .bytes()
+            .fold(7u32, |h, b| h.wrapping_mul(31) ^ u32::from(b));
+        Some(1.0 + f64::from(spread % 1000) / 1000.0)
+    };
+    let near = match (p.eval::<f64>(&probe), q.eval::<f64>(&probe)) {
+        (Ok(x), Ok(y)) if x != 0.0 || y != 0.0 => Some((y.atan2(x) * 12.0 / PI).round() as i64),
+        _ => None,
+    };
     for k in -11..=12 {
+        // -π and π are one direction.
+        if near.is_some_and(|n| n != k && !(n == -12 && k == 12)) {
+            continue;
+        }
         let theta = Expr::pi() * Expr::rational(k, 12);
         let (c, s) = (
             Func::Cos.apply(theta.clone()),
             Func::Sin.apply(theta.clone()),
         );
-        if (q * &c - p * &s).expand()?.is_zero() {
-            let rho = (p * &c + q * &s).expand()?;
-            if !rho.is_zero() && domains.sign(&rho).is_nonnegative() {
-                return Ok(CorrectionAngle::Exact(theta));
+        let across = (q * &c - p * &s).expand();
+        let along = (p * &c + q * &s).expand();
+        if let (Ok(across), Ok(rho)) = (across, along) {
+            if across.is_zero() && !rho.is_zero() && domains.sign(&rho).is_nonnegative() {
+                return CorrectionAngle::Exact(theta);
             }
         }
     }
-    Ok(CorrectionAngle::Atan2 {
+    CorrectionAngle::Atan2 {
         q: q.clone(),
         p: p.clone(),
-    })
+    }
 }
 
 /// The two correction masses and their angles, with the steps: the unbalance, the two
@@ -205,7 +225,7 @@ pub fn two_plane_balance(
     let mut undefined = Vec::new();
     for k in 0..2 {
         let mass = correction_mass(&p[k], &q[k], planes.radius)?;
-        let angle = angle(&p[k], &q[k], domains)?;
+        let angle = angle(&p[k], &q[k], domains);
         let theta = named(r"theta", k + 1);
         relations.push(Relation::new(named("m", k + 1), mass.clone(), AXES[a]));
         match &angle {

@@ -307,7 +307,7 @@ impl Reader<'_> {
                     return Err(self
                         .error(at, format!("cannot find '{}'", request.name))
                         .with_help(format!(
-                            "ask for {}, or a declared unknown",
+                            "ask for {}, a declared unknown, or balance in planes z = a, z = b at radius r",
                             Quantity::NAMED.map(|(n, _)| n).join(", ")
                         )))
                 }

@@ -3,6 +3,7 @@
 //! an HTML page; and the derivations `kinetics derive` prints, in the same formats.
 
 pub mod derivations;
+pub mod evaluation;
 mod html;
 mod mathml_value;
 pub mod numbers;

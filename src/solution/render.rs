@@ -16,10 +16,10 @@
 //!                "unit": string|null}] }
 //! ```
 
-use super::numbers::{format_value, result_unit, scene_dimensions, unit, value};
+use super::numbers::{format_value, result_unit, scene_dimensions, value};
 use super::parts_table;
 use super::unit_latex::quantity;
-use crate::algebra::{Axis, Expr, Vector};
+use crate::algebra::{Axis, Expr};
 use crate::mechanics::derivation::Relation;
 use crate::print::{self, markup, width::RELATION_EM, Notation};
 use crate::scene::model::{Quantity, Request};
@@ -86,7 +86,7 @@ fn computed<'a>(
                 text: print::text(e),
                 latex: print::latex(e),
                 value: value(scene, e).map(|x| vec![x]),
-                unit: result_unit(request, dims, e),
+                unit: result_unit(request, dims),
                 form: v,
             },
             Value::Vector(vec) => Result {
@@ -95,15 +95,11 @@ fn computed<'a>(
                 text: print::vector(vec, Notation::Text),
                 latex: print::vector(vec, Notation::Latex),
                 value: vec.iter().map(|c| value(scene, c)).collect(),
-                unit: vector_unit(dims, vec),
+                unit: result_unit(request, dims),
                 form: v,
             },
         }
     }
-}
-
-fn vector_unit(dims: &Dimensions, v: &Vector) -> Option<String> {
-    v.iter().find(|c| !c.is_zero()).and_then(|c| unit(dims, c))
 }
 
 /// The two sides of a relation in the chosen notation, presented about its axis.
@@ -227,7 +223,8 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     }
     out.push_str("\nResults\n");
     for r in results {
-        match value_text(r).filter(|_| !r.is_number()) {
+        match value_text(r) {
+            Some(v) if r.is_number() => out.push_str(&format!("  {} = {v}\n", r.name)),
             Some(v) => out.push_str(&format!("  {} = {} = {v}\n", r.name, r.text)),
             None => out.push_str(&format!("  {} = {}\n", r.name, r.text)),
         }
@@ -292,21 +289,16 @@ fn latex_results(results: &[Result]) -> String {
     let rows: Vec<String> = results
         .iter()
         .map(|r| {
-            let value = r.value.as_ref().filter(|_| !r.is_number()).map(|_| {
-                let v = value_text(r).unwrap_or_default();
-                let unit = r.unit.as_deref().unwrap_or_default();
-                let number = v.trim_end_matches(unit).trim();
-                // A value's digits, commas and spaces are narrower than 0.55 em; its unit is
-                // upright, narrower than a symbol of the same letters.
-                let width =
-                    0.55 * number.len() as f64 + print::width::symbol_em(unit) + RELATION_EM;
-                (format!("= {}", quantity(number, unit)), width)
-            });
+            let name = quantity_latex(r.quantity);
+            let value = latex_value(r);
+            if let Some((number, _)) = value.as_ref().filter(|_| r.is_number()) {
+                return aligned_row(&name, std::slice::from_ref(number));
+            }
+            let value = value.map(|(v, width)| (format!("= {v}"), width + RELATION_EM));
             let mut lines = match r.form {
                 Value::Scalar(e) => print::broken(e, Axis::X, Notation::Latex, first_em, width_em),
                 Value::Vector(v) => print::broken_vector(v, Notation::Latex, first_em, width_em),
             };
-            let name = quantity_latex(r.quantity);
             if let Some((tail, tail_em)) = value {
                 let unbroken_em = match r.form {
                     Value::Scalar(e) => print::width_em(e, Axis::X),
@@ -322,6 +314,17 @@ fn latex_results(results: &[Result]) -> String {
         })
         .collect();
     align(&rows)
+}
+
+/// A result's value and unit in LaTeX (`-135\,\mathrm{m/s^2}`) and its width in ems.
+fn latex_value(r: &Result) -> Option<(String, f64)> {
+    let v = value_text(r)?;
+    let unit = r.unit.as_deref().unwrap_or_default();
+    let number = v.trim_end_matches(unit).trim();
+    // A value's digits, commas and spaces are narrower than 0.55 em; its unit is upright,
+    // narrower than a symbol of the same letters.
+    let width = 0.55 * number.len() as f64 + print::width::symbol_em(unit);
+    Some((quantity(number, unit), width))
 }
 
 /// The preamble of a standalone LaTeX document: article class, amsmath and amssymb only;

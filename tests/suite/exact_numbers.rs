@@ -70,7 +70,10 @@ fn an_exact_zero_keeps_its_unit_in_every_format() {
     let json: Value = serde_json::from_str(&solve("balanced_shaft", "json")).unwrap();
     for name in ["A_y", "B_y", "A_z", "B_z"] {
         let r = result(&json, name);
-        assert_eq!((&r["value"], &r["unit"]), (&serde_json::json!(0.0), &serde_json::json!("N")));
+        assert_eq!(
+            (&r["value"], &r["unit"]),
+            (&serde_json::json!(0.0), &serde_json::json!("N"))
+        );
     }
     let text = solve("balanced_shaft", "text");
     assert!(text.contains("  A_y = 0 N\n"), "{text}");

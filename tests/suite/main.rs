@@ -67,6 +67,7 @@ mod simulate_cli_memory;
 mod simulate_cli_methods;
 mod simulate_extreme_momentum;
 mod simulate_memory;
+mod simulate_without_find;
 mod solved_unknowns;
 mod splitting_time_torque;
 mod tape;

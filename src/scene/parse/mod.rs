@@ -49,6 +49,23 @@ struct SceneGrammar;
 /// # Ok::<(), kinetics::Diagnostic>(())
 /// ```
 pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic> {
+    let scene = parse_scene_to_simulate(source_name, source)?;
+    if scene.requests.is_empty() {
+        return Err(Diagnostic::at(
+            source_name,
+            source,
+            source.len(),
+            source.len(),
+            "the scene asks for nothing",
+        )
+        .with_help("add a line such as 'find T, H_G' naming what to compute"));
+    }
+    Ok(scene)
+}
+
+/// [`parse_scene`] for `kinetics simulate`, which asks for nothing but the motion: a scene
+/// without a `find` line is accepted (its body, ω and loads are what a simulation needs).
+pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene, Diagnostic> {
     before_grammar::check_before_grammar(source_name, source)?;
     // Error detail records the furthest place the grammar reached and what it expected there.
     pest::set_error_detail(true);
@@ -104,16 +121,6 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
         reader.statement(statement)?;
     }
     reader.resolve_requests()?;
-    if reader.scene.requests.is_empty() {
-        return Err(Diagnostic::at(
-            source_name,
-            source,
-            source.len(),
-            source.len(),
-            "the scene asks for nothing",
-        )
-        .with_help("add a line such as 'find T, H_G' naming what to compute"));
-    }
     Ok(reader.scene)
 }
 

@@ -3,6 +3,7 @@
 //! an HTML page; and the derivations `kinetics derive` prints, in the same formats.
 
 pub mod derivations;
+mod engineer;
 pub mod evaluation;
 mod html;
 mod mathml_value;
@@ -12,4 +13,4 @@ pub mod render;
 pub mod unit_latex;
 
 pub use derivations::{render_derivations, Shown};
-pub use render::{render, Format};
+pub use render::{render, render_numbers, Format};

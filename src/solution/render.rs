@@ -1,20 +1,9 @@
 //! Rendering a worked solution: the givens, each step of the plan with its component
 //! equations in textbook form, and the results with values and units.
 //!
-//! JSON schema (stable):
-//!
-//! ```text
-//! { "title": string|null,
-//!   "plan": [string],                               the steps done, in order
-//!   "givens": [{"name", "written": string|null, "si_value": number|null, "unit"}],
-//!   "steps": [{"title", "title_latex",                title: plain text; title_latex: LaTeX text mode
-//!              "table": null | {"columns": [{"text", "latex"}],
-//!                                          "rows": [{"label", "cells": [{"text", "latex"}]}]},
-//!              "relations": [{"text", "latex"}]}],
-//!   "results": [{"name", "text", "latex",
-//!                "value": number | [x, y, z] | null,  when every given has a value
-//!                "unit": string|null}] }
-//! ```
+//! JSON: the document `docs/solution.schema.json` describes (JSON Schema 2020-12), tested
+//! against every example's output (`tests/suite/json_schema.rs`); `--numbers` gives the
+//! engineer's page ([`render_numbers`]), described in the same file.
 
 use super::numbers::{format_value, result_unit, scene_dimensions, value};
 use super::parts_table;
@@ -39,7 +28,7 @@ pub enum Format {
 
 /// A result with its forms and value.
 pub(super) struct Result<'a> {
-    name: &'a str,
+    pub(super) name: &'a str,
     pub(super) quantity: Quantity,
     text: String,
     latex: String,
@@ -81,7 +70,7 @@ fn computed<'a>(
     {
         match v {
             Value::Scalar(e) => Result {
-                name: &request.name,
+                name: shown_name(request),
                 quantity: request.quantity,
                 text: print::text(e),
                 latex: print::latex(e),
@@ -90,7 +79,7 @@ fn computed<'a>(
                 form: v,
             },
             Value::Vector(vec) => Result {
-                name: &request.name,
+                name: shown_name(request),
                 quantity: request.quantity,
                 text: print::vector(vec, Notation::Text),
                 latex: print::vector(vec, Notation::Latex),
@@ -99,6 +88,15 @@ fn computed<'a>(
                 form: v,
             },
         }
+    }
+}
+
+/// The name a result is shown under: the quantity as written (`H_G`, `m*vbar`), but an
+/// unknown in its symbol's one spelling (`M_1` for `M1`), as the steps print it.
+fn shown_name(request: &Request) -> &str {
+    match request.quantity {
+        Quantity::Unknown(s) => s.name(),
+        _ => &request.name,
     }
 }
 
@@ -126,7 +124,7 @@ pub(super) fn quantity_latex(quantity: Quantity) -> String {
     }
 }
 
-fn value_text(r: &Result) -> Option<String> {
+pub(super) fn value_text(r: &Result) -> Option<String> {
     let v = r.value.as_ref()?;
     let numbers: Vec<String> = v.iter().map(|x| format_value(*x)).collect();
     let body = if numbers.len() == 1 {
@@ -191,7 +189,20 @@ pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bo
     })
 }
 
-fn given_line(g: &crate::scene::model::Given) -> String {
+/// The engineer's page ([`super::engineer`]): the givens, each result as a number with its
+/// unit and the plan's intermediate values, without the symbolic steps; in text or JSON
+/// (`None` for the other formats, whose pages are the worked solution).
+pub fn render_numbers(scene: &Scene, analysis: &Analysis, format: Format) -> Option<String> {
+    let dims = scene_dimensions(scene);
+    let results = results(scene, analysis, &dims);
+    match format {
+        Format::Text => Some(super::engineer::text(scene, analysis, &results, &dims)),
+        Format::Json => Some(super::engineer::json(scene, analysis, &results, &dims).to_string()),
+        Format::Latex | Format::Markdown | Format::Html => None,
+    }
+}
+
+pub(super) fn given_line(g: &crate::scene::model::Given) -> String {
     match &g.written {
         Some(w) => format!("{} = {w}", g.symbol.name()),
         None => format!("{} ({}, symbolic)", g.symbol.name(), g.dimension),
@@ -206,6 +217,11 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     out.push_str("Given\n");
     for g in &scene.givens {
         out.push_str(&format!("  {}\n", given_line(g)));
+    }
+    // Every given has a value: the answers as numbers come before the symbolic steps.
+    let answers = super::engineer::answers_text(results);
+    if scene.givens.iter().all(|g| g.value.is_some()) && !answers.is_empty() {
+        out.push_str(&format!("\nAnswers\n{answers}"));
     }
     for (k, step) in analysis.plan.iter().enumerate() {
         out.push_str(&format!(
@@ -414,12 +430,7 @@ fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::V
     serde_json::json!({
         "title": scene.title,
         "plan": analysis.plan.iter().map(|s| markup::text(&s.title)).collect::<Vec<_>>(),
-        "givens": scene.givens.iter().map(|g| serde_json::json!({
-            "name": g.symbol.name(),
-            "written": g.written,
-            "si_value": g.value,
-            "unit": g.dimension.si_unit(),
-        })).collect::<Vec<_>>(),
+        "givens": givens_json(scene),
         "steps": analysis.plan.iter().map(|s| serde_json::json!({
             "title": markup::text(&s.title),
             "title_latex": markup::latex(&s.title),
@@ -430,8 +441,33 @@ fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::V
             "name": r.name,
             "text": r.text,
             "latex": r.latex,
-            "value": r.value.as_ref().map(|v| if v.len() == 1 { serde_json::json!(v[0]) } else { serde_json::json!(v) }),
+            "value": value_json(r),
             "unit": r.unit,
         })).collect::<Vec<_>>(),
     })
+}
+
+/// The givens as JSON: `[{name, written, si_value, unit}]`.
+pub(super) fn givens_json(scene: &Scene) -> Vec<serde_json::Value> {
+    scene
+        .givens
+        .iter()
+        .map(|g| {
+            serde_json::json!({
+                "name": g.symbol.name(),
+                "written": g.written,
+                "si_value": g.value,
+                "unit": g.dimension.si_unit(),
+            })
+        })
+        .collect()
+}
+
+/// A result's value as JSON: a number, `[x, y, z]`, or null without one.
+pub(super) fn value_json(r: &Result) -> serde_json::Value {
+    match r.value.as_deref() {
+        Some([x]) => serde_json::json!(x),
+        Some(v) => serde_json::json!(v),
+        None => serde_json::Value::Null,
+    }
 }

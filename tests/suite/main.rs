@@ -30,6 +30,7 @@ mod dimension_powers;
 mod domains;
 mod double_double_float;
 mod dual_numbers;
+mod engineer_numbers;
 mod exact_numbers;
 mod expression_generator;
 mod general_body_print;

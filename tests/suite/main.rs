@@ -39,6 +39,7 @@ mod html_headings;
 mod html_page;
 mod integrators;
 mod issue15_scenes;
+mod json_schema;
 mod latex_compiles;
 mod latex_pages;
 mod latex_width;

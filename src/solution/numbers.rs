@@ -90,7 +90,12 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
 /// metres) for the kinetic energy, which is work-like.
 pub fn result_unit(request: &Request, dims: &Dimensions, e: &Expr) -> Option<String> {
     unit(dims, e).map(|u| {
-        if request.quantity == Quantity::KineticEnergy && u == "N·m" {
+        let energy = [
+            Quantity::KineticEnergy,
+            Quantity::TranslationalKineticEnergy,
+            Quantity::RotationalKineticEnergy,
+        ];
+        if energy.contains(&request.quantity) && u == "N·m" {
             "J".into()
         } else {
             u

@@ -30,10 +30,13 @@ impl Analyser<'_> {
             } else {
                 self.impulse_momentum(at)?
             };
+            let constraints = self.kinematics(at)?.with_impulses.clone();
             let equations: Vec<Expr> = derivation
                 .result()
                 .iter()
-                .map(|r| self.known(&r.residual()))
+                .map(|r| r.residual())
+                .chain(constraints)
+                .map(|e| self.known(&e))
                 .collect::<Result<Vec<_>, _>>()
                 .map_err(self.algebra(at))?
                 .into_iter()
@@ -156,7 +159,8 @@ impl Analyser<'_> {
         equations_of_motion(&body, &a, &rate, loads, about).map_err(self.algebra(at))
     }
 
-    /// `m v̄₂ = Σ F Δt` and `[I]{ω₂} = Σ r × F Δt` about G, for an impact from rest.
+    /// `m v̄₁ + Σ F Δt = m v̄₂` and `[I]{ω₂} = Σ r × F Δt` about G, for an impact on a body
+    /// that moves with `v̄₁` (`before vbar`, else at rest) and does not turn before it.
     fn impulse_momentum(&mut self, at: Span) -> Result<Derivation, Diagnostic> {
         let v = self.vbar(at)?;
         let h = self.h_g(at)?;
@@ -165,13 +169,17 @@ impl Analyser<'_> {
         let impulses: Vec<AppliedForce> = scene
             .impulses
             .iter()
-            .map(|(value, point)| AppliedForce { value, point })
+            .map(|i| AppliedForce {
+                value: &i.value,
+                point: &i.point,
+            })
             .collect();
         let rest = zero_vector();
+        let before = scene.vbar_before.as_ref().unwrap_or(&rest);
         let derive = || -> Result<Derivation, AlgebraError> {
             impulse_momentum(&ImpulseMomentum {
                 mass: &body.mass,
-                velocity_before: &rest,
+                velocity_before: before,
                 velocity_after: &v,
                 angular_momentum_before: &rest,
                 angular_momentum_after: &h,

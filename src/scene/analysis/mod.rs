@@ -495,6 +495,8 @@ impl<'a> Analyser<'a> {
             return Ok(split.clone());
         }
         let omega = self.kinematics(at)?.omega.clone();
+        // The body about G first: v̄ then takes its mass centre (not the parts' again).
+        self.body(at)?;
         let v = self.vbar(at)?;
         let fixed_point = self.scene.fixed_point;
         let body = self.body(at)?;

@@ -53,6 +53,23 @@ pub fn angular_momentum(
     })
 }
 
+/// `{H_G1} = [I]{ω₁}`: the angular momentum about G just before an impact, its components
+/// `H_x1`, `H_y1`, `H_z1` (as the chapter's `H₁ + Σ M Δt = H₂`).
+pub fn angular_momentum_before(
+    inertia: &InertiaTensor,
+    omega_before: &Vector,
+) -> Result<Derivation, AlgebraError> {
+    let h = expand_each(&mat_vec(&inertia.matrix(), omega_before))?;
+    Ok(Derivation {
+        name: "H_G1".into(),
+        title: "angular momentum about $G$ before the blow".into(),
+        steps: vec![Step::new(
+            r"angular momentum about $G$ just before the blow, $\{\mathbf{H}_1\} = [I]\{\boldsymbol{\omega}_1\}$",
+            Relation::components_named(&h, |x| format!("H_{x}1")),
+        )],
+    })
+}
+
 /// `H_O = H_G + r̄ × m v̄`, where `rbar` is the position of G from O.
 ///
 /// A particle (`H_G = 0`) at `r̄ = x̄ i` moving with `v̄ = v j`: `r̄ × m v̄ = m x̄ v (i × j)`,

@@ -33,6 +33,8 @@ pub struct Places {
     pub forces: Vec<Span>,
     /// Each `couple` statement, in the order of [`Scene::couples`].
     pub couples: Vec<Span>,
+    /// The first `before` statement (the state before an impact: the scene needs one).
+    pub before: Option<Span>,
 }
 
 /// A given quantity: symbolic, or with a value converted to SI.
@@ -234,6 +236,8 @@ pub struct Scene {
     /// `before vbar = ...`: the velocity of the mass centre just before an impact (at rest
     /// if not given).
     pub vbar_before: Option<Vector>,
+    /// `before omega = ...`: the angular velocity just before an impact (0 if not given).
+    pub omega_before: Option<Vector>,
     /// Acceleration of the mass centre, if given directly.
     pub abar: Option<Vector>,
     pub forces: Vec<Force>,

@@ -327,3 +327,38 @@ fn forces_points_and_impulses_do_not_share_names() {
         assert!(d.message.contains("already the name of"), "{}", d.message);
     }
 }
+
+/// A free rod (length L, along x) spinning at w_0 about z through its resting centre G is
+/// caught at its end E = (L/2, 0, 0) by a pin, which gives the impulse R. By hand, with
+/// Ī_z = m L²/12: `m v̄_y = R_y`, `Ī_z w_0 + (L/2) R_y = Ī_z w_z` and E at rest,
+/// `v̄_y + w_z L/2 = 0`; so `w_z = w_0/4` (the angular momentum about the pin,
+/// `m L² w_0/12 = m L² w_z/3`, is kept) and `R_y = −m L w_0/8`.
+#[test]
+fn a_spinning_rod_caught_at_its_end_keeps_its_angular_momentum_about_the_pin() {
+    let text = "given m : kg
+given L : m
+given w_0 : rad/s
+unknown vbar_y : m/s
+unknown w_z : rad/s
+unknown R_y : N*s
+body rod(L) mass m
+before omega = w_0*k
+vbar = vbar_y*j
+omega = w_z*k
+impulse R = R_y*j at (L/2, 0, 0)
+constraint velocity at (L/2, 0, 0) = 0
+find w_z, vbar_y, R";
+    let scene = parse_scene("rod.scene", text).unwrap_or_else(|d| panic!("{}", d.render()));
+    let analysis = analyse(&scene).unwrap_or_else(|d| panic!("{}", d.render()));
+    same(scalar(&analysis, "w_z"), "w_0/4");
+    same(scalar(&analysis, "vbar_y"), "-L w_0/8");
+    for (component, by_hand) in vector(&analysis, "R").iter().zip(["0", "-m L w_0/8", "0"]) {
+        same(component, by_hand);
+    }
+}
+
+#[test]
+fn the_motion_before_an_impact_needs_an_impulse() {
+    let d = refused(&format!("{SPHERE}before vbar = r*w*i\nfind T"));
+    assert!(d.message.contains("no impulse"), "{}", d.message);
+}

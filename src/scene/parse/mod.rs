@@ -84,6 +84,7 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
             frame_rate: None,
             vbar: None,
             vbar_before: None,
+            omega_before: None,
             abar: None,
             forces: vec![],
             couples: vec![],
@@ -107,6 +108,7 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
         reader.statement(statement)?;
     }
     reader.resolve_requests()?;
+    reader.impact_has_impulses()?;
     if reader.scene.requests.is_empty() {
         return Err(Diagnostic::at(
             source_name,
@@ -185,12 +187,7 @@ impl Reader<'_> {
                 self.scene.couples.push(c);
             }
             Rule::impulse => self.impulse(&inner)?,
-            Rule::before => {
-                self.only_once(self.scene.vbar_before.is_some(), at)?;
-                let vbar = inner[0].clone().into_inner().next();
-                let vbar = vbar.ok_or_else(|| self.error(at, "expected a velocity"))?;
-                self.scene.vbar_before = Some(self.vector(&vbar, Dimension::VELOCITY)?)
-            }
+            Rule::before => self.before(&inner[0], at)?,
             Rule::named_point => self.named_point(&inner)?,
             Rule::constraint => {
                 let c = inner.remove(0);
@@ -257,6 +254,7 @@ impl Reader<'_> {
             Rule::omega => self.scene.places.omega = Some(place),
             Rule::force => self.scene.places.forces.push(place),
             Rule::couple => self.scene.places.couples.push(place),
+            Rule::before => _ = self.scene.places.before.get_or_insert(place),
             _ => {}
         }
         Ok(())

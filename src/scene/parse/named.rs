@@ -1,6 +1,7 @@
 //! Named things of a scene other than symbols: body points (`point A at (x, y, z)`, asked for
-//! as `v_A` and `a_A`) and impulses (`impulse R = ... at (...)`, asked for as `R`). Forces,
-//! points and impulses share one set of names, so that a name says which one it is.
+//! as `v_A` and `a_A`) and impulses (`impulse R = ... at (...)`, asked for as `R`), with the
+//! state before the impact (`before vbar = ...`, `before omega = ...`). Forces, points and
+//! impulses share one set of names, so that a name says which one it is.
 
 use super::super::model::{Impulse, NamedPoint, Quantity};
 use super::super::units::Dimension;
@@ -41,6 +42,46 @@ impl Reader<'_> {
         let point = self.point(point)?;
         self.scene.impulses.push(Impulse { name, value, point });
         Ok(())
+    }
+
+    /// `before vbar = ...` or `before omega = ...`: the motion just before an impact.
+    pub(super) fn before(&mut self, p: &Pair<Rule>, at: (usize, usize)) -> Result<(), Diagnostic> {
+        let (already, dimension) = match p.as_rule() {
+            Rule::vbar => (self.scene.vbar_before.is_some(), Dimension::VELOCITY),
+            _ => (
+                self.scene.omega_before.is_some(),
+                Dimension::ANGULAR_VELOCITY,
+            ),
+        };
+        if already {
+            return Err(self
+                .error(
+                    at,
+                    format!(
+                        "'before {}' is given twice",
+                        p.as_str().split_whitespace().next().unwrap_or_default()
+                    ),
+                )
+                .with_help("keep one of the two lines: the second would replace the first"));
+        }
+        let math = p.clone().into_inner().next();
+        let math = math.ok_or_else(|| self.error(at, "expected a vector"))?;
+        let v = Some(self.vector(&math, dimension)?);
+        match p.as_rule() {
+            Rule::vbar => self.scene.vbar_before = v,
+            _ => self.scene.omega_before = v,
+        }
+        Ok(())
+    }
+
+    /// The state before an impact means nothing without the impulses of one.
+    pub(super) fn impact_has_impulses(&self) -> Result<(), Diagnostic> {
+        match self.scene.places.before {
+            Some(at) if self.scene.impulses.is_empty() => Err(self
+                .error((at.start, at.end), "'before' describes the motion before an impact, and the scene has no impulse")
+                .with_help("add the impulse of the blow ('impulse F*Dt*k at (x, y, z)'), or remove this line")),
+            _ => Ok(()),
+        }
     }
 
     /// A force, a point or an impulse may not take a name one of the others has.

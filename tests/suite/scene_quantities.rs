@@ -362,3 +362,26 @@ fn the_motion_before_an_impact_needs_an_impulse() {
     let d = refused(&format!("{SPHERE}before vbar = r*w*i\nfind T"));
     assert!(d.message.contains("no impulse"), "{}", d.message);
 }
+
+/// `kinetics check` knows a scene's named points and impulses: a claim `v_A = ...` or
+/// `R = ...` is decided against the value `solve` prints (by hand, as above).
+#[test]
+fn check_decides_claims_about_named_points_and_impulses() {
+    use crate::common::check::{check_file, judged, ClaimsFile};
+    let cases = [
+        (
+            "examples/scenes/disk_on_turning_axle.scene",
+            "v_A = (r*w1 - L*w2)*k\nv_A = (r*w1 + L*w2)*k\na_A = (2*r*w1*w2 - L*w2^2)*i - r*w1^2*j + r*alpha1*k\n",
+        ),
+        (
+            "examples/scenes/plate_falls_on_corner.scene",
+            "R = m*v_0/7*j\nR = m*v_0/6*j\nv_C = 0*i\n",
+        ),
+    ];
+    for (scene, claims) in cases {
+        let file = ClaimsFile::new("named-points", claims);
+        let (judged, _) = judged(&check_file(scene, &file));
+        let verdicts: Vec<&str> = judged.iter().map(|j| j.verdict.as_str()).collect();
+        assert_eq!(verdicts, ["holds", "differs", "holds"], "{scene}");
+    }
+}

@@ -254,7 +254,9 @@ impl Reader<'_> {
             Rule::omega => self.scene.places.omega = Some(place),
             Rule::force => self.scene.places.forces.push(place),
             Rule::couple => self.scene.places.couples.push(place),
-            Rule::before => _ = self.scene.places.before.get_or_insert(place),
+            Rule::before if self.scene.places.before.is_none() => {
+                self.scene.places.before = Some(place)
+            }
             _ => {}
         }
         Ok(())

@@ -81,16 +81,19 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
 }
 
 /// The unit a result is shown in: the SI unit of the quantity's dimension (so a zero keeps
-/// its unit), but joules (not newton metres) for the kinetic energy, which is work-like.
+/// its unit), but joules (not newton metres) for the kinetic energies, which are work-like.
 pub fn result_unit(request: &Request, dims: &Dimensions) -> Option<String> {
     let u = quantity_dimension(request.quantity, dims)?.si_unit();
-    Some(
-        if request.quantity == Quantity::KineticEnergy && u == "N·m" {
-            "J".into()
-        } else {
-            u
-        },
-    )
+    let energy = [
+        Quantity::KineticEnergy,
+        Quantity::TranslationalKineticEnergy,
+        Quantity::RotationalKineticEnergy,
+    ];
+    Some(if energy.contains(&request.quantity) && u == "N·m" {
+        "J".into()
+    } else {
+        u
+    })
 }
 
 /// The dimension of a quantity a scene can ask for (an unknown's is declared).
@@ -106,6 +109,12 @@ pub fn quantity_dimension(quantity: Quantity, dims: &Dimensions) -> Option<Dimen
         Quantity::AngularMomentumAboutO => angular_momentum,
         Quantity::KineticEnergy => Dimension::MOMENT,
         Quantity::RateOfAngularMomentum => Dimension::MOMENT,
+        Quantity::RateOfAngularMomentumAboutO => Dimension::MOMENT,
+        Quantity::TranslationalKineticEnergy => Dimension::MOMENT,
+        Quantity::RotationalKineticEnergy => Dimension::MOMENT,
+        Quantity::PointVelocity(_) => Dimension::VELOCITY,
+        Quantity::PointAcceleration(_) => Dimension::ACCELERATION,
+        Quantity::NamedImpulse(_) => Dimension::new(1, 1, -1),
         Quantity::Unknown(s) => return dims.get(&s).copied(),
     })
 }

@@ -120,6 +120,12 @@ pub(super) fn quantity_latex(quantity: Quantity) -> String {
         Quantity::AngularMomentumAboutO => r"\mathbf{H}_O".into(),
         Quantity::KineticEnergy => "T".into(),
         Quantity::RateOfAngularMomentum => r"\dot{\mathbf{H}}_G".into(),
+        Quantity::RateOfAngularMomentumAboutO => r"\dot{\mathbf{H}}_O".into(),
+        Quantity::TranslationalKineticEnergy => r"T_{\text{trans}}".into(),
+        Quantity::RotationalKineticEnergy => r"T_{\text{rot}}".into(),
+        Quantity::PointVelocity(p) => format!(r"\mathbf{{v}}_{{{}}}", p.latex()),
+        Quantity::PointAcceleration(p) => format!(r"\mathbf{{a}}_{{{}}}", p.latex()),
+        Quantity::NamedImpulse(s) => print::latex(&Expr::sym(s)),
         Quantity::Unknown(s) => print::latex(&Expr::sym(s)),
     }
 }

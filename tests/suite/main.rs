@@ -59,6 +59,7 @@ mod robust_algebra;
 mod robust_bodies;
 mod robust_parse;
 mod robust_simulate;
+mod scene_quantities;
 mod scene_solutions;
 mod second_opinion;
 mod shapes_numeric;

@@ -13,6 +13,7 @@ use syntax_error::{expected_words, syntax_error};
 mod before_grammar;
 mod body;
 mod given;
+mod named;
 mod reserved_names;
 mod syntax_error;
 
@@ -99,10 +100,13 @@ pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene,
             omega_dot: None,
             frame_rate: None,
             vbar: None,
+            vbar_before: None,
+            omega_before: None,
             abar: None,
             forces: vec![],
             couples: vec![],
             impulses: vec![],
+            points: vec![],
             constraints: vec![],
             unknowns: vec![],
             requests: vec![],
@@ -121,6 +125,7 @@ pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene,
         reader.statement(statement)?;
     }
     reader.resolve_requests()?;
+    reader.impact_has_impulses()?;
     Ok(reader.scene)
 }
 
@@ -179,6 +184,7 @@ impl Reader<'_> {
             }
             Rule::force => {
                 let name = inner[0].as_str().to_string();
+                self.unused_name(&name, span(&inner[0]))?;
                 let value = self.vector(&inner[1], Dimension::FORCE)?;
                 let point = self.point(&inner[2])?;
                 self.scene.forces.push(Force { name, value, point });
@@ -187,11 +193,9 @@ impl Reader<'_> {
                 let c = self.vector(&inner[0], Dimension::MOMENT)?;
                 self.scene.couples.push(c);
             }
-            Rule::impulse => {
-                let value = self.vector(&inner[0], Dimension::new(1, 1, -1))?;
-                let point = self.point(&inner[1])?;
-                self.scene.impulses.push((value, point));
-            }
+            Rule::impulse => self.impulse(&inner)?,
+            Rule::before => self.before(&inner[0], at)?,
+            Rule::named_point => self.named_point(&inner)?,
             Rule::constraint => {
                 let c = inner.remove(0);
                 let constraint = match c.as_rule() {
@@ -257,6 +261,9 @@ impl Reader<'_> {
             Rule::omega => self.scene.places.omega = Some(place),
             Rule::force => self.scene.places.forces.push(place),
             Rule::couple => self.scene.places.couples.push(place),
+            Rule::before if self.scene.places.before.is_none() => {
+                self.scene.places.before = Some(place)
+            }
             _ => {}
         }
         Ok(())
@@ -278,7 +285,9 @@ impl Reader<'_> {
             } else {
                 None
             };
-            let quantity = match (Quantity::named(&request.name), declared) {
+            let named =
+                Quantity::named(&request.name).or_else(|| self.named_request(&request.name));
+            let quantity = match (named, declared) {
                 (Some(q), None) => q,
                 (None, _) if is_unknown => Quantity::Unknown(symbol),
                 (Some(q), Some(kind)) => {
@@ -299,12 +308,15 @@ impl Reader<'_> {
                         )))
                 }
                 (None, _) => {
+                    if let Some(unnamed) = self.unnamed_point(&request.name, at) {
+                        return Err(unnamed);
+                    }
                     return Err(self
                         .error(at, format!("cannot find '{}'", request.name))
                         .with_help(format!(
-                            "ask for {}, or a declared unknown",
+                            "ask for {}, v_A or a_A of a named point A, or a declared unknown",
                             Quantity::NAMED.map(|(n, _)| n).join(", ")
-                        )))
+                        )));
                 }
             };
             self.scene.requests[k].quantity = quantity;

@@ -205,6 +205,13 @@ impl Context {
                 .iter()
                 .map(|(u, _)| (u.name().to_string(), Quantity::Unknown(*u))),
         );
+        for point in &scene.points {
+            let p = Symbol::new(&point.name);
+            quantities.push((format!("v_{}", point.name), Quantity::PointVelocity(p)));
+            quantities.push((format!("a_{}", point.name), Quantity::PointAcceleration(p)));
+        }
+        let impulses = scene.impulses.iter().filter_map(|i| i.name);
+        quantities.extend(impulses.map(|s| (s.name().to_string(), Quantity::NamedImpulse(s))));
         for (name, quantity) in quantities {
             let meaning = match derive_in(scene, &name, quantity) {
                 Ok(Value::Scalar(e)) => Meaning::Derived(e),

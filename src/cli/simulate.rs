@@ -18,7 +18,7 @@ use kinetics::numeric::integrators::splitting::SplittingOrder;
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice, MethodUsed};
 use kinetics::numeric::rigid_body::sample_sink::Sample;
 use kinetics::numeric::rigid_body::simulate::Method;
-use kinetics::scene::{parse_scene, simulation};
+use kinetics::scene::{parse_scene_to_simulate, simulation};
 use std::io::Write;
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -159,7 +159,7 @@ pub fn run(args: Args) -> Result<String, CliError> {
         None => None,
     };
     let (name, text) = super::input::read_file(&args.scene)?;
-    let scene = parse_scene(&name, &text)?;
+    let scene = parse_scene_to_simulate(&name, &text)?;
     let problem = simulation::problem(&scene)?;
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());

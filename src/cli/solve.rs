@@ -1,9 +1,9 @@
-//! `kinetics solve SCENE [--format text|latex|markdown|json|html] [--standalone]` and
+//! `kinetics solve SCENE [--format text|latex|markdown|json|html] [--standalone] [--numbers]` and
 //! `kinetics plan SCENE`: a scene file (or `-` for standard input) analysed on demand.
 
 use super::error::CliError;
 use kinetics::scene::{analyse, parse_scene, Analysis, Scene};
-use kinetics::solution::{render, Format};
+use kinetics::solution::{render, render_numbers, Format};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -14,6 +14,10 @@ pub struct Args {
     /// With `--format latex`: a complete document that compiles with pdflatex.
     #[arg(long)]
     pub standalone: bool,
+    /// The engineer's page: the givens, each result as a number with its unit and the
+    /// intermediate values, without the symbolic steps (text or json).
+    #[arg(long)]
+    pub numbers: bool,
 }
 
 /// The formats of a worked solution as the command line spells them (the library's
@@ -62,9 +66,14 @@ pub fn run(args: Args) -> Result<String, CliError> {
             "--standalone goes with --format latex".into(),
         ));
     }
-    Ok(render(&scene, &analysis, format, args.standalone)
-        .trim_end()
-        .to_string())
+    let page = if args.numbers {
+        render_numbers(&scene, &analysis, format).ok_or_else(|| {
+            CliError::Usage("--numbers goes with --format text or --format json".into())
+        })?
+    } else {
+        render(&scene, &analysis, format, args.standalone)
+    };
+    Ok(page.trim_end().to_string())
 }
 
 pub fn plan(args: PlanArgs) -> Result<String, CliError> {

@@ -12,8 +12,9 @@
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
 use super::linear_momentum::linear_momentum;
+use super::moment_transfer::{moment_transfer, Labels};
 use crate::algebra::vector::expand_each;
-use crate::algebra::vector_products::{cross, mat_vec};
+use crate::algebra::vector_products::mat_vec;
 use crate::algebra::{AlgebraError, Expr, Vector};
 
 /// `{H} = [I]{ω}`; `point` names the reference point (`G` or `O`).
@@ -52,6 +53,23 @@ pub fn angular_momentum(
     })
 }
 
+/// `{H_G1} = [I]{ω₁}`: the angular momentum about G just before an impact, its components
+/// `H_x1`, `H_y1`, `H_z1` (as the chapter's `H₁ + Σ M Δt = H₂`).
+pub fn angular_momentum_before(
+    inertia: &InertiaTensor,
+    omega_before: &Vector,
+) -> Result<Derivation, AlgebraError> {
+    let h = expand_each(&mat_vec(&inertia.matrix(), omega_before))?;
+    Ok(Derivation {
+        name: "H_G1".into(),
+        title: "angular momentum about $G$ before the blow".into(),
+        steps: vec![Step::new(
+            r"angular momentum about $G$ just before the blow, $\{\mathbf{H}_1\} = [I]\{\boldsymbol{\omega}_1\}$",
+            Relation::components_named(&h, |x| format!("H_{x}1")),
+        )],
+    })
+}
+
 /// `H_O = H_G + r̄ × m v̄`, where `rbar` is the position of G from O.
 ///
 /// A particle (`H_G = 0`) at `r̄ = x̄ i` moving with `v̄ = v j`: `r̄ × m v̄ = m x̄ v (i × j)`,
@@ -76,22 +94,16 @@ pub fn angular_momentum_about_point(
     mass: &Expr,
     vbar: &Vector,
 ) -> Result<Derivation, AlgebraError> {
-    let moment_of_momentum = expand_each(&cross(rbar, &linear_momentum(mass, vbar)?))?;
-    let h_o = expand_each(&(h_g + &moment_of_momentum))?;
-    Ok(Derivation {
-        name: "H_O".into(),
-        title: "angular momentum about $O$".into(),
-        steps: vec![
-            Step {
-                table: None,
-                title: r"moment of the linear momentum, $\bar{\mathbf{r}} \times m\bar{\mathbf{v}}$".into(),
-                relations: Relation::components("H", &moment_of_momentum),
-            },
-            Step {
-                table: None,
-                title: r"angular momentum about $O$, $\mathbf{H}_O = \mathbf{H}_G + \bar{\mathbf{r}} \times m\bar{\mathbf{v}}$".into(),
-                relations: Relation::components("H", &h_o),
-            },
-        ],
-    })
+    moment_transfer(
+        h_g,
+        rbar,
+        &linear_momentum(mass, vbar)?,
+        Labels {
+            components: "H",
+            name: "H_O",
+            title: "angular momentum about $O$",
+            moment_title: r"moment of the linear momentum, $\bar{\mathbf{r}} \times m\bar{\mathbf{v}}$",
+            total_title: r"angular momentum about $O$, $\mathbf{H}_O = \mathbf{H}_G + \bar{\mathbf{r}} \times m\bar{\mathbf{v}}$",
+        },
+    )
 }

@@ -18,12 +18,19 @@ impl Relation {
 
     /// The three component relations `name_x = v[0]`, `name_y = v[1]`, `name_z = v[2]`.
     pub fn components(name: &str, v: &crate::algebra::Vector) -> Vec<Relation> {
+        Relation::components_named(v, |sub| format!("{name}_{sub}"))
+    }
+
+    /// The three component relations, the left side of each named by `named` from its axis
+    /// (`x`, `y`, `z`): `v_Ax = v[0]`, ...
+    pub fn components_named(
+        v: &crate::algebra::Vector,
+        named: impl Fn(&str) -> String,
+    ) -> Vec<Relation> {
         [("x", Axis::X), ("y", Axis::Y), ("z", Axis::Z)]
             .iter()
             .zip(v.iter())
-            .map(|((sub, axis), rhs)| {
-                Relation::new(Expr::symbol(&format!("{name}_{sub}")), rhs.clone(), *axis)
-            })
+            .map(|((sub, axis), rhs)| Relation::new(Expr::symbol(&named(sub)), rhs.clone(), *axis))
             .collect()
     }
 

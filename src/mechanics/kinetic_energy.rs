@@ -5,7 +5,9 @@
 //!   = ½ m v̄² + ½(I_x ω_x² + I_y ω_y² + I_z ω_z² - 2I_xy ω_x ω_y - 2I_yz ω_y ω_z - 2I_xz ω_z ω_x)
 //! ```
 //!
-//! For a body about a fixed point O, `T = ½ {ω}ᵀ[I_O]{ω}` (no translational part).
+//! The two parts are `T_trans = ½ m v̄²` (the motion of G) and `T_rot = ½ {ω}ᵀ[Ī]{ω}` (the
+//! rotation about G). For a body about a fixed point O, `T = ½ {ω}ᵀ[I_O]{ω}` (no
+//! translational part); the split is still about G, with `v̄ = ω × r̄` and `[Ī]`.
 
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
@@ -36,42 +38,81 @@ pub fn kinetic_energy(
     omega: &Vector,
     translation: Option<(&Expr, &Vector)>,
 ) -> Result<Derivation, AlgebraError> {
-    let half = Expr::rational(1, 2);
-    let rotational = (&half * &dot(omega, &mat_vec(&inertia.matrix(), omega))).expand()?;
-    let t = Expr::symbol("T");
-    let steps = match translation {
-        Some((m, v)) => {
-            let translational = (&half * m * dot(v, v)).expand()?;
-            vec![
-                Step {
-                    table: None,
-                    title: r"kinetic energy, rotational part $\tfrac12\{\boldsymbol{\omega}\}^T[I]\{\boldsymbol{\omega}\}$".into(),
-                    relations: vec![Relation::new(
-                        Expr::symbol("T_rot"),
-                        rotational.clone(),
-                        Axis::X,
-                    )],
-                },
-                Step {
-                    table: None,
-                    title: r"kinetic energy, $T = \tfrac12 m\bar{v}^2 + \tfrac12\{\boldsymbol{\omega}\}^T[I]\{\boldsymbol{\omega}\}$: add the translational part".into(),
-                    relations: vec![Relation::new(t, &translational + &rotational, Axis::X)],
-                },
-            ]
-        }
-        None => vec![Step {
-            table: None,
-            title: r"kinetic energy about the fixed point $O$, $T = \tfrac12\{\boldsymbol{\omega}\}^T[I_O]\{\boldsymbol{\omega}\}$".into(),
-            relations: vec![Relation::new(t, rotational, Axis::X)],
-        }],
+    let Some((mass, vbar)) = translation else {
+        let rotational = rotational_energy(inertia, omega)?;
+        return Ok(Derivation {
+            name: "T".into(),
+            title: "kinetic energy about a fixed point $O$".into(),
+            steps: vec![Step::new(
+                r"kinetic energy about the fixed point $O$, $T = \tfrac12\{\boldsymbol{\omega}\}^T[I_O]\{\boldsymbol{\omega}\}$",
+                vec![Relation::new(Expr::symbol("T"), rotational, Axis::X)],
+            )],
+        });
+    };
+    kinetic_energy_split(inertia, omega, mass, vbar, false)
+}
+
+/// `T = T_trans + T_rot`, `T_trans = ½ m v̄²`, `T_rot = ½ {ω}ᵀ[Ī]{ω}`, about the mass centre
+/// G (`inertia` is `[Ī]`); `o_fixed` says the body turns about a fixed point O, which the
+/// first step's title names (the split is about G all the same). The first step gives the
+/// two parts, the last `T` (the result).
+///
+/// A sphere rolling at `v̄ = r w`: `T_trans = ½ m r² w²`, `T_rot = ⅕ m r² w²`.
+///
+/// ```
+/// use kinetics::mechanics::kinetic_energy::kinetic_energy_split;
+/// use kinetics::{parse_expression, Expr, InertiaTensor, Vector};
+///
+/// let hand = |t: &str| parse_expression("by hand", t).unwrap().expand().unwrap();
+/// let i = hand("2/5 m r^2");
+/// let sphere = InertiaTensor::diagonal([i.clone(), i.clone(), i]);
+/// let omega = Vector::new(Expr::zero(), Expr::zero(), hand("w"));
+/// let vbar = Vector::new(hand("r w"), Expr::zero(), Expr::zero());
+/// let d = kinetic_energy_split(&sphere, &omega, &hand("m"), &vbar, false)?;
+/// let parts: Vec<&Expr> = d.steps[0].relations.iter().map(|r| &r.rhs).collect();
+/// assert_eq!(parts, [&hand("1/2 m r^2 w^2"), &hand("1/5 m r^2 w^2")]);
+/// assert_eq!(d.result()[0].rhs, hand("7/10 m r^2 w^2"));
+/// # Ok::<(), kinetics::AlgebraError>(())
+/// ```
+pub fn kinetic_energy_split(
+    inertia: &InertiaTensor,
+    omega: &Vector,
+    mass: &Expr,
+    vbar: &Vector,
+    o_fixed: bool,
+) -> Result<Derivation, AlgebraError> {
+    let translational = (Expr::rational(1, 2) * mass * dot(vbar, vbar)).expand()?;
+    let rotational = rotational_energy(inertia, omega)?;
+    let parts = r"$T_{\text{trans}} = \tfrac12 m\bar{v}^2$, $T_{\text{rot}} = \tfrac12\{\boldsymbol{\omega}\}^T[I]\{\boldsymbol{\omega}\}$";
+    let title = if o_fixed {
+        format!("kinetic energy split about the mass centre $G$ ($O$ is fixed, but the split is about $G$, with $[I]$ about $G$): {parts}")
+    } else {
+        format!("kinetic energy, translation of $G$ and rotation about $G$: {parts}")
     };
     Ok(Derivation {
         name: "T".into(),
-        title: if translation.is_some() {
-            "kinetic energy".into()
-        } else {
-            "kinetic energy about a fixed point $O$".into()
-        },
-        steps,
+        title: "kinetic energy".into(),
+        steps: vec![
+            Step::new(
+                title,
+                vec![
+                    Relation::new(Expr::symbol("T_trans"), translational.clone(), Axis::X),
+                    Relation::new(Expr::symbol("T_rot"), rotational.clone(), Axis::X),
+                ],
+            ),
+            Step::new(
+                r"kinetic energy, $T = T_{\text{trans}} + T_{\text{rot}}$",
+                vec![Relation::new(
+                    Expr::symbol("T"),
+                    &translational + &rotational,
+                    Axis::X,
+                )],
+            ),
+        ],
     })
+}
+
+/// `½ {ω}ᵀ[I]{ω}`, multiplied out.
+fn rotational_energy(inertia: &InertiaTensor, omega: &Vector) -> Result<Expr, AlgebraError> {
+    (Expr::rational(1, 2) * dot(omega, &mat_vec(&inertia.matrix(), omega))).expand()
 }

@@ -18,6 +18,7 @@ pub mod kinematics;
 pub mod kinetic_energy;
 pub mod linear_momentum;
 pub mod mass_centre;
+mod moment_transfer;
 pub mod parts_table;
 pub mod principal_axes;
 pub mod resultant;

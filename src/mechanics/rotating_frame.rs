@@ -8,13 +8,16 @@
 //! frame in which the body's mass distribution looks the same: the body-fixed frame
 //! (Ω = ω), or, for an axisymmetric body, a frame that does not spin with the body (Ω ≠ ω).
 //! The same holds about a fixed point O with `[I_O]` (§18.7):
-//! `Ḣ_O = (Ḣ_O)_Oxyz + Ω × H_O`, `(Ḣ_O)_Oxyz = [I_O]{ω̇}`.
+//! `Ḣ_O = (Ḣ_O)_Oxyz + Ω × H_O`, `(Ḣ_O)_Oxyz = [I_O]{ω̇}`; or, from the rate about G,
+//! `Ḣ_O = Ḣ_G + r̄ × m ā` (O fixed, `r̄` the position of G from O).
 
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
+use super::linear_momentum::effective_force;
+use super::moment_transfer::{moment_transfer, Labels};
 use crate::algebra::vector::expand_each;
 use crate::algebra::vector_products::{cross, mat_vec};
-use crate::algebra::{AlgebraError, Vector};
+use crate::algebra::{AlgebraError, Expr, Vector};
 
 /// `Ḣ = [I]{ω̇} + Ω × ([I]{ω})`. `omega_dot` holds the rates of the components of ω as
 /// seen in the rotating frame; `frame_rate` is Ω; `point` names the point the moments and
@@ -76,4 +79,41 @@ pub fn rate_of_angular_momentum(
             ),
         ],
     })
+}
+
+/// `Ḣ_O = Ḣ_G + r̄ × m ā` for a body turning about the fixed point O, from the rate
+/// `hdot_g` about its mass centre G at `rbar` from O.
+///
+/// A particle (`Ḣ_G = 0`) at `r̄ = x̄ i` with `ā = a j`: `r̄ × m ā = m x̄ a k`.
+///
+/// ```
+/// use kinetics::mechanics::rotating_frame::rate_of_angular_momentum_about_point;
+/// use kinetics::{parse_expression, Expr, Vector};
+///
+/// let (zero, m) = (Vector::from_element(Expr::zero()), Expr::symbol("m"));
+/// let rbar = Vector::new(Expr::symbol("xbar"), Expr::zero(), Expr::zero());
+/// let abar = Vector::new(Expr::zero(), Expr::symbol("a"), Expr::zero());
+/// let hdot_o = rate_of_angular_momentum_about_point(&zero, &rbar, &m, &abar)?;
+/// let components: Vec<&Expr> = hdot_o.result().iter().map(|r| &r.rhs).collect();
+/// assert_eq!(components[2], &parse_expression("by hand", "m xbar a")?);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn rate_of_angular_momentum_about_point(
+    hdot_g: &Vector,
+    rbar: &Vector,
+    mass: &Expr,
+    abar: &Vector,
+) -> Result<Derivation, AlgebraError> {
+    moment_transfer(
+        hdot_g,
+        rbar,
+        &effective_force(mass, abar)?,
+        Labels {
+            components: "Hdot",
+            name: "Hdot_O",
+            title: "rate of change of angular momentum about $O$",
+            moment_title: r"moment of the effective force, $\bar{\mathbf{r}} \times m\bar{\mathbf{a}}$",
+            total_title: r"rate of change of angular momentum about the fixed point $O$, $\dot{\mathbf{H}}_O = \dot{\mathbf{H}}_G + \bar{\mathbf{r}} \times m\bar{\mathbf{a}}$",
+        },
+    )
 }

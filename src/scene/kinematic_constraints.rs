@@ -5,6 +5,10 @@
 //! velocity at (x, y, z) = 0:   v_P = v̄ + ω × (r_P − r̄) = 0       (v_P = ω × r_P, O fixed)
 //! lhs = rhs:                   lhs − rhs = 0
 //! ```
+//!
+//! In an impact the constraints hold just after the blow, where the impulsive reactions that
+//! enforce them are unknown too: their equations are solved with those of impulse and
+//! momentum, not alone.
 
 use super::model::{ConstraintKind, Scene, Span};
 use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
@@ -22,6 +26,9 @@ pub struct SolvedConstraints {
     pub frame_rate: Vector,
     /// Values of unknowns fixed by the kinematic constraints.
     pub solved: Vec<(Symbol, Expr)>,
+    /// In an impact, the constraints' equations (each `= 0`), to be solved with impulse and
+    /// momentum.
+    pub with_impulses: Vec<Expr>,
 }
 
 impl SolvedConstraints {
@@ -103,7 +110,14 @@ pub fn solve_constraints(
         }
     }
     let mut steps = Vec::new();
+    let impact = !scene.impulses.is_empty() && !equations.is_empty();
     let solved = if equations.is_empty() {
+        vec![]
+    } else if impact {
+        steps.push(Step::new(
+            "kinematic constraints just after the blow (solved with impulse and momentum)",
+            shown,
+        ));
         vec![]
     } else {
         let constrained: Vec<Symbol> = scene
@@ -142,6 +156,7 @@ pub fn solve_constraints(
         omega_dot: zero_vector(),
         frame_rate: zero_vector(),
         solved,
+        with_impulses: if impact { equations } else { vec![] },
     };
     let substituted = |v: &Vector| kinematics.substitute_vector(v).map_err(located(at));
     let omega = substituted(&omega)?;

@@ -10,4 +10,4 @@ pub mod units;
 
 pub use analysis::{analyse, Analysis, Value};
 pub use model::Scene;
-pub use parse::parse_scene;
+pub use parse::{parse_scene, parse_scene_to_simulate};

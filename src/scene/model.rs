@@ -33,6 +33,8 @@ pub struct Places {
     pub forces: Vec<Span>,
     /// Each `couple` statement, in the order of [`Scene::couples`].
     pub couples: Vec<Span>,
+    /// The first `before` statement (the state before an impact: the scene needs one).
+    pub before: Option<Span>,
 }
 
 /// A given quantity: symbolic, or with a value converted to SI.
@@ -65,6 +67,23 @@ pub struct Part {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Force {
     pub name: String,
+    pub value: Vector,
+    pub point: Vector,
+}
+
+/// A body point named by the scene (`point A at (x, y, z)`), whose velocity `v_A` and
+/// acceleration `a_A` a scene can ask for.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NamedPoint {
+    /// As written: `A`, `P1` (its velocity's components are `v_Ax`, `v_P1x`).
+    pub name: String,
+    pub position: Vector,
+}
+
+/// An impulse `F Δt` at its point, named when the scene asks for it (`impulse R = ... at`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Impulse {
+    pub name: Option<Symbol>,
     pub value: Vector,
     pub point: Vector,
 }
@@ -107,6 +126,16 @@ pub enum Quantity {
     KineticEnergy,
     /// `Hdot_G`: the rate of change of the angular momentum about G.
     RateOfAngularMomentum,
+    /// `Hdot_O`: the rate of change of the angular momentum about the fixed point O.
+    RateOfAngularMomentumAboutO,
+    /// `T_trans`, `T_rot`: the kinetic energy of the motion of G, and of the rotation about G.
+    TranslationalKineticEnergy,
+    RotationalKineticEnergy,
+    /// `v_A`, `a_A`: the velocity and acceleration of the named point A.
+    PointVelocity(Symbol),
+    PointAcceleration(Symbol),
+    /// A named impulse with its unknown components solved (`impulse R = ... at`, `find R`).
+    NamedImpulse(Symbol),
     /// A declared unknown, solved from the equations of the scene.
     Unknown(Symbol),
     /// `balance in planes z = a, z = b at radius r`: two correction masses ([`Scene::balance`]).
@@ -115,7 +144,7 @@ pub enum Quantity {
 
 impl Quantity {
     /// The chapter's quantities by the names a scene writes them with.
-    pub const NAMED: [(&'static str, Quantity); 11] = [
+    pub const NAMED: [(&'static str, Quantity); 14] = [
         ("omega", Quantity::AngularVelocity),
         ("vbar", Quantity::MassCentreVelocity),
         ("mvbar", Quantity::LinearMomentum),
@@ -127,6 +156,9 @@ impl Quantity {
         ("H_O", Quantity::AngularMomentumAboutO),
         ("T", Quantity::KineticEnergy),
         ("Hdot_G", Quantity::RateOfAngularMomentum),
+        ("Hdot_O", Quantity::RateOfAngularMomentumAboutO),
+        ("T_trans", Quantity::TranslationalKineticEnergy),
+        ("T_rot", Quantity::RotationalKineticEnergy),
     ];
 
     /// What the quantity is, in words (`the kinetic energy`).
@@ -141,6 +173,14 @@ impl Quantity {
             Quantity::AngularMomentumAboutO => "the angular momentum about O",
             Quantity::KineticEnergy => "the kinetic energy",
             Quantity::RateOfAngularMomentum => "the rate of change of the angular momentum about G",
+            Quantity::RateOfAngularMomentumAboutO => {
+                "the rate of change of the angular momentum about O"
+            }
+            Quantity::TranslationalKineticEnergy => "the kinetic energy of translation",
+            Quantity::RotationalKineticEnergy => "the kinetic energy of rotation about G",
+            Quantity::PointVelocity(_) => "the velocity of a named point",
+            Quantity::PointAcceleration(_) => "the acceleration of a named point",
+            Quantity::NamedImpulse(_) => "a named impulse",
             Quantity::Unknown(_) => "an unknown",
             Quantity::Balance => "the two-plane balance",
         }
@@ -205,12 +245,19 @@ pub struct Scene {
     pub frame_rate: Option<Vector>,
     /// Velocity of the mass centre, if given directly.
     pub vbar: Option<Vector>,
+    /// `before vbar = ...`: the velocity of the mass centre just before an impact (at rest
+    /// if not given).
+    pub vbar_before: Option<Vector>,
+    /// `before omega = ...`: the angular velocity just before an impact (0 if not given).
+    pub omega_before: Option<Vector>,
     /// Acceleration of the mass centre, if given directly.
     pub abar: Option<Vector>,
     pub forces: Vec<Force>,
     pub couples: Vec<Vector>,
-    /// Impulses `F Δt` and their points (an impact from rest).
-    pub impulses: Vec<(Vector, Vector)>,
+    /// Impulses `F Δt` and their points (an impact).
+    pub impulses: Vec<Impulse>,
+    /// The named body points (`point A at (x, y, z)`).
+    pub points: Vec<NamedPoint>,
     pub constraints: Vec<Constraint>,
     pub unknowns: Vec<(Symbol, Dimension)>,
     pub requests: Vec<Request>,

@@ -144,29 +144,38 @@ fn result_rows(r: &Result, first_em: f64, width_em: f64) -> String {
     print::mathml::latex_name(&mut name, &r.name_latex);
     let mut lines = form_lines(r, Notation::MathMl, first_em, width_em);
     let mut rhs = lines.pop().unwrap_or_default();
-    if let Some(values) = r.value.as_ref().filter(|_| !r.is_number()) {
-        let unit = r.unit.as_deref().unwrap_or("");
-        if r.form.is_some() {
+    match value_mathml(r) {
+        // A form that is a plain number is its value: shown once, with its unit.
+        Some(v) if r.is_number() => rhs = v,
+        Some(v) => {
             rhs.push_str("<mo>=</mo>");
+            rhs.push_str(&v);
         }
-        match values.as_slice() {
-            [x] => rhs.push_str(&value(&format_value(*x), unit)),
-            components => {
-                let numbers: Vec<String> = components
-                    .iter()
-                    .map(|x| decimal(&format_value(*x)))
-                    .collect();
-                // The unit of a vector stands after its parenthesis, as in the LaTeX.
-                rhs.push_str(&format!(
-                    "<mrow><mo>(</mo>{}<mo>)</mo></mrow>{}",
-                    numbers.join("<mo>,</mo>"),
-                    spaced_unit(unit)
-                ));
-            }
-        }
+        None => {}
     }
     lines.push(rhs);
     rows(&name, &lines)
+}
+
+/// A result's value and unit in MathML: `−135 m/s²`, or `(0, 0, 0.024) kg·m²/s`.
+fn value_mathml(r: &Result) -> Option<String> {
+    let values = r.value.as_ref()?;
+    let unit = r.unit.as_deref().unwrap_or("");
+    Some(match values.as_slice() {
+        [x] => value(&format_value(*x), unit),
+        components => {
+            let numbers: Vec<String> = components
+                .iter()
+                .map(|x| decimal(&format_value(*x)))
+                .collect();
+            // The unit of a vector stands after its parenthesis, as in the LaTeX.
+            format!(
+                "<mrow><mo>(</mo>{}<mo>)</mo></mrow>{}",
+                numbers.join("<mo>,</mo>"),
+                spaced_unit(unit)
+            )
+        }
+    })
 }
 
 /// A composite body's table of parts: a row per part, a column per quantity.

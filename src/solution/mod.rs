@@ -4,6 +4,8 @@
 
 mod balance_rows;
 pub mod derivations;
+mod engineer;
+pub mod evaluation;
 mod html;
 mod mathml_value;
 pub mod numbers;
@@ -12,4 +14,4 @@ pub mod render;
 pub mod unit_latex;
 
 pub use derivations::{render_derivations, Shown};
-pub use render::{render, Format};
+pub use render::{render, render_numbers, Format};

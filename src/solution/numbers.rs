@@ -1,5 +1,6 @@
 //! Values of results: evaluation with the scene's givens (in SI) and the unit of the result.
 
+pub use super::evaluation::value;
 use crate::algebra::{vector, AlgebraError, Expr, Symbol, Q};
 use crate::parse::Diagnostic;
 use crate::scene::model::{exact_decimal, Quantity, Request};
@@ -22,13 +23,6 @@ pub fn scene_dimensions(scene: &Scene) -> Dimensions {
         }
     }
     dims
-}
-
-/// The value of `e` when every symbol in it has a given value and the value is finite;
-/// `None` otherwise, and the answer stays symbolic. (An answer asked for `in UNIT` must
-/// have a value: [`check_numeric_requests`] refuses it when it has none.)
-pub fn value(scene: &Scene, e: &Expr) -> Option<f64> {
-    e.eval(&|s: Symbol| scene.value(s)).ok()
 }
 
 /// The SI unit of `e`, when its dimension is consistent.
@@ -90,15 +84,44 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
     Ok(())
 }
 
-/// The unit a result is shown in: the SI unit of its dimension, but joules (not newton
-/// metres) for the kinetic energy, which is work-like.
-pub fn result_unit(request: &Request, dims: &Dimensions, e: &Expr) -> Option<String> {
-    unit(dims, e).map(|u| {
-        if request.quantity == Quantity::KineticEnergy && u == "N·m" {
-            "J".into()
-        } else {
-            u
-        }
+/// The unit a result is shown in: the SI unit of the quantity's dimension (so a zero keeps
+/// its unit), but joules (not newton metres) for the kinetic energies, which are work-like.
+pub fn result_unit(request: &Request, dims: &Dimensions) -> Option<String> {
+    let u = quantity_dimension(request.quantity, dims)?.si_unit();
+    let energy = [
+        Quantity::KineticEnergy,
+        Quantity::TranslationalKineticEnergy,
+        Quantity::RotationalKineticEnergy,
+    ];
+    Some(if energy.contains(&request.quantity) && u == "N·m" {
+        "J".into()
+    } else {
+        u
+    })
+}
+
+/// The dimension of a quantity a scene can ask for (an unknown's is declared).
+pub fn quantity_dimension(quantity: Quantity, dims: &Dimensions) -> Option<Dimension> {
+    let angular_momentum = Dimension::new(1, 2, -1);
+    Some(match quantity {
+        Quantity::AngularVelocity => Dimension::ANGULAR_VELOCITY,
+        Quantity::MassCentreVelocity => Dimension::VELOCITY,
+        Quantity::LinearMomentum => Dimension::new(1, 1, -1),
+        Quantity::MassCentreAcceleration => Dimension::ACCELERATION,
+        Quantity::EffectiveForce => Dimension::FORCE,
+        Quantity::AngularMomentumAboutG => angular_momentum,
+        Quantity::AngularMomentumAboutO => angular_momentum,
+        Quantity::KineticEnergy => Dimension::MOMENT,
+        Quantity::RateOfAngularMomentum => Dimension::MOMENT,
+        Quantity::RateOfAngularMomentumAboutO => Dimension::MOMENT,
+        Quantity::TranslationalKineticEnergy => Dimension::MOMENT,
+        Quantity::RotationalKineticEnergy => Dimension::MOMENT,
+        Quantity::PointVelocity(_) => Dimension::VELOCITY,
+        Quantity::PointAcceleration(_) => Dimension::ACCELERATION,
+        Quantity::NamedImpulse(_) => Dimension::new(1, 1, -1),
+        Quantity::Unknown(s) => return dims.get(&s).copied(),
+        // Masses and angles: each row has its own (`balance_rows.rs`).
+        Quantity::Balance => return None,
     })
 }
 
@@ -124,7 +147,7 @@ fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Resu
         Ok(q) => {
             let unit = match &request.unit {
                 Some((written, _)) => written.clone(),
-                None => result_unit(request, dims, e).unwrap_or_default(),
+                None => result_unit(request, dims).unwrap_or_default(),
             };
             let q = &q * &exact_decimal(1.0 / to_si).unwrap_or(Q::ONE);
             let name = &request.name;

@@ -1,28 +1,16 @@
 //! Rendering a worked solution: the givens, each step of the plan with its component
 //! equations in textbook form, and the results with values and units.
 //!
-//! JSON schema (stable):
-//!
-//! ```text
-//! { "title": string|null,
-//!   "plan": [string],                               the steps done, in order
-//!   "givens": [{"name", "written": string|null, "si_value": number|null, "unit"}],
-//!   "steps": [{"title", "title_latex",                title: plain text; title_latex: LaTeX text mode
-//!              "table": null | {"columns": [{"text", "latex"}],
-//!                                          "rows": [{"label", "cells": [{"text", "latex"}]}]},
-//!              "relations": [{"text", "latex"}]}],
-//!   "results": [{"name", "text", "latex",
-//!                "value": number | [x, y, z] | null,  when every given has a value
-//!                "unit": string|null}] }
-//! ```
-//!
-//! A balance is four result rows or more: `m_1`, `theta_1` (in `deg`; `text` "undefined" and
-//! `value` null for no correction), `tan(theta_1)` where the angle is not exact, then plane 2.
+//! JSON: the document `docs/solution.schema.json` describes (JSON Schema 2020-12), tested
+//! against every example's output (`tests/suite/json_schema.rs`); `--numbers` gives the
+//! engineer's page ([`render_numbers`]), described in the same file. A balance is four result
+//! rows or more: `m_1`, `theta_1` (in `deg`; `text` "undefined" and `value` null for no
+//! correction), `tan(theta_1)` where the angle is not exact, then plane 2.
 
-use super::numbers::{format_value, result_unit, scene_dimensions, unit, value};
+use super::numbers::{format_value, result_unit, scene_dimensions, value};
 use super::parts_table;
 use super::unit_latex::quantity;
-use crate::algebra::{Axis, Expr, Vector};
+use crate::algebra::{Axis, Expr};
 use crate::mechanics::derivation::Relation;
 use crate::print::{self, markup, width::RELATION_EM, Notation};
 use crate::scene::model::{Quantity, Request};
@@ -55,9 +43,9 @@ pub(super) struct Result<'a> {
 }
 
 impl Result<'_> {
-    /// Whether the symbolic form is already a plain number (its value adds nothing).
+    /// Whether the result is a plain number (its value with its unit is all there is to show).
     pub(super) fn is_number(&self) -> bool {
-        self.form.is_some() && self.text.parse::<f64>().is_ok()
+        self.form.is_none() || self.text.parse::<f64>().is_ok()
     }
 }
 
@@ -104,20 +92,18 @@ fn computed<'a>(
     v: &'a Value,
     dims: &Dimensions,
 ) -> Vec<Result<'a>> {
-    let name = Cow::Borrowed(request.name.as_str());
+    let name = Cow::Borrowed(shown_name(request));
     let name_latex = quantity_latex(request.quantity);
+    let unit = result_unit(request, dims);
     let result = match v {
-        Value::Scalar(e) => {
-            let unit = result_unit(request, dims, e);
-            scalar(scene, name, name_latex, e.clone(), unit)
-        }
+        Value::Scalar(e) => scalar(scene, name, name_latex, e.clone(), unit),
         Value::Vector(vec) => Result {
             name,
             name_latex,
             text: print::vector(vec, Notation::Text),
             latex: print::vector(vec, Notation::Latex),
             value: vec.iter().map(|c| value(scene, c)).collect(),
-            unit: vector_unit(dims, vec),
+            unit,
             form: Some(Cow::Borrowed(v)),
         },
         Value::Balance(corrections) => return super::balance_rows::rows(scene, corrections),
@@ -137,7 +123,7 @@ pub(super) fn form_lines(
         Some(Value::Scalar(e)) => print::broken(e, Axis::X, notation, first_em, width_em),
         Some(Value::Vector(v)) => print::broken_vector(v, notation, first_em, width_em),
         Some(Value::Balance(_)) => Vec::new(),
-        // Known only as a number (its value follows), or undefined (said in words).
+        // Known only as a number (shown as its value), or undefined (said in words).
         None if r.value.is_some() => Vec::new(),
         None => vec![match notation {
             Notation::MathMl => "<mtext>undefined</mtext>".into(),
@@ -146,8 +132,13 @@ pub(super) fn form_lines(
     }
 }
 
-fn vector_unit(dims: &Dimensions, v: &Vector) -> Option<String> {
-    v.iter().find(|c| !c.is_zero()).and_then(|c| unit(dims, c))
+/// The name a result is shown under: the quantity as written (`H_G`, `m*vbar`), but an
+/// unknown in its symbol's one spelling (`M_1` for `M1`), as the steps print it.
+fn shown_name(request: &Request) -> &str {
+    match request.quantity {
+        Quantity::Unknown(s) => s.name(),
+        _ => &request.name,
+    }
 }
 
 /// The two sides of a relation in the chosen notation, presented about its axis.
@@ -170,12 +161,18 @@ pub(super) fn quantity_latex(quantity: Quantity) -> String {
         Quantity::AngularMomentumAboutO => r"\mathbf{H}_O".into(),
         Quantity::KineticEnergy => "T".into(),
         Quantity::RateOfAngularMomentum => r"\dot{\mathbf{H}}_G".into(),
+        Quantity::RateOfAngularMomentumAboutO => r"\dot{\mathbf{H}}_O".into(),
+        Quantity::TranslationalKineticEnergy => r"T_{\text{trans}}".into(),
+        Quantity::RotationalKineticEnergy => r"T_{\text{rot}}".into(),
+        Quantity::PointVelocity(p) => format!(r"\mathbf{{v}}_{{{}}}", p.latex()),
+        Quantity::PointAcceleration(p) => format!(r"\mathbf{{a}}_{{{}}}", p.latex()),
+        Quantity::NamedImpulse(s) => print::latex(&Expr::sym(s)),
         Quantity::Unknown(s) => print::latex(&Expr::sym(s)),
         Quantity::Balance => r"\text{balance}".into(),
     }
 }
 
-fn value_text(r: &Result) -> Option<String> {
+pub(super) fn value_text(r: &Result) -> Option<String> {
     let v = r.value.as_ref()?;
     let numbers: Vec<String> = v.iter().map(|x| format_value(*x)).collect();
     let body = if numbers.len() == 1 {
@@ -240,7 +237,20 @@ pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bo
     })
 }
 
-fn given_line(g: &crate::scene::model::Given) -> String {
+/// The engineer's page ([`super::engineer`]): the givens, each result as a number with its
+/// unit and the plan's intermediate values, without the symbolic steps; in text or JSON
+/// (`None` for the other formats, whose pages are the worked solution).
+pub fn render_numbers(scene: &Scene, analysis: &Analysis, format: Format) -> Option<String> {
+    let dims = scene_dimensions(scene);
+    let results = results(scene, analysis, &dims);
+    match format {
+        Format::Text => Some(super::engineer::text(scene, analysis, &results, &dims)),
+        Format::Json => Some(super::engineer::json(scene, analysis, &results, &dims).to_string()),
+        Format::Latex | Format::Markdown | Format::Html => None,
+    }
+}
+
+pub(super) fn given_line(g: &crate::scene::model::Given) -> String {
     match &g.written {
         Some(w) => format!("{} = {w}", g.symbol.name()),
         None => format!("{} ({}, symbolic)", g.symbol.name(), g.dimension),
@@ -255,6 +265,11 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     out.push_str("Given\n");
     for g in &scene.givens {
         out.push_str(&format!("  {}\n", given_line(g)));
+    }
+    // Every given has a value: the answers as numbers come before the symbolic steps.
+    let answers = super::engineer::answers_text(results);
+    if scene.givens.iter().all(|g| g.value.is_some()) && !answers.is_empty() {
+        out.push_str(&format!("\nAnswers\n{answers}"));
     }
     for (k, step) in analysis.plan.iter().enumerate() {
         out.push_str(&format!(
@@ -272,8 +287,8 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     }
     out.push_str("\nResults\n");
     for r in results {
-        match value_text(r).filter(|_| !r.is_number()) {
-            Some(v) if r.form.is_none() => out.push_str(&format!("  {} = {v}\n", r.name)),
+        match value_text(r) {
+            Some(v) if r.is_number() => out.push_str(&format!("  {} = {v}\n", r.name)),
             Some(v) => out.push_str(&format!("  {} = {} = {v}\n", r.name, r.text)),
             None => out.push_str(&format!("  {} = {}\n", r.name, r.text)),
         }
@@ -338,18 +353,13 @@ fn latex_results(results: &[Result]) -> String {
     let rows: Vec<String> = results
         .iter()
         .map(|r| {
-            let value = r.value.as_ref().filter(|_| !r.is_number()).map(|_| {
-                let v = value_text(r).unwrap_or_default();
-                let unit = r.unit.as_deref().unwrap_or_default();
-                let number = v.trim_end_matches(unit).trim();
-                // A value's digits, commas and spaces are narrower than 0.55 em; its unit is
-                // upright, narrower than a symbol of the same letters.
-                let width =
-                    0.55 * number.len() as f64 + print::width::symbol_em(unit) + RELATION_EM;
-                (format!("= {}", quantity(number, unit)), width)
-            });
-            let mut lines = form_lines(r, Notation::Latex, first_em, width_em);
             let name = &r.name_latex;
+            let value = latex_value(r);
+            if let Some((number, _)) = value.as_ref().filter(|_| r.is_number()) {
+                return aligned_row(name, std::slice::from_ref(number));
+            }
+            let value = value.map(|(v, width)| (format!("= {v}"), width + RELATION_EM));
+            let mut lines = form_lines(r, Notation::Latex, first_em, width_em);
             if let Some((tail, tail_em)) = value {
                 let unbroken_em = match r.form.as_deref() {
                     Some(Value::Scalar(e)) => print::width_em(e, Axis::X),
@@ -359,19 +369,26 @@ fn latex_results(results: &[Result]) -> String {
                 if lines.len() > 1 || first_em + unbroken_em + tail_em > width_em {
                     return format!("{} \\\\\n&{tail}", aligned_row(name, &lines));
                 }
-                match lines.first_mut() {
-                    Some(line) => {
-                        line.push(' ');
-                        line.push_str(&tail);
-                    }
-                    // Known only as a number: `\theta_1 &= 63.43^\circ`.
-                    None => lines.push(tail.trim_start_matches("= ").to_string()),
+                if let Some(line) = lines.first_mut() {
+                    line.push(' ');
+                    line.push_str(&tail);
                 }
             }
             aligned_row(name, &lines)
         })
         .collect();
     align(&rows)
+}
+
+/// A result's value and unit in LaTeX (`-135\,\mathrm{m/s^2}`) and its width in ems.
+fn latex_value(r: &Result) -> Option<(String, f64)> {
+    let v = value_text(r)?;
+    let unit = r.unit.as_deref().unwrap_or_default();
+    let number = v.trim_end_matches(unit).trim();
+    // A value's digits, commas and spaces are narrower than 0.55 em; its unit is upright,
+    // narrower than a symbol of the same letters.
+    let width = 0.55 * number.len() as f64 + print::width::symbol_em(unit);
+    Some((quantity(number, unit), width))
 }
 
 /// The preamble of a standalone LaTeX document: article class, amsmath and amssymb only;
@@ -461,12 +478,7 @@ fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::V
     serde_json::json!({
         "title": scene.title,
         "plan": analysis.plan.iter().map(|s| markup::text(&s.title)).collect::<Vec<_>>(),
-        "givens": scene.givens.iter().map(|g| serde_json::json!({
-            "name": g.symbol.name(),
-            "written": g.written,
-            "si_value": g.value,
-            "unit": g.dimension.si_unit(),
-        })).collect::<Vec<_>>(),
+        "givens": givens_json(scene),
         "steps": analysis.plan.iter().map(|s| serde_json::json!({
             "title": markup::text(&s.title),
             "title_latex": markup::latex(&s.title),
@@ -477,8 +489,33 @@ fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::V
             "name": r.name,
             "text": r.text,
             "latex": r.latex,
-            "value": r.value.as_ref().map(|v| if v.len() == 1 { serde_json::json!(v[0]) } else { serde_json::json!(v) }),
+            "value": value_json(r),
             "unit": r.unit,
         })).collect::<Vec<_>>(),
     })
+}
+
+/// The givens as JSON: `[{name, written, si_value, unit}]`.
+pub(super) fn givens_json(scene: &Scene) -> Vec<serde_json::Value> {
+    scene
+        .givens
+        .iter()
+        .map(|g| {
+            serde_json::json!({
+                "name": g.symbol.name(),
+                "written": g.written,
+                "si_value": g.value,
+                "unit": g.dimension.si_unit(),
+            })
+        })
+        .collect()
+}
+
+/// A result's value as JSON: a number, `[x, y, z]`, or null without one.
+pub(super) fn value_json(r: &Result) -> serde_json::Value {
+    match r.value.as_deref() {
+        Some([x]) => serde_json::json!(x),
+        Some(v) => serde_json::json!(v),
+        None => serde_json::Value::Null,
+    }
 }

@@ -284,7 +284,7 @@ fn no_correction_in_a_plane_is_mass_zero_and_no_angle() {
         "{in_plane}"
     );
     assert!(
-        in_plane.contains("m_2 = 0\n  theta_2 = undefined"),
+        in_plane.contains("m_2 = 0 kg\n  theta_2 = undefined"),
         "{in_plane}"
     );
     let on_axis = scene("(e - c, 0, a)");

@@ -1,7 +1,7 @@
 //! A second opinion by evaluation: both sides of a claim at random points in double-double.
 //!
 //! At each point `x`, `l = lhs(x)` and `r = rhs(x)` are computed to about 32 digits, each
-//! with a bound on its rounding error (`rounding_error.rs`); the sides agree there when
+//! with a bound on its rounding error (`numeric/rounding_error.rs`); the sides agree there when
 //! `|l − r| ≤ 10⁻²⁵ · max(|l|, |r|)` (or both are exactly 0), and differ clearly when
 //! `|l − r| ≥ 10⁻¹² · max(|l|, |r|)` and `|l − r|` is beyond what rounding may cause there
 //! (a cancellation in a true identity, `(a − b)⁹` expanded near `a = b`, is no difference).
@@ -11,12 +11,10 @@
 //! right. The points are deterministic in the seed (splitmix64), so a verdict can be
 //! reproduced.
 
-mod rounding_error;
-
 use crate::algebra::{Domain, Domains, Expr, Symbol};
+use crate::numeric::rounding_error::bounded;
 use crate::numeric::scalar::double_double::DoubleDouble;
 use num_traits::{Float, Zero};
-use rounding_error::bounded;
 
 /// How many points must agree for [`Opinion::Zero`].
 pub const POINTS: usize = 6;

@@ -17,9 +17,14 @@
 //! | `H_O` | inertia about O, kinematics, angular momentum | body about G, kinematics, `H_G`, motion of G, `H_O` |
 //! | `T` | inertia about O, kinematics, kinetic energy | body about G, kinematics, motion of G, kinetic energy |
 //! | `Hdot_G` | body about G, kinematics, rate of change of angular momentum | the same |
+//! | `Hdot_O` | inertia about O, kinematics, `Ḣ_O = [I_O]{ω̇} + Ω × H_O` | `Ḣ_G`, `ā`, `Ḣ_O = Ḣ_G + r̄ × m ā` (refused without a fixed point) |
+//! | `T_trans`, `T_rot` | kinematics, motion of G, body about G, the split | the same |
+//! | `v_A`, `a_A` | kinematics, `ω × r_A`, `α × r_A + ω × (ω × r_A)` | kinematics, v̄ or ā, `v̄ + ω × (r_A − r̄)`, ... |
+//! | a named impulse | its components, the unknowns among them solved | the same |
 //! | an unknown | the equations of motion with `Ḣ_O` (or impulse and momentum); then the solution | the same with `Ḣ_G` |
 
 mod balance;
+mod points;
 mod unknowns;
 
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
@@ -32,10 +37,12 @@ use crate::mechanics::inertia::InertiaTensor;
 use crate::mechanics::inertia::MassPart;
 use crate::mechanics::inertia_about_point::inertia_about_fixed_point;
 use crate::mechanics::kinematics::{acceleration_of_mass_centre, velocity_of_mass_centre};
-use crate::mechanics::kinetic_energy::kinetic_energy;
+use crate::mechanics::kinetic_energy::{kinetic_energy, kinetic_energy_split};
 use crate::mechanics::linear_momentum::{effective_force, linear_momentum};
 use crate::mechanics::mass_centre::{mass_centre, MassCentre};
-use crate::mechanics::rotating_frame::rate_of_angular_momentum;
+use crate::mechanics::rotating_frame::{
+    rate_of_angular_momentum, rate_of_angular_momentum_about_point,
+};
 use crate::mechanics::two_plane_balance::{Correction, CorrectionAngle};
 use crate::parse::Diagnostic;
 use std::collections::HashMap;
@@ -71,6 +78,8 @@ struct Analyser<'a> {
     h_g: Option<Vector>,
     hdot_g: Option<Vector>,
     hdot_o: Option<Vector>,
+    /// `T_trans`, `T_rot` and `T` about G.
+    energy_split: Option<[Expr; 3]>,
     unknowns: Option<HashMap<Symbol, Expr>>,
     /// Unknowns solved in general that the givens' values leave undetermined.
     undetermined_with_values: HashMap<Symbol, Expr>,
@@ -171,6 +180,7 @@ impl<'a> Analyser<'a> {
             h_g: None,
             hdot_g: None,
             hdot_o: None,
+            energy_split: None,
             unknowns: None,
             undetermined_with_values: HashMap::new(),
         }
@@ -218,6 +228,14 @@ impl<'a> Analyser<'a> {
             Quantity::RateOfAngularMomentum => {
                 Value::Vector(self.rate_of_angular_momentum(at, false)?)
             }
+            Quantity::RateOfAngularMomentumAboutO => Value::Vector(self.hdot_o(at)?),
+            Quantity::TranslationalKineticEnergy => {
+                Value::Scalar(self.energy_split(at)?[0].clone())
+            }
+            Quantity::RotationalKineticEnergy => Value::Scalar(self.energy_split(at)?[1].clone()),
+            Quantity::PointVelocity(p) => Value::Vector(self.point_velocity(at, p)?),
+            Quantity::PointAcceleration(p) => Value::Vector(self.point_acceleration(at, p)?),
+            Quantity::NamedImpulse(s) => Value::Vector(self.named_impulse(at, s)?),
             Quantity::Unknown(s) => Value::Scalar(self.unknown(at, s)?),
             Quantity::Balance => self.balance(at)?,
         })
@@ -478,18 +496,62 @@ impl<'a> Analyser<'a> {
         Ok(self.record_vector(d))
     }
 
-    /// About O: `T = ½{ω}ᵀ[I_O]{ω}`; about G: `T = ½ m v̄² + ½{ω}ᵀ[Ī]{ω}`.
+    /// About O: `T = ½{ω}ᵀ[I_O]{ω}`; about G: `T = T_trans + T_rot`.
     fn kinetic_energy(&mut self, at: Span) -> Result<Expr, Diagnostic> {
+        if !self.scene.about_fixed_point() {
+            return Ok(self.energy_split(at)?[2].clone());
+        }
         let omega = self.kinematics(at)?.omega.clone();
-        let d = if self.scene.about_fixed_point() {
-            let inertia = self.inertia_about_o(at)?;
-            kinetic_energy(&inertia, &omega, None)
-        } else {
-            let v = self.vbar(at)?;
-            let body = self.body(at)?;
-            kinetic_energy(&body.inertia, &omega, Some((&body.mass, &v)))
-        };
-        Ok(self.record(d.map_err(self.algebra(at))?)[0].clone())
+        let inertia = self.inertia_about_o(at)?;
+        let d = kinetic_energy(&inertia, &omega, None).map_err(self.algebra(at))?;
+        Ok(self.record(d)[0].clone())
+    }
+
+    /// `T_trans = ½ m v̄²`, `T_rot = ½{ω}ᵀ[Ī]{ω}` and their sum `T`, about G (with a fixed
+    /// point too, `v̄ = ω × r̄`).
+    fn energy_split(&mut self, at: Span) -> Result<[Expr; 3], Diagnostic> {
+        if let Some(split) = &self.energy_split {
+            return Ok(split.clone());
+        }
+        let omega = self.kinematics(at)?.omega.clone();
+        // The body about G first: v̄ then takes its mass centre (not the parts' again).
+        self.body(at)?;
+        let v = self.vbar(at)?;
+        let fixed_point = self.scene.fixed_point;
+        let body = self.body(at)?;
+        let d = kinetic_energy_split(&body.inertia, &omega, &body.mass, &v, fixed_point)
+            .map_err(self.algebra(at))?;
+        let parts: Vec<Expr> = d.steps[0].relations.iter().map(|r| r.rhs.clone()).collect();
+        let t = self.record(d).remove(0);
+        let split = [parts[0].clone(), parts[1].clone(), t];
+        self.energy_split = Some(split.clone());
+        Ok(split)
+    }
+
+    /// `Ḣ_O` about the fixed point O: `[I_O]{ω̇} + Ω × H_O`, or with `about G`,
+    /// `Ḣ_G + r̄ × m ā`. Without a fixed point it is refused: O is then no fixed point.
+    fn hdot_o(&mut self, at: Span) -> Result<Vector, Diagnostic> {
+        if !self.scene.fixed_point {
+            return Err(self.fail(
+                at,
+                "Hdot_O is the rate of change of the angular momentum about a fixed point O, and this scene's origin O is not fixed",
+                "add 'fixed point' when the body turns about the origin O, or ask for Hdot_G (sum M_G = Hdot_G holds in any motion)",
+            ));
+        }
+        if let Some(h) = &self.hdot_o {
+            return Ok(h.clone());
+        }
+        if self.scene.about_fixed_point() {
+            return self.rate_of_angular_momentum(at, true);
+        }
+        let hdot_g = self.rate_of_angular_momentum(at, false)?;
+        let a = self.abar(at)?;
+        let body = self.mass_centre(at)?;
+        let d = rate_of_angular_momentum_about_point(&hdot_g, &body.centroid, &body.mass, &a)
+            .map_err(self.algebra(at))?;
+        let hdot = self.record_vector(d);
+        self.hdot_o = Some(hdot.clone());
+        Ok(hdot)
     }
 
     /// `Ḣ = [I]{ω̇} + Ω × H` about G (`[Ī]`) or about O (`[I_O]`).

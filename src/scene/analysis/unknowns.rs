@@ -8,6 +8,7 @@ use super::super::model::{Quantity, Request, Span};
 use super::{zero_vector, Analyser};
 use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
 use crate::algebra::{AlgebraError, Axis, Expr, Symbol, View};
+use crate::mechanics::angular_momentum::angular_momentum_before;
 use crate::mechanics::derivation::{Derivation, Relation, Step};
 use crate::mechanics::equations_of_motion::{equations_of_motion, Loads, MomentCentre};
 use crate::mechanics::impulse_momentum::{impulse_momentum, ImpulseMomentum};
@@ -30,10 +31,13 @@ impl Analyser<'_> {
             } else {
                 self.impulse_momentum(at)?
             };
+            let constraints = self.kinematics(at)?.with_impulses.clone();
             let equations: Vec<Expr> = derivation
                 .result()
                 .iter()
-                .map(|r| self.known(&r.residual()))
+                .map(|r| r.residual())
+                .chain(constraints)
+                .map(|e| self.known(&e))
                 .collect::<Result<Vec<_>, _>>()
                 .map_err(self.algebra(at))?
                 .into_iter()
@@ -156,24 +160,38 @@ impl Analyser<'_> {
         equations_of_motion(&body, &a, &rate, loads, about).map_err(self.algebra(at))
     }
 
-    /// `m v̄₂ = Σ F Δt` and `[I]{ω₂} = Σ r × F Δt` about G, for an impact from rest.
+    /// `m v̄₁ + Σ F Δt = m v̄₂` and `[I]{ω₁} + Σ r × F Δt = [I]{ω₂}` about G, for an impact
+    /// on a body that moves with `v̄₁` and `ω₁` before it (`before vbar`, `before omega`; at
+    /// rest when not given).
     fn impulse_momentum(&mut self, at: Span) -> Result<Derivation, Diagnostic> {
         let v = self.vbar(at)?;
         let h = self.h_g(at)?;
         let scene = self.scene;
+        let h_before = match &scene.omega_before {
+            Some(omega) => {
+                let inertia = self.body(at)?.inertia.clone();
+                let d = angular_momentum_before(&inertia, omega).map_err(self.algebra(at))?;
+                self.record_vector(d)
+            }
+            None => zero_vector(),
+        };
         let body = self.body(at)?;
         let impulses: Vec<AppliedForce> = scene
             .impulses
             .iter()
-            .map(|(value, point)| AppliedForce { value, point })
+            .map(|i| AppliedForce {
+                value: &i.value,
+                point: &i.point,
+            })
             .collect();
         let rest = zero_vector();
+        let before = scene.vbar_before.as_ref().unwrap_or(&rest);
         let derive = || -> Result<Derivation, AlgebraError> {
             impulse_momentum(&ImpulseMomentum {
                 mass: &body.mass,
-                velocity_before: &rest,
+                velocity_before: before,
                 velocity_after: &v,
-                angular_momentum_before: &rest,
+                angular_momentum_before: &h_before,
                 angular_momentum_after: &h,
                 linear_impulse: &resultant_force(&impulses)?,
                 angular_impulse: &resultant_moment(&impulses, &[], &body.centroid)?,

@@ -14,6 +14,7 @@ mod balance;
 mod before_grammar;
 mod body;
 mod given;
+mod named;
 mod reserved_names;
 mod syntax_error;
 
@@ -50,6 +51,23 @@ struct SceneGrammar;
 /// # Ok::<(), kinetics::Diagnostic>(())
 /// ```
 pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic> {
+    let scene = parse_scene_to_simulate(source_name, source)?;
+    if scene.requests.is_empty() {
+        return Err(Diagnostic::at(
+            source_name,
+            source,
+            source.len(),
+            source.len(),
+            "the scene asks for nothing",
+        )
+        .with_help("add a line such as 'find T, H_G' naming what to compute"));
+    }
+    Ok(scene)
+}
+
+/// [`parse_scene`] for `kinetics simulate`, which asks for nothing but the motion: a scene
+/// without a `find` line is accepted (its body, ω and loads are what a simulation needs).
+pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene, Diagnostic> {
     before_grammar::check_before_grammar(source_name, source)?;
     // Error detail records the furthest place the grammar reached and what it expected there.
     pest::set_error_detail(true);
@@ -83,10 +101,13 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
             omega_dot: None,
             frame_rate: None,
             vbar: None,
+            vbar_before: None,
+            omega_before: None,
             abar: None,
             forces: vec![],
             couples: vec![],
             impulses: vec![],
+            points: vec![],
             constraints: vec![],
             unknowns: vec![],
             requests: vec![],
@@ -106,16 +127,7 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
         reader.statement(statement)?;
     }
     reader.resolve_requests()?;
-    if reader.scene.requests.is_empty() {
-        return Err(Diagnostic::at(
-            source_name,
-            source,
-            source.len(),
-            source.len(),
-            "the scene asks for nothing",
-        )
-        .with_help("add a line such as 'find T, H_G' naming what to compute"));
-    }
+    reader.impact_has_impulses()?;
     Ok(reader.scene)
 }
 
@@ -174,6 +186,7 @@ impl Reader<'_> {
             }
             Rule::force => {
                 let name = inner[0].as_str().to_string();
+                self.unused_name(&name, span(&inner[0]))?;
                 let value = self.vector(&inner[1], Dimension::FORCE)?;
                 let point = self.point(&inner[2])?;
                 self.scene.forces.push(Force { name, value, point });
@@ -182,11 +195,9 @@ impl Reader<'_> {
                 let c = self.vector(&inner[0], Dimension::MOMENT)?;
                 self.scene.couples.push(c);
             }
-            Rule::impulse => {
-                let value = self.vector(&inner[0], Dimension::new(1, 1, -1))?;
-                let point = self.point(&inner[1])?;
-                self.scene.impulses.push((value, point));
-            }
+            Rule::impulse => self.impulse(&inner)?,
+            Rule::before => self.before(&inner[0], at)?,
+            Rule::named_point => self.named_point(&inner)?,
             Rule::constraint => {
                 let c = inner.remove(0);
                 let constraint = match c.as_rule() {
@@ -259,6 +270,9 @@ impl Reader<'_> {
             Rule::omega => self.scene.places.omega = Some(place),
             Rule::force => self.scene.places.forces.push(place),
             Rule::couple => self.scene.places.couples.push(place),
+            Rule::before if self.scene.places.before.is_none() => {
+                self.scene.places.before = Some(place)
+            }
             _ => {}
         }
         Ok(())
@@ -283,7 +297,9 @@ impl Reader<'_> {
             } else {
                 None
             };
-            let quantity = match (Quantity::named(&request.name), declared) {
+            let named =
+                Quantity::named(&request.name).or_else(|| self.named_request(&request.name));
+            let quantity = match (named, declared) {
                 (Some(q), None) => q,
                 (None, _) if is_unknown => Quantity::Unknown(symbol),
                 (Some(q), Some(kind)) => {
@@ -304,12 +320,15 @@ impl Reader<'_> {
                         )))
                 }
                 (None, _) => {
+                    if let Some(unnamed) = self.unnamed_point(&request.name, at) {
+                        return Err(unnamed);
+                    }
                     return Err(self
                         .error(at, format!("cannot find '{}'", request.name))
                         .with_help(format!(
-                            "ask for {}, a declared unknown, or balance in planes z = a, z = b at radius r",
+                            "ask for {}, v_A or a_A of a named point A, a declared unknown, or balance in planes z = a, z = b at radius r",
                             Quantity::NAMED.map(|(n, _)| n).join(", ")
-                        )))
+                        )));
                 }
             };
             self.scene.requests[k].quantity = quantity;

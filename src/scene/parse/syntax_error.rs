@@ -5,7 +5,7 @@
 use crate::parse::Diagnostic;
 
 /// Each statement with the form it is written in, for the hint of a syntax error.
-const STATEMENT_FORMS: [(&str, &str); 16] = [
+const STATEMENT_FORMS: [(&str, &str); 18] = [
     ("title", "title Sample Problem 18.4"),
     (
         "given",
@@ -21,7 +21,12 @@ const STATEMENT_FORMS: [(&str, &str); 16] = [
     ("abar", "abar = -g*j"),
     ("force", "force D = D_y*j + D_z*k at (L, 0, 0)"),
     ("couple", "couple M*i"),
-    ("impulse", "impulse -F*Dt*k at (-a/2, -b/2, 0)"),
+    (
+        "impulse",
+        "impulse -F*Dt*k at (-a/2, -b/2, 0)  or  impulse R = R_y*j at (a/2, 0, 0)",
+    ),
+    ("before", "before vbar = -v_0*j"),
+    ("point", "point A at (a/2, b/2, 0)"),
     (
         "constraint",
         "constraint velocity at (L, -r, 0) = 0  or  constraint vbar_y = 0",

@@ -14,7 +14,8 @@
 //!
 //! The value is the one `Expr::eval` computes (a whole power by squaring, `½` by a square
 //! root, any other through exp and ln), but for an integer, taken without a division. A
-//! symbol's value is exact (the second opinion draws values a double-double holds); a
+//! symbol's value is taken as exact (the check's second opinion draws values a double-double
+//! holds; a solution's numbers have the givens substituted exactly before); a
 //! number is exact when it is an integer below 2⁵³, within `u` when its numerator and
 //! denominator are (`rational_to` divides them), else within an `f64` rounding. A bound
 //! that overflows or is not a number says nothing: the caller's comparison with it fails.

@@ -1,0 +1,190 @@
+//! The engineer's page (`kinetics solve --numbers`): the givens, each result as a number
+//! with its unit, and the key intermediate values of the plan (mass, mass centre, moments
+//! and products of inertia, H, Ḣ, … whatever it derived), each as a number; no symbolic
+//! steps. A relation `name = rhs` of a step is an intermediate value when `rhs` evaluates
+//! with the givens ([`super::evaluation::value`]: exact where it folds, rounded once):
+//!
+//! ```text
+//! Step k: title            →  name = value unit      (one line per relation with a value)
+//! ```
+//!
+//! A value's unit is its right-hand side's SI unit; a zero's is that of a relation of the
+//! same stem in the plan (`I_xy = 0` beside `I_x = 0.3`: kg·m²), else ω's and α's own.
+
+use super::numbers::{format_value, unit};
+use super::render::{given_line, value_text, Result};
+use crate::algebra::Expr;
+use crate::mechanics::derivation::Step;
+use crate::print::{self, markup, Notation};
+use crate::scene::units::{Dimension, Dimensions};
+use crate::scene::{Analysis, Scene};
+
+/// The numbers of one step of the plan.
+pub(super) struct StepValues {
+    pub title: String,
+    pub values: Vec<Number>,
+}
+
+/// A derived quantity's value and unit.
+pub(super) struct Number {
+    pub name: String,
+    pub value: f64,
+    pub unit: Option<String>,
+}
+
+/// The steps that have intermediate values, in the plan's order; a step of equations (a
+/// left-hand side that is not a name) has none.
+pub(super) fn intermediate(
+    scene: &Scene,
+    analysis: &Analysis,
+    dims: &Dimensions,
+) -> Vec<StepValues> {
+    let named: Vec<(String, &Expr)> = analysis
+        .plan
+        .iter()
+        .flat_map(|s| &s.relations)
+        .filter(|r| r.lhs.as_symbol().is_some())
+        .map(|r| (print::render(&r.lhs, Notation::Text, r.axis), &r.rhs))
+        .collect();
+    let unit_of = |rhs: &Expr| {
+        Some(rhs)
+            .filter(|e| !e.is_zero())
+            .and_then(|e| unit(dims, e))
+    };
+    // A zero's unit: a relation of the same stem anywhere in the plan, else the chapter's.
+    let stem_unit = |name: &str| {
+        named
+            .iter()
+            .filter(|(other, _)| stem(other) == stem(name))
+            .find_map(|(_, e)| unit_of(e))
+            .or_else(|| match stem(name) {
+                "omega" => Some(Dimension::ANGULAR_VELOCITY.si_unit()),
+                "alpha" => Some(Dimension::ANGULAR_ACCELERATION.si_unit()),
+                _ => None,
+            })
+    };
+    let values = |step: &Step| -> Vec<Number> {
+        if step.relations.iter().any(|r| r.lhs.as_symbol().is_none()) {
+            return Vec::new();
+        }
+        step.relations
+            .iter()
+            .filter_map(|r| {
+                let name = print::render(&r.lhs, Notation::Text, r.axis);
+                let value = super::evaluation::value(scene, &r.rhs)?;
+                let unit = unit_of(&r.rhs).or_else(|| stem_unit(&name));
+                // The kinetic energy is work: joules, as in the results.
+                let unit = unit.map(|u| {
+                    if stem(&name) == "T" && u == "N·m" {
+                        "J".into()
+                    } else {
+                        u
+                    }
+                });
+                Some(Number { name, value, unit })
+            })
+            .collect()
+    };
+    analysis
+        .plan
+        .iter()
+        .map(|step| StepValues {
+            title: markup::text(&step.title),
+            values: values(step),
+        })
+        .filter(|s| !s.values.is_empty())
+        .collect()
+}
+
+/// A derived name without its subscript: `I` of `I_xy`, `Hdot` of `Hdot_z`.
+fn stem(name: &str) -> &str {
+    name.rsplit_once('_').map_or(name, |(stem, _)| stem)
+}
+
+/// `value unit`, or the value alone.
+fn number_text(n: &Number) -> String {
+    match n.unit.as_deref() {
+        Some(u) if !u.is_empty() => format!("{} {u}", format_value(n.value)),
+        _ => format_value(n.value),
+    }
+}
+
+/// The results that have values, as numbers with units: `  T_BC = 1857 N` a line.
+pub(super) fn answers_text(results: &[Result]) -> String {
+    results
+        .iter()
+        .filter_map(|r| Some(format!("  {} = {}\n", r.name, value_text(r)?)))
+        .collect()
+}
+
+/// The engineer's page as text: title, givens, results, intermediate values.
+pub(super) fn text(
+    scene: &Scene,
+    analysis: &Analysis,
+    results: &[Result],
+    dims: &Dimensions,
+) -> String {
+    let mut out = String::new();
+    if let Some(t) = &scene.title {
+        out.push_str(&format!("{}\n\n", markup::text(t)));
+    }
+    out.push_str("Given\n");
+    for g in &scene.givens {
+        out.push_str(&format!("  {}\n", given_line(g)));
+    }
+    out.push_str("\nResults\n");
+    out.push_str(&answers_text(results));
+    for r in results.iter().filter(|r| r.value.is_none()) {
+        out.push_str(&format!(
+            "  {} has no value: a given it needs is symbolic\n",
+            r.name
+        ));
+    }
+    let steps = intermediate(scene, analysis, dims);
+    if !steps.is_empty() {
+        out.push_str("\nIntermediate values\n");
+    }
+    for step in steps {
+        out.push_str(&format!("  {}\n", step.title));
+        for n in &step.values {
+            out.push_str(&format!("    {} = {}\n", n.name, number_text(n)));
+        }
+    }
+    out
+}
+
+/// The engineer's page as JSON: `{title, givens, results: [{name, value, unit}],
+/// intermediate: [{step, values: [{name, value, unit}]}]}` (`docs/solution.schema.json`).
+pub(super) fn json(
+    scene: &Scene,
+    analysis: &Analysis,
+    results: &[Result],
+    dims: &Dimensions,
+) -> serde_json::Value {
+    let number = |n: &Number| serde_json::json!({"name": n.name, "value": n.value, "unit": n.unit});
+    serde_json::json!({
+        "title": scene.title,
+        "givens": super::render::givens_json(scene),
+        "results": results.iter().map(|r| serde_json::json!({
+            "name": r.name,
+            "value": super::render::value_json(r),
+            "unit": r.unit,
+        })).collect::<Vec<_>>(),
+        "intermediate": intermediate(scene, analysis, dims).iter().map(|s| serde_json::json!({
+            "step": s.title,
+            "values": s.values.iter().map(number).collect::<Vec<_>>(),
+        })).collect::<Vec<_>>(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::stem;
+
+    #[test]
+    fn stems() {
+        assert_eq!(stem("I_xy"), "I");
+        assert_eq!(stem("Hdot_z"), "Hdot");
+        assert_eq!(stem("T"), "T");
+    }
+}

@@ -1,0 +1,127 @@
+//! Issue 18, items 4 and 5: the engineer's page (`solve --numbers`), the answers before the
+//! symbolic steps when every given has a value, and one spelling of a name everywhere.
+//!
+//! Sample Problem 18.3 by hand (L = 2.4 m, m = 20 kg, ω = 15 rad/s, β = 60°, g = 9.81):
+//! `ā = −½ L cos β ω² i = −135 m/s² i`; `I_xy = ⅙ m L² sin 2β = 16.63 kg·m²` about A;
+//! `Ḣ_z = I_xy ω² = 3741 N·m`; `T_BC = m g cot β / 2 + ⅓ m L cos β ω² = 1857 N`.
+
+use super::common::binary::{kinetics, kinetics_with_input, scene};
+use serde_json::Value;
+
+fn solve(args: &[&str]) -> String {
+    let (code, out, err) = kinetics(args);
+    assert_eq!(code, 0, "{err}");
+    out
+}
+
+fn by_hand() -> (f64, f64, f64, f64) {
+    let (l, m, w, beta, g) = (2.4f64, 20.0, 15.0, 60f64.to_radians(), 9.81);
+    let abar_x = -0.5 * l * beta.cos() * w * w;
+    let i_xy = m * l * l * (2.0 * beta).sin() / 6.0;
+    let t_bc = m * g / (2.0 * beta.tan()) + m * l * beta.cos() * w * w / 3.0;
+    (abar_x, i_xy, i_xy * w * w, t_bc)
+}
+
+#[test]
+fn the_engineers_page_in_text_has_numbers_not_steps() {
+    let (abar_x, i_xy, hdot_z, t_bc) = by_hand();
+    let rod = scene("sp18_3_rotating_rod");
+    let out = solve(&["solve", &rod, "--numbers"]);
+    assert!(!out.contains("Step "), "{out}");
+    assert!(!out.contains("cos(beta)"), "symbolic terms:\n{out}");
+    let results = &out[out.find("Results").unwrap()..out.find("Intermediate values").unwrap()];
+    assert!(
+        results.contains(&format!("abar = ({abar_x:.0}, 0, 0) m/s²")),
+        "{results}"
+    );
+    assert!(
+        results.contains(&format!("T_BC = {t_bc:.0} N")),
+        "{results}"
+    );
+    assert!(results.contains("A_z = 0 N"), "{results}");
+    assert!(out.contains(&format!("I_xy = {i_xy:.2} kg·m²")), "{out}");
+    assert!(out.contains(&format!("Hdot_z = {hdot_z:.0} N·m")), "{out}");
+}
+
+#[test]
+fn the_engineers_page_in_json() {
+    let (abar_x, i_xy, _, t_bc) = by_hand();
+    let rod = scene("sp18_3_rotating_rod");
+    let json: Value =
+        serde_json::from_str(&solve(&["solve", &rod, "--numbers", "--format", "json"])).unwrap();
+    assert!(json.get("steps").is_none());
+    let results = json["results"].as_array().unwrap();
+    let t = results.iter().find(|r| r["name"] == "T_BC").unwrap();
+    assert!((t["value"].as_f64().unwrap() / t_bc - 1.0).abs() < 1e-12);
+    assert_eq!(t["unit"], "N");
+    let abar = results.iter().find(|r| r["name"] == "abar").unwrap();
+    assert!((abar["value"][0].as_f64().unwrap() / abar_x - 1.0).abs() < 1e-12);
+    assert_eq!(abar["value"][1], 0.0);
+    let values: Vec<&Value> = json["intermediate"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|s| s["values"].as_array().unwrap())
+        .collect();
+    let product = values.iter().find(|v| v["name"] == "I_xy").unwrap();
+    assert!((product["value"].as_f64().unwrap() / i_xy - 1.0).abs() < 1e-12);
+    assert_eq!(product["unit"], "kg·m²");
+}
+
+#[test]
+fn numbers_go_with_text_or_json() {
+    let rod = scene("sp18_3_rotating_rod");
+    let (code, _, err) = kinetics(&["solve", &rod, "--numbers", "--format", "latex"]);
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("--numbers goes with --format text or --format json"),
+        "{err}"
+    );
+}
+
+#[test]
+fn with_every_value_given_the_answers_come_before_the_steps() {
+    let out = solve(&["solve", &scene("sp18_3_rotating_rod")]);
+    let answers = out.find("Answers\n").expect("an Answers block");
+    assert!(answers < out.find("Step 1").unwrap(), "{out}");
+    assert!(
+        out[answers..].starts_with("Answers\n  abar = (-135, 0, 0) m/s²\n"),
+        "{out}"
+    );
+    // A symbolic given: no answers block, the steps first.
+    let symbolic = solve(&["solve", &scene("long_relations")]);
+    assert!(!symbolic.contains("Answers"), "{symbolic}");
+}
+
+const TWO_SPELLINGS: &str = "given m = 2 kg
+given r = 0.1 m
+given w1 = 3 rad/s
+unknown M1 : N*m
+body sphere(r) mass m
+fixed point
+omega = w1*k
+couple M1*k
+find T, M1
+";
+
+/// `w1` and `w_1` are one symbol; the page spells it one way, `w_1` (ω₁ in LaTeX),
+/// in the givens, the steps and the results alike (README: names).
+#[test]
+fn a_name_has_one_spelling_on_the_page() {
+    let text = kinetics_with_input(&["solve", "-"], TWO_SPELLINGS).stdout;
+    assert!(text.contains("  w_1 = 3 rad/s\n"), "{text}");
+    assert!(text.contains("T = 1/5*m*r^2*w_1^2 = 0.036 J"), "{text}");
+    assert!(text.contains("  M_1 = 0 N·m\n"), "{text}");
+    assert!(!text.contains("w1") && !text.contains("M1"), "{text}");
+    let json: Value = serde_json::from_str(
+        &kinetics_with_input(&["solve", "-", "--format", "json"], TWO_SPELLINGS).stdout,
+    )
+    .unwrap();
+    assert_eq!(json["givens"][2]["name"], "w_1");
+    assert_eq!(json["results"][1]["name"], "M_1");
+    assert_eq!(json["results"][0]["text"], "1/5*m*r^2*w_1^2");
+    let latex = kinetics_with_input(&["solve", "-", "--format", "latex"], TWO_SPELLINGS).stdout;
+    assert!(latex.contains(r"\omega_1 = 3\,\mathrm{rad/s}"), "{latex}");
+    assert!(latex.contains(r"M_1 &= 0\,\mathrm{N\cdot m}"), "{latex}");
+    assert!(!latex.contains("w1") && !latex.contains("M1"), "{latex}");
+}

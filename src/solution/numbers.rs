@@ -63,7 +63,8 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
                 }
                 continue;
             };
-            if let Ok(d) = dimension_of(e, &dims) {
+            let dimension = request.quantity.dimension(&dims);
+            if let Some(d) = dimension.or_else(|| dimension_of(e, &dims).ok()) {
                 if d != unit.dimension {
                     return Err(fail(
                         format!(
@@ -86,10 +87,12 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
     Ok(())
 }
 
-/// The unit a result is shown in: the SI unit of its dimension, but joules (not newton
-/// metres) for the kinetic energy, which is work-like.
+/// The unit a result is shown in: the SI unit of its quantity's dimension (else of its
+/// expression's), but joules (not newton metres) for the kinetic energy, which is work-like.
 pub fn result_unit(request: &Request, dims: &Dimensions, e: &Expr) -> Option<String> {
-    unit(dims, e).map(|u| {
+    let dimension = request.quantity.dimension(dims);
+    let unit = dimension.map(Dimension::si_unit).or_else(|| unit(dims, e));
+    unit.map(|u| {
         if request.quantity == Quantity::KineticEnergy && u == "N·m" {
             "J".into()
         } else {

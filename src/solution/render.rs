@@ -16,7 +16,7 @@
 //!                "unit": string|null}] }
 //! ```
 
-use super::numbers::{format_value, result_unit, scene_dimensions, unit, value};
+use super::numbers::{format_value, result_unit, scene_dimensions, value};
 use super::parts_table;
 use super::unit_latex::quantity;
 use crate::algebra::{Axis, Expr, Vector};
@@ -95,15 +95,16 @@ fn computed<'a>(
                 text: print::vector(vec, Notation::Text),
                 latex: print::vector(vec, Notation::Latex),
                 value: vec.iter().map(|c| value(scene, c)).collect(),
-                unit: vector_unit(dims, vec),
+                unit: vector_unit(request, dims, vec),
                 form: v,
             },
         }
     }
 }
 
-fn vector_unit(dims: &Dimensions, v: &Vector) -> Option<String> {
-    v.iter().find(|c| !c.is_zero()).and_then(|c| unit(dims, c))
+fn vector_unit(request: &Request, dims: &Dimensions, v: &Vector) -> Option<String> {
+    let nonzero = v.iter().find(|c| !c.is_zero())?;
+    result_unit(request, dims, nonzero)
 }
 
 /// The two sides of a relation in the chosen notation, presented about its axis.

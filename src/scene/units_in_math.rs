@@ -15,7 +15,7 @@ pub fn marker(name: &str) -> Option<Expr> {
 }
 
 /// The unit a marker symbol stands for.
-fn unit_of(s: Symbol) -> Option<&'static str> {
+pub fn unit_of(s: Symbol) -> Option<&'static str> {
     s.name().strip_prefix('[')?.strip_suffix(']')
 }
 

@@ -434,10 +434,14 @@ fn every_new_error_is_located_with_its_reason() {
         "{err}"
     );
     // A unit of the wrong kind, and a declared name that is also a unit.
-    body_refused(
+    let err = body_refused(
         "body rod(1 m) mass M at (300 g, 0, 0)",
         26,
         "unit mismatch: expected a quantity in m, found kg",
+    );
+    assert!(
+        err.contains("'g' after a number is the unit g here"),
+        "{err}"
     );
     let err =
         refused("given m = 2 kg\nbody rod(2 m) mass m\nfixed point\nomega = 3 rad/s*i\nfind T\n");

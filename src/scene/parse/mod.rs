@@ -419,6 +419,7 @@ impl Reader<'_> {
                     unknown.name()
                 )));
         }
+        self.finite_with_values(&self.in_si(&e, span(p))?, span(p))?;
         Ok(e)
     }
 

@@ -1,9 +1,10 @@
 //! A unit written after a number: in a product, a name that directly follows a number
 //! (`300 mm`, `-2 kN*j`, `1200 rpm*k`) or such a unit (`2 m/s^2`: `s` follows `m`), as a
-//! factor or a divisor, alone or to a power, is what the caller's [`Units`](super::lower::Units) gives for it,
-//! when it gives something. Anywhere else, and for a name the caller does not read as a
-//! unit (one the scene declares), the name is a symbol. The parser knows no unit itself:
-//! the scene decides what a unit's value is and which names are units.
+//! factor or a divisor, alone or to a whole power, is what the caller's
+//! [`Units`](super::lower::Units) gives for it, when it gives something. Anywhere else, and
+//! for a name the caller does not read as a unit (one the scene declares), the name is a
+//! symbol. The parser knows no unit itself: the scene decides which names are units and what
+//! each stands for.
 
 use super::diagnostic::Diagnostic;
 use super::lower::{Ast, Lowering, Node, Operation};
@@ -20,8 +21,8 @@ pub(super) fn is_number(node: &Node) -> bool {
 
 impl Lowering<'_> {
     /// The value of the factor `node`, which follows a number or a unit in a product, when
-    /// it is a unit (`mm`, `s^2`: a whole number as its exponent); inverted when it is written after `/`. Otherwise the
-    /// node back, to be lowered as any factor.
+    /// it is a unit (`mm`, `s^2`: a number as its exponent), inverted when it is written
+    /// after `/`; otherwise the node back, to be lowered as any factor.
     pub(super) fn unit_after_number(
         &mut self,
         node: Node,

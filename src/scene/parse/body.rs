@@ -1,9 +1,8 @@
 //! The `body` statement: a standard shape (or an explicit inertia tensor) with its mass, the
 //! position of its mass centre and its orientation (`orientation.rs`), checked for physical
 //! admissibility: every length of the shape, the mass and the total mass of the bodies so
-//! far are positive (`q > 0`, decided by [`ensure_positive`]: symbolically
-//! where it can be, else from the givens' values), and an explicit tensor is one a real body
-//! can have.
+//! far are positive (`q > 0`, decided by [`ensure_positive`]: symbolically where it can be,
+//! else from the givens' values), and an explicit tensor is one a real body can have.
 
 use super::super::model::Part;
 use super::super::units::Dimension;

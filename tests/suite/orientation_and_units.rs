@@ -156,6 +156,12 @@ fn direction_cosines_are_the_columns() {
         r,
         [[0.6, -0.8, 0.0], [0.8, 0.6, 0.0], [0.0, 0.0, 1.0]],
     );
+    let r = rotation_of("body rod(1 m) mass M axes(0, 1, 0), (0, 0, 1), (1, 0, 0)");
+    same_matrix(
+        "no blank before the triples",
+        r,
+        rotation_of("body rod(1 m) mass M along y"),
+    );
     // Exactly symbolic: the columns of R_z(β) are accepted (sin² + cos² = 1) and are R_z(β).
     let by_cosines = scene("given M = 2 kg\ngiven beta : rad\nbody rod(1 m) mass M axes (cos(beta), sin(beta), 0), (-sin(beta), cos(beta), 0), (0, 0, 1)\nfixed point\nomega = 3 rad/s*i\nfind T");
     let by_rotation = scene("given M = 2 kg\ngiven beta : rad\nbody rod(1 m) mass M rotated beta about z\nfixed point\nomega = 3 rad/s*i\nfind T");
@@ -431,6 +437,16 @@ fn every_new_error_is_located_with_its_reason() {
     let err = refused("given M = 2 kg\ngiven a : rad\nbody rod(1 m) mass M axes (a, 0, 0), (0, 1, 0), (0, 0, 1)\nfixed point\nomega = 3 rad/s*i\nfind T\n");
     assert!(
         err.contains("x' is not a unit vector (its length squared is not shown to be 1)"),
+        "{err}"
+    );
+    // The sequence's comma is required; the hint shows each form.
+    let err = body_refused(
+        "body rod(1 m) mass M rotated 30 deg about z then 20 deg about x",
+        45,
+        "cannot read this 'body' statement (found 't', expected ',')",
+    );
+    assert!(
+        err.contains("then 20 deg about x  or  ... rotated 2 deg about (0, 1, 1)"),
         "{err}"
     );
     // A unit of the wrong kind, and a declared name that is also a unit.

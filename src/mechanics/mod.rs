@@ -23,6 +23,7 @@ pub mod parts_table;
 pub mod principal_axes;
 pub mod resultant;
 pub mod rotating_frame;
+pub mod rotation;
 pub mod shapes;
 pub mod two_plane_balance;
 pub mod validation;

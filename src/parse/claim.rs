@@ -98,6 +98,7 @@ pub fn parse_claim(
         source_name,
         source,
         names: Some(Names::new(resolve)),
+        units: None,
     };
     let lhs = side(&mut lowering, lhs)?;
     let rhs = side(&mut lowering, rhs)?;

@@ -23,7 +23,7 @@
 
 use super::diagnostic::Diagnostic;
 use super::limits::check_input;
-use super::lower::{is_function, Ast, Lowering, Node, Span};
+use super::lower::{is_function, Ast, Lowering, Node, Span, Units};
 use crate::algebra::{Expr, Func, Q};
 use pest::iterators::{Pair, Pairs};
 use pest::pratt_parser::{Assoc, Op, PrattParser};
@@ -67,11 +67,30 @@ fn pratt() -> &'static PrattParser<Rule> {
 
 /// Parses one expression.
 pub fn parse_expression(source_name: &str, source: &str) -> Result<Expr, Diagnostic> {
+    parse_expression_in(source_name, source, None)
+}
+
+/// Parses one expression in which a name written after a number (or after such a unit:
+/// `2 m/s^2`) is the value `units` gives it, when it gives one (a unit, see
+/// [`units_after_numbers`](super::units_after_numbers)); every other name is a symbol.
+pub fn parse_expression_with_units(
+    source_name: &str,
+    source: &str,
+    units: Units,
+) -> Result<Expr, Diagnostic> {
+    parse_expression_in(source_name, source, Some(units))
+}
+
+fn parse_expression_in(
+    source_name: &str,
+    source: &str,
+    units: Option<Units>,
+) -> Result<Expr, Diagnostic> {
     let mut pairs = parse_rule(Rule::expression_input, source_name, source)?;
     let input = pairs.next().map(Pair::into_inner);
     let expr = input.and_then(|mut p| p.next());
     match expr {
-        Some(e) => build(e, source_name, source),
+        Some(e) => build(e, source_name, source, units),
         None => Err(Diagnostic::at(source_name, source, 0, 0, "empty input")),
     }
 }
@@ -89,7 +108,7 @@ pub fn parse_statement(source_name: &str, source: &str) -> Result<Statement, Dia
         .unwrap_or_default();
     let mut exprs = sides
         .into_iter()
-        .map(|p| build(p, source_name, source))
+        .map(|p| build(p, source_name, source, None))
         .collect::<Result<Vec<_>, _>>()?;
     match exprs.len() {
         1 => Ok(Statement::Expression(exprs.remove(0))),
@@ -207,9 +226,16 @@ fn from_pest(e: pest::error::Error<Rule>, source_name: &str, source: &str) -> Di
     .with_help(help)
 }
 
-fn build(expr: Pair<Rule>, source_name: &str, source: &str) -> Result<Expr, Diagnostic> {
+fn build(
+    expr: Pair<Rule>,
+    source_name: &str,
+    source: &str,
+    units: Option<Units>,
+) -> Result<Expr, Diagnostic> {
     let node = to_ast(expr.into_inner(), source_name, source);
-    Lowering::expression(source_name, source).lower(node)
+    let mut lowering = Lowering::expression(source_name, source);
+    lowering.units = units;
+    lowering.lower(node)
 }
 
 fn span_of(p: &Pair<Rule>) -> Span {

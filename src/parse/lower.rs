@@ -13,6 +13,7 @@ use super::claim_vectors::{self, is_vector, VectorFactors};
 use super::cross_letter;
 use super::diagnostic::Diagnostic;
 use super::names::Names;
+use super::units_after_numbers::is_number;
 use crate::algebra::vector::has_unit_vectors;
 use crate::algebra::{AlgebraError, Expr, Func, Q};
 
@@ -80,7 +81,13 @@ pub(super) struct Lowering<'a> {
     pub(super) source: &'a str,
     /// The names of a claim, resolved as they are met; `None` for an expression.
     pub(super) names: Option<Names<'a>>,
+    /// What a name written after a number stands for when it is a unit there
+    /// ([`units_after_numbers`](super::units_after_numbers)); `None`: every name a symbol.
+    pub(super) units: Option<Units<'a>>,
 }
+
+/// The value of a name written after a number, when the caller reads it as a unit there.
+pub type Units<'a> = &'a dyn Fn(&str) -> Option<Expr>;
 
 /// What the user wrote that the algebra could not form: the help names it.
 #[derive(Clone, Copy)]
@@ -104,6 +111,7 @@ impl Lowering<'_> {
             source_name,
             source,
             names: None,
+            units: None,
         }
     }
 
@@ -274,9 +282,19 @@ impl Lowering<'_> {
         let mut out = Vec::with_capacity(factors.len());
         let mut bits = 0u64;
         let mut vectors = VectorFactors::default();
+        let mut after_number = false;
         for (divide, f) in factors {
             let (gathered, span) = (out.len(), f.span);
-            self.gather_factors(f, divide, divide, &mut out)?;
+            let number = is_number(&f);
+            let unit = match after_number {
+                true => self.unit_after_number(f, divide)?,
+                false => Err(f),
+            };
+            after_number = number || unit.is_ok();
+            match unit {
+                Ok(unit) => out.push((unit, span)),
+                Err(f) => self.gather_factors(f, divide, divide, &mut out)?,
+            }
             // Refused once the bound is crossed, before any number is folded.
             bits = bits.saturating_add(Q::product_bits(
                 out[gathered..].iter().map(|(e, _)| e.coefficient()),

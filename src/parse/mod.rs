@@ -10,8 +10,12 @@ pub mod limits;
 pub mod long_numbers;
 mod lower;
 mod names;
+mod units_after_numbers;
 
 pub use claim::parse_claim;
 pub use diagnostic::Diagnostic;
-pub use expression::{parse_equation, parse_expression, parse_statement, Equation, Statement};
-pub use lower::DEGREE;
+pub use expression::{
+    parse_equation, parse_expression, parse_expression_with_units, parse_statement, Equation,
+    Statement,
+};
+pub use lower::{Units, DEGREE};

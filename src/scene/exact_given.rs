@@ -1,10 +1,10 @@
 //! A given's value as an exact expression, for the algebra: the number as written is an
-//! exact decimal (`0.1` is 1/10), and each unit's factor to SI is exact too: the degree is
-//! π/180, the revolution per minute π/30, every other unit the decimal its factor reads as
-//! (`ft` 0.3048, `mm` 1/1000). So `given theta = 90 deg` is π/2, and `sin θ` there is 1.
+//! exact decimal (`0.1` is 1/10), and each unit's factor to SI is exact too (the table in
+//! `units.rs`): the degree is π/180, the revolution per minute π/30, `ft` 3048/10000, `mm`
+//! 1/1000. So `given theta = 90 deg` is π/2, and `sin θ` there is 1.
 
-use super::model::{exact_decimal, Scene};
-use super::units::unit_named;
+use super::model::Scene;
+use super::units::exact_factor;
 use crate::algebra::{Expr, Symbol, Q};
 
 impl Scene {
@@ -49,11 +49,11 @@ fn unit_factor(unit: &str) -> Option<(Q, i64)> {
             None => (rest[..end].trim(), 1),
         };
         let exponent = if divide { -exponent } else { exponent };
-        let (q, pi) = match name {
-            "deg" => (Q::new(1, 180)?, 1),
-            "rpm" => (Q::new(1, 30)?, 1),
-            _ => (exact_decimal(unit_named(name)?.to_si)?, 0),
-        };
+        let unit = exact_factor(name)?;
+        let (q, pi) = (
+            Q::new(unit.numerator, unit.denominator)?,
+            i64::from(unit.pi_power),
+        );
         factor = &factor * &q.checked_pow(exponent)?;
         pi_power += pi * exponent;
         divide = rest[end..].starts_with('/');

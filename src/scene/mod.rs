@@ -5,8 +5,10 @@ mod exact_given;
 pub mod kinematic_constraints;
 pub mod model;
 pub mod parse;
+mod quantity_dimension;
 pub mod simulation;
 pub mod units;
+mod units_in_math;
 
 pub use analysis::{analyse, Analysis, Value};
 pub use model::Scene;

@@ -123,30 +123,68 @@ pub struct Unit {
     pub to_si: f64,
 }
 
-/// The units a scene may name.
+/// A unit's factor to SI, exactly: `numerator/denominator · π^pi_power`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ExactFactor {
+    pub numerator: i64,
+    pub denominator: i64,
+    pub pi_power: i8,
+}
+
+/// Each unit a scene may name: its dimension and its exact factor to SI (the international
+/// foot 0.3048 m and pound-force 4.4482216152605 N by definition, the slug lbf·s²/ft; the
+/// degree π/180, the revolution per minute 2π/60 = π/30).
+const UNIT_TABLE: [(&str, Dimension, i64, i64, i8); 17] = [
+    ("kg", Dimension::MASS, 1, 1, 0),
+    ("g", Dimension::MASS, 1, 1_000, 0),
+    (
+        "slug",
+        Dimension::MASS,
+        44_482_216_152_605,
+        3_048_000_000_000,
+        0,
+    ),
+    ("m", Dimension::LENGTH, 1, 1, 0),
+    ("mm", Dimension::LENGTH, 1, 1_000, 0),
+    ("cm", Dimension::LENGTH, 1, 100, 0),
+    ("ft", Dimension::LENGTH, 3_048, 10_000, 0),
+    ("in", Dimension::LENGTH, 254, 10_000, 0),
+    ("s", Dimension::TIME, 1, 1, 0),
+    ("min", Dimension::TIME, 60, 1, 0),
+    ("N", Dimension::FORCE, 1, 1, 0),
+    ("kN", Dimension::FORCE, 1_000, 1, 0),
+    (
+        "lb",
+        Dimension::FORCE,
+        44_482_216_152_605,
+        10_000_000_000_000,
+        0,
+    ),
+    ("J", Dimension::MOMENT, 1, 1, 0),
+    ("rad", Dimension::NONE, 1, 1, 0),
+    ("deg", Dimension::NONE, 1, 180, 1),
+    ("rpm", Dimension::ANGULAR_VELOCITY, 1, 30, 1),
+];
+
+/// The exact factor to SI of the unit `name` (see [`UNIT_TABLE`]).
+pub fn exact_factor(name: &str) -> Option<ExactFactor> {
+    let (_, _, numerator, denominator, pi_power) = UNIT_TABLE.iter().find(|(n, ..)| *n == name)?;
+    Some(ExactFactor {
+        numerator: *numerator,
+        denominator: *denominator,
+        pi_power: *pi_power,
+    })
+}
+
+/// The units a scene may name, their factor the nearest double to the exact one.
 pub fn unit_named(name: &str) -> Option<Unit> {
-    use std::f64::consts::PI;
-    let (dimension, to_si) = match name {
-        "kg" => (Dimension::MASS, 1.0),
-        "g" => (Dimension::MASS, 1e-3),
-        "slug" => (Dimension::MASS, 14.593_902_937_206_364),
-        "m" => (Dimension::LENGTH, 1.0),
-        "mm" => (Dimension::LENGTH, 1e-3),
-        "cm" => (Dimension::LENGTH, 1e-2),
-        "ft" => (Dimension::LENGTH, 0.3048),
-        "in" => (Dimension::LENGTH, 0.0254),
-        "s" => (Dimension::TIME, 1.0),
-        "min" => (Dimension::TIME, 60.0),
-        "N" => (Dimension::FORCE, 1.0),
-        "kN" => (Dimension::FORCE, 1e3),
-        "lb" => (Dimension::FORCE, 4.448_221_615_260_5),
-        "J" => (Dimension::MOMENT, 1.0),
-        "rad" => (Dimension::NONE, 1.0),
-        "deg" => (Dimension::NONE, PI / 180.0),
-        "rpm" => (Dimension::ANGULAR_VELOCITY, 2.0 * PI / 60.0),
-        _ => return None,
-    };
-    Some(Unit { dimension, to_si })
+    let (_, dimension, numerator, denominator, pi_power) =
+        UNIT_TABLE.iter().find(|(n, ..)| *n == name)?;
+    let pi = std::f64::consts::PI.powi(i32::from(*pi_power));
+    Some(Unit {
+        dimension: *dimension,
+        to_si: *numerator as f64 * pi / *denominator as f64,
+    })
 }
 
 /// The names accepted by [`unit_named`], for hints.

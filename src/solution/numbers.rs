@@ -61,7 +61,8 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
                 }
                 continue;
             };
-            if let Ok(d) = dimension_of(e, &dims) {
+            let dimension = request.quantity.dimension(&dims);
+            if let Some(d) = dimension.or_else(|| dimension_of(e, &dims).ok()) {
                 if d != unit.dimension {
                     return Err(fail(
                         format!(
@@ -87,7 +88,7 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
 /// The unit a result is shown in: the SI unit of the quantity's dimension (so a zero keeps
 /// its unit), but joules (not newton metres) for the kinetic energies, which are work-like.
 pub fn result_unit(request: &Request, dims: &Dimensions) -> Option<String> {
-    let u = quantity_dimension(request.quantity, dims)?.si_unit();
+    let u = request.quantity.dimension(dims)?.si_unit();
     let energy = [
         Quantity::KineticEnergy,
         Quantity::TranslationalKineticEnergy,
@@ -97,31 +98,6 @@ pub fn result_unit(request: &Request, dims: &Dimensions) -> Option<String> {
         "J".into()
     } else {
         u
-    })
-}
-
-/// The dimension of a quantity a scene can ask for (an unknown's is declared).
-pub fn quantity_dimension(quantity: Quantity, dims: &Dimensions) -> Option<Dimension> {
-    let angular_momentum = Dimension::new(1, 2, -1);
-    Some(match quantity {
-        Quantity::AngularVelocity => Dimension::ANGULAR_VELOCITY,
-        Quantity::MassCentreVelocity => Dimension::VELOCITY,
-        Quantity::LinearMomentum => Dimension::new(1, 1, -1),
-        Quantity::MassCentreAcceleration => Dimension::ACCELERATION,
-        Quantity::EffectiveForce => Dimension::FORCE,
-        Quantity::AngularMomentumAboutG => angular_momentum,
-        Quantity::AngularMomentumAboutO => angular_momentum,
-        Quantity::KineticEnergy => Dimension::MOMENT,
-        Quantity::RateOfAngularMomentum => Dimension::MOMENT,
-        Quantity::RateOfAngularMomentumAboutO => Dimension::MOMENT,
-        Quantity::TranslationalKineticEnergy => Dimension::MOMENT,
-        Quantity::RotationalKineticEnergy => Dimension::MOMENT,
-        Quantity::PointVelocity(_) => Dimension::VELOCITY,
-        Quantity::PointAcceleration(_) => Dimension::ACCELERATION,
-        Quantity::NamedImpulse(_) => Dimension::new(1, 1, -1),
-        Quantity::Unknown(s) => return dims.get(&s).copied(),
-        // Masses and angles: each row has its own (`balance_rows.rs`).
-        Quantity::Balance => return None,
     })
 }
 

@@ -51,6 +51,7 @@ mod mathml;
 mod nalgebra_ops;
 mod numeric_powers;
 mod operation_count;
+mod orientation_and_units;
 mod polynomial_gcd;
 mod principal_axes;
 mod print_parse_properties;

@@ -1,14 +1,13 @@
 //! The `body` statement: a standard shape (or an explicit inertia tensor) with its mass, the
-//! position of its mass centre and its orientation (`along x|y|z`, `rotated ANGLE about x|y|z`),
-//! checked for physical admissibility: every length of the shape, the mass and the total mass
-//! of the bodies so far are positive (`q > 0`, decided by [`ensure_positive`]: symbolically
-//! where it can be, else from the givens' values), and an explicit tensor is one a real body
-//! can have.
+//! position of its mass centre and its orientation (`orientation.rs`), checked for physical
+//! admissibility: every length of the shape, the mass and the total mass of the bodies so
+//! far are positive (`q > 0`, decided by [`ensure_positive`]: symbolically where it can be,
+//! else from the givens' values), and an explicit tensor is one a real body can have.
 
 use super::super::model::Part;
 use super::super::units::Dimension;
 use super::{span, Reader, Rule};
-use crate::algebra::{Expr, Func, Matrix, Symbol, Vector};
+use crate::algebra::{Expr, Matrix, Symbol, Vector};
 use crate::mechanics::inertia::InertiaTensor;
 use crate::mechanics::shapes::Shape;
 use crate::mechanics::validation::{
@@ -37,9 +36,7 @@ impl Reader<'_> {
         };
         let mut lengths = Vec::new();
         for a in &args {
-            let e = self.math(a)?;
-            self.expect_dimension(&e, want, span(a))?;
-            lengths.push(e);
+            lengths.push(self.quantity(a, want)?);
         }
         let shape = if explicit {
             self.explicit_inertia(lengths, span(shape_pair))?
@@ -51,8 +48,7 @@ impl Reader<'_> {
             let quantity = format!("the {what} of {body}");
             self.positive(&quantity, what, a.as_str().trim(), "m", length, span(a))?;
         }
-        let mass = self.math(&inner[1])?;
-        self.expect_dimension(&mass, Dimension::MASS, span(&inner[1]))?;
+        let mass = self.quantity(&inner[1], Dimension::MASS)?;
         let written = inner[1].as_str().trim();
         self.positive(
             &format!("the mass of {body}"),
@@ -65,21 +61,11 @@ impl Reader<'_> {
         self.total_mass_positive(&mass, at)?;
         let mut position = Vector::from_element(Expr::zero());
         let mut rotation = Matrix::identity();
-        let mut i = 2;
-        while i < inner.len() {
-            match inner[i].as_rule() {
-                Rule::point => position = self.point(&inner[i])?,
-                Rule::axis => rotation = along(inner[i].as_str()),
-                Rule::math => {
-                    let angle = self.math(&inner[i])?;
-                    self.expect_dimension(&angle, Dimension::NONE, span(&inner[i]))?;
-                    let about = inner.get(i + 1).map(|p| p.as_str()).unwrap_or("z");
-                    rotation = rotation_about(about, &angle) * rotation;
-                    i += 1;
-                }
-                _ => {}
+        for p in &inner[2..] {
+            match p.as_rule() {
+                Rule::point => position = self.point(p)?,
+                _ => rotation = self.turned(p, rotation)?,
             }
-            i += 1;
         }
         self.scene.parts.push(Part {
             shape,
@@ -238,40 +224,5 @@ impl Reader<'_> {
                     .with_help("the shapes are rod(L), plate(a, b), disk(r), cylinder(r, h), sphere(r), prism(a, b, c), point(), inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz)"))
             }
         })
-    }
-}
-
-/// The rotation taking a shape's own x axis to the frame axis `axis` (a cyclic relabelling).
-fn along(axis: &str) -> Matrix {
-    let z = Expr::zero;
-    let o = Expr::one;
-    match axis {
-        "y" => Matrix::new(z(), z(), o(), o(), z(), z(), z(), o(), z()),
-        "z" => Matrix::new(z(), o(), z(), z(), z(), o(), o(), z(), z()),
-        _ => Matrix::identity(),
-    }
-}
-
-/// The rotation by `angle` about a frame axis.
-fn rotation_about(axis: &str, angle: &Expr) -> Matrix {
-    let (c, s) = (
-        Expr::func(Func::Cos, angle.clone()),
-        Expr::func(Func::Sin, angle.clone()),
-    );
-    let (z, o) = (Expr::zero(), Expr::one());
-    match axis {
-        "x" => Matrix::new(o, z.clone(), z.clone(), z.clone(), c.clone(), -&s, z, s, c),
-        "y" => Matrix::new(
-            c.clone(),
-            z.clone(),
-            s.clone(),
-            z.clone(),
-            o,
-            z.clone(),
-            -&s,
-            z,
-            c,
-        ),
-        _ => Matrix::new(c.clone(), -&s, z.clone(), s, c, z.clone(), z.clone(), z, o),
     }
 }

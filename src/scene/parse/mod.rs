@@ -3,9 +3,10 @@
 //! expression parser; its diagnostics are moved to their place in the file.
 
 use super::model::{Constraint, ConstraintKind, Force, Places, Quantity, Request, Scene, Span};
-use super::units::{dimension_of, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
+use super::units::{dimension_with, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
+use super::units_in_math::{marker, marker_dimension};
 use crate::algebra::{vector, Expr, Symbol, Vector};
-use crate::parse::{parse_expression, Diagnostic};
+use crate::parse::{parse_expression_with_units, Diagnostic};
 use pest::iterators::Pair;
 use pest::Parser;
 use syntax_error::{expected_words, syntax_error};
@@ -15,6 +16,8 @@ mod before_grammar;
 mod body;
 mod given;
 mod named;
+mod orientation;
+mod quantity;
 mod reserved_names;
 mod syntax_error;
 
@@ -213,7 +216,8 @@ impl Reader<'_> {
                         let lhs = self.math(&sides[0])?;
                         let rhs = self.math(&sides[1])?;
                         self.same_dimension(&lhs, &rhs, span(&sides[1]))?;
-                        ConstraintKind::Equation(lhs, rhs)
+                        let lhs = self.in_si(&lhs, span(&sides[0]))?;
+                        ConstraintKind::Equation(lhs, self.in_si(&rhs, span(&sides[1]))?)
                     }
                 };
                 self.scene.constraints.push(Constraint {
@@ -417,9 +421,15 @@ impl Reader<'_> {
         Ok(())
     }
 
+    /// The mathematics as written, a unit after a number as its marker
+    /// (`units_in_math.rs`): for [`Reader::quantity`] to check and bring to SI.
     fn math(&self, p: &Pair<Rule>) -> Result<Expr, Diagnostic> {
         let (start, _) = span(p);
-        let e = parse_expression(self.source_name, p.as_str()).map_err(|d| {
+        let unit = |name: &str| match self.dims.contains_key(&Symbol::new(name)) {
+            true => None,
+            false => marker(name),
+        };
+        let e = parse_expression_with_units(self.source_name, p.as_str(), &unit).map_err(|d| {
             let offset = start + d.span.offset();
             let mut moved = Diagnostic::at(
                 self.source_name,
@@ -431,7 +441,8 @@ impl Reader<'_> {
             moved.help = d.help.clone();
             moved
         })?;
-        if let Some(unknown) = e.symbols().into_iter().find(|s| !self.dims.contains_key(s)) {
+        let undeclared = |s: &Symbol| !self.dims.contains_key(s) && marker_dimension(*s).is_none();
+        if let Some(unknown) = e.symbols().into_iter().find(undeclared) {
             return Err(self
                 .error(span(p), format!("unknown symbol {}", unknown.name()))
                 .with_help(format!(
@@ -439,7 +450,7 @@ impl Reader<'_> {
                     unknown.name()
                 )));
         }
-        self.finite_with_values(&e, span(p))?;
+        self.finite_with_values(&self.in_si(&e, span(p))?, span(p))?;
         Ok(e)
     }
 
@@ -470,14 +481,16 @@ impl Reader<'_> {
     }
 
     fn dimension(&self, e: &Expr, at: (usize, usize)) -> Result<Dimension, Diagnostic> {
-        dimension_of(e, &self.dims).map_err(|err| {
+        let of_symbol = |s: Symbol| self.dims.get(&s).copied().or_else(|| marker_dimension(s));
+        dimension_with(e, &of_symbol).map_err(|err| {
             let help = match err {
                 DimensionError::Mismatch(..) => {
                     "every term of a sum must be in the same kind of unit"
                 }
                 _ => "check the units of the symbols",
             };
-            self.error(at, err.to_string()).with_help(help)
+            self.error(at, err.to_string())
+                .with_help(self.given_named_as_unit(e, help))
         })
     }
 
@@ -494,7 +507,10 @@ impl Reader<'_> {
                     at,
                     format!("unit mismatch: expected a quantity in {want}, found {d}"),
                 )
-                .with_help("check the units declared for the symbols of this expression"));
+                .with_help(self.given_named_as_unit(
+                    e,
+                    "check the units declared for the symbols of this expression",
+                )));
         }
         Ok(())
     }
@@ -507,7 +523,10 @@ impl Reader<'_> {
                     at,
                     format!("unit mismatch: the left side is in {da}, the right side in {db}"),
                 )
-                .with_help("both sides of an equation must be in the same kind of unit"));
+                .with_help(self.given_named_as_unit(
+                    &(a.clone() + b.clone()),
+                    "both sides of an equation must be in the same kind of unit",
+                )));
         }
         Ok(())
     }
@@ -522,15 +541,17 @@ impl Reader<'_> {
         for c in v.iter() {
             self.expect_dimension(c, want, span(p))?;
         }
-        Ok(v)
+        let mut si = Vec::with_capacity(3);
+        for c in v.iter() {
+            si.push(self.in_si(c, span(p))?);
+        }
+        Ok(Vector::from_iterator(si))
     }
 
     fn point(&self, p: &Pair<Rule>) -> Result<Vector, Diagnostic> {
         let mut coords = Vec::with_capacity(3);
         for c in p.clone().into_inner() {
-            let e = self.math(&c)?;
-            self.expect_dimension(&e, Dimension::LENGTH, span(&c))?;
-            coords.push(e);
+            coords.push(self.quantity(&c, Dimension::LENGTH)?);
         }
         Ok(Vector::from_iterator(coords))
     }

@@ -11,7 +11,11 @@ const STATEMENT_FORMS: [(&str, &str); 18] = [
         "given",
         "given m = 0.3 kg  or  given L : m  or  given x = 0.2 m real",
     ),
-    ("body", "body rod(c) mass m at (L/2, c/2, 0) along y"),
+    (
+        "body",
+        "body rod(c) mass m at (L/2, c/2, 0) along y rotated 30 deg about z, then 20 deg about x  \
+         or  ... rotated 2 deg about (0, 1, 1)  or  ... axes (0, 1, 0), (0, 0, 1), (1, 0, 0)",
+    ),
     ("fixed", "fixed point"),
     ("about", "about G"),
     ("omega", "omega = w1*i - w2*j"),

@@ -49,6 +49,7 @@ mod numeric_powers;
 mod operation_count;
 mod polynomial_gcd;
 mod principal_axes;
+mod principal_axes_acceptance;
 mod print_parse_properties;
 mod readable_products;
 mod reproducers;

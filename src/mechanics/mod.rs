@@ -20,6 +20,7 @@ pub mod linear_momentum;
 pub mod mass_centre;
 pub mod parts_table;
 pub mod principal_axes;
+pub mod principal_frame;
 pub mod resultant;
 pub mod rotating_frame;
 pub mod shapes;

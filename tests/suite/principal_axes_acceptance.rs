@@ -77,11 +77,12 @@ fn jacobi_eigenvalues(tensor: &Matrix3<f64>) -> [f64; 3] {
             };
             let c = dd(1.0) / (t * t + dd(1.0)).sqrt();
             let s = t * c;
-            for k in 0..3 {
-                let (akp, akq) = (a[k][p], a[k][q]);
-                a[k][p] = c * akp - s * akq;
-                a[k][q] = s * akp + c * akq;
+            for row in a.iter_mut() {
+                let (akp, akq) = (row[p], row[q]);
+                row[p] = c * akp - s * akq;
+                row[q] = s * akp + c * akq;
             }
+            #[allow(clippy::needless_range_loop)] // rows p and q, column by column
             for k in 0..3 {
                 let (apk, aqk) = (a[p][k], a[q][k]);
                 a[p][k] = c * apk - s * aqk;
@@ -124,9 +125,8 @@ fn measure(tensor: &Matrix3<f64>, worst: &mut Worst) {
     let axes = principal_axes(tensor).expect("an admissible tensor");
     let norm = frobenius(tensor);
     let reference = jacobi_eigenvalues(tensor);
-    for k in 0..3 {
-        let error = (axes.moments[k] - reference[k]).abs() / norm;
-        worst.moments = worst.moments.max(error);
+    for (found, exact) in axes.moments.iter().zip(reference) {
+        worst.moments = worst.moments.max((found - exact).abs() / norm);
     }
     let r = axes.rotation.matrix();
     worst.orthonormality = worst

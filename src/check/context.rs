@@ -214,6 +214,9 @@ impl Context {
                     }
                     Meaning::Derived(unit_vector_sum(&v))
                 }
+                Ok(Value::Tensor(_) | Value::Principal(_)) => Meaning::Underivable(
+                    "a tensor or a frame of axes is not a value a claim can hold".into(),
+                ),
                 Err(d) => Meaning::Underivable(d.message),
             };
             c.meanings.insert(name, meaning);

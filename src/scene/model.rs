@@ -107,13 +107,19 @@ pub enum Quantity {
     KineticEnergy,
     /// `Hdot_G`: the rate of change of the angular momentum about G.
     RateOfAngularMomentum,
+    /// `I_G`, `I_O`: the inertia tensor `[I]` about G, about O (the frame's axes).
+    InertiaAboutG,
+    InertiaAboutO,
+    /// `principal_G`, `principal_O`: principal moments (ascending) and axes about G, about O.
+    PrincipalAboutG,
+    PrincipalAboutO,
     /// A declared unknown, solved from the equations of the scene.
     Unknown(Symbol),
 }
 
 impl Quantity {
     /// The chapter's quantities by the names a scene writes them with.
-    pub const NAMED: [(&'static str, Quantity); 11] = [
+    pub const NAMED: [(&'static str, Quantity); 15] = [
         ("omega", Quantity::AngularVelocity),
         ("vbar", Quantity::MassCentreVelocity),
         ("mvbar", Quantity::LinearMomentum),
@@ -125,6 +131,10 @@ impl Quantity {
         ("H_O", Quantity::AngularMomentumAboutO),
         ("T", Quantity::KineticEnergy),
         ("Hdot_G", Quantity::RateOfAngularMomentum),
+        ("I_G", Quantity::InertiaAboutG),
+        ("I_O", Quantity::InertiaAboutO),
+        ("principal_G", Quantity::PrincipalAboutG),
+        ("principal_O", Quantity::PrincipalAboutO),
     ];
 
     /// What the quantity is, in words (`the kinetic energy`).
@@ -139,6 +149,10 @@ impl Quantity {
             Quantity::AngularMomentumAboutO => "the angular momentum about O",
             Quantity::KineticEnergy => "the kinetic energy",
             Quantity::RateOfAngularMomentum => "the rate of change of the angular momentum about G",
+            Quantity::InertiaAboutG => "the inertia tensor about G",
+            Quantity::InertiaAboutO => "the inertia tensor about O",
+            Quantity::PrincipalAboutG => "the principal moments and axes about G",
+            Quantity::PrincipalAboutO => "the principal moments and axes about O",
             Quantity::Unknown(_) => "an unknown",
         }
     }

@@ -8,6 +8,7 @@
 //! long right-hand side broken into continuation rows where the LaTeX breaks it
 //! (`print::broken`), scrolled sideways only where one term alone is wider than the page.
 
+use super::inertia_results;
 use super::mathml_value::{decimal, spaced_unit, value};
 use super::numbers::format_value;
 use super::render::{quantity_latex, relations_room, results_room, Result};
@@ -140,11 +141,15 @@ fn relation_rows(r: &Relation, first_em: f64, width_em: f64) -> String {
 /// A result: its quantity's name, its form (broken as a relation is) and, when every given
 /// has a value, `= value unit` after its last line.
 fn result_rows(r: &Result, first_em: f64, width_em: f64) -> String {
+    if let Some(table) = inertia_results::mathml(r, rows) {
+        return table;
+    }
     let mut name = String::new();
     print::mathml::latex_name(&mut name, &quantity_latex(r.quantity));
     let mut lines = match r.form {
         Value::Scalar(e) => print::broken(e, Axis::X, Notation::MathMl, first_em, width_em),
         Value::Vector(v) => print::broken_vector(v, Notation::MathMl, first_em, width_em),
+        Value::Tensor(_) | Value::Principal(_) => unreachable!("rows above"),
     };
     let mut rhs = lines.pop().unwrap_or_default();
     if let Some(values) = r.value.as_ref().filter(|_| !r.is_number()) {

@@ -4,6 +4,7 @@
 
 pub mod derivations;
 mod html;
+mod inertia_results;
 mod mathml_value;
 pub mod numbers;
 pub mod parts_table;

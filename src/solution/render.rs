@@ -13,9 +13,13 @@
 //!              "relations": [{"text", "latex"}]}],
 //!   "results": [{"name", "text", "latex",
 //!                "value": number | [x, y, z] | null,  when every given has a value
+//!                         | [[row], [row], [row]]             I_G, I_O: the tensor
+//!                         | {"moments": [3]|null, "axes": [[e_1], [e_2], [e_3]]|null,
+//!                            "remark": string|null}          principal_G, principal_O
 //!                "unit": string|null}] }
 //! ```
 
+use super::inertia_results;
 use super::numbers::{format_value, result_unit, scene_dimensions, unit, value};
 use super::parts_table;
 use super::unit_latex::quantity;
@@ -23,7 +27,7 @@ use crate::algebra::{Axis, Expr, Vector};
 use crate::mechanics::derivation::Relation;
 use crate::print::{self, markup, width::RELATION_EM, Notation};
 use crate::scene::model::{Quantity, Request};
-use crate::scene::units::Dimensions;
+use crate::scene::units::{Dimension, Dimensions};
 use crate::scene::{Analysis, Scene, Value};
 
 /// The output formats of a worked solution.
@@ -39,7 +43,7 @@ pub enum Format {
 
 /// A result with its forms and value.
 pub(super) struct Result<'a> {
-    name: &'a str,
+    pub(super) name: &'a str,
     pub(super) quantity: Quantity,
     text: String,
     latex: String,
@@ -66,7 +70,16 @@ fn results<'a>(scene: &Scene, analysis: &'a Analysis, dims: &Dimensions) -> Vec<
 /// A value asked for `in UNIT` is converted from SI and labelled with the unit as written.
 fn in_requested_unit<'a>(request: &Request, mut r: Result<'a>) -> Result<'a> {
     if let Some((written, unit)) = &request.unit {
-        r.value = r.value.map(|v| v.iter().map(|x| x / unit.to_si).collect());
+        // A principal frame's axes (after its three moments) have no unit.
+        let scaled = if matches!(r.form, Value::Principal(_)) {
+            3
+        } else {
+            usize::MAX
+        };
+        r.value = r.value.map(|v| {
+            let to = |(k, x): (usize, &f64)| if k < scaled { x / unit.to_si } else { *x };
+            v.iter().enumerate().map(to).collect()
+        });
         r.unit = Some(written.clone());
     }
     r
@@ -98,6 +111,16 @@ fn computed<'a>(
                 unit: vector_unit(dims, vec),
                 form: v,
             },
+            // Inertia is in kg·m², whether its form has symbols or is a number.
+            Value::Tensor(_) | Value::Principal(_) => Result {
+                name: &request.name,
+                quantity: request.quantity,
+                text: inertia_results::one_line(v, &request.name),
+                latex: inertia_results::one_line_latex(v),
+                value: inertia_results::values(v, |e| value(scene, e)),
+                unit: Some(Dimension::INERTIA.si_unit()),
+                form: v,
+            },
         }
     }
 }
@@ -126,6 +149,10 @@ pub(super) fn quantity_latex(quantity: Quantity) -> String {
         Quantity::AngularMomentumAboutO => r"\mathbf{H}_O".into(),
         Quantity::KineticEnergy => "T".into(),
         Quantity::RateOfAngularMomentum => r"\dot{\mathbf{H}}_G".into(),
+        Quantity::InertiaAboutG | Quantity::InertiaAboutO => {
+            inertia_results::tensor_name(quantity).into()
+        }
+        Quantity::PrincipalAboutG | Quantity::PrincipalAboutO => "I_1".into(),
         Quantity::Unknown(s) => print::latex(&Expr::sym(s)),
     }
 }
@@ -227,6 +254,10 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     }
     out.push_str("\nResults\n");
     for r in results {
+        if let Some(lines) = inertia_results::text(r) {
+            out.push_str(&lines);
+            continue;
+        }
         match value_text(r).filter(|_| !r.is_number()) {
             Some(v) => out.push_str(&format!("  {} = {} = {v}\n", r.name, r.text)),
             None => out.push_str(&format!("  {} = {}\n", r.name, r.text)),
@@ -292,6 +323,9 @@ fn latex_results(results: &[Result]) -> String {
     let rows: Vec<String> = results
         .iter()
         .map(|r| {
+            if let Some(rows) = inertia_results::latex(r) {
+                return rows.join(" \\\n");
+            }
             let value = r.value.as_ref().filter(|_| !r.is_number()).map(|_| {
                 let v = value_text(r).unwrap_or_default();
                 let unit = r.unit.as_deref().unwrap_or_default();
@@ -305,12 +339,14 @@ fn latex_results(results: &[Result]) -> String {
             let mut lines = match r.form {
                 Value::Scalar(e) => print::broken(e, Axis::X, Notation::Latex, first_em, width_em),
                 Value::Vector(v) => print::broken_vector(v, Notation::Latex, first_em, width_em),
+                Value::Tensor(_) | Value::Principal(_) => unreachable!("rows above"),
             };
             let name = quantity_latex(r.quantity);
             if let Some((tail, tail_em)) = value {
                 let unbroken_em = match r.form {
                     Value::Scalar(e) => print::width_em(e, Axis::X),
                     Value::Vector(v) => print::line_break::vector_width_em(v),
+                    Value::Tensor(_) | Value::Principal(_) => unreachable!("rows above"),
                 };
                 if lines.len() > 1 || first_em + unbroken_em + tail_em > width_em {
                     return format!("{} \\\\\n&{tail}", aligned_row(&name, &lines));
@@ -427,7 +463,7 @@ fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::V
             "name": r.name,
             "text": r.text,
             "latex": r.latex,
-            "value": r.value.as_ref().map(|v| if v.len() == 1 { serde_json::json!(v[0]) } else { serde_json::json!(v) }),
+            "value": inertia_results::json_value(r).or_else(|| r.value.as_ref().map(|v| if v.len() == 1 { serde_json::json!(v[0]) } else { serde_json::json!(v) })),
             "unit": r.unit,
         })).collect::<Vec<_>>(),
     })

@@ -22,14 +22,14 @@ fn eval(e: &Expr, values: &dyn Fn(Symbol) -> Option<f64>) -> f64 {
 fn scalar(a: &Analysis, name: &str, values: &dyn Fn(Symbol) -> Option<f64>) -> f64 {
     match result(a, name) {
         Value::Scalar(e) => eval(e, values),
-        Value::Vector(_) => panic!("{name} is a vector"),
+        _ => panic!("{name} is a vector"),
     }
 }
 
 fn vector(a: &Analysis, name: &str, values: &dyn Fn(Symbol) -> Option<f64>) -> V3 {
     match result(a, name) {
         Value::Vector(v) => [0, 1, 2].map(|k| eval(&v[k], values)),
-        Value::Scalar(_) => panic!("{name} is a scalar"),
+        _ => panic!("{name} is a scalar"),
     }
 }
 

@@ -43,14 +43,14 @@ fn eval(e: &Expr, point: &[(&str, f64)]) -> f64 {
 fn scalar(analysis: &Analysis, name: &str, point: &[(&str, f64)]) -> f64 {
     match result(analysis, name) {
         Value::Scalar(e) => eval(&e, point),
-        Value::Vector(_) => panic!("{name} is a vector"),
+        _ => panic!("{name} is a vector"),
     }
 }
 
 fn vector(analysis: &Analysis, name: &str, point: &[(&str, f64)]) -> V3 {
     match result(analysis, name) {
         Value::Vector(v) => [0, 1, 2].map(|k| eval(&v[k], point)),
-        Value::Scalar(_) => panic!("{name} is a scalar"),
+        _ => panic!("{name} is a scalar"),
     }
 }
 

@@ -14,14 +14,14 @@ fn load(name: &str) -> (Scene, Analysis) {
 fn scalar(analysis: &Analysis, name: &str) -> Expr {
     match result(analysis, name) {
         Value::Scalar(e) => e.clone(),
-        Value::Vector(_) => panic!("{name} is a vector"),
+        _ => panic!("{name} is a vector"),
     }
 }
 
 fn vector(analysis: &Analysis, name: &str) -> [Expr; 3] {
     match result(analysis, name) {
         Value::Vector(v) => [v[0].clone(), v[1].clone(), v[2].clone()],
-        Value::Scalar(_) => panic!("{name} is a scalar"),
+        _ => panic!("{name} is a scalar"),
     }
 }
 

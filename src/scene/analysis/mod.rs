@@ -17,13 +17,16 @@
 //! | `H_O` | inertia about O, kinematics, angular momentum | body about G, kinematics, `H_G`, motion of G, `H_O` |
 //! | `T` | inertia about O, kinematics, kinetic energy | body about G, kinematics, motion of G, kinetic energy |
 //! | `Hdot_G` | body about G, kinematics, rate of change of angular momentum | the same |
+//! | `I_G`, `principal_G` | body about G (then the principal frame) | the same |
+//! | `I_O`, `principal_O` | inertia about O (then the principal frame) | the same |
 //! | an unknown | the equations of motion with `Ḣ_O` (or impulse and momentum); then the solution | the same with `Ḣ_G` |
 
+mod principal;
 mod unknowns;
 
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
 use super::model::{ConstraintKind, Quantity, Request, Scene, Span};
-use crate::algebra::{AlgebraError, Domains, Expr, Symbol, Vector};
+use crate::algebra::{AlgebraError, Domains, Expr, Matrix, Symbol, Vector};
 use crate::mechanics::angular_momentum::{angular_momentum, angular_momentum_about_point};
 use crate::mechanics::composite_body::{composite_body, MassProperties};
 use crate::mechanics::derivation::{presented, Derivation, Relation, Step};
@@ -34,6 +37,7 @@ use crate::mechanics::kinematics::{acceleration_of_mass_centre, velocity_of_mass
 use crate::mechanics::kinetic_energy::kinetic_energy;
 use crate::mechanics::linear_momentum::{effective_force, linear_momentum};
 use crate::mechanics::mass_centre::{mass_centre, MassCentre};
+use crate::mechanics::principal_frame::PrincipalFrame;
 use crate::mechanics::rotating_frame::rate_of_angular_momentum;
 use crate::parse::Diagnostic;
 use std::collections::HashMap;
@@ -43,6 +47,10 @@ use std::collections::HashMap;
 pub enum Value {
     Scalar(Expr),
     Vector(Vector),
+    /// An inertia tensor `[I]`, the chapter's signs (off-diagonal `−I_xy`, ...).
+    Tensor(Matrix),
+    /// Principal moments, ascending, and axes (a right-handed frame).
+    Principal(PrincipalFrame),
 }
 
 /// The outcome: the plan (steps in the order done) and each request's result.
@@ -122,6 +130,8 @@ impl Value {
         match self {
             Value::Scalar(e) => Value::Scalar(presented(&e, domains)),
             Value::Vector(v) => Value::Vector(v.map(|c| presented(&c, domains))),
+            Value::Tensor(m) => Value::Tensor(m.map(|c| presented(&c, domains))),
+            Value::Principal(p) => Value::Principal(principal::presented(p, domains)),
         }
     }
 }
@@ -203,6 +213,10 @@ impl<'a> Analyser<'a> {
             Quantity::RateOfAngularMomentum => {
                 Value::Vector(self.rate_of_angular_momentum(at, false)?)
             }
+            Quantity::InertiaAboutG => Value::Tensor(self.body(at)?.inertia.matrix()),
+            Quantity::InertiaAboutO => Value::Tensor(self.inertia_about_o(at)?.matrix()),
+            Quantity::PrincipalAboutG => self.principal(r, false)?,
+            Quantity::PrincipalAboutO => self.principal(r, true)?,
             Quantity::Unknown(s) => Value::Scalar(self.unknown(at, s)?),
         })
     }
@@ -212,6 +226,8 @@ impl<'a> Analyser<'a> {
         let mut exprs: Vec<Expr> = match &value {
             Value::Scalar(e) => vec![e.clone()],
             Value::Vector(v) => v.iter().cloned().collect(),
+            // Inertia is the givens' alone: the body's masses and lengths.
+            Value::Tensor(_) | Value::Principal(_) => return Ok(value),
         };
         let pending: Vec<Symbol> = self
             .scene
@@ -236,7 +252,7 @@ impl<'a> Analyser<'a> {
         }
         Ok(match value {
             Value::Scalar(_) => Value::Scalar(exprs.remove(0)),
-            Value::Vector(_) => Value::Vector(Vector::from_iterator(exprs)),
+            _ => Value::Vector(Vector::from_iterator(exprs)),
         })
     }
 

@@ -89,16 +89,19 @@ pub fn principal_frame(
     domains: &Domains,
     values: &dyn Fn(Symbol) -> Option<f64>,
 ) -> Result<(PrincipalFrame, Derivation), PrincipalError> {
-    let characteristic = characteristic_step(tensor, point, values)?;
     let coupled: Vec<usize> = (0..3).filter(|&k| !tensor.products[k].is_zero()).collect();
     let (frame, how) = match coupled.as_slice() {
         [] => {
             let pairs = [0, 1, 2].map(|k| (tensor.moments[k].clone(), unit(k)));
             exact_frame(pairs, domains, values)?
         }
-        [product] => exact_frame(one_product_pairs(tensor, *product)?, domains, values)?,
+        [product] => {
+            let pairs = one_product_pairs(tensor, *product)?;
+            exact_frame(short_axes_or_numbers(pairs, values)?, domains, values)?
+        }
         _ => (numeric_frame(tensor, values)?, Decided::Numerically),
     };
+    let characteristic = characteristic_step(tensor, &coupled, point, values)?;
     let steps = vec![characteristic, frame_step(&frame, how, point)];
     Ok((
         frame,
@@ -122,31 +125,28 @@ fn unit(k: usize) -> Vector {
     Vector::from_fn(|r, _| Expr::from(i64::from(r == k)))
 }
 
-/// The step `det(λ1 − [I]) = 0`: factored when the tensor is diagonal, multiplied out (with
-/// the givens' values when every entry has one) otherwise.
+/// The step `det(λ1 − [I]) = 0`: factored when at most one product couples two axes
+/// (`(λ − I_c)((λ − I_a)(λ − I_b) − I_ab²)`), else multiplied out with the givens' values.
 fn characteristic_step(
     tensor: &InertiaTensor,
+    coupled: &[usize],
     point: &str,
     values: &dyn Fn(Symbol) -> Option<f64>,
 ) -> Result<Step, PrincipalError> {
     let lambda = Expr::symbol("lambda");
-    let matrix = Matrix::from_diagonal_element(lambda) - tensor.matrix();
-    let valued = matrix.iter().all(|e| missing_values(e, values).is_empty());
-    let matrix = if valued && !tensor.is_principal() {
-        exact_with_values(&matrix, values)?
-    } else {
-        matrix
-    };
-    let det = determinant(&matrix);
-    let det = if tensor.is_principal() {
-        det
-    } else {
-        det.expand().unwrap_or(det)
-    };
-    let with = if valued && !tensor.is_principal() {
-        " with the givens' values (SI)"
-    } else {
-        ""
+    let root = |k: usize| &lambda - &tensor.moments[k];
+    let (det, with) = match coupled {
+        [] => (root(0) * root(1) * root(2), ""),
+        [product] => {
+            let (a, b, c) = AXES_OF_PRODUCT[*product];
+            let pair = root(a) * root(b) - tensor.products[*product].powi(2);
+            (root(c) * pair, "")
+        }
+        _ => {
+            let matrix = Matrix::from_diagonal_element(lambda.clone()) - tensor.matrix();
+            let det = determinant(&exact_with_values(&matrix, values)?).expand()?;
+            (det, " with the givens' values (SI)")
+        }
     };
     Ok(Step::new(
         format!(
@@ -155,6 +155,9 @@ fn characteristic_step(
         vec![Relation::new(det, Expr::zero(), Axis::X)],
     ))
 }
+
+/// The axes a product couples and the third one, for `[I_xy, I_yz, I_xz]`.
+const AXES_OF_PRODUCT: [(usize, usize, usize); 3] = [(0, 1, 2), (1, 2, 0), (0, 2, 1)];
 
 /// `det M` by cofactors along the first row.
 fn determinant(m: &Matrix) -> Expr {
@@ -197,7 +200,7 @@ fn one_product_pairs(
     tensor: &InertiaTensor,
     product: usize,
 ) -> Result<[(Expr, Vector); 3], AlgebraError> {
-    let (a, b, c) = [(0, 1, 2), (1, 2, 0), (0, 2, 1)][product];
+    let (a, b, c) = AXES_OF_PRODUCT[product];
     let (ia, ib, iab) = (
         &tensor.moments[a],
         &tensor.moments[b],
@@ -225,6 +228,37 @@ fn one_product_pairs(
         (low.clone(), axis(&low)?),
         (high.clone(), axis(&high)?),
     ])
+}
+
+/// Nodes beyond which an exact axis is no help to a reader (the normalising root of a
+/// composite body's moments runs to hundreds of terms); it is given by its numbers instead.
+const MAX_AXIS_NODES: usize = 60;
+
+/// The pairs with each axis exact when short, else its numbers with the givens' values (the
+/// moments stay exact).
+fn short_axes_or_numbers(
+    pairs: [(Expr, Vector); 3],
+    values: &dyn Fn(Symbol) -> Option<f64>,
+) -> Result<[(Expr, Vector); 3], PrincipalError> {
+    let long = |e: &Vector| e.iter().any(|c| c.node_count() > MAX_AXIS_NODES);
+    if !pairs.iter().any(|(_, e)| long(e)) {
+        return Ok(pairs);
+    }
+    let missing: Vec<Symbol> = (pairs.iter())
+        .flat_map(|(_, e)| e.iter().flat_map(|c| missing_values(c, values)))
+        .collect();
+    if !missing.is_empty() {
+        return Err(PrincipalError::NeedsValues(sorted(missing)));
+    }
+    let number = |c: &Expr| -> Result<Expr, PrincipalError> {
+        Ok(exact(c.eval(values)?).unwrap_or_else(Expr::zero))
+    };
+    let mut numeric = pairs.clone();
+    for (k, (_, e)) in pairs.iter().enumerate() {
+        let components = e.iter().map(number).collect::<Result<Vec<_>, _>>()?;
+        numeric[k].1 = Vector::from_iterator(components);
+    }
+    Ok(numeric)
 }
 
 /// Exact moments and axes, ascending: the order proved from the domains, else read from the
@@ -255,7 +289,7 @@ fn exact_frame(
         *same = compare(&pairs[k].0, &pairs[k + 1].0, domains, values)?.0 == Ordering::Equal;
     }
     let [(m1, e1), (m2, e2), (m3, e3)] = pairs;
-    let e3 = proper_third(&e1, &e2, e3)?;
+    let e3 = proper_third([&e1, &e2, &e3], domains, values)?;
     Ok((
         PrincipalFrame {
             moments: [m1, m2, m3],
@@ -266,14 +300,28 @@ fn exact_frame(
     ))
 }
 
-/// `e_3` or `−e_3`, whichever makes `e_1 × e_2 = e_3` (the axes are orthonormal).
-fn proper_third(e1: &Vector, e2: &Vector, e3: Vector) -> Result<Vector, AlgebraError> {
-    let triple = dot(&cross(e1, e2), &e3).expand()?;
-    Ok(if triple.as_num().is_some_and(|q| q.is_negative()) {
-        e3.map(|c| -c)
-    } else {
-        e3
-    })
+/// `e_3` or `−e_3`, whichever makes `e_1 × e_2 = e_3` (the axes are orthonormal, so the
+/// triple product `e_1 × e_2 · e_3` is ±1): its sign a number, proved from the domains, or
+/// read from the givens' values.
+fn proper_third(
+    [e1, e2, e3]: [&Vector; 3],
+    domains: &Domains,
+    values: &dyn Fn(Symbol) -> Option<f64>,
+) -> Result<Vector, PrincipalError> {
+    let triple = dot(&cross(e1, e2), e3).expand()?;
+    let negative = match triple.as_num() {
+        Some(q) => q.is_negative(),
+        None if domains.is_positive(&triple) => false,
+        None if domains.is_positive(&-&triple) => true,
+        None => {
+            let missing = missing_values(&triple, values);
+            if !missing.is_empty() {
+                return Err(PrincipalError::NeedsValues(sorted(missing)));
+            }
+            triple.eval(values)? < 0.0
+        }
+    };
+    Ok(if negative { e3.map(|c| -c) } else { e3.clone() })
 }
 
 /// The order of two moments: proved from the domains (their difference's sign), else from
@@ -286,6 +334,8 @@ fn compare(
     values: &dyn Fn(Symbol) -> Option<f64>,
 ) -> Result<(Ordering, Decided), PrincipalError> {
     let difference = (b - a).expand()?;
+    // Roots of squares of positive things come out (√(m²L⁴) = m L²): a zero is seen as one.
+    let difference = difference.simplify(domains).unwrap_or(difference);
     if difference.is_zero() {
         return Ok((Ordering::Equal, Decided::Proved));
     }
@@ -361,8 +411,8 @@ fn equal_remark(equal: [bool; 2]) -> Option<String> {
     )
 }
 
-/// The step that gives the moments and axes: relations `I_k = …`, `e_k = …` when exact; the
-/// numbers (four significant figures, SI) in the title when found numerically.
+/// The step that gives the moments and axes: a relation `I_k = …`, `e_k = …` for each exact
+/// one; the numbers of those found numerically (four significant figures, SI) in the title.
 fn frame_step(frame: &PrincipalFrame, how: Decided, point: &str) -> Step {
     let order = match how {
         Decided::Proved => "ascending",
@@ -372,40 +422,45 @@ fn frame_step(frame: &PrincipalFrame, how: Decided, point: &str) -> Step {
     let mut title = format!(
         r"principal moments about ${point}$, {order}, and principal axes, the unit solutions of $([I] - I_k 1)\{{e_k\}} = 0$ with $e_1 \times e_2 = e_3$ (a right-handed frame)"
     );
-    let relations = if how == Decided::Numerically {
-        let found: Vec<String> = (frame.moments.iter().zip(&frame.axes).enumerate())
-            .map(|(k, (m, e))| {
-                let axis: Vec<String> = e.iter().map(four_figures).collect();
-                let n = k + 1;
-                format!(
-                    "$I_{n} = {}$, $e_{n} = ({})$",
-                    four_figures(m),
-                    axis.join(", ")
-                )
-            })
-            .collect();
+    let mut relations = Vec::new();
+    let mut numbers = Vec::new();
+    let moments = frame
+        .moments
+        .iter()
+        .map(|m| (m.clone(), "I", is_numeric(std::slice::from_ref(m))));
+    let axes = frame
+        .axes
+        .iter()
+        .map(|e| (vector_sum(e), "e", is_numeric(e.as_slice())));
+    for (k, (value, name, numeric)) in moments.enumerate().chain(axes.enumerate()) {
+        let name = format!("{name}_{}", k + 1);
+        if !numeric {
+            relations.push(Relation::new(Expr::symbol(&name), value, Axis::X));
+        } else if name.starts_with('I') {
+            numbers.push(format!("${name} = {}$", four_figures(&value)));
+        } else {
+            let axis: Vec<String> = frame.axes[k].iter().map(four_figures).collect();
+            numbers.push(format!("${name} = ({})$", axis.join(", ")));
+        }
+    }
+    if !numbers.is_empty() {
         title.push_str(": ");
-        title.push_str(&found.join("; "));
-        Vec::new()
-    } else {
-        let moments =
-            frame.moments.iter().enumerate().map(|(k, m)| {
-                Relation::new(Expr::symbol(&format!("I_{}", k + 1)), m.clone(), Axis::X)
-            });
-        let axes = frame.axes.iter().enumerate().map(|(k, e)| {
-            Relation::new(
-                Expr::symbol(&format!("e_{}", k + 1)),
-                vector_sum(e),
-                Axis::X,
-            )
-        });
-        moments.chain(axes).collect()
-    };
+        title.push_str(&numbers.join(", "));
+    }
     if let Some(remark) = &frame.remark {
         title.push_str("; ");
         title.push_str(remark);
     }
     Step::new(title, relations)
+}
+
+/// Whether these are numbers found numerically (the exact decimals of doubles, not an axis
+/// such as `i` or `-k`): read by their four figures, not as fractions.
+fn is_numeric(components: &[Expr]) -> bool {
+    components.iter().all(|c| c.as_num().is_some())
+        && components
+            .iter()
+            .any(|c| c.as_num().is_some_and(|q| !q.is_integer()))
 }
 
 /// `a i + b j + c k`.

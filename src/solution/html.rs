@@ -57,6 +57,9 @@ pub(super) fn step_body(step: &Step) -> String {
     if let Some(table) = &step.table {
         out.push_str(&parts(table));
     }
+    if step.relations.is_empty() {
+        return out;
+    }
     let (first_em, width_em) = relations_room(&step.relations);
     let rows = step
         .relations

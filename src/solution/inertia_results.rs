@@ -290,7 +290,12 @@ pub(super) fn latex(r: &Result) -> Option<Vec<String>> {
     Some(
         rows.iter()
             .map(|row| {
-                let (name, form) = (&row.name, form_latex(&row.form));
+                // Braced: a `[` after the row break `\\` would be read as its argument.
+                let name = match row.name.starts_with('[') {
+                    true => format!("{{{}}}", row.name),
+                    false => row.name.clone(),
+                };
+                let form = form_latex(&row.form);
                 let n = row_numbers_latex(row).unwrap_or_default();
                 match (&row.form, show(row)) {
                     (Form::Words(_), _) => format!("& {form}"),

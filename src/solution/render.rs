@@ -268,6 +268,10 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
 
 /// Relations as one `align*` block, each right-hand side broken into lines that fit the page.
 pub fn latex_relations(relations: &[Relation]) -> String {
+    // A step whose numbers are in its title (a numeric solution) has no block.
+    if relations.is_empty() {
+        return String::new();
+    }
     let lhs: Vec<String> = relations
         .iter()
         .map(|r| print::render(&r.lhs, Notation::Latex, r.axis))
@@ -324,7 +328,7 @@ fn latex_results(results: &[Result]) -> String {
         .iter()
         .map(|r| {
             if let Some(rows) = inertia_results::latex(r) {
-                return rows.join(" \\\n");
+                return rows.join(" \\\\\n");
             }
             let value = r.value.as_ref().filter(|_| !r.is_number()).map(|_| {
                 let v = value_text(r).unwrap_or_default();
@@ -426,7 +430,9 @@ fn markdown(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
         if let Some(table) = &step.table {
             out.push_str(&parts_table::markdown(table));
         }
-        out.push_str(&format!("$$\n{}$$\n\n", latex_relations(&step.relations)));
+        if !step.relations.is_empty() {
+            out.push_str(&format!("$$\n{}$$\n\n", latex_relations(&step.relations)));
+        }
     }
     out.push_str(&format!("## Results\n\n$$\n{}$$\n", latex_results(results)));
     out

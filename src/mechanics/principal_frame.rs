@@ -125,8 +125,9 @@ fn unit(k: usize) -> Vector {
     Vector::from_fn(|r, _| Expr::from(i64::from(r == k)))
 }
 
-/// The step `det(λ1 − [I]) = 0`: factored when at most one product couples two axes
-/// (`(λ − I_c)((λ − I_a)(λ − I_b) − I_ab²)`), else multiplied out with the givens' values.
+/// The step `det(λ1 − [I]) = 0`: factored, in the names `I_x`, `I_xy`, … of the step that
+/// gives the tensor, when at most one product couples two axes
+/// (`(λ − I_c)((λ − I_a)(λ − I_b) − I_ab²)`); else multiplied out with the givens' values.
 fn characteristic_step(
     tensor: &InertiaTensor,
     coupled: &[usize],
@@ -134,12 +135,14 @@ fn characteristic_step(
     values: &dyn Fn(Symbol) -> Option<f64>,
 ) -> Result<Step, PrincipalError> {
     let lambda = Expr::symbol("lambda");
-    let root = |k: usize| &lambda - &tensor.moments[k];
+    // In the names of the step before (`I_x`, `I_xy`): short, and the reader has their values.
+    let named = InertiaTensor::general();
+    let root = |k: usize| &lambda - &named.moments[k];
     let (det, with) = match coupled {
         [] => (root(0) * root(1) * root(2), ""),
         [product] => {
             let (a, b, c) = AXES_OF_PRODUCT[*product];
-            let pair = root(a) * root(b) - tensor.products[*product].powi(2);
+            let pair = root(a) * root(b) - named.products[*product].powi(2);
             (root(c) * pair, "")
         }
         _ => {

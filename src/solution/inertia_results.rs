@@ -324,7 +324,12 @@ fn mathml_matrix(cells: Vec<String>) -> String {
     let rows: String = (0..3)
         .map(|r| {
             let entries: String = (0..3)
-                .map(|c| format!("<mtd>{}</mtd>", cells[r + 3 * c]))
+                .map(|c| {
+                    format!(
+                        "<mtd style=\"padding: 0.1em 0.4em\">{}</mtd>",
+                        cells[r + 3 * c]
+                    )
+                })
                 .collect();
             format!("<mtr>{entries}</mtr>")
         })

@@ -292,7 +292,13 @@ fn exact_frame(
         *same = compare(&pairs[k].0, &pairs[k + 1].0, domains, values)?.0 == Ordering::Equal;
     }
     let [(m1, e1), (m2, e2), (m3, e3)] = pairs;
-    let e3 = proper_third([&e1, &e2, &e3], domains, values)?;
+    // A coordinate axis keeps its form, its sense decided; any other third axis is e₁ × e₂,
+    // right-handed by construction (`½ i − ½√3 j`, not a multiple of it with radicals).
+    let e3 = if e3.iter().all(|c| c.as_num().is_some()) {
+        proper_third([&e1, &e2, &e3], domains, values)?
+    } else {
+        vector::expand_each(&cross(&e1, &e2))?
+    };
     Ok((
         PrincipalFrame {
             moments: [m1, m2, m3],

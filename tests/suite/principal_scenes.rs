@@ -363,4 +363,11 @@ fn one_product_is_answered_exactly() {
         .is_some_and(|r| r.contains("$I_2 = I_3$")));
     let text = kinetics::render(&scene, &analysis, kinetics::Format::Text, false);
     assert!(!text.contains("found numerically"), "{text}");
+
+    // Without values: the order is proved and e_3 = e_1 × e_2 = (sin 30°, −cos 30°, 0).
+    let symbolic = rod.replace("= 2 kg", ": kg").replace("= 1.2 m", ": m");
+    let (_, analysis) = analysed(&symbolic).expect("the order is proved without values");
+    let e3 = &frame(&analysis, "principal_G").axes[2];
+    let hand = ["1/2", "-sqrt(3)/2", "0"].map(|t| kinetics::parse_expression("", t).unwrap());
+    assert_eq!([e3[0].clone(), e3[1].clone(), e3[2].clone()], hand);
 }

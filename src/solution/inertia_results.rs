@@ -209,24 +209,50 @@ pub(super) fn text(r: &Result) -> Option<String> {
     Some(out)
 }
 
-/// The result's text on one line (JSON's `text`): the rows joined by `; `.
-pub(super) fn one_line(v: &Value, name: &str) -> String {
-    let lines = |rows: Vec<String>| rows.join("; ");
+/// The result on one line (JSON's `text` and `latex`): a tensor's matrix, or a frame's rows
+/// joined, each numeric form by its four figures (`I_1 = 0.03413`, `e_1 = (0.8366, …)`).
+fn one_line_in(v: &Value, form: impl Fn(&Form) -> String, separator: &str) -> String {
     match v {
-        Value::Tensor(m) => form_text(&Form::Matrix(m)),
+        Value::Tensor(m) => form(&Form::Matrix(m)),
         Value::Principal(p) => {
-            let moments = (0..3).map(|k| format!("I_{} = {}", k + 1, print::text(&p.moments[k])));
-            let axes = (0..3).map(|k| {
-                format!(
-                    "e_{} = {}",
-                    k + 1,
-                    print::vector(&p.axes[k], Notation::Text)
-                )
+            let shown = |f: Form, numbers: Vec<f64>| match show(&Row {
+                name: String::new(),
+                form: f,
+                numbers: Some(&numbers),
+                unit: "",
+            }) {
+                Show::Numbers if numbers.len() == 1 => format_value(numbers[0]),
+                Show::Numbers => format!("({})", numbers_text(&numbers)),
+                _ => String::new(),
+            };
+            let value = |e: &Expr| e.as_num().map_or(f64::NAN, crate::algebra::Q::to_f64);
+            let moments = p.moments.iter().enumerate().map(|(k, m)| {
+                let numeric = shown(Form::Scalar(m), vec![value(m)]);
+                let text = if numeric.is_empty() {
+                    form(&Form::Scalar(m))
+                } else {
+                    numeric
+                };
+                format!("I_{} = {text}", k + 1)
             });
-            lines(moments.chain(axes).collect())
+            let axes = p.axes.iter().enumerate().map(|(k, e)| {
+                let numeric = shown(Form::Vector(e), e.iter().map(value).collect());
+                let text = if numeric.is_empty() {
+                    form(&Form::Vector(e))
+                } else {
+                    numeric
+                };
+                format!("e_{} = {text}", k + 1)
+            });
+            moments.chain(axes).collect::<Vec<_>>().join(separator)
         }
-        _ => name.to_string(),
+        Value::Scalar(_) | Value::Vector(_) => String::new(),
     }
+}
+
+/// [`one_line_in`] as text.
+pub(super) fn one_line(v: &Value) -> String {
+    one_line_in(v, form_text, "; ")
 }
 
 /// The LaTeX of a form.
@@ -250,23 +276,9 @@ fn bmatrix(m: &Matrix, entry: impl Fn(&Expr) -> String) -> String {
     )
 }
 
-/// The result's LaTeX on one line (JSON's `latex`).
+/// [`one_line_in`] in LaTeX.
 pub(super) fn one_line_latex(v: &Value) -> String {
-    match v {
-        Value::Tensor(m) => form_latex(&Form::Matrix(m)),
-        Value::Principal(p) => {
-            let moments = (0..3).map(|k| format!("I_{} = {}", k + 1, print::latex(&p.moments[k])));
-            let axes = (0..3).map(|k| {
-                format!(
-                    "e_{} = {}",
-                    k + 1,
-                    print::vector(&p.axes[k], Notation::Latex)
-                )
-            });
-            moments.chain(axes).collect::<Vec<_>>().join(r",\quad ")
-        }
-        _ => String::new(),
-    }
+    one_line_in(v, form_latex, r",\quad ")
 }
 
 /// The numbers of a row in LaTeX, with the unit.

@@ -115,7 +115,7 @@ fn computed<'a>(
             Value::Tensor(_) | Value::Principal(_) => Result {
                 name: &request.name,
                 quantity: request.quantity,
-                text: inertia_results::one_line(v, &request.name),
+                text: inertia_results::one_line(v),
                 latex: inertia_results::one_line_latex(v),
                 value: inertia_results::values(v, |e| value(scene, e)),
                 unit: Some(Dimension::INERTIA.si_unit()),

@@ -32,7 +32,7 @@ impl Analyser<'_> {
                 Err(self.fail(
                     at,
                     format!(
-                        "{} needs values for {}: the order of the principal moments about {point}, or the axes of a tensor with several products of inertia, is found from the givens' values",
+                        "{} needs values for {}: the order of the principal moments about {point}, or the axes of a tensor with several products of inertia, is decided with the givens' values",
                         r.name,
                         names.join(", ")
                     ),

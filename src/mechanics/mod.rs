@@ -21,6 +21,7 @@ pub mod mass_centre;
 mod moment_transfer;
 pub mod parts_table;
 pub mod principal_axes;
+pub mod principal_frame;
 pub mod resultant;
 pub mod rotating_frame;
 pub mod rotation;

@@ -136,6 +136,12 @@ pub enum Quantity {
     PointAcceleration(Symbol),
     /// A named impulse with its unknown components solved (`impulse R = ... at`, `find R`).
     NamedImpulse(Symbol),
+    /// `I_G`, `I_O`: the inertia tensor `[I]` about G, about O (the frame's axes).
+    InertiaAboutG,
+    InertiaAboutO,
+    /// `principal_G`, `principal_O`: principal moments (ascending) and axes about G, about O.
+    PrincipalAboutG,
+    PrincipalAboutO,
     /// A declared unknown, solved from the equations of the scene.
     Unknown(Symbol),
     /// `balance in planes z = a, z = b at radius r`: two correction masses ([`Scene::balance`]).
@@ -144,7 +150,7 @@ pub enum Quantity {
 
 impl Quantity {
     /// The chapter's quantities by the names a scene writes them with.
-    pub const NAMED: [(&'static str, Quantity); 14] = [
+    pub const NAMED: [(&'static str, Quantity); 18] = [
         ("omega", Quantity::AngularVelocity),
         ("vbar", Quantity::MassCentreVelocity),
         ("mvbar", Quantity::LinearMomentum),
@@ -159,6 +165,10 @@ impl Quantity {
         ("Hdot_O", Quantity::RateOfAngularMomentumAboutO),
         ("T_trans", Quantity::TranslationalKineticEnergy),
         ("T_rot", Quantity::RotationalKineticEnergy),
+        ("I_G", Quantity::InertiaAboutG),
+        ("I_O", Quantity::InertiaAboutO),
+        ("principal_G", Quantity::PrincipalAboutG),
+        ("principal_O", Quantity::PrincipalAboutO),
     ];
 
     /// What the quantity is, in words (`the kinetic energy`).
@@ -181,6 +191,10 @@ impl Quantity {
             Quantity::PointVelocity(_) => "the velocity of a named point",
             Quantity::PointAcceleration(_) => "the acceleration of a named point",
             Quantity::NamedImpulse(_) => "a named impulse",
+            Quantity::InertiaAboutG => "the inertia tensor about G",
+            Quantity::InertiaAboutO => "the inertia tensor about O",
+            Quantity::PrincipalAboutG => "the principal moments and axes about G",
+            Quantity::PrincipalAboutO => "the principal moments and axes about O",
             Quantity::Unknown(_) => "an unknown",
             Quantity::Balance => "the two-plane balance",
         }

@@ -27,6 +27,9 @@ impl Quantity {
             | Quantity::RotationalKineticEnergy
             | Quantity::RateOfAngularMomentum
             | Quantity::RateOfAngularMomentumAboutO => Dimension::MOMENT,
+            Quantity::InertiaAboutG | Quantity::InertiaAboutO => Dimension::INERTIA,
+            // Its moments' (its axes are unit vectors).
+            Quantity::PrincipalAboutG | Quantity::PrincipalAboutO => Dimension::INERTIA,
             Quantity::Unknown(s) => return declared.get(&s).copied(),
             Quantity::Balance => return None,
         })

@@ -8,6 +8,7 @@
 //! long right-hand side broken into continuation rows where the LaTeX breaks it
 //! (`print::broken`), scrolled sideways only where one term alone is wider than the page.
 
+use super::inertia_results;
 use super::mathml_value::{decimal, spaced_unit, value};
 use super::numbers::format_value;
 use super::render::{form_lines, relations_room, results_room, Result};
@@ -55,6 +56,9 @@ pub(super) fn step_body(step: &Step) -> String {
     let mut out = String::new();
     if let Some(table) = &step.table {
         out.push_str(&parts(table));
+    }
+    if step.relations.is_empty() {
+        return out;
     }
     let (first_em, width_em) = relations_room(&step.relations);
     let rows = step
@@ -140,6 +144,9 @@ fn relation_rows(r: &Relation, first_em: f64, width_em: f64) -> String {
 /// A result: its quantity's name, its form (broken as a relation is) and, when every given
 /// has a value, `= value unit` after its last line.
 fn result_rows(r: &Result, first_em: f64, width_em: f64) -> String {
+    if let Some(table) = inertia_results::mathml(r, rows) {
+        return table;
+    }
     let mut name = String::new();
     print::mathml::latex_name(&mut name, &r.name_latex);
     let mut lines = form_lines(r, Notation::MathMl, first_em, width_em);

@@ -7,6 +7,7 @@ pub mod derivations;
 mod engineer;
 pub mod evaluation;
 mod html;
+mod inertia_results;
 mod mathml_value;
 pub mod numbers;
 pub mod parts_table;

@@ -47,6 +47,9 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
                 .iter()
                 .flat_map(|k| [&k.mass, &k.p, &k.q])
                 .collect(),
+            Value::Tensor(m) => m.iter().collect(),
+            // The axes are unit vectors: numbers without a unit.
+            Value::Principal(p) => p.moments.iter().collect(),
         };
         for e in components.into_iter().filter(|e| !e.is_zero()) {
             let missing: Vec<&str> = e
@@ -177,20 +180,7 @@ fn scientific(q: &Q) -> String {
 
 /// Four significant figures, without trailing noise: `-129.8`, `0.01234`, `1.235e-7`.
 pub fn format_value(x: f64) -> String {
-    if x == 0.0 {
-        return "0".into();
-    }
-    let magnitude = x.abs().log10().floor() as i32;
-    if !(-4..6).contains(&magnitude) {
-        return format!("{x:.3e}");
-    }
-    let decimals = (3 - magnitude).max(0) as usize;
-    let text = format!("{x:.decimals$}");
-    if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        text
-    }
+    crate::algebra::four_significant_figures(x)
 }
 
 #[cfg(test)]

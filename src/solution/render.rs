@@ -5,8 +5,10 @@
 //! against every example's output (`tests/suite/json_schema.rs`); `--numbers` gives the
 //! engineer's page ([`render_numbers`]), described in the same file. A balance is four result
 //! rows or more: `m_1`, `theta_1` (in `deg`; `text` "undefined" and `value` null for no
-//! correction), `tan(theta_1)` where the angle is not exact, then plane 2.
+//! correction), `tan(theta_1)` where the angle is not exact, then plane 2. A tensor's value is its rows `[[…], […], […]]`, a principal frame's
+//! `{"moments", "axes", "remark"}`.
 
+use super::inertia_results;
 use super::numbers::{format_value, result_unit, scene_dimensions, value};
 use super::parts_table;
 use super::unit_latex::quantity;
@@ -14,7 +16,7 @@ use crate::algebra::{Axis, Expr};
 use crate::mechanics::derivation::Relation;
 use crate::print::{self, markup, width::RELATION_EM, Notation};
 use crate::scene::model::{Quantity, Request};
-use crate::scene::units::Dimensions;
+use crate::scene::units::{Dimension, Dimensions};
 use crate::scene::{Analysis, Scene, Value};
 use std::borrow::Cow;
 
@@ -60,7 +62,16 @@ fn results<'a>(scene: &Scene, analysis: &'a Analysis, dims: &Dimensions) -> Vec<
 /// A value asked for `in UNIT` is converted from SI and labelled with the unit as written.
 fn in_requested_unit<'a>(request: &Request, mut r: Result<'a>) -> Result<'a> {
     if let Some((written, unit)) = &request.unit {
-        r.value = r.value.map(|v| v.iter().map(|x| x / unit.to_si).collect());
+        // A principal frame's axes (after its three moments) have no unit.
+        let scaled = if matches!(r.form.as_deref(), Some(Value::Principal(_))) {
+            3
+        } else {
+            usize::MAX
+        };
+        r.value = r.value.map(|v| {
+            let to = |(k, x): (usize, &f64)| if k < scaled { x / unit.to_si } else { *x };
+            v.iter().enumerate().map(to).collect()
+        });
         r.unit = Some(written.clone());
     }
     r
@@ -106,6 +117,16 @@ fn computed<'a>(
             unit,
             form: Some(Cow::Borrowed(v)),
         },
+        // Inertia is in kg·m², whether its form has symbols or is a number.
+        Value::Tensor(_) | Value::Principal(_) => Result {
+            name,
+            name_latex,
+            text: inertia_results::one_line(v),
+            latex: inertia_results::one_line_latex(v),
+            value: inertia_results::values(v, |e| value(scene, e)),
+            unit: Some(Dimension::INERTIA.si_unit()),
+            form: Some(Cow::Borrowed(v)),
+        },
         Value::Balance(corrections) => return super::balance_rows::rows(scene, corrections),
     };
     vec![in_requested_unit(request, result)]
@@ -122,7 +143,8 @@ pub(super) fn form_lines(
     match r.form.as_deref() {
         Some(Value::Scalar(e)) => print::broken(e, Axis::X, notation, first_em, width_em),
         Some(Value::Vector(v)) => print::broken_vector(v, notation, first_em, width_em),
-        Some(Value::Balance(_)) => Vec::new(),
+        // Their rows are rendered by inertia_results; a balance's rows are results of their own.
+        Some(Value::Balance(_) | Value::Tensor(_) | Value::Principal(_)) => Vec::new(),
         // Known only as a number (shown as its value), or undefined (said in words).
         None if r.value.is_some() => Vec::new(),
         None => vec![match notation {
@@ -167,6 +189,10 @@ pub(super) fn quantity_latex(quantity: Quantity) -> String {
         Quantity::PointVelocity(p) => format!(r"\mathbf{{v}}_{{{}}}", p.latex()),
         Quantity::PointAcceleration(p) => format!(r"\mathbf{{a}}_{{{}}}", p.latex()),
         Quantity::NamedImpulse(s) => print::latex(&Expr::sym(s)),
+        Quantity::InertiaAboutG | Quantity::InertiaAboutO => {
+            inertia_results::tensor_name(quantity).into()
+        }
+        Quantity::PrincipalAboutG | Quantity::PrincipalAboutO => "I_1".into(),
         Quantity::Unknown(s) => print::latex(&Expr::sym(s)),
         Quantity::Balance => r"\text{balance}".into(),
     }
@@ -287,6 +313,10 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     }
     out.push_str("\nResults\n");
     for r in results {
+        if let Some(lines) = inertia_results::text(r) {
+            out.push_str(&lines);
+            continue;
+        }
         match value_text(r) {
             Some(v) if r.is_number() => out.push_str(&format!("  {} = {v}\n", r.name)),
             Some(v) => out.push_str(&format!("  {} = {} = {v}\n", r.name, r.text)),
@@ -298,6 +328,10 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
 
 /// Relations as one `align*` block, each right-hand side broken into lines that fit the page.
 pub fn latex_relations(relations: &[Relation]) -> String {
+    // A step whose numbers are in its title (a numeric solution) has no block.
+    if relations.is_empty() {
+        return String::new();
+    }
     let lhs: Vec<String> = relations
         .iter()
         .map(|r| print::render(&r.lhs, Notation::Latex, r.axis))
@@ -353,6 +387,9 @@ fn latex_results(results: &[Result]) -> String {
     let rows: Vec<String> = results
         .iter()
         .map(|r| {
+            if let Some(rows) = inertia_results::latex(r) {
+                return rows.join(" \\\\\n");
+            }
             let name = &r.name_latex;
             let value = latex_value(r);
             if let Some((number, _)) = value.as_ref().filter(|_| r.is_number()) {
@@ -364,7 +401,7 @@ fn latex_results(results: &[Result]) -> String {
                 let unbroken_em = match r.form.as_deref() {
                     Some(Value::Scalar(e)) => print::width_em(e, Axis::X),
                     Some(Value::Vector(v)) => print::line_break::vector_width_em(v),
-                    Some(Value::Balance(_)) | None => 0.0,
+                    Some(Value::Balance(_) | Value::Tensor(_) | Value::Principal(_)) | None => 0.0,
                 };
                 if lines.len() > 1 || first_em + unbroken_em + tail_em > width_em {
                     return format!("{} \\\\\n&{tail}", aligned_row(name, &lines));
@@ -457,7 +494,9 @@ fn markdown(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
         if let Some(table) = &step.table {
             out.push_str(&parts_table::markdown(table));
         }
-        out.push_str(&format!("$$\n{}$$\n\n", latex_relations(&step.relations)));
+        if !step.relations.is_empty() {
+            out.push_str(&format!("$$\n{}$$\n\n", latex_relations(&step.relations)));
+        }
     }
     out.push_str(&format!("## Results\n\n$$\n{}$$\n", latex_results(results)));
     out
@@ -511,8 +550,12 @@ pub(super) fn givens_json(scene: &Scene) -> Vec<serde_json::Value> {
         .collect()
 }
 
-/// A result's value as JSON: a number, `[x, y, z]`, or null without one.
+/// A result's value as JSON: a number, `[x, y, z]`, a tensor's rows, a principal frame's
+/// `{moments, axes, remark}`, or null without one.
 pub(super) fn value_json(r: &Result) -> serde_json::Value {
+    if let Some(value) = inertia_results::json_value(r) {
+        return value;
+    }
     match r.value.as_deref() {
         Some([x]) => serde_json::json!(x),
         Some(v) => serde_json::json!(v),

@@ -54,6 +54,8 @@ mod operation_count;
 mod orientation_and_units;
 mod polynomial_gcd;
 mod principal_axes;
+mod principal_axes_acceptance;
+mod principal_scenes;
 mod print_parse_properties;
 mod readable_products;
 mod reproducers;

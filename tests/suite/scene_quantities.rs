@@ -45,7 +45,7 @@ fn numbers(scene: &Scene, v: &Value) -> Vec<f64> {
     match v {
         Value::Scalar(e) => vec![value(scene, e)],
         Value::Vector(v) => v.iter().map(|c| value(scene, c)).collect(),
-        Value::Balance(_) => panic!("a balance is not one quantity"),
+        other => panic!("{other:?} is not a scalar or a vector"),
     }
 }
 

@@ -21,15 +21,18 @@
 //! | `T_trans`, `T_rot` | kinematics, motion of G, body about G, the split | the same |
 //! | `v_A`, `a_A` | kinematics, `ω × r_A`, `α × r_A + ω × (ω × r_A)` | kinematics, v̄ or ā, `v̄ + ω × (r_A − r̄)`, ... |
 //! | a named impulse | its components, the unknowns among them solved | the same |
+//! | `I_G`, `principal_G` | body about G (then the principal frame) | the same |
+//! | `I_O`, `principal_O` | inertia about O (then the principal frame) | the same |
 //! | an unknown | the equations of motion with `Ḣ_O` (or impulse and momentum); then the solution | the same with `Ḣ_G` |
 
 mod balance;
 mod points;
+mod principal;
 mod unknowns;
 
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
 use super::model::{ConstraintKind, Quantity, Request, Scene, Span};
-use crate::algebra::{AlgebraError, Domains, Expr, Symbol, Vector};
+use crate::algebra::{AlgebraError, Domains, Expr, Matrix, Symbol, Vector};
 use crate::mechanics::angular_momentum::{angular_momentum, angular_momentum_about_point};
 use crate::mechanics::composite_body::{composite_body, MassProperties};
 use crate::mechanics::derivation::{presented, Derivation, Relation, Step};
@@ -40,6 +43,7 @@ use crate::mechanics::kinematics::{acceleration_of_mass_centre, velocity_of_mass
 use crate::mechanics::kinetic_energy::{kinetic_energy, kinetic_energy_split};
 use crate::mechanics::linear_momentum::{effective_force, linear_momentum};
 use crate::mechanics::mass_centre::{mass_centre, MassCentre};
+use crate::mechanics::principal_frame::PrincipalFrame;
 use crate::mechanics::rotating_frame::{
     rate_of_angular_momentum, rate_of_angular_momentum_about_point,
 };
@@ -54,6 +58,10 @@ pub enum Value {
     Vector(Vector),
     /// `find balance ...`: the two correction masses and their angles.
     Balance(Box<[Correction; 2]>),
+    /// An inertia tensor `[I]`, the chapter's signs (off-diagonal `−I_xy`, ...).
+    Tensor(Matrix),
+    /// Principal moments, ascending, and axes (a right-handed frame).
+    Principal(PrincipalFrame),
 }
 
 /// The outcome: the plan (steps in the order done) and each request's result.
@@ -146,6 +154,8 @@ impl Value {
                 let mass = presented(&k.mass, domains);
                 Correction { mass, angle, ..k }
             }))),
+            Value::Tensor(m) => Value::Tensor(m.map(|c| presented(&c, domains))),
+            Value::Principal(p) => Value::Principal(principal::presented(p, domains)),
         }
     }
 }
@@ -236,6 +246,10 @@ impl<'a> Analyser<'a> {
             Quantity::PointVelocity(p) => Value::Vector(self.point_velocity(at, p)?),
             Quantity::PointAcceleration(p) => Value::Vector(self.point_acceleration(at, p)?),
             Quantity::NamedImpulse(s) => Value::Vector(self.named_impulse(at, s)?),
+            Quantity::InertiaAboutG => Value::Tensor(self.body(at)?.inertia.matrix()),
+            Quantity::InertiaAboutO => Value::Tensor(self.inertia_about_o(at)?.matrix()),
+            Quantity::PrincipalAboutG => self.principal(r, false)?,
+            Quantity::PrincipalAboutO => self.principal(r, true)?,
             Quantity::Unknown(s) => Value::Scalar(self.unknown(at, s)?),
             Quantity::Balance => self.balance(at)?,
         })
@@ -246,8 +260,7 @@ impl<'a> Analyser<'a> {
         let mut exprs: Vec<Expr> = match &value {
             Value::Scalar(e) => vec![e.clone()],
             Value::Vector(v) => v.iter().cloned().collect(),
-            // In the givens alone: the body's masses and inertia hold no unknown.
-            Value::Balance(_) => return Ok(value),
+            Value::Balance(_) | Value::Tensor(_) | Value::Principal(_) => return Ok(value),
         };
         let pending: Vec<Symbol> = self
             .scene
@@ -273,7 +286,7 @@ impl<'a> Analyser<'a> {
         Ok(match value {
             Value::Scalar(_) => Value::Scalar(exprs.remove(0)),
             Value::Vector(_) => Value::Vector(Vector::from_iterator(exprs)),
-            Value::Balance(_) => value,
+            Value::Balance(_) | Value::Tensor(_) | Value::Principal(_) => value,
         })
     }
 

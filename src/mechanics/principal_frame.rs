@@ -175,7 +175,7 @@ fn determinant(m: &Matrix) -> Expr {
 fn missing_values(e: &Expr, values: &dyn Fn(Symbol) -> Option<f64>) -> Vec<Symbol> {
     e.symbols()
         .into_iter()
-        .filter(|s| s.name() != "lambda" && values(*s).is_none())
+        .filter(|s| s.name() != "lambda" && !s.is_pi() && values(*s).is_none())
         .collect()
 }
 

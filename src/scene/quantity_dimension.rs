@@ -35,3 +35,29 @@ impl Quantity {
         })
     }
 }
+
+/// The dimension of a name the analysis derives, by the chapter's naming: `I_xy`, `I_1`
+/// (inertia), `H_x` (angular momentum), `Hdot_z` (moment), `omega_y`, `Omega_x` (angular
+/// velocity), `alpha_x` (angular acceleration), `vbar_x`, `v_Ax` (velocity), `abar_x`, `a_Ax`
+/// (acceleration), `rbar_x`, `l` (length), `m_body`, `m_1` (mass), `T`, `T_rot` (energy),
+/// `S_y`, `P_1`, `Q_1` (first moments, kg·m), `e_1` (a unit axis). It is what the relation's
+/// right-hand side is, whatever plain SI numbers (`150 mm` is 3/20) it holds. A declared
+/// symbol's dimension is declared, and is looked up first by the caller.
+pub fn derived_dimension(name: &str) -> Option<Dimension> {
+    let stem = name.split('_').next().unwrap_or(name);
+    Some(match stem {
+        "I" => Dimension::INERTIA,
+        "H" => Dimension::new(1, 2, -1),
+        "Hdot" => Dimension::MOMENT,
+        "omega" | "Omega" => Dimension::ANGULAR_VELOCITY,
+        "alpha" | "omegadot" => Dimension::ANGULAR_ACCELERATION,
+        "vbar" | "v" => Dimension::VELOCITY,
+        "abar" | "a" => Dimension::ACCELERATION,
+        "rbar" | "l" => Dimension::LENGTH,
+        "m" => Dimension::MASS,
+        "T" => Dimension::MOMENT,
+        "S" | "P" | "Q" => Dimension::new(1, 1, 0),
+        "e" => Dimension::NONE,
+        _ => return None,
+    })
+}

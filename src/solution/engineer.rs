@@ -8,15 +8,17 @@
 //! Step k: title            →  name = value unit      (one line per relation with a value)
 //! ```
 //!
-//! A value's unit is its right-hand side's SI unit; a zero's is that of a relation of the
-//! same stem in the plan (`I_xy = 0` beside `I_x = 0.3`: kg·m²), else ω's and α's own.
+//! A value's unit is its name's: a declared symbol's own, a derived name's by the chapter's
+//! naming ([`crate::scene::derived_dimension`]: `I_xy` kg·m², `v_Ax` m/s), else its
+//! right-hand side's SI unit.
 
 use super::numbers::{format_value, unit};
 use super::render::{given_line, value_text, Result};
 use crate::algebra::Expr;
 use crate::mechanics::derivation::Step;
 use crate::print::{self, markup, Notation};
-use crate::scene::units::{Dimension, Dimensions};
+use crate::scene::derived_dimension;
+use crate::scene::units::Dimensions;
 use crate::scene::{Analysis, Scene};
 
 /// The numbers of one step of the plan.
@@ -39,29 +41,17 @@ pub(super) fn intermediate(
     analysis: &Analysis,
     dims: &Dimensions,
 ) -> Vec<StepValues> {
-    let named: Vec<(String, &Expr)> = analysis
-        .plan
-        .iter()
-        .flat_map(|s| &s.relations)
-        .filter(|r| r.lhs.as_symbol().is_some())
-        .map(|r| (print::render(&r.lhs, Notation::Text, r.axis), &r.rhs))
-        .collect();
-    let unit_of = |rhs: &Expr| {
-        Some(rhs)
-            .filter(|e| !e.is_zero())
-            .and_then(|e| unit(dims, e))
-    };
-    // A zero's unit: a relation of the same stem anywhere in the plan, else the chapter's.
-    let stem_unit = |name: &str| {
-        named
-            .iter()
-            .filter(|(other, _)| stem(other) == stem(name))
-            .find_map(|(_, e)| unit_of(e))
-            .or_else(|| match stem(name) {
-                "omega" => Some(Dimension::ANGULAR_VELOCITY.si_unit()),
-                "alpha" => Some(Dimension::ANGULAR_ACCELERATION.si_unit()),
-                _ => None,
-            })
+    // A derived name's unit is the chapter's (`I_xy`: kg·m²), a declared one's its own:
+    // the right-hand side may hold plain SI numbers (`150 mm` is 3/20) and tell nothing.
+    let unit_of = |lhs: &Expr, rhs: &Expr| {
+        let symbol = lhs.as_symbol()?;
+        let declared = dims.get(&symbol).copied();
+        match declared.or_else(|| derived_dimension(symbol.name())) {
+            Some(d) => Some(d.si_unit()),
+            None => Some(rhs)
+                .filter(|e| !e.is_zero())
+                .and_then(|e| unit(dims, e)),
+        }
     };
     let values = |step: &Step| -> Vec<Number> {
         if step.relations.iter().any(|r| r.lhs.as_symbol().is_none()) {
@@ -72,7 +62,7 @@ pub(super) fn intermediate(
             .filter_map(|r| {
                 let name = print::render(&r.lhs, Notation::Text, r.axis);
                 let value = super::evaluation::value(scene, &r.rhs)?;
-                let unit = unit_of(&r.rhs).or_else(|| stem_unit(&name));
+                let unit = unit_of(&r.lhs, &r.rhs);
                 // The kinetic energy is work: joules, as in the results.
                 let unit = unit.map(|u| {
                     if stem(&name) == "T" && u == "N·m" {
@@ -113,7 +103,11 @@ fn number_text(n: &Number) -> String {
 pub(super) fn answers_text(results: &[Result]) -> String {
     results
         .iter()
-        .filter_map(|r| Some(format!("  {} = {}\n", r.name, value_text(r)?)))
+        .filter(|r| r.value.is_some())
+        .filter_map(|r| {
+            super::inertia_results::text(r, true)
+                .or_else(|| Some(format!("  {} = {}\n", r.name, value_text(r)?)))
+        })
         .collect()
 }
 

@@ -180,8 +180,9 @@ fn row_numbers_text(row: &Row) -> Option<String> {
 }
 
 /// The result's text: one line per row, under its request's name (`principal_G:`), or
-/// `I_G = [[…]] = [[…]] kg·m^2` for a tensor.
-pub(super) fn text(r: &Result) -> Option<String> {
+/// `I_G = [[…]] = [[…]] kg·m^2` for a tensor; `numbers_only` (the engineer's page): each
+/// row with numbers by its numbers alone.
+pub(super) fn text(r: &Result, numbers_only: bool) -> Option<String> {
     let rows = rows(r)?;
     let mut out = String::new();
     let single = rows.len() == 1;
@@ -198,7 +199,11 @@ pub(super) fn text(r: &Result) -> Option<String> {
         let numbers = row_numbers_text(row);
         let form = form_text(&row.form);
         let numbers = numbers.unwrap_or_default();
-        let line = match (&row.form, show(row)) {
+        let shown = match show(row) {
+            Show::Both if numbers_only => Show::Numbers,
+            shown => shown,
+        };
+        let line = match (&row.form, shown) {
             (Form::Words(_), _) => form,
             (_, Show::Numbers) => format!("{name} = {numbers}"),
             (_, Show::Both) => format!("{name} = {form} = {numbers}"),

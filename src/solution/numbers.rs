@@ -55,7 +55,7 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
             let missing: Vec<&str> = e
                 .symbols()
                 .into_iter()
-                .filter(|s| scene.value(*s).is_none())
+                .filter(|s| !s.is_pi() && scene.value(*s).is_none())
                 .map(|s| s.name())
                 .collect();
             let Some((written, unit)) = &request.unit else {

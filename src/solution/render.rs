@@ -313,7 +313,7 @@ fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
     }
     out.push_str("\nResults\n");
     for r in results {
-        if let Some(lines) = inertia_results::text(r) {
+        if let Some(lines) = inertia_results::text(r, false) {
             out.push_str(&lines);
             continue;
         }

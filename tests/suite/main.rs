@@ -75,6 +75,7 @@ mod simulate_cli_methods;
 mod simulate_extreme_momentum;
 mod simulate_memory;
 mod simulate_without_find;
+mod skewed_rotor;
 mod solved_unknowns;
 mod splitting_time_torque;
 mod tape;

@@ -101,7 +101,7 @@ pub fn principal_frame(
         }
         _ => (numeric_frame(tensor, values)?, Decided::Numerically),
     };
-    let characteristic = characteristic_step(tensor, &coupled, point, values)?;
+    let characteristic = characteristic_step(&coupled, point);
     let steps = vec![characteristic, frame_step(&frame, how, point)];
     Ok((
         frame,
@@ -125,50 +125,46 @@ fn unit(k: usize) -> Vector {
     Vector::from_fn(|r, _| Expr::from(i64::from(r == k)))
 }
 
-/// The step `det(λ1 − [I]) = 0`: factored, in the names `I_x`, `I_xy`, … of the step that
-/// gives the tensor, when at most one product couples two axes
-/// (`(λ − I_c)((λ − I_a)(λ − I_b) − I_ab²)`); else multiplied out with the givens' values.
-fn characteristic_step(
-    tensor: &InertiaTensor,
-    coupled: &[usize],
-    point: &str,
-    values: &dyn Fn(Symbol) -> Option<f64>,
-) -> Result<Step, PrincipalError> {
+/// The step `det(λ1 − [I]) = 0` in the names `I_x`, `I_xy`, … of the step that gives the
+/// tensor: factored when at most one product couples two axes
+/// (`(λ − I_c)((λ − I_a)(λ − I_b) − I_ab²)`), else by cofactors along the first row.
+fn characteristic_step(coupled: &[usize], point: &str) -> Step {
     let lambda = Expr::symbol("lambda");
     // In the names of the step before (`I_x`, `I_xy`): short, and the reader has their values.
     let named = InertiaTensor::general();
     let root = |k: usize| &lambda - &named.moments[k];
-    let (det, with) = match coupled {
-        [] => (root(0) * root(1) * root(2), ""),
+    let (lhs, rhs) = match coupled {
+        [] => (root(0) * root(1) * root(2), Expr::zero()),
         [product] => {
             let (a, b, c) = AXES_OF_PRODUCT[*product];
-            let pair = root(a) * root(b) - named.products[*product].powi(2);
-            (root(c) * pair, "")
+            let det = root(c) * (root(a) * root(b) - named.products[*product].powi(2));
+            (det, Expr::zero())
         }
-        _ => {
-            let matrix = Matrix::from_diagonal_element(lambda.clone()) - tensor.matrix();
-            let det = determinant(&exact_with_values(&matrix, values)?).expand()?;
-            (det, " with the givens' values (SI)")
-        }
+        // Each minor as written (multiplied out with the givens' values it ran past the
+        // margin), the first cofactor equal to the other two: a right-hand side that breaks.
+        _ => cofactors(&(Matrix::from_diagonal_element(lambda.clone()) - named.matrix())),
     };
-    Ok(Step::new(
+    Step::new(
         format!(
-            r"principal moments about ${point}$: the roots $\lambda$ of the characteristic equation $\mathrm{{det}}(\lambda 1 - [I]) = 0${with}"
+            r"principal moments about ${point}$: the roots $\lambda$ of the characteristic equation $\mathrm{{det}}(\lambda 1 - [I]) = 0$"
         ),
-        vec![Relation::new(det, Expr::zero(), Axis::X)],
-    ))
+        vec![Relation::new(lhs, rhs, Axis::X)],
+    )
 }
 
 /// The axes a product couples and the third one, for `[I_xy, I_yz, I_xz]`.
 const AXES_OF_PRODUCT: [(usize, usize, usize); 3] = [(0, 1, 2), (1, 2, 0), (0, 2, 1)];
 
-/// `det M` by cofactors along the first row.
-fn determinant(m: &Matrix) -> Expr {
+/// `det M = 0` by cofactors along the first row, as `M₀₀ m₀₀ = M₀₁ m₀₁ − M₀₂ m₀₂` (each
+/// `m` the minor of its entry).
+fn cofactors(m: &Matrix) -> (Expr, Expr) {
     let minor = |r1: usize, r2: usize, c1: usize, c2: usize| {
         &m[(r1, c1)] * &m[(r2, c2)] - &m[(r1, c2)] * &m[(r2, c1)]
     };
-    &m[(0, 0)] * &minor(1, 2, 1, 2) - &m[(0, 1)] * &minor(1, 2, 0, 2)
-        + &m[(0, 2)] * &minor(1, 2, 0, 1)
+    (
+        &m[(0, 0)] * &minor(1, 2, 1, 2),
+        &m[(0, 1)] * &minor(1, 2, 0, 2) - &m[(0, 2)] * &minor(1, 2, 0, 1),
+    )
 }
 
 /// The symbols of `e` without a value.
@@ -183,18 +179,6 @@ fn missing_values(e: &Expr, values: &dyn Fn(Symbol) -> Option<f64>) -> Vec<Symbo
 fn exact(x: f64) -> Option<Expr> {
     let q = Q::parse_decimal(&format!("{:e}", x.abs()))?;
     Some(Expr::num(if x < 0.0 { -&q } else { q }))
-}
-
-fn exact_with_values(
-    m: &Matrix,
-    values: &dyn Fn(Symbol) -> Option<f64>,
-) -> Result<Matrix, PrincipalError> {
-    let given = |s: Symbol| values(s).and_then(exact);
-    let entries = m
-        .iter()
-        .map(|e| e.subs(&given).and_then(|x| x.expand()))
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(Matrix::from_iterator(entries))
 }
 
 /// One product `I_ab` coupling axes a and b (`product` indexes `[I_xy, I_yz, I_xz]`): the

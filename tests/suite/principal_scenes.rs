@@ -371,3 +371,42 @@ fn one_product_is_answered_exactly() {
     let hand = ["1/2", "-sqrt(3)/2", "0"].map(|t| kinetics::parse_expression("", t).unwrap());
     assert_eq!([e3[0].clone(), e3[1].clone(), e3[2].clone()], hand);
 }
+
+/// The characteristic equation a page shows with three products (by cofactors, in the names
+/// `I_x`, `I_xy`, …) is det(λ1 − [I_O]) = 0: with the point masses' tensor put in for the
+/// names, its two sides differ by λ³ − tr λ² + (principal minors) λ − det at any λ.
+#[test]
+fn the_characteristic_equation_shown_is_the_determinant() {
+    let (_, analysis) = load("box_about_body_diagonal", "");
+    let t_o = tensor(&box_points(6.0, [0.15, 0.1, 0.05], [0.3, 0.2, 0.1]));
+    let step = analysis
+        .plan
+        .iter()
+        .find(|s| s.title.contains("characteristic equation"))
+        .expect("a step gives the characteristic equation");
+    let relation = &step.relations[0];
+    let names = [
+        ("I_x", t_o[0][0]),
+        ("I_y", t_o[1][1]),
+        ("I_z", t_o[2][2]),
+        ("I_xy", -t_o[0][1]),
+        ("I_yz", -t_o[1][2]),
+        ("I_xz", -t_o[0][2]),
+    ];
+    let tr = t_o[0][0] + t_o[1][1] + t_o[2][2];
+    let minors = t_o[0][0] * t_o[1][1] - t_o[0][1] * t_o[1][0] + t_o[1][1] * t_o[2][2]
+        - t_o[1][2] * t_o[2][1]
+        + t_o[0][0] * t_o[2][2]
+        - t_o[0][2] * t_o[2][0];
+    let det = dot(t_o[0], cross(t_o[1], t_o[2]));
+    for lambda in [0.0, 0.05, 0.17, 0.3] {
+        let at = |s: Symbol| match s.name() {
+            "lambda" => Some(lambda),
+            name => names.iter().find(|(n, _)| *n == name).map(|(_, v)| *v),
+        };
+        let shown =
+            relation.lhs.eval(&at).expect("a number") - relation.rhs.eval(&at).expect("a number");
+        let by_hand = lambda.powi(3) - tr * lambda.powi(2) + minors * lambda - det;
+        close("det(λ1 − [I_O])", shown, by_hand, tr.powi(3));
+    }
+}

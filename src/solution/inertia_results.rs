@@ -19,7 +19,8 @@ use super::mathml_value::{decimal, spaced_unit, value as mathml_value};
 use super::numbers::format_value;
 use super::render::Result;
 use super::unit_latex::quantity;
-use crate::algebra::{Expr, Matrix, Vector};
+use crate::algebra::{Axis, Expr, Matrix, Vector};
+use crate::print::PAGE_WIDTH_EM;
 use crate::print::{self, markup, Notation};
 use crate::scene::model::Quantity;
 use crate::scene::Value;
@@ -314,7 +315,13 @@ pub(super) fn latex(r: &Result) -> Option<Vec<String>> {
                 };
                 let form = form_latex(&row.form);
                 let n = row_numbers_latex(row).unwrap_or_default();
-                match (&row.form, show(row)) {
+                // A matrix too wide for the page is shown by its numbers (its entries are the
+                // tensor's step, one a line).
+                let shown = match (&row.form, show(row)) {
+                    (Form::Matrix(m), Show::Both) if matrix_em(m) > PAGE_WIDTH_EM => Show::Numbers,
+                    (_, shown) => shown,
+                };
+                match (&row.form, shown) {
                     (Form::Words(_), _) => format!("& {form}"),
                     (_, Show::Numbers) => format!("{name} &= {n}"),
                     (Form::Matrix(_), Show::Both) => format!("{name} &= {form} \\\\\n&= {n}"),
@@ -324,6 +331,19 @@ pub(super) fn latex(r: &Result) -> Option<Vec<String>> {
             })
             .collect(),
     )
+}
+
+/// The width in ems of a matrix in display style: its widest entry in each column, a
+/// column gap (2 em, amsmath's) between columns, the brackets and the name before it.
+fn matrix_em(m: &Matrix) -> f64 {
+    let columns: f64 = (0..3)
+        .map(|c| {
+            (0..3)
+                .map(|r| print::width_em(&m[(r, c)], Axis::X))
+                .fold(0.0, f64::max)
+        })
+        .sum();
+    columns + 2.0 * 2.0 + 4.0
 }
 
 /// A form in MathML.

@@ -15,14 +15,45 @@
 /// assert_eq!(quantity("60", "deg"), r"60^\circ");
 /// assert_eq!(quantity("9.81", "m/s^2"), r"9.81\,\mathrm{m/s^2}");
 /// assert_eq!(quantity("2", ""), "2");
+/// assert_eq!(quantity("-1.371e-6", "m"), r"-1.371\times 10^{-6}\,\mathrm{m}");
+/// assert_eq!(quantity("(2e10, 0, 1)", ""), r"(2\times 10^{10}, 0, 1)");
 /// ```
 pub fn quantity(number: &str, unit: &str) -> String {
     let unit = unit.trim();
+    let number = &powers_of_ten(number);
     match unit {
         "" => number.to_string(),
         _ if is_degrees(unit) => format!(r"{number}^\circ"),
         _ => format!(r"{number}\,\mathrm{{{}}}", unit_letters(unit)),
     }
+}
+
+/// Numbers in scientific notation (`-1.371e-6`, `2e10`) as LaTeX writes them
+/// (`-1.371\times 10^{-6}`); every other character as it is (a list, a matrix).
+fn powers_of_ten(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len());
+    let mut k = 0;
+    while k < chars.len() {
+        let after_digit = k > 0 && chars[k - 1].is_ascii_digit();
+        let exponent_len = chars[k + 1..]
+            .iter()
+            .enumerate()
+            .take_while(|(n, c)| c.is_ascii_digit() || (*n == 0 && **c == '-'))
+            .count();
+        let digits = chars[k + 1..k + 1 + exponent_len]
+            .iter()
+            .any(char::is_ascii_digit);
+        if chars[k] == 'e' && after_digit && digits {
+            let exponent: String = chars[k + 1..k + 1 + exponent_len].iter().collect();
+            out.push_str(&format!(r"\times 10^{{{exponent}}}"));
+            k += 1 + exponent_len;
+        } else {
+            out.push(chars[k]);
+            k += 1;
+        }
+    }
+    out
 }
 
 /// Whether `unit` is the degree of angle, which every notation sets as a sign after the

@@ -108,3 +108,20 @@ fn the_engineers_page_has_every_number_with_its_names_unit() {
     assert!(page.contains("  m_1 = 0.02455 kg\n"), "{page}");
     assert!(!page.contains("has no value"), "{page}");
 }
+
+#[test]
+fn a_tensor_too_wide_for_the_page_is_shown_by_its_numbers_in_latex_notation() {
+    let scene = SCENE.replace("find principal_O", "find I_O, principal_O");
+    let run = kinetics_with_input(&["solve", "-", "--format", "latex"], scene);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let results = run.stdout.split("Results").nth(1).expect("a results block");
+    let tensor = results
+        .lines()
+        .find(|l| l.contains("[I_O]"))
+        .expect("the tensor's row");
+    // Its entries hold sin(π/180) terms a page wide each: the step before has them.
+    assert!(!tensor.contains(r"\sin"), "{tensor}");
+    // I_yz = 1.371e-6 kg·m² is written as LaTeX writes a power of ten.
+    assert!(results.contains(r"-1.371\times 10^{-6}"), "{results}");
+    assert!(!results.contains("e-6"), "{results}");
+}

@@ -171,11 +171,11 @@ fn determinant(m: &Matrix) -> Expr {
         + &m[(0, 2)] * &minor(1, 2, 0, 1)
 }
 
-/// The symbols of `e` without a value.
+/// The symbols of `e` without a value (π, a constant, has one: `rpm` and `deg` bring it).
 fn missing_values(e: &Expr, values: &dyn Fn(Symbol) -> Option<f64>) -> Vec<Symbol> {
     e.symbols()
         .into_iter()
-        .filter(|s| s.name() != "lambda" && values(*s).is_none())
+        .filter(|s| s.name() != "lambda" && !s.is_pi() && values(*s).is_none())
         .collect()
 }
 

@@ -47,8 +47,7 @@ impl Reader<'_> {
                 .error(span(second), "the two planes are one plane")
                 .with_help("choose two planes apart along the shaft"));
         }
-        let r = self.math(radius)?;
-        self.expect_dimension(&r, Dimension::LENGTH, span(radius))?;
+        let r = self.quantity(radius, Dimension::LENGTH)?;
         self.positive(
             "the radius of the correction masses",
             "radius",
@@ -76,8 +75,6 @@ impl Reader<'_> {
             "y" => Axis::Y,
             _ => Axis::Z,
         };
-        let e = self.math(position)?;
-        self.expect_dimension(&e, Dimension::LENGTH, span(position))?;
-        Ok((axis, e))
+        Ok((axis, self.quantity(position, Dimension::LENGTH)?))
     }
 }

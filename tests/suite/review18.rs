@@ -93,3 +93,25 @@ fn balance_planes_and_radius_written_in_mm_are_brought_to_si() {
         );
     }
 }
+
+/// Direction cosines a rounding away from a rotation: the message shows how far, not
+/// "its length squared is 1, not 1".
+#[test]
+fn nearly_orthonormal_direction_cosines_are_refused_with_a_readable_departure() {
+    let scene = "given m = 1 kg
+given a = 0.2 m
+body rod(a) mass m axes (1, 0, 0), (0, 0.6, 0.8), (0, -0.8, 0.6000001)
+fixed point
+omega = 2 rad/s*k
+find T
+";
+    let run = kinetics_with_input(&["solve", "-"], scene);
+    assert_ne!(run.code, 0);
+    assert!(
+        run.stderr
+            .contains("its length squared is 1 + 1.2e-7, not 1")
+            && run.stderr.contains("y'·z' is 8.0e-8, not 0"),
+        "{}",
+        run.stderr
+    );
+}

@@ -167,7 +167,7 @@ fn cofactors(m: &Matrix) -> (Expr, Expr) {
     )
 }
 
-/// The symbols of `e` without a value.
+/// The symbols of `e` without a value (π, a constant, has one: `rpm` and `deg` bring it).
 fn missing_values(e: &Expr, values: &dyn Fn(Symbol) -> Option<f64>) -> Vec<Symbol> {
     e.symbols()
         .into_iter()

@@ -104,9 +104,22 @@ impl AxesProblem {
 
 const PRIMED: [&str; 3] = ["x'", "y'", "z'"];
 
-fn known(value: &Option<f64>) -> String {
+/// The value found, to six decimals; a value that rounds to the one wanted (`target`) is
+/// shown by its departure from it (`1 + 1.2e-7`, `8.0e-8`), never as the target itself.
+fn known(value: &Option<f64>, target: f64) -> String {
     match value {
-        Some(v) => format!(" {}", (v * 1e6).round() / 1e6),
+        Some(v) => {
+            let shown = (v * 1e6).round() / 1e6;
+            let departure = v - target;
+            match (shown == target, target == 0.0) {
+                (false, _) => format!(" {shown}"),
+                (true, true) => format!(" {departure:.1e}"),
+                (true, false) => {
+                    let sign = if departure < 0.0 { '-' } else { '+' };
+                    format!(" {target} {sign} {:.1e}", departure.abs())
+                }
+            }
+        }
         None => " not shown to be".to_string(),
     }
 }
@@ -119,8 +132,8 @@ impl fmt::Display for AxesProblem {
                 "{} is not a unit vector (its length squared is{} 1)",
                 PRIMED[*k],
                 match value {
-                    Some(_) => format!("{}, not", known(value)),
-                    None => known(value),
+                    Some(_) => format!("{}, not", known(value, 1.0)),
+                    None => known(value, 1.0),
                 }
             ),
             AxesProblem::NotPerpendicular(a, b, value) => write!(
@@ -131,8 +144,8 @@ impl fmt::Display for AxesProblem {
                 PRIMED[*a],
                 PRIMED[*b],
                 match value {
-                    Some(_) => format!("{}, not", known(value)),
-                    None => known(value),
+                    Some(_) => format!("{}, not", known(value, 0.0)),
+                    None => known(value, 0.0),
                 }
             ),
             AxesProblem::LeftHanded => write!(
@@ -224,6 +237,14 @@ mod tests {
         assert_eq!(
             AxesProblem::NotUnit(0, Some(2.0)).to_string(),
             "x' is not a unit vector (its length squared is 2, not 1)"
+        );
+        assert_eq!(
+            AxesProblem::NotUnit(2, Some(1.000_000_12)).to_string(),
+            "z' is not a unit vector (its length squared is 1 + 1.2e-7, not 1)"
+        );
+        assert_eq!(
+            AxesProblem::NotPerpendicular(1, 2, Some(8e-8)).to_string(),
+            "y' and z' are not perpendicular (y'·z' is 8.0e-8, not 0)"
         );
     }
 }

@@ -59,6 +59,7 @@ mod principal_scenes;
 mod print_parse_properties;
 mod readable_products;
 mod reproducers;
+mod review18;
 mod robust_algebra;
 mod robust_bodies;
 mod robust_parse;

@@ -45,6 +45,9 @@ pub struct Planes<'a> {
     pub axis: Axis,
     pub positions: (&'a Expr, &'a Expr),
     pub radius: &'a Expr,
+    /// The subscripts of the two corrections' names (`1`, `2`: `m_1`, `θ_1`, `P_1`, `Q_1`),
+    /// chosen apart from the scene's own names.
+    pub labels: [&'a str; 2],
 }
 
 /// The angle of a correction mass about the shaft axis.
@@ -61,6 +64,8 @@ pub enum CorrectionAngle {
 /// One correction mass: its plane, `P = m r cos θ`, `Q = m r sin θ`, its mass and angle.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Correction {
+    /// The subscript of its names (`1` in `m_1`).
+    pub label: String,
     pub plane: Expr,
     pub p: Expr,
     pub q: Expr,
@@ -180,7 +185,8 @@ pub fn two_plane_balance(
         .collect::<Result<_, _>>()?;
     let (p, q) = ([r[0].clone(), r[1].clone()], [r[2].clone(), r[3].clone()]);
     let sym = |name: &str| Expr::symbol(name);
-    let named = |letter: &str, k: usize| sym(&format!("{letter}_{k}"));
+    // k = 1, 2: the plane's label.
+    let named = |letter: &str, k: usize| sym(&format!("{letter}_{}", planes.labels[k - 1]));
     let (name_s_b, name_s_c) = (sym(&format!("S_{lb}")), sym(&format!("S_{lc}")));
     let (name_i_ab, name_i_ac) = (sym(&product_name(a, b)), sym(&product_name(a, c)));
     let mut steps = vec![Step::new(
@@ -238,9 +244,12 @@ pub fn two_plane_balance(
             CorrectionAngle::Atan2 { .. } => {
                 relations.push(Relation::new(Func::Cos.apply(theta), Expr::zero(), AXES[a]))
             }
-            CorrectionAngle::Undefined => undefined.push(format!(r"$\theta_{}$", k + 1)),
+            CorrectionAngle::Undefined => {
+                undefined.push(format!(r"$\theta_{{{}}}$", planes.labels[k]))
+            }
         }
         corrections.push(Correction {
+            label: planes.labels[k].to_string(),
             plane: [a_1, a_2][k].clone(),
             p: p[k].clone(),
             q: q[k].clone(),
@@ -299,7 +308,8 @@ fn residual(
     let corrected_i_ab = (i_ab + a_1 * &p[0] + a_2 * &p[1]).cancel()?;
     let corrected_i_ac = (i_ac + a_1 * &q[0] + a_2 * &q[1]).cancel()?;
     let sym = |name: &str| Expr::symbol(name);
-    let named = |letter: &str, k: usize| sym(&format!("{letter}_{k}"));
+    // k = 1, 2: the plane's label.
+    let named = |letter: &str, k: usize| sym(&format!("{letter}_{}", planes.labels[k - 1]));
     let (s_b_name, s_c_name) = (
         sym(&format!("S_{}", LETTERS[b])),
         sym(&format!("S_{}", LETTERS[c])),
@@ -308,7 +318,9 @@ fn residual(
     let moment = |letter: &str| a_1 * named(letter, 1) + a_2 * named(letter, 2);
     let mut steps = vec![Step::new(
         format!(
-            r"the corrected body: $S_{lb}' = S_{lb} + P_1 + P_2$, $S_{lc}'$, ${ab}' = {ab} + {la}_1 P_1 + {la}_2 P_2$, ${ac}'$",
+            r"the corrected body: $S_{lb}' = S_{lb} + P_{{{k1}}} + P_{{{k2}}}$, $S_{lc}'$, ${ab}' = {ab} + {la}_{{{k1}}} P_{{{k1}}} + {la}_{{{k2}}} P_{{{k2}}}$, ${ac}'$",
+            k1 = planes.labels[0],
+            k2 = planes.labels[1],
             lb = LETTERS[b],
             lc = LETTERS[c],
             la = LETTERS[a],
@@ -317,12 +329,12 @@ fn residual(
         ),
         vec![
             Relation::new(
-                &s_b_name + sym("P_1") + sym("P_2"),
+                &s_b_name + named("P", 1) + named("P", 2),
                 corrected_s_b.clone(),
                 AXES[b],
             ),
             Relation::new(
-                &s_c_name + sym("Q_1") + sym("Q_2"),
+                &s_c_name + named("Q", 1) + named("Q", 2),
                 corrected_s_c.clone(),
                 AXES[c],
             ),

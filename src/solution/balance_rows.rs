@@ -14,17 +14,17 @@ use std::borrow::Cow;
 /// The rows of the two corrections, in the order m_1, θ_1, m_2, θ_2.
 pub(super) fn rows<'a>(scene: &Scene, corrections: &[Correction; 2]) -> Vec<Result<'a>> {
     let mut rows = Vec::with_capacity(6);
-    for (k, correction) in corrections.iter().enumerate() {
-        let k = k + 1;
+    for correction in corrections {
+        let k = &correction.label;
         let mass_unit = Some(Dimension::MASS.si_unit());
         rows.push(scalar(
             scene,
             Cow::Owned(format!("m_{k}")),
-            format!("m_{k}"),
+            format!("m_{{{k}}}"),
             correction.mass.clone(),
             mass_unit,
         ));
-        let (name, name_latex) = (format!("theta_{k}"), format!(r"\theta_{k}"));
+        let (name, name_latex) = (format!("theta_{k}"), format!(r"\theta_{{{k}}}"));
         let in_degrees = |radians: f64| radians.to_degrees();
         match &correction.angle {
             // Symbolically a correction, but none with the givens' values.
@@ -37,7 +37,7 @@ pub(super) fn rows<'a>(scene: &Scene, corrections: &[Correction; 2]) -> Vec<Resu
             }
             CorrectionAngle::Atan2 { q, p } => {
                 if let Ok(tangent) = q.checked_div(p) {
-                    let tan_name = format!(r"\tan\theta_{k}");
+                    let tan_name = format!(r"\tan\theta_{{{k}}}");
                     let named = Cow::Owned(format!("tan(theta_{k})"));
                     rows.push(scalar(scene, named, tan_name, tangent, None));
                 }

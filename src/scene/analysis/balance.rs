@@ -4,9 +4,9 @@
 //! angles and the residual reactions come from [`two_plane_balance`]. The scene's bearings
 //! are its first two forces at points on the axis, at two different places along it.
 
-use super::super::model::Span;
+use super::super::model::{Scene, Span};
 use super::{Analyser, Value};
-use crate::algebra::Expr;
+use crate::algebra::{Expr, Symbol};
 use crate::mechanics::mass_centre::first_moment;
 use crate::mechanics::two_plane_balance::{two_plane_balance, Planes, Rotor};
 use crate::parse::Diagnostic;
@@ -73,6 +73,7 @@ impl Analyser<'_> {
                 axis: balance.axis,
                 positions: (&balance.planes.0, &balance.planes.1),
                 radius: &balance.radius,
+                labels: correction_labels(scene),
             },
             bearings,
             &scene.domains(),
@@ -80,5 +81,25 @@ impl Analyser<'_> {
         .map_err(self.algebra(at))?;
         self.plan.extend(derivation.steps);
         Ok(Value::Balance(Box::new(corrections)))
+    }
+}
+
+/// The subscripts of the corrections' names: `1`, `2` (`m_1`, `θ_1`, `P_1`, `Q_1`), or `c1`,
+/// `c2` when the scene has a name of those (unbalance masses given as `m1`, `m2` are `m_1`,
+/// `m_2`: a page must not read `m_1 = …m_1…`).
+fn correction_labels(scene: &Scene) -> [&'static str; 2] {
+    let taken = |name: String| {
+        let s = Symbol::new(&name);
+        scene.givens.iter().any(|g| g.symbol == s) || scene.is_unknown(s)
+    };
+    let clash = ["1", "2"].iter().any(|k| {
+        ["m", "theta", "P", "Q"]
+            .iter()
+            .any(|letter| taken(format!("{letter}_{k}")))
+    });
+    if clash {
+        ["c1", "c2"]
+    } else {
+        ["1", "2"]
     }
 }

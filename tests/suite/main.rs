@@ -12,6 +12,7 @@ use common::counting_allocator::Counting;
 mod about_fixed_point;
 mod algebra_properties;
 mod bad_scenes;
+mod balance_plane_units;
 mod balancing_request;
 mod cancel;
 mod cancel_agrees_with_sympy;

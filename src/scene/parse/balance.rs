@@ -1,5 +1,6 @@
 //! `find balance in planes z = a, z = b at radius r`: the planes across one shaft axis (the
 //! letter names it), apart from each other, and a positive radius; each refused at its text.
+//! Each length is read in its units and brought to SI (`z = 50 mm` is 1/20 m).
 
 use super::super::model::BalancePlanes;
 use super::super::units::Dimension;
@@ -47,8 +48,7 @@ impl Reader<'_> {
                 .error(span(second), "the two planes are one plane")
                 .with_help("choose two planes apart along the shaft"));
         }
-        let r = self.math(radius)?;
-        self.expect_dimension(&r, Dimension::LENGTH, span(radius))?;
+        let r = self.quantity(radius, Dimension::LENGTH)?;
         self.positive(
             "the radius of the correction masses",
             "radius",
@@ -76,8 +76,6 @@ impl Reader<'_> {
             "y" => Axis::Y,
             _ => Axis::Z,
         };
-        let e = self.math(position)?;
-        self.expect_dimension(&e, Dimension::LENGTH, span(position))?;
-        Ok((axis, e))
+        Ok((axis, self.quantity(position, Dimension::LENGTH)?))
     }
 }

@@ -113,7 +113,11 @@ fn number_text(n: &Number) -> String {
 pub(super) fn answers_text(results: &[Result]) -> String {
     results
         .iter()
-        .filter_map(|r| Some(format!("  {} = {}\n", r.name, value_text(r)?)))
+        .filter_map(|r| {
+            let line = super::inertia_results::answer_line(r)
+                .or_else(|| Some(format!("{} = {}", r.name, value_text(r)?)))?;
+            Some(format!("  {line}\n"))
+        })
         .collect()
 }
 

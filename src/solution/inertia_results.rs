@@ -179,6 +179,23 @@ fn row_numbers_text(row: &Row) -> Option<String> {
     })
 }
 
+/// The engineer's one line of a tensor or frame by its numbers alone:
+/// `I_G = [[0.025, 0, 0], […], […]] kg·m²`, or
+/// `principal_G: I_1 = 0.025 kg·m², …, e_1 = (1, 0, 0), …` (never a flat list of twelve
+/// numbers under one unit); `None` for a scalar or a vector, or without values.
+pub(super) fn answer_line(r: &Result) -> Option<String> {
+    r.value.as_ref()?;
+    let rows = rows(r)?;
+    if let [row] = rows.as_slice() {
+        return Some(format!("{} = {}", r.name, row_numbers_text(row)?));
+    }
+    let parts: Vec<String> = rows
+        .iter()
+        .filter_map(|row| Some(format!("{} = {}", row.name, row_numbers_text(row)?)))
+        .collect();
+    Some(format!("{}: {}", r.name, parts.join(", ")))
+}
+
 /// The result's text: one line per row, under its request's name (`principal_G:`), or
 /// `I_G = [[…]] = [[…]] kg·m^2` for a tensor.
 pub(super) fn text(r: &Result) -> Option<String> {

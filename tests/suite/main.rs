@@ -32,6 +32,7 @@ mod domains;
 mod double_double_float;
 mod dual_numbers;
 mod engineer_numbers;
+mod engineer_tensor_lines;
 mod exact_numbers;
 mod expression_generator;
 mod general_body_print;

@@ -16,15 +16,21 @@ pub(super) fn rows<'a>(scene: &Scene, corrections: &[Correction; 2]) -> Vec<Resu
     let mut rows = Vec::with_capacity(6);
     for correction in corrections {
         let k = &correction.label;
+        // LaTeX's subscript: `\theta_1`, `\theta_{c1}`.
+        let sub = if k.len() == 1 {
+            k.clone()
+        } else {
+            format!("{{{k}}}")
+        };
         let mass_unit = Some(Dimension::MASS.si_unit());
         rows.push(scalar(
             scene,
             Cow::Owned(format!("m_{k}")),
-            format!("m_{{{k}}}"),
+            format!("m_{sub}"),
             correction.mass.clone(),
             mass_unit,
         ));
-        let (name, name_latex) = (format!("theta_{k}"), format!(r"\theta_{{{k}}}"));
+        let (name, name_latex) = (format!("theta_{k}"), format!(r"\theta_{sub}"));
         let in_degrees = |radians: f64| radians.to_degrees();
         match &correction.angle {
             // Symbolically a correction, but none with the givens' values.
@@ -37,7 +43,7 @@ pub(super) fn rows<'a>(scene: &Scene, corrections: &[Correction; 2]) -> Vec<Resu
             }
             CorrectionAngle::Atan2 { q, p } => {
                 if let Ok(tangent) = q.checked_div(p) {
-                    let tan_name = format!(r"\tan\theta_{{{k}}}");
+                    let tan_name = format!(r"\tan\theta_{sub}");
                     let named = Cow::Owned(format!("tan(theta_{k})"));
                     rows.push(scalar(scene, named, tan_name, tangent, None));
                 }

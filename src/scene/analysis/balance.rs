@@ -84,22 +84,23 @@ impl Analyser<'_> {
     }
 }
 
-/// The subscripts of the corrections' names: `1`, `2` (`m_1`, `θ_1`, `P_1`, `Q_1`), or `c1`,
-/// `c2` when the scene has a name of those (unbalance masses given as `m1`, `m2` are `m_1`,
-/// `m_2`: a page must not read `m_1 = …m_1…`).
+/// The subscripts of the corrections' names: `1`, `2` (`m_1`, `θ_1`, `P_1`, `Q_1`), else
+/// `a`, `b`, else `c1`, `c2`: the first pair the scene has no name of (unbalance masses
+/// given as `m1`, `m2` are `m_1`, `m_2`: a page must not read `m_1 = …m_1…`).
 fn correction_labels(scene: &Scene) -> [&'static str; 2] {
     let taken = |name: String| {
         let s = Symbol::new(&name);
         scene.givens.iter().any(|g| g.symbol == s) || scene.is_unknown(s)
     };
-    let clash = ["1", "2"].iter().any(|k| {
-        ["m", "theta", "P", "Q"]
-            .iter()
-            .any(|letter| taken(format!("{letter}_{k}")))
-    });
-    if clash {
-        ["c1", "c2"]
-    } else {
-        ["1", "2"]
-    }
+    let free = |labels: &[&str; 2]| {
+        !labels.iter().any(|k| {
+            ["m", "theta", "P", "Q"]
+                .iter()
+                .any(|letter| taken(format!("{letter}_{k}")))
+        })
+    };
+    [["1", "2"], ["a", "b"]]
+        .into_iter()
+        .find(free)
+        .unwrap_or(["c1", "c2"])
 }

@@ -35,6 +35,8 @@ pub struct Places {
     pub couples: Vec<Span>,
     /// The first `before` statement (the state before an impact: the scene needs one).
     pub before: Option<Span>,
+    /// The first `impulse` statement (an impact: the scene must leave something to find).
+    pub impulse: Option<Span>,
 }
 
 /// A given quantity: symbolic, or with a value converted to SI.

@@ -130,7 +130,7 @@ pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene,
         reader.statement(statement)?;
     }
     reader.resolve_requests()?;
-    reader.impact_has_impulses()?;
+    reader.impact_is_determined()?;
     Ok(reader.scene)
 }
 
@@ -276,6 +276,9 @@ impl Reader<'_> {
             Rule::couple => self.scene.places.couples.push(place),
             Rule::before if self.scene.places.before.is_none() => {
                 self.scene.places.before = Some(place)
+            }
+            Rule::impulse if self.scene.places.impulse.is_none() => {
+                self.scene.places.impulse = Some(place)
             }
             _ => {}
         }

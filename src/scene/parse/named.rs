@@ -74,12 +74,18 @@ impl Reader<'_> {
         Ok(())
     }
 
-    /// The state before an impact means nothing without the impulses of one.
-    pub(super) fn impact_has_impulses(&self) -> Result<(), Diagnostic> {
-        match self.scene.places.before {
-            Some(at) if self.scene.impulses.is_empty() => Err(self
+    /// The state before an impact means nothing without the impulses of one; and an impulse
+    /// determines the motion just after the blow only through the unknowns the scene
+    /// declares (with none, impulse and momentum were never applied, and the motion as
+    /// written, at rest by default, was reported as the answer).
+    pub(super) fn impact_is_determined(&self) -> Result<(), Diagnostic> {
+        match (self.scene.places.before, self.scene.places.impulse) {
+            (Some(at), _) if self.scene.impulses.is_empty() => Err(self
                 .error((at.start, at.end), "'before' describes the motion before an impact, and the scene has no impulse")
                 .with_help("add the impulse of the blow ('impulse F*Dt*k at (x, y, z)'), or remove this line")),
+            (_, Some(at)) if self.scene.unknowns.is_empty() => Err(self
+                .error((at.start, at.end), "an impulse, and nothing for impulse and momentum to find: the scene declares no unknown")
+                .with_help("declare the motion just after the blow as unknowns: 'unknown w_x, w_y, w_z : rad/s' with 'omega = w_x*i + w_y*j + w_z*k' (and vbar likewise)")),
             _ => Ok(()),
         }
     }

@@ -10,6 +10,7 @@ pub mod composite_body;
 pub mod derivation;
 pub mod equations_of_motion;
 pub mod euler;
+pub mod eulerian_angles;
 pub mod fixed_axis;
 pub mod impulse_momentum;
 pub mod inertia;

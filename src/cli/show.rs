@@ -7,8 +7,10 @@ use kinetics::parse::{parse_statement, Diagnostic, Statement};
 use kinetics::print::{self, Notation};
 
 #[derive(clap::Args)]
+#[command(after_help = "Example:\n  kinetics latex \"-a^2 + 1/2 m v^2\"")]
 pub struct Args {
     /// The expression or equation, in ASCII (`I_x*w_x - I_xy*w_y`); `-` reads standard input.
+    #[arg(allow_hyphen_values = true, value_parser = input::expression_argument)]
     pub input: String,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Latex)]

@@ -25,13 +25,14 @@ fn a_leading_minus_is_the_expression() {
         let json: serde_json::Value = serde_json::from_str(&out).expect("JSON");
         assert_eq!(json["text"], "-a", "{args:?}");
     }
-    for args in [
-        ["latex", "-a", "--fromat", "json"],
-        ["latex", "--fromat", "json", "-a"],
+    // Before the expression clap takes `--fromat` for it and stops at `json`.
+    for (args, named) in [
+        (["latex", "-a", "--fromat", "json"], "'--fromat'"),
+        (["latex", "--fromat", "json", "-a"], "'json'"),
     ] {
         let (code, out, err) = kinetics(&args);
         assert_eq!((code, out.as_str()), (2, ""), "{args:?}");
-        assert!(err.contains("--fromat"), "{args:?}: {err}");
+        assert!(err.contains(named), "{args:?}: {err}");
     }
     let (code, out, err) = kinetics(&["simplify", "--expnad"]);
     assert_eq!((code, out.as_str()), (2, ""));
@@ -105,4 +106,94 @@ fn every_help_carries_an_example_that_runs() {
             String::from_utf8_lossy(&out.stderr)
         );
     }
+}
+
+/// What people type, the LaTeX `kinetics latex` writes of it, as written: order and
+/// parentheses kept, only the notation changed.
+const AS_WRITTEN: [(&str, &str); 12] = [
+    ("-a^2 + b", "-a^2 + b"),
+    ("1/2 m v^2", r"\frac{1}{2} m v^2"),
+    (
+        "b*a/(2*c) + w1*wdot_x",
+        r"\frac{b a}{2 c} + \omega_1 \dot{\omega}_x",
+    ),
+    ("I_x*w_x - I_xy*w_y", r"I_x \omega_x - I_{xy} \omega_y"),
+    (
+        "F_2*Dt*b/(2*(-1/12*m*b^2 - 1/12*m*c^2))",
+        r"\frac{F_2\,\Delta t\,b}{2 \left(-\frac{1}{12} m b^2 - \frac{1}{12} m c^2\right)}",
+    ),
+    ("sqrt(4*a^2*b) + sin(t)^2", r"\sqrt{4 a^2 b} + \sin^2 t"),
+    ("(a + b)^2 - (a + b) + c", "(a + b)^2 - (a + b) + c"),
+    (
+        "H_x = I_x w_x - I_xy w_y",
+        r"H_x = I_x \omega_x - I_{xy} \omega_y",
+    ),
+    ("a*-b - -b", "a (-b) - (-b)"),
+    ("2*3*a^(1/2) + x^-2", r"2 \cdot 3 a^{1/2} + x^{-2}"),
+    (
+        "sin(beta) L + cos(30 deg)",
+        r"\sin\beta\,L + \cos(30^\circ)",
+    ),
+    ("-a/b + c/d*e/f", r"-\frac{a}{b} + \frac{c}{d} \frac{e}{f}"),
+];
+
+/// `kinetics latex` keeps the user's order (`-a^2 + b`, with or without `--`); `--textbook`
+/// gives `derive`'s order, `b - a^2`, and `simplify` its canonical form.
+#[test]
+fn latex_keeps_the_order_written() {
+    for args in [&["latex", "-a^2 + b"][..], &["latex", "--", "-a^2 + b"]] {
+        let (code, out, err) = kinetics(args);
+        assert_eq!((code, out.trim()), (0, "-a^2 + b"), "{args:?}: {err}");
+    }
+    let (code, out, _) = kinetics(&["latex", "--textbook", "-a^2 + b"]);
+    assert_eq!((code, out.trim()), (0, "b - a^2"));
+    let (code, out, _) = kinetics(&["simplify", "-a^2 + b"]);
+    assert_eq!((code, out.trim()), (0, "b - a^2"));
+    for (input, latex) in AS_WRITTEN {
+        let (code, out, err) = kinetics(&["latex", input]);
+        assert_eq!((code, out.trim()), (0, latex), "{input}: {err}");
+    }
+    // What the algebra refuses is refused as before.
+    let (code, _, err) = kinetics(&["latex", "a/(b - b)"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("division by zero"), "{err}");
+}
+
+/// The text as written reads back to the same expression as the input (an independent
+/// check of the order and parentheses kept: the canonical forms agree), and the terms are
+/// in the order written.
+#[test]
+fn the_text_as_written_reads_back_to_the_input() {
+    use kinetics::parse::as_written::statement_as_written;
+    use kinetics::parse::parse_statement;
+    for (input, _) in AS_WRITTEN {
+        let written = statement_as_written("t", input).expect("parses");
+        assert_eq!(
+            parse_statement("t", &written.text).expect("reads back"),
+            parse_statement("t", input).expect("parses"),
+            "{input} -> {}",
+            written.text
+        );
+    }
+    let written = statement_as_written("t", "z + y - x").expect("parses");
+    assert_eq!(written.text, "z + y - x");
+}
+
+/// Every LaTeX of the table compiles with pdflatex.
+#[test]
+fn latex_as_written_compiles() {
+    let dir = std::env::temp_dir().join(format!("kinetics-as-written-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let body: String = AS_WRITTEN
+        .iter()
+        .map(|(_, latex)| format!("\\[ {latex} \\]\n"))
+        .collect();
+    let tex = dir.join("as_written.tex");
+    std::fs::write(
+        &tex,
+        format!("\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\begin{{document}}\n{body}\\end{{document}}\n"),
+    )
+    .expect("writable");
+    let compiled = crate::common::pdflatex::pdflatex(&dir, &tex);
+    assert_eq!(compiled.first_error(), None);
 }

@@ -197,3 +197,95 @@ fn latex_as_written_compiles() {
     let compiled = crate::common::pdflatex::pdflatex(&dir, &tex);
     assert_eq!(compiled.first_error(), None);
 }
+
+/// A scene with one more given, `q = <quantity>`, its body and request around it.
+fn scene_with_given(quantity: &str) -> String {
+    format!(
+        "given m = 2 kg\ngiven r = 0.1 m\ngiven q = {quantity}\nbody disk(r) mass m\nfixed point\nomega = 3 rad/s*k\nfind T\n"
+    )
+}
+
+/// Every unit the program prints reads back as the same unit: the units of results are
+/// `Dimension::si_unit`'s, so each dimension's (exponents of kg, m, s from -3 to 3: the
+/// named ones such as N·m, kg·m²/s and rad/s², and the others as kg^2·m) is written as a
+/// given's unit, read, and printed again; its factor to SI is 1, exactly.
+#[test]
+fn every_printed_unit_reads_back() {
+    use kinetics::scene::parse_scene;
+    use kinetics::scene::units::Dimension;
+    let mut read = 0;
+    for mass in -3..=3 {
+        for length in -3..=3 {
+            for time in -3..=3 {
+                let dimension = Dimension::new(mass, length, time);
+                let printed = dimension.si_unit();
+                if printed.is_empty() {
+                    continue;
+                }
+                let text = scene_with_given(&format!("2 {printed}"));
+                let scene = parse_scene("t.scene", &text)
+                    .unwrap_or_else(|e| panic!("{printed}: {}", e.render()));
+                let q = scene
+                    .givens
+                    .iter()
+                    .find(|g| g.symbol.name() == "q")
+                    .expect("q");
+                assert_eq!(q.dimension, dimension, "{printed}");
+                assert_eq!(q.dimension.si_unit(), printed);
+                assert_eq!(
+                    scene.exact_given(q.symbol),
+                    Some(kinetics::algebra::Expr::int(2)),
+                    "{printed}"
+                );
+                read += 1;
+            }
+        }
+    }
+    assert_eq!(read, 7 * 7 * 7 - 1);
+}
+
+/// Units as people write them: N·m, N*m, N m, kg·m^2, kg m², m/s^2, rad/s and ° in a given,
+/// through the binary: the engineer's page shows the value read, in SI.
+#[test]
+fn units_as_people_write_them() {
+    let dir = std::env::temp_dir().join(format!("kinetics-units-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    for (quantity, si) in [
+        ("6 N·m", "6 N·m"),
+        ("6 N*m", "6 N·m"),
+        ("6 N m", "6 N·m"),
+        ("6 kg·m^2", "6 kg·m²"),
+        ("6 kg m²", "6 kg·m²"),
+        ("6 m/s^2", "6 m/s²"),
+        ("6 rad/s", "6 rad/s"),
+        ("6 mm", "0.006 m"),
+    ] {
+        let path = dir.join("units.scene");
+        std::fs::write(&path, scene_with_given(quantity)).expect("writable");
+        let (code, out, err) = kinetics(&[
+            "solve",
+            "--numbers",
+            "--format",
+            "json",
+            path.to_str().unwrap(),
+        ]);
+        assert_eq!(code, 0, "{quantity}: {err}");
+        let json: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+        let given = json["givens"]
+            .as_array()
+            .and_then(|g| g.iter().find(|g| g["name"] == "q"))
+            .unwrap_or_else(|| panic!("{quantity}: {out}"));
+        let (number, unit) = si.split_once(' ').expect("a number and a unit");
+        assert_eq!(given["unit"], unit, "{quantity}");
+        assert_eq!(
+            given["si_value"].as_f64(),
+            number.parse().ok(),
+            "{quantity}: {given}"
+        );
+    }
+    // The degree sign: 30° is π/6, whose sine is exactly 1/2 in a claim.
+    let path = dir.join("degrees.scene");
+    std::fs::write(&path, scene_with_given("30°")).expect("writable");
+    let (code, out, err) = kinetics(&["check", path.to_str().unwrap(), "--claim", "sin(q) = 1/2"]);
+    assert_eq!(code, 0, "{out}{err}");
+}

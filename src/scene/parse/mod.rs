@@ -3,7 +3,8 @@
 //! expression parser; its diagnostics are moved to their place in the file.
 
 use super::model::{Constraint, ConstraintKind, Force, Places, Quantity, Request, Scene, Span};
-use super::units::{dimension_with, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
+use super::unit_text::unit_of_text;
+use super::units::{dimension_with, Dimension, DimensionError, Dimensions};
 use super::units_in_math::{marker, marker_dimension};
 use crate::algebra::{vector, Expr, Symbol, Vector};
 use crate::parse::{parse_expression_with_units, Diagnostic};
@@ -376,39 +377,13 @@ impl Reader<'_> {
         Ok(symbol)
     }
 
+    /// The unit written at `p` (`unit_text.rs`), an error located inside it.
     fn unit(&self, p: &Pair<Rule>) -> Result<super::units::Unit, Diagnostic> {
-        let mut dimension = Dimension::NONE;
-        let mut to_si = 1.0;
-        let mut divide = false;
-        for part in p.clone().into_inner() {
-            match part.as_rule() {
-                Rule::unit_op => divide = part.as_str() == "/",
-                Rule::unit_power => {
-                    let mut pieces = part.clone().into_inner();
-                    let name = pieces
-                        .next()
-                        .ok_or_else(|| self.error(span(&part), "expected a unit"))?;
-                    let unit = unit_named(name.as_str()).ok_or_else(|| {
-                        self.error(span(&name), format!("unknown unit '{}'", name.as_str()))
-                            .with_help(format!(
-                                "the units are {UNIT_NAMES}, combined with * / and ^"
-                            ))
-                    })?;
-                    let exponent: i8 = match pieces.next() {
-                        Some(e) => e.as_str().parse().map_err(|_| {
-                            self.error(span(&e), "exponent out of range")
-                                .with_help("unit exponents are small integers, as in m/s^2")
-                        })?,
-                        None => 1,
-                    };
-                    let exponent = if divide { -exponent } else { exponent };
-                    dimension = dimension.times(unit.dimension.power(exponent));
-                    to_si *= unit.to_si.powi(exponent as i32);
-                }
-                _ => {}
-            }
-        }
-        Ok(super::units::Unit { dimension, to_si })
+        unit_of_text(p.as_str()).map_err(|e| {
+            let start = span(p).0;
+            self.error((start + e.span.0, start + e.span.1), e.message)
+                .with_help(e.help)
+        })
     }
 
     fn unknown(&mut self, inner: Vec<Pair<Rule>>) -> Result<(), Diagnostic> {

@@ -289,3 +289,62 @@ fn units_as_people_write_them() {
     let (code, out, err) = kinetics(&["check", path.to_str().unwrap(), "--claim", "sin(q) = 1/2"]);
     assert_eq!(code, 0, "{out}{err}");
 }
+
+/// Runs `solve` on a scene written to a temporary file: exit code and standard error.
+fn solve_scene(name: &str, text: &str) -> (i32, String) {
+    let dir = std::env::temp_dir().join(format!("kinetics-hints-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let path = dir.join(name);
+    std::fs::write(&path, text).expect("writable");
+    let (code, _, err) = kinetics(&["solve", path.to_str().unwrap()]);
+    (code, err)
+}
+
+/// A unit used as a symbol (`d*mm`, `F*N`, `2*m_0*kg`) gets the hint to write the quantity
+/// with its unit, not to declare the unit; a name that differs from a declared one only in
+/// case or underscores gets that name.
+#[test]
+fn hints_name_the_right_fix() {
+    let base =
+        "given m = 2 kg\ngiven r = 0.1 m\nbody disk(r) mass m\nfixed point\nomega = 3 rad/s*k\n";
+    let (code, err) = solve_scene(
+        "mm.scene",
+        &format!("{base}given d = 300 mm\npoint A at (d*mm, 0, 0)\nfind v_A\n"),
+    );
+    assert_eq!(code, 1);
+    assert!(err.contains("unknown symbol mm"), "{err}");
+    assert!(
+        err.contains("write the quantity with its unit (300 mm)"),
+        "{err}"
+    );
+    assert!(
+        !err.contains("given mm ="),
+        "the wrong fix is not offered: {err}"
+    );
+    for unit in ["kg", "N"] {
+        let (code, err) = solve_scene(
+            "unit.scene",
+            &format!("{base}given F = 2 N\ncouple F*r*{unit}*k\nfind T\n"),
+        );
+        assert_eq!(code, 1, "{unit}");
+        assert!(
+            err.contains(&format!("write the quantity with its unit (300 {unit})")),
+            "{err}"
+        );
+    }
+    let (code, err) = solve_scene(
+        "case.scene",
+        &format!("{base}unknown C_Z : N\nforce C = C_Z*k at (r, 0, 0)\nfind C_z\n"),
+    );
+    assert_eq!(code, 1);
+    assert!(err.contains("cannot find 'C_z'"), "{err}");
+    assert!(err.contains("did you mean 'C_Z'?"), "{err}");
+    let (code, err) = solve_scene(
+        "underscore.scene",
+        &format!("{base}given W1 = 2 rad/s\ncouple m*r^2*w_1^2*k\nfind T\n"),
+    );
+    assert_eq!(code, 1);
+    assert!(err.contains("unknown symbol w_1"), "{err}");
+    // W1 is the symbol W_1 (trailing digits are a subscript), which differs in case only.
+    assert!(err.contains("did you mean W_1?"), "{err}");
+}

@@ -20,6 +20,7 @@ mod named;
 mod orientation;
 mod quantity;
 mod reserved_names;
+mod similar_name;
 mod syntax_error;
 
 /// The name of time in scene mathematics.
@@ -331,6 +332,17 @@ impl Reader<'_> {
                     if let Some(unnamed) = self.unnamed_point(&request.name, at) {
                         return Err(unnamed);
                     }
+                    let unknowns = self.scene.unknowns.iter().map(|(s, _)| s.name());
+                    let named = Quantity::NAMED.map(|(n, _)| n);
+                    if let Some(similar) =
+                        similar_name::similar_name(&request.name, unknowns.chain(named))
+                    {
+                        return Err(self
+                            .error(at, format!("cannot find '{}'", request.name))
+                            .with_help(format!(
+                            "did you mean '{similar}'? Names differ in letter case and underscores"
+                        )));
+                    }
                     return Err(self
                         .error(at, format!("cannot find '{}'", request.name))
                         .with_help(format!(
@@ -421,12 +433,10 @@ impl Reader<'_> {
         })?;
         let undeclared = |s: &Symbol| !self.dims.contains_key(s) && marker_dimension(*s).is_none();
         if let Some(unknown) = e.symbols().into_iter().find(undeclared) {
+            let declared = self.dims.keys().map(|s| s.name());
             return Err(self
                 .error(span(p), format!("unknown symbol {}", unknown.name()))
-                .with_help(format!(
-                    "declare it first: 'given {0} = <value> <unit>', 'given {0} : <unit>' or 'unknown {0} : <unit>'",
-                    unknown.name()
-                )));
+                .with_help(similar_name::undeclared_help(unknown.name(), declared)));
         }
         self.finite_with_values(&self.in_si(&e, span(p))?, span(p))?;
         Ok(e)

@@ -348,3 +348,53 @@ fn hints_name_the_right_fix() {
     // W1 is the symbol W_1 (trailing digits are a subscript), which differs in case only.
     assert!(err.contains("did you mean W_1?"), "{err}");
 }
+
+/// `find … in UNIT` takes the units as printed and as people write them: the answer is in
+/// the unit asked for (T = ½ I ω² = ½ (½ m r²) ω² = 0.045 J for m = 2 kg, r = 0.1 m,
+/// ω = 3 rad/s about the disk's axis z, here along x' turned by `along z`).
+#[test]
+fn find_in_takes_units_as_written() {
+    let scene = "given m = 2 kg\ngiven r = 0.1 m\nbody disk(r) mass m along z\nfixed point\nomega = 3 rad/s*k\n";
+    let dir = std::env::temp_dir().join(format!("kinetics-find-in-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let path = dir.join("find_in.scene");
+    let expected = 0.5 * (0.5 * 2.0 * 0.1 * 0.1) * 3.0 * 3.0;
+    for unit in ["N·m", "N m", "N*m", "J", "kg·m²/s^2", "kg m^2 s⁻²"] {
+        std::fs::write(&path, format!("{scene}find T in {unit}\n")).expect("writable");
+        let (code, out, err) = kinetics(&[
+            "solve",
+            "--numbers",
+            "--format",
+            "json",
+            path.to_str().unwrap(),
+        ]);
+        assert_eq!(code, 0, "{unit}: {err}");
+        let json: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+        let result = &json["results"][0];
+        assert_eq!(result["unit"], unit, "{unit}");
+        let value = result["value"].as_f64().expect("a number");
+        assert!((value - expected).abs() < 1e-15, "{unit}: {value}");
+    }
+}
+
+/// The README's quick-use lines of `kinetics latex` print what their comments say, the
+/// leading-minus example among them.
+#[test]
+fn the_readme_latex_examples_hold() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+        .expect("README.md");
+    let mut checked = 0;
+    for line in readme.lines().filter(|l| l.starts_with("kinetics latex ")) {
+        let (command, comment) = line.split_once(" # ").expect("a comment");
+        let expected = comment.split("   (").next().expect("the output").trim();
+        let args = words(command);
+        let (code, out, err) = kinetics(&args[1..].iter().map(String::as_str).collect::<Vec<_>>());
+        assert_eq!((code, out.trim()), (0, expected), "{line}: {err}");
+        checked += 1;
+    }
+    assert!(checked >= 3, "the README shows the latex examples");
+    assert!(
+        readme.contains("kinetics latex \"-a^2"),
+        "a leading-minus example"
+    );
+}

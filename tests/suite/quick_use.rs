@@ -398,3 +398,22 @@ fn the_readme_latex_examples_hold() {
         "a leading-minus example"
     );
 }
+
+/// The degree sign in a scene's mathematics and in an expression is the degree: a body
+/// `rotated 30° about z` is the body `rotated 30 deg about z`, and `cos(60°)` is 1/2.
+#[test]
+fn the_degree_sign_is_the_degree() {
+    let scene = |angle: &str| {
+        format!("given m = 2 kg\ngiven r = 0.1 m\nbody disk(r) mass m rotated {angle} about z\nfixed point\nomega = 3 rad/s*k\nfind T, H_O\n")
+    };
+    let (code, with_sign) = solve_scene("sign.scene", &scene("30°"));
+    assert_eq!(code, 0, "{with_sign}");
+    let dir = std::env::temp_dir().join(format!("kinetics-hints-{}", std::process::id()));
+    let solved = |name: &str| kinetics(&["solve", dir.join(name).to_str().unwrap()]).1;
+    let sign = solved("sign.scene");
+    solve_scene("word.scene", &scene("30 deg"));
+    assert_eq!(sign, solved("word.scene"));
+    assert!(sign.contains("T = "), "{sign}");
+    let (code, out, err) = kinetics(&["simplify", "cos(60°)"]);
+    assert_eq!((code, out.trim()), (0, "1/2"), "{err}");
+}

@@ -126,11 +126,8 @@ impl Writer<'_> {
         }
     }
 
-    /// `node` without parentheses around it: where a fraction bar, a root or braces group.
-    fn grouped(&self, out: &mut String, node: &Node) {
-        self.bare(out, node);
-    }
-
+    /// `node` without parentheses around it: at the top, and where a fraction bar, a root,
+    /// braces or a call's parentheses group it.
     fn bare(&self, out: &mut String, node: &Node) {
         match &node.ast {
             Ast::Number(_) => self.number(out, node),
@@ -201,12 +198,12 @@ impl Writer<'_> {
             }
             ("sqrt", [x], Notation::Latex) => {
                 out.push_str(r"\sqrt{");
-                self.grouped(out, x);
+                self.bare(out, x);
                 out.push('}');
             }
             ("abs", [x], Notation::Latex) => {
                 out.push_str(r"\left|");
-                self.grouped(out, x);
+                self.bare(out, x);
                 out.push_str(r"\right|");
             }
             (_, [x], Notation::Latex) if Func::from_name(name).is_some() => {
@@ -221,7 +218,7 @@ impl Writer<'_> {
                     if k > 0 {
                         out.push_str(", ");
                     }
-                    self.grouped(out, a);
+                    self.bare(out, a);
                 }
                 out.push(')');
             }
@@ -240,7 +237,7 @@ impl Writer<'_> {
             }
             _ => {
                 out.push('(');
-                self.grouped(out, x);
+                self.bare(out, x);
                 out.push(')');
             }
         }
@@ -303,10 +300,15 @@ impl Writer<'_> {
                     if k > 0 {
                         written.push_str(if *divide { "/" } else { " " });
                     }
-                    self.node(&mut written, factor, Level::Negation);
+                    let need = if k == 0 {
+                        Level::Negation
+                    } else {
+                        Level::Power
+                    };
+                    self.node(&mut written, factor, need);
                 }
             }
-            _ => self.grouped(&mut written, exponent),
+            _ => self.bare(&mut written, exponent),
         }
         if written.chars().count() == 1 {
             out.push_str(&written);
@@ -398,7 +400,7 @@ impl Writer<'_> {
     /// Above or below a fraction bar, which groups on its own: a lone sum needs no parentheses.
     fn fraction_part(&self, out: &mut String, factors: &[&Node]) {
         if let [alone] = factors {
-            return self.grouped(out, alone);
+            return self.bare(out, alone);
         }
         let mut previous = None;
         for n in factors {

@@ -14,6 +14,7 @@ use kinetics::algebra::{vector, AlgebraError, Axis, Domains, Expr};
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice};
 use kinetics::numeric::rigid_body::sample_sink::Sample;
 use kinetics::numeric::rigid_body::simulate::Sampling;
+use kinetics::parse::as_written::statement_as_written;
 use kinetics::parse::{parse_statement, Diagnostic, Statement};
 use kinetics::print::{self, Notation};
 use kinetics::scene::{analyse, parse_scene, simulation};
@@ -90,6 +91,12 @@ fn expression(text: &str, form: Form) -> Outcome {
         let whole = Diagnostic::at("input", text, 0, text.trim_end().len(), err.to_string());
         located(&whole, text, false)
     };
+    if let Form::AsWritten = form {
+        // `latex` writes the text as written too (`parse::as_written`).
+        let written = statement_as_written("input", text).map_err(|d| located(&d, text, false))?;
+        printed(&written.latex, text)?;
+        printed(&written.text, text)?;
+    }
     for side in sides {
         let side = match form {
             Form::AsWritten => side,

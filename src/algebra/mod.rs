@@ -58,7 +58,7 @@ pub use expr::{Expr, View};
 pub use function::Func;
 pub use pi::PI_NAME;
 pub use rational::Q;
-pub use symbol::{axis_of_subscript, Role, Symbol};
+pub use symbol::{axis_of_subscript, reads_as_several_letters, Role, Symbol};
 
 /// A three-vector of expressions (`i`, `j`, `k` components).
 pub type Vector = nalgebra::Vector3<Expr>;

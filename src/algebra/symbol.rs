@@ -323,6 +323,12 @@ fn name_prefix(name: &str) -> u64 {
     u64::from_be_bytes(bytes)
 }
 
+/// Whether a symbol's LaTeX reads as several letters (`\Delta t`, `\mathit{Lb}`): a product
+/// puts a thin space beside it, so that `F\,\Delta t\,b` is not read `F \Delta t b`.
+pub fn reads_as_several_letters(latex: &str) -> bool {
+    latex.contains(' ') || latex.starts_with(r"\mathit")
+}
+
 /// The axis a subscript names, primes ignored: `x` or `X` is 0, `y` 1, `z` 2, anything
 /// else (`xy`, `1`, empty) none.
 pub fn axis_of_subscript(subscript: &str) -> Option<usize> {

@@ -13,6 +13,7 @@ pub enum Bench {
 }
 
 #[derive(clap::Args)]
+#[command(after_help = "Example:\n  kinetics bench work-precision --until 10 --budget-ms 5")]
 pub struct WorkPrecisionArgs {
     /// End time of each run (s); samples at 100 equal intervals. Below 10 s the spacing is
     /// shorter than the coarsest fixed step (0.1 s): fixed steps longer than the spacing are

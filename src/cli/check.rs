@@ -24,7 +24,7 @@ pub struct Args {
     /// without one, a general body in body-fixed axes.
     pub scene: Option<String>,
     /// A claim `lhs = rhs` (repeatable).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::input::expression_argument)]
     pub claim: Vec<String>,
     /// A file of claims, one a line (`#` starts a comment); `-` reads standard input.
     #[arg(long)]

@@ -9,6 +9,7 @@ use kinetics::mechanics::catalogue::{derive_general_along, NAMES};
 use kinetics::solution::{render_derivations, Format, Shown};
 
 #[derive(clap::Args)]
+#[command(after_help = "Example:\n  kinetics derive --general --principal --only euler")]
 pub struct Args {
     /// Derive for a general body (symbols I_x ... I_xz, w_x, w_y, w_z, m, vbar).
     #[arg(long, required = true)]

@@ -59,3 +59,19 @@ pub fn read_file(path: &str) -> Result<(String, String), CliError> {
     })?;
     Ok((path.to_string(), text))
 }
+
+/// The value parser of an expression or equation argument, which may begin with a minus
+/// (`-a^2 + b`, clap's `allow_hyphen_values`): a word after two minus signs (`--fromat`) is
+/// a misspelt option, refused as one, not read as the expression `-(-fromat)`.
+pub fn expression_argument(argument: &str) -> Result<String, String> {
+    let flag = argument
+        .strip_prefix("--")
+        .filter(|rest| rest.starts_with(|c: char| c.is_ascii_alphabetic()));
+    match flag {
+        Some(_) => Err(format!(
+            "'{argument}' is not an option of this command (--help lists them); \
+             an expression that begins with two minus signs is written -(-...)"
+        )),
+        None => Ok(argument.to_string()),
+    }
+}

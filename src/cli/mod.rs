@@ -21,7 +21,13 @@ use std::process::ExitCode;
 
 /// Kinetics of rigid bodies in three dimensions: derive, print, evaluate.
 #[derive(Parser)]
-#[command(name = "kinetics", version, about, long_about = None)]
+#[command(
+    name = "kinetics",
+    version,
+    about,
+    long_about = None,
+    after_help = "Example:\n  kinetics latex \"-a^2 + 1/2 m v^2\""
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -45,7 +51,10 @@ enum Command {
     /// Integrate Euler's equations and the orientation for a scene's body.
     Simulate(simulate::Args),
     /// Benchmarks that print tables.
-    #[command(subcommand)]
+    #[command(
+        subcommand,
+        after_help = "Example:\n  kinetics bench work-precision --until 10 --budget-ms 5"
+    )]
     Bench(bench::Bench),
 }
 

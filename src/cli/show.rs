@@ -1,18 +1,26 @@
-//! `kinetics latex "<expr or equation>"`: print as LaTeX (default), text or JSON.
+//! `kinetics latex "<expr or equation>" [--textbook]`: print as LaTeX (default), text or
+//! JSON: as written (the user's order and parentheses, only the notation changed), or with
+//! `--textbook` in the textbook's order and grouping that `derive` prints.
 
 use super::error::CliError;
 use super::input;
 use kinetics::algebra::{vector, AlgebraError, Axis, Expr};
+use kinetics::parse::as_written::statement_as_written;
 use kinetics::parse::{parse_statement, Diagnostic, Statement};
 use kinetics::print::{self, Notation};
 
 #[derive(clap::Args)]
+#[command(after_help = "Example:\n  kinetics latex \"-a^2 + 1/2 m v^2\"")]
 pub struct Args {
     /// The expression or equation, in ASCII (`I_x*w_x - I_xy*w_y`); `-` reads standard input.
+    #[arg(allow_hyphen_values = true, value_parser = input::expression_argument)]
     pub input: String,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::Latex)]
     pub format: Format,
+    /// The textbook's order and grouping (as `derive` prints), not the order written.
+    #[arg(long)]
+    pub textbook: bool,
 }
 
 /// The output formats of the quick commands.
@@ -26,7 +34,20 @@ pub enum Format {
 pub fn run(args: Args) -> Result<String, CliError> {
     let (name, source) = input::read(&args.input)?;
     let statement = parse_statement(&name, &source)?;
-    render_statement(&statement, args.format).map_err(|err| at_input(&name, &source, err))
+    // The textbook's form is formed in any case: what the algebra refuses is refused as written.
+    let textbook =
+        render_statement(&statement, args.format).map_err(|err| at_input(&name, &source, err))?;
+    if args.textbook {
+        return Ok(textbook);
+    }
+    let written = statement_as_written(&name, &source)?;
+    Ok(match args.format {
+        Format::Text => written.text,
+        Format::Latex => written.latex,
+        Format::Json => {
+            serde_json::json!({"text": written.text, "latex": written.latex}).to_string()
+        }
+    })
 }
 
 /// An algebra error about the input as a whole, located at it: it quotes what was written,

@@ -9,8 +9,10 @@ use kinetics::algebra::{AlgebraError, Domains, Expr};
 use kinetics::parse::{parse_statement, Equation, Statement};
 
 #[derive(clap::Args)]
+#[command(after_help = "Example:\n  kinetics simplify \"(a^2 - b^2)/(a - b)\"")]
 pub struct Args {
     /// The expression or equation, in ASCII; `-` reads standard input.
+    #[arg(allow_hyphen_values = true, value_parser = input::expression_argument)]
     pub input: String,
     /// Multiply out products and powers of sums (no other simplification).
     #[arg(long, conflicts_with = "canonical")]

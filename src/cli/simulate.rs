@@ -37,6 +37,9 @@ pub enum Output {
 }
 
 #[derive(clap::Args)]
+#[command(
+    after_help = "Example:\n  kinetics simulate examples/scenes/spun_up_sphere.scene --at 1,2.5,10"
+)]
 pub struct Args {
     /// The scene file; `-` reads standard input.
     pub scene: String,

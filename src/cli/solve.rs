@@ -6,6 +6,7 @@ use kinetics::scene::{analyse, parse_scene, Analysis, Scene};
 use kinetics::solution::{render, render_numbers, Format};
 
 #[derive(clap::Args)]
+#[command(after_help = "Example:\n  kinetics solve examples/scenes/sp18_4_shaft_reactions.scene")]
 pub struct Args {
     /// The scene file; `-` reads standard input.
     pub scene: String,
@@ -45,6 +46,7 @@ impl From<SolutionFormat> for Format {
 }
 
 #[derive(clap::Args)]
+#[command(after_help = "Example:\n  kinetics plan examples/scenes/sp18_4_shaft_reactions.scene")]
 pub struct PlanArgs {
     /// The scene file; `-` reads standard input.
     pub scene: String,

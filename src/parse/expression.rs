@@ -160,6 +160,7 @@ fn describe(rule: &Rule) -> &'static str {
         | Rule::symbol
         | Rule::identifier
         | Rule::call
+        | Rule::degree
         | Rule::callee
         | Rule::paren
         | Rule::neg
@@ -333,6 +334,7 @@ fn primary(p: Pair<Rule>, source_name: &str, source: &str) -> Ast {
             }
             Ast::Symbol(name.to_string())
         }
+        Rule::degree => Ast::Symbol(super::DEGREE.to_string()),
         Rule::call => {
             let mut inner = p.into_inner();
             let callee = inner.next();

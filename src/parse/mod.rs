@@ -1,5 +1,6 @@
 //! Parsers of user input, with located diagnostics.
 
+pub mod as_written;
 pub mod claim;
 mod claim_vectors;
 mod cross_letter;

@@ -7,7 +7,7 @@ use super::growing_parentheses::grows;
 use super::integer;
 use super::layout::{Integer, Layout, Node, NodeId, Number, Product, Span};
 use super::spelling::latex_of;
-use crate::algebra::Func;
+use crate::algebra::{reads_as_several_letters, Func};
 
 /// Appends a signed layout to `out`.
 pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
@@ -166,10 +166,7 @@ fn factors(out: &mut String, layout: &Layout, mut separate: bool, span: Span) {
 fn is_long_name(layout: &Layout, id: NodeId) -> bool {
     match layout.node(id) {
         Node::Power(base, _) => is_long_name(layout, *base),
-        Node::Symbol(s) => {
-            let name = latex_of(*s);
-            name.contains(' ') || name.starts_with(r"\mathit")
-        }
+        Node::Symbol(s) => reads_as_several_letters(latex_of(*s)),
         _ => false,
     }
 }

@@ -4,6 +4,7 @@
 //! 1/1000. So `given theta = 90 deg` is π/2, and `sin θ` there is 1.
 
 use super::model::Scene;
+use super::unit_text::unit_powers;
 use super::units::exact_factor;
 use crate::algebra::{Expr, Symbol, Q};
 
@@ -36,28 +37,19 @@ fn split_number(written: &str) -> Option<(Q, &str)> {
     Some((if negative { -&q } else { q }, unit))
 }
 
-/// The exact factor to SI of a unit such as `deg`, `m/s^2` or `kg*m^2` (empty: 1), as a
+/// The exact factor to SI of a unit such as `deg`, `m/s^2` or `kg·m²` (empty: 1), as a
 /// rational and a power of π.
 fn unit_factor(unit: &str) -> Option<(Q, i64)> {
     let (mut factor, mut pi_power) = (Q::ONE, 0i64);
-    let mut divide = false;
-    let mut rest = unit;
-    while !rest.is_empty() {
-        let end = rest.find(['*', '/', '.']).unwrap_or(rest.len());
-        let (name, exponent) = match rest[..end].trim().split_once('^') {
-            Some((name, exponent)) => (name.trim(), exponent.trim().parse::<i64>().ok()?),
-            None => (rest[..end].trim(), 1),
-        };
-        let exponent = if divide { -exponent } else { exponent };
-        let unit = exact_factor(name)?;
-        let (q, pi) = (
-            Q::new(unit.numerator, unit.denominator)?,
-            i64::from(unit.pi_power),
-        );
+    if unit.is_empty() {
+        return Some((factor, pi_power));
+    }
+    for power in unit_powers(unit).ok()? {
+        let unit = exact_factor(power.name)?;
+        let exponent = i64::from(power.exponent);
+        let q = Q::new(unit.numerator, unit.denominator)?;
         factor = &factor * &q.checked_pow(exponent)?;
-        pi_power += pi * exponent;
-        divide = rest[end..].starts_with('/');
-        rest = rest.get(end + 1..).unwrap_or("");
+        pi_power += i64::from(unit.pi_power) * exponent;
     }
     Some((factor, pi_power))
 }

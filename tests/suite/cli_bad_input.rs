@@ -87,7 +87,7 @@ fn the_acceptance_example_prints_textbook_latex() {
         r"I_x \omega_x - I_{xy} \omega_y - I_{xz} \omega_z"
     );
     let o = kinetics(
-        &["latex", "-"],
+        &["latex", "--textbook", "-"],
         Some(b"M_y = I_y*wdot_y + (I_x - I_z)*w_z*w_x".to_vec()),
     );
     assert_eq!(

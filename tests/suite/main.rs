@@ -58,6 +58,7 @@ mod principal_axes;
 mod principal_axes_acceptance;
 mod principal_scenes;
 mod print_parse_properties;
+mod quick_use;
 mod readable_products;
 mod reproducers;
 mod review18;

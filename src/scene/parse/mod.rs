@@ -3,7 +3,8 @@
 //! expression parser; its diagnostics are moved to their place in the file.
 
 use super::model::{Constraint, ConstraintKind, Force, Places, Quantity, Request, Scene, Span};
-use super::units::{dimension_with, unit_named, Dimension, DimensionError, Dimensions, UNIT_NAMES};
+use super::unit_text::unit_of_text;
+use super::units::{dimension_with, Dimension, DimensionError, Dimensions};
 use super::units_in_math::{marker, marker_dimension};
 use crate::algebra::{vector, Expr, Symbol, Vector};
 use crate::parse::{parse_expression_with_units, Diagnostic};
@@ -19,6 +20,7 @@ mod named;
 mod orientation;
 mod quantity;
 mod reserved_names;
+mod similar_name;
 mod syntax_error;
 
 /// The name of time in scene mathematics.
@@ -330,6 +332,17 @@ impl Reader<'_> {
                     if let Some(unnamed) = self.unnamed_point(&request.name, at) {
                         return Err(unnamed);
                     }
+                    let unknowns = self.scene.unknowns.iter().map(|(s, _)| s.name());
+                    let named = Quantity::NAMED.map(|(n, _)| n);
+                    if let Some(similar) =
+                        similar_name::similar_name(&request.name, unknowns.chain(named))
+                    {
+                        return Err(self
+                            .error(at, format!("cannot find '{}'", request.name))
+                            .with_help(format!(
+                            "did you mean '{similar}'? Names differ in letter case and underscores"
+                        )));
+                    }
                     return Err(self
                         .error(at, format!("cannot find '{}'", request.name))
                         .with_help(format!(
@@ -376,39 +389,13 @@ impl Reader<'_> {
         Ok(symbol)
     }
 
+    /// The unit written at `p` (`unit_text.rs`), an error located inside it.
     fn unit(&self, p: &Pair<Rule>) -> Result<super::units::Unit, Diagnostic> {
-        let mut dimension = Dimension::NONE;
-        let mut to_si = 1.0;
-        let mut divide = false;
-        for part in p.clone().into_inner() {
-            match part.as_rule() {
-                Rule::unit_op => divide = part.as_str() == "/",
-                Rule::unit_power => {
-                    let mut pieces = part.clone().into_inner();
-                    let name = pieces
-                        .next()
-                        .ok_or_else(|| self.error(span(&part), "expected a unit"))?;
-                    let unit = unit_named(name.as_str()).ok_or_else(|| {
-                        self.error(span(&name), format!("unknown unit '{}'", name.as_str()))
-                            .with_help(format!(
-                                "the units are {UNIT_NAMES}, combined with * / and ^"
-                            ))
-                    })?;
-                    let exponent: i8 = match pieces.next() {
-                        Some(e) => e.as_str().parse().map_err(|_| {
-                            self.error(span(&e), "exponent out of range")
-                                .with_help("unit exponents are small integers, as in m/s^2")
-                        })?,
-                        None => 1,
-                    };
-                    let exponent = if divide { -exponent } else { exponent };
-                    dimension = dimension.times(unit.dimension.power(exponent));
-                    to_si *= unit.to_si.powi(exponent as i32);
-                }
-                _ => {}
-            }
-        }
-        Ok(super::units::Unit { dimension, to_si })
+        unit_of_text(p.as_str()).map_err(|e| {
+            let start = span(p).0;
+            self.error((start + e.span.0, start + e.span.1), e.message)
+                .with_help(e.help)
+        })
     }
 
     fn unknown(&mut self, inner: Vec<Pair<Rule>>) -> Result<(), Diagnostic> {
@@ -446,12 +433,10 @@ impl Reader<'_> {
         })?;
         let undeclared = |s: &Symbol| !self.dims.contains_key(s) && marker_dimension(*s).is_none();
         if let Some(unknown) = e.symbols().into_iter().find(undeclared) {
+            let declared = self.dims.keys().map(|s| s.name());
             return Err(self
                 .error(span(p), format!("unknown symbol {}", unknown.name()))
-                .with_help(format!(
-                    "declare it first: 'given {0} = <value> <unit>', 'given {0} : <unit>' or 'unknown {0} : <unit>'",
-                    unknown.name()
-                )));
+                .with_help(similar_name::undeclared_help(unknown.name(), declared)));
         }
         self.finite_with_values(&self.in_si(&e, span(p))?, span(p))?;
         Ok(e)

@@ -13,10 +13,11 @@ use super::inertia::InertiaTensor;
 use super::kinetic_energy::kinetic_energy;
 use super::rotating_frame::rate_of_angular_momentum;
 use super::steady_precession::steady_precession;
+use super::torque_free_axisymmetric::torque_free_axisymmetric;
 use crate::algebra::{AlgebraError, Axis, Expr, Vector};
 
 /// The derivations `derive` knows, in the chapter's order.
-pub const NAMES: [&str; 13] = [
+pub const NAMES: [&str; 14] = [
     "H_G",
     "H_O",
     "T",
@@ -30,6 +31,7 @@ pub const NAMES: [&str; 13] = [
     "balancing",
     "gyroscope",
     "steady_precession",
+    "torque_free",
 ];
 
 /// What each derivation of [`NAMES`] is about: the reference point and the axes, in the
@@ -164,6 +166,7 @@ pub fn derive_general_along(
         "euler" => euler_equations(&inertia),
         "gyroscope" => gyroscope_equations(&EulerianAngles::chapter(), "O").map(|(_, d)| d),
         "steady_precession" => steady_precession(&EulerianAngles::chapter(), "O").map(|(_, d)| d),
+        "torque_free" => torque_free_axisymmetric(&EulerianAngles::chapter()).map(|(_, d)| d),
         "fixed_axis" => fixed_axis_rotation(&inertia, axis),
         "reactions" => {
             bearing_reactions(&inertia, &m, (&bar(1), &bar(2)), &Expr::symbol("l"), axis)

@@ -29,6 +29,7 @@ pub mod rotating_frame;
 pub mod rotation;
 pub mod shapes;
 pub mod steady_precession;
+pub mod torque_free_axisymmetric;
 pub mod two_plane_balance;
 pub mod validation;
 

@@ -12,12 +12,12 @@ use super::impulse_momentum::{impulse_momentum, ImpulseMomentum};
 use super::inertia::InertiaTensor;
 use super::kinetic_energy::kinetic_energy;
 use super::rotating_frame::rate_of_angular_momentum;
-use super::steady_precession::steady_precession;
+use super::steady_precession::{steady_precession, steady_precession_at_right_angle};
 use super::torque_free_axisymmetric::torque_free_axisymmetric;
 use crate::algebra::{AlgebraError, Axis, Expr, Vector};
 
 /// The derivations `derive` knows, in the chapter's order.
-pub const NAMES: [&str; 14] = [
+pub const NAMES: [&str; 15] = [
     "H_G",
     "H_O",
     "T",
@@ -31,6 +31,7 @@ pub const NAMES: [&str; 14] = [
     "balancing",
     "gyroscope",
     "steady_precession",
+    "steady_precession_90",
     "torque_free",
 ];
 
@@ -78,6 +79,12 @@ fn fixed_convention(name: &str) -> Option<&'static str> {
         }
         "euler" => {
             r"About $G$ or a fixed point $O$; axes fixed in the body, $\boldsymbol{\Omega} = \boldsymbol{\omega}$."
+        }
+        "gyroscope" | "steady_precession" | "steady_precession_90" => {
+            r"Axisymmetric body about a fixed point $O$ on its axis (or its mass centre $G$): $I$ about the axis, $I'$ about any transverse axis; $x$ along the line of nodes, $z$ along the axis, $Z$ fixed; $\boldsymbol{\Omega} \neq \boldsymbol{\omega}$."
+        }
+        "torque_free" => {
+            r"Axisymmetric body, no force, about its mass centre $G$: $I$ about the axis, $I'$ about any transverse axis; $Z$ along $\mathbf{H}_G$, $x$ along the line of nodes, $z$ along the axis."
         }
         _ => return None,
     })
@@ -166,6 +173,9 @@ pub fn derive_general_along(
         "euler" => euler_equations(&inertia),
         "gyroscope" => gyroscope_equations(&EulerianAngles::chapter(), "O").map(|(_, d)| d),
         "steady_precession" => steady_precession(&EulerianAngles::chapter(), "O").map(|(_, d)| d),
+        "steady_precession_90" => {
+            steady_precession_at_right_angle(&EulerianAngles::chapter(), "O").map(|(_, d)| d)
+        }
         "torque_free" => torque_free_axisymmetric(&EulerianAngles::chapter()).map(|(_, d)| d),
         "fixed_axis" => fixed_axis_rotation(&inertia, axis),
         "reactions" => {

@@ -132,31 +132,23 @@ pub fn torque_free_axisymmetric(
             components,
         ),
         Step::new(
-            r"component by component ($0 < \theta < 90^\circ$): $\theta$ is constant",
+            r"the components along $x$ and $z$ ($0 < \theta < 90^\circ$): $\theta$ is constant",
             vec![
                 Relation::new(Expr::sym(theta_dot), Expr::zero(), Axis::X),
                 Relation::new(Expr::sym(magnitude), h.clone(), Axis::Z),
-                Relation::new(Expr::sym(phi_dot), precession_rate.clone(), Axis::Y),
             ],
         ),
         Step::new(
-            r"the spin, from the component of $\boldsymbol{\omega}$ along the axis",
+            r"the component along $y$, $I'\dot\phi = H$, in $\boldsymbol{\omega} = \omega_y\,\mathbf{j} + \omega_z\,\mathbf{k}$",
+            vec![Relation::new(Expr::symbol("w_y"), omega_y, Axis::Y)],
+        ),
+        Step::new(
+            r"the spin; $\gamma$, the angle of $\boldsymbol{\omega}$ from the axis; body cone: axis $z$, half-angle $\gamma$; space cone: axis $Z$, half-angle $\theta - \gamma$ in direct precession ($I' > I$: $\gamma < \theta$, $\dot\psi$ and $\dot\phi$ of one sign), $\gamma - \theta$ in retrograde precession ($I' < I$)",
             vec![
+                Relation::new(Expr::sym(phi_dot), precession_rate.clone(), Axis::Y),
                 Relation::new(w_z.clone(), gyro.axial_spin.clone(), Axis::Z),
                 Relation::new(Expr::sym(psi_dot), spin_rate.clone(), Axis::Z),
-            ],
-        ),
-        Step::new(
-            r"$\boldsymbol{\omega} = \omega_y\,\mathbf{j} + \omega_z\,\mathbf{k}$ makes the angle $\gamma$ with the axis of symmetry",
-            vec![
-                Relation::new(Expr::symbol("w_y"), omega_y, Axis::Y),
                 Relation::new(tan(&gamma), tan_gamma.clone(), Axis::Z),
-            ],
-        ),
-        Step::new(
-            r"body cone: axis $z$, half-angle $\gamma$; space cone: axis $Z$, half-angle $\theta - \gamma$, direct precession for $I' > I$ ($\gamma < \theta$, $\dot\psi$ and $\dot\phi$ of one sign), retrograde for $I' < I$ (half-angle $\gamma - \theta$)",
-            vec![
-                Relation::new(&tan(&gamma) / &tan(&theta), multiple, Axis::Z),
                 Relation::new(&Expr::sym(psi_dot) / &Expr::sym(phi_dot), ratio, Axis::Z),
             ],
         ),

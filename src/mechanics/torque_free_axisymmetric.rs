@@ -34,7 +34,8 @@ pub enum PrecessionSense {
 ///
 /// ```
 /// use kinetics::mechanics::torque_free_axisymmetric::{precession_sense, PrecessionSense};
-/// use kinetics::{Domains, Expr};
+/// use kinetics::algebra::Domains;
+/// use kinetics::Expr;
 ///
 /// let disk = precession_sense(&Expr::rational(1, 2), &Expr::rational(1, 4), &Domains::chapter_defaults());
 /// assert_eq!(disk, Some(PrecessionSense::Retrograde));

@@ -18,7 +18,8 @@ pub struct Args {
     #[arg(long)]
     pub principal: bool,
     /// Only these derivations (comma-separated): H_G, H_O, T, T_O, T_plane, impulse, Hdot,
-    /// euler, fixed_axis, reactions, balancing.
+    /// euler, fixed_axis, reactions, balancing, gyroscope, steady_precession,
+    /// steady_precession_90, torque_free.
     #[arg(long, value_delimiter = ',')]
     pub only: Vec<String>,
     /// Show every step, not only the results.

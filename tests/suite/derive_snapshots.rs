@@ -39,6 +39,32 @@ fn fixed_axis_steps_text() {
     insta::assert_snapshot!(derive(&["--general", "--only", "fixed_axis", "--steps"]));
 }
 
+/// The gyroscope (§18.9–18.11), every step: the equations grouped by `I'` and `I` with
+/// ω_z = ψ̇ + φ̇ cos θ, steady precession by substitution (ΣM_x = (I ω_z − I'φ̇ cos θ) φ̇ sin θ,
+/// I ψ̇ φ̇ at θ = 90°), and the body under no force (φ̇ = I ω_z/(I' cos θ),
+/// ψ̇ = (I' − I) ω_z/I', tan γ = (I/I') tan θ).
+#[test]
+fn gyroscope_steps_text() {
+    insta::assert_snapshot!(derive(&[
+        "--general",
+        "--only",
+        "gyroscope,steady_precession,steady_precession_90,torque_free",
+        "--steps",
+    ]));
+}
+
+#[test]
+fn gyroscope_steps_latex() {
+    insta::assert_snapshot!(derive(&[
+        "--general",
+        "--only",
+        "gyroscope,steady_precession,steady_precession_90,torque_free",
+        "--steps",
+        "--format",
+        "latex",
+    ]));
+}
+
 #[test]
 fn principal_euler_is_in_cyclic_form() {
     let text = derive(&["--general", "--principal", "--only", "euler"]);
@@ -68,9 +94,9 @@ fn json_lists_results_and_steps() {
 #[test]
 fn unknown_derivation_is_an_error() {
     let out = Command::new(env!("CARGO_BIN_EXE_kinetics"))
-        .args(["derive", "--general", "--only", "gyroscope"])
+        .args(["derive", "--general", "--only", "gyroscopes"])
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("unknown derivation 'gyroscope'"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("unknown derivation 'gyroscopes'"));
 }

@@ -11,6 +11,7 @@
 use kinetics::algebra::linear_solve::{solve_linear, SolveError};
 use kinetics::algebra::polynomial_solve::{solve_system, Solutions, SolveContext};
 use kinetics::algebra::{Expr, Symbol};
+use kinetics::numeric::scalar::double_double::DoubleDouble as Dd;
 use kinetics::parse_expression;
 use proptest::prelude::*;
 use std::cmp::Ordering;
@@ -48,10 +49,14 @@ fn value_at(x: &Expr, values: &dyn Fn(Symbol) -> f64) -> f64 {
     x.eval(&|s: Symbol| Some(values(s))).unwrap()
 }
 
-/// The sign of an expression at the values, when it is clearly not zero.
+/// The sign of an expression at the values: zero below 1e-12, unknown below 1e-9.
 fn sign_at(x: &Expr, values: &dyn Fn(Symbol) -> f64) -> Option<Ordering> {
     let v: f64 = x.eval(&|s: Symbol| Some(values(s))).ok()?;
-    (v.abs() > 1e-9).then(|| v.partial_cmp(&0.0)).flatten()
+    match v.abs() {
+        a if a < 1e-12 => Some(Ordering::Equal),
+        a if a < 1e-9 => None,
+        _ => v.partial_cmp(&0.0),
+    }
 }
 
 fn solve(
@@ -435,20 +440,21 @@ proptest! {
         }
     }
 
-    /// An integer cubic: each real root makes the cubic vanish in f64, and there is one real
-    /// root or three (counted by the sign of the discriminant), or the casus irreducibilis
-    /// is refused.
+    /// An integer cubic: each real root makes the cubic vanish in double-double arithmetic
+    /// (Cardano's form subtracts nearly equal cube roots: f64 keeps only ten digits of
+    /// them), and there is at least one, or the casus irreducibilis is refused.
     #[test]
     fn cubic_roots_satisfy_the_equation(a in 1i64..5, b in -9i64..10, c in -9i64..10, d in -9i64..10) {
         let equations = vec![e(&format!("({a}) x^3 + ({b}) x^2 + ({c}) x + ({d})"))];
-        let cubic = |x: f64| ((a as f64 * x + b as f64) * x + c as f64) * x + d as f64;
+        let n = |k: i64| Dd::from_f64(k as f64);
+        let cubic = |x: Dd| ((n(a) * x + n(b)) * x + n(c)) * x + n(d);
         match solve(&equations, &symbols(&["x"]), &top_value, &|_| false) {
             Ok(solved) => {
                 prop_assert!(!solved.branches.is_empty());
                 for branch in &solved.branches {
-                    let x = value_at(&branch[0].1, &top_value);
-                    let scale = 1.0 + (a as f64 * x * x * x).abs() + (b as f64 * x * x).abs() + (c as f64 * x).abs();
-                    prop_assert!(cubic(x).abs() < 1e-12 * scale, "{} at {:?}", cubic(x), branch);
+                    let x: Dd = branch[0].1.eval(&|_| None).unwrap();
+                    let scale = 1.0 + (n(a) * x * x * x).abs().to_f64() + (n(b) * x * x).abs().to_f64() + (n(c) * x).abs().to_f64();
+                    prop_assert!(cubic(x).abs().to_f64() < 1e-26 * scale, "{:?} at {:?}", cubic(x), branch);
                 }
             }
             Err(SolveError::RootsNotExact { .. }) => {
@@ -461,4 +467,20 @@ proptest! {
             Err(other) => prop_assert!(false, "{}", other),
         }
     }
+}
+
+#[test]
+fn a_leading_coefficient_the_values_make_zero_leaves_a_lower_degree() {
+    // θ = 90°: I' cos θ = 0 and the precession is W c/(I ω_z), the one root of a linear
+    // equation (the quadratic formula would divide by zero).
+    let upright = |s: Symbol| match s.name() {
+        "theta" => std::f64::consts::FRAC_PI_2,
+        _ => top_value(s),
+    };
+    let equations = exprs(&[PRECESSION]);
+    let solved = solve(&equations, &symbols(&["phidot"]), &upright, &|_| false).unwrap();
+    assert_eq!(solved.branches.len(), 1);
+    let rate = value_at(&solved.branches[0][0].1, &upright);
+    let expected = 10.0 * 0.05 / (0.01 * 200.0);
+    assert!((rate - expected).abs() < 1e-15, "{rate} vs {expected}");
 }

@@ -170,10 +170,10 @@ impl Parametric<'_> {
             }
             common = Some((equation, numerator));
         }
-        let Some((_, numerator)) = common else {
+        let Some((equation, numerator)) = common else {
             return Ok(None);
         };
-        roots::Polynomial::of(&numerator, self.u, self.unknowns, self.context).map(Some)
+        roots::Polynomial::of(&numerator, equation, self.u, self.unknowns, self.context).map(Some)
     }
 
     /// The values of all unknowns at `u = root`, or why the root is ruled out.
@@ -185,8 +185,12 @@ impl Parametric<'_> {
         let at_root = |e: &Expr| -> Result<Expr, AlgebraError> {
             exact(&e.subs(&|s| (s == self.u).then(|| root.clone()))?)
         };
+        let vanishes_at_root = |e: &Expr| -> Result<bool, AlgebraError> {
+            let value = at_root(e)?;
+            Ok(value.is_zero() || (self.context.sign)(&value) == Some(Ordering::Equal))
+        };
         for pivot in self.reduced.pivot_coefficients() {
-            if pivot.contains(self.u) && at_root(pivot)?.is_zero() {
+            if pivot.contains(self.u) && vanishes_at_root(pivot)? {
                 return Ok(Err(format!(
                     "makes the coefficient {pivot} that the elimination divides by zero"
                 )));
@@ -198,7 +202,7 @@ impl Parametric<'_> {
                 root.clone()
             } else if let Some((_, v)) = values.iter().find(|(t, _)| *t == s) {
                 let (_, denominator) = v.cancelled_parts()?;
-                if denominator.contains(self.u) && at_root(&denominator)?.is_zero() {
+                if denominator.contains(self.u) && vanishes_at_root(&denominator)? {
                     return Ok(Err(format!("makes the denominator {denominator} zero")));
                 }
                 at_root(v)?

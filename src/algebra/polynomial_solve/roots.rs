@@ -49,10 +49,12 @@ impl Found {
 impl Polynomial {
     /// The polynomial in `u` of `numerator` (expanded, no denominator), its common factor in
     /// the givens divided out when its sign is known, the leading coefficient made positive
-    /// when its sign is known. Refused when `u` enters other than in whole powers, or another
+    /// when its sign is known, a coefficient the givens' values make zero left out (an
+    /// equation `0 = a₀` that is left is a contradiction of `equation`). Refused when `u` enters other than in whole powers, or another
     /// unknown enters, or the degree (past the root 0) is above four.
     pub(super) fn of(
         numerator: &Expr,
+        equation: usize,
         u: Symbol,
         unknowns: &[Symbol],
         context: &SolveContext,
@@ -84,7 +86,34 @@ impl Polynomial {
             }
             powers.push((power, group.coefficient));
         }
-        let lowest = powers.iter().map(|(k, _)| *k).min().unwrap_or(0);
+        // A coefficient the givens' values make zero is no term of this problem's polynomial
+        // (cos θ at θ = 90°): the leading one would be divided by, the lowest is a root 0.
+        let vanishes = |a: &Expr| (context.sign)(a) == Some(Ordering::Equal);
+        let lowest_kept = |powers: &[(u32, Expr)]| powers.iter().map(|(k, _)| *k).min();
+        while powers.len() > 1 {
+            let highest = powers.iter().map(|(k, _)| *k).max();
+            let lowest = lowest_kept(&powers);
+            match powers
+                .iter()
+                .position(|(k, a)| Some(*k) == highest && vanishes(a))
+            {
+                Some(at) => powers.remove(at),
+                None => match powers
+                    .iter()
+                    .position(|(k, a)| Some(*k) == lowest && vanishes(a))
+                {
+                    Some(at) => powers.remove(at),
+                    None => break,
+                },
+            };
+        }
+        if !powers.iter().any(|(k, _)| *k > 0) {
+            return Err(SolveError::Inconsistent {
+                equation,
+                residual: numerator.to_string(),
+            });
+        }
+        let lowest = lowest_kept(&powers).unwrap_or(0);
         let degree = powers.iter().map(|(k, _)| *k).max().unwrap_or(0) - lowest;
         if degree > 4 {
             return Err(SolveError::DegreeTooHigh { unknown: u, degree });

@@ -215,6 +215,10 @@ fn a_discriminant_of_unknown_sign_keeps_both_roots() {
     let solved = solve_system(&equations, &unknowns, &context).unwrap();
     assert_eq!(solved.branches.len(), 2);
     assert!(solved.dropped.is_empty());
+    // A number's sign needs no context: x² + 1 has no real root whatever it says.
+    let solved = solve_system(&exprs(&["x^2 + 1"]), &symbols(&["x"]), &context).unwrap();
+    assert!(solved.branches.is_empty());
+    assert_eq!(solved.dropped.len(), 2);
 }
 
 #[test]

@@ -22,6 +22,7 @@ use super::error::AlgebraError;
 use super::expr::Expr;
 use super::linear_solve::{eliminate, solve_linear, Reduced, Solution};
 use super::polynomial_gcd;
+use super::rational::Q;
 use super::symbol::Symbol;
 use std::cmp::Ordering;
 
@@ -35,6 +36,16 @@ pub struct SolveContext<'a> {
     /// Whether an unknown must be positive (a mass, a length, ...): a root proved negative or
     /// zero is dropped.
     pub positive: &'a dyn Fn(Symbol) -> bool,
+}
+
+impl SolveContext<'_> {
+    /// The sign of `e`: a number's own, else what [`SolveContext::sign`] tells.
+    fn sign_of(&self, e: &Expr) -> Option<Ordering> {
+        match e.as_num() {
+            Some(q) => Some(q.cmp(&Q::ZERO)),
+            None => (self.sign)(e),
+        }
+    }
 }
 
 /// A root that was found and ruled out, with the reason in words (e.g. "complex: the
@@ -197,7 +208,7 @@ impl Parametric<'_> {
         };
         let vanishes_at_root = |e: &Expr| -> Result<bool, AlgebraError> {
             let value = at_root(e)?;
-            Ok(value.is_zero() || (self.context.sign)(&value) == Some(Ordering::Equal))
+            Ok(value.is_zero() || self.context.sign_of(&value) == Some(Ordering::Equal))
         };
         for pivot in self.reduced.pivot_coefficients() {
             if pivot.contains(self.u) && vanishes_at_root(pivot)? {
@@ -225,7 +236,7 @@ impl Parametric<'_> {
                 } else {
                     format!("gives {} = {value}, ", s.name())
                 };
-                match (self.context.sign)(&value) {
+                match self.context.sign_of(&value) {
                     Some(Ordering::Less) => {
                         return Ok(Err(format!(
                             "{named}negative, but {} must be positive",
@@ -253,7 +264,7 @@ impl Parametric<'_> {
         for i in 0..branches.len() {
             for j in i + 1..branches.len() {
                 let difference = exact(&(&branches[j].0 - &branches[i].0))?;
-                match (self.context.sign)(&difference) {
+                match self.context.sign_of(&difference) {
                     Some(o) if o != Ordering::Equal => order.push(((i, j), o)),
                     _ => return Ok(branches.into_iter().map(|(_, b)| b).collect()),
                 }

@@ -30,7 +30,7 @@ pub(super) fn quadratic(
     let sign = if discriminant.is_zero() {
         Some(Ordering::Equal)
     } else {
-        (context.sign)(&discriminant)
+        context.sign_of(&discriminant)
     };
     let mut found = Found::default();
     if sign == Some(Ordering::Equal) {
@@ -82,7 +82,7 @@ pub(super) fn biquadratic(
         let sign = if y.is_zero() {
             Some(Ordering::Equal)
         } else {
-            (context.sign)(&y)
+            context.sign_of(&y)
         };
         match sign {
             Some(Ordering::Equal) => found.real.push(Expr::zero()),

@@ -88,7 +88,7 @@ impl Polynomial {
         }
         // A coefficient the givens' values make zero is no term of this problem's polynomial
         // (cos θ at θ = 90°): the leading one would be divided by, the lowest is a root 0.
-        let vanishes = |a: &Expr| (context.sign)(a) == Some(Ordering::Equal);
+        let vanishes = |a: &Expr| context.sign_of(a) == Some(Ordering::Equal);
         let lowest_kept = |powers: &[(u32, Expr)]| powers.iter().map(|(k, _)| *k).min();
         while powers.len() > 1 {
             let highest = powers.iter().map(|(k, _)| *k).max();
@@ -126,12 +126,12 @@ impl Polynomial {
         for a in &coefficients {
             divisor = polynomial_gcd(&divisor, a)?;
         }
-        let leading_sign = (context.sign)(&coefficients[degree as usize]);
+        let leading_sign = context.sign_of(&coefficients[degree as usize]);
         if leading_sign == Some(Ordering::Less) {
             divisor = -divisor;
         }
         let known =
-            |e: &Expr| matches!((context.sign)(e), Some(Ordering::Less | Ordering::Greater));
+            |e: &Expr| matches!(context.sign_of(e), Some(Ordering::Less | Ordering::Greater));
         if divisor.as_num().is_some_and(|q| !q.is_zero()) || known(&divisor) {
             for a in coefficients.iter_mut() {
                 *a = a.checked_div(&divisor)?.cancel()?;

@@ -534,3 +534,17 @@ fn a_leading_coefficient_the_values_make_zero_leaves_a_lower_degree() {
     let expected = 10.0 * 0.05 / (0.01 * 200.0);
     assert!((rate - expected).abs() < 1e-15, "{rate} vs {expected}");
 }
+
+#[test]
+fn a_double_root_is_one_branch() {
+    // (x − a)² = x² − 2ax + a²: the discriminant expands to zero.
+    let solved = solve(
+        &exprs(&["x^2 - 2 a x + a^2"]),
+        &symbols(&["x"]),
+        &top_value,
+        &|_| false,
+    )
+    .unwrap();
+    assert_eq!(solved.branches, vec![vec![(Symbol::new("x"), e("a"))]]);
+    assert!(solved.dropped.is_empty());
+}

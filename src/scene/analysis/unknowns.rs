@@ -5,9 +5,11 @@
 
 use super::super::kinematic_constraints;
 use super::super::model::{Quantity, Request, Span};
+use super::super::stated_kinematics::at_reducing_angle;
 use super::{zero_vector, Analyser};
-use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
-use crate::algebra::{AlgebraError, Axis, Expr, Symbol, View};
+use crate::algebra::linear_solve::{Solution, SolveError};
+use crate::algebra::staged_linear_solve::solve_linear_in_stages;
+use crate::algebra::{AlgebraError, Axis, Expr, Symbol, Vector, View};
 use crate::mechanics::angular_momentum::angular_momentum_before;
 use crate::mechanics::derivation::{Derivation, Relation, Step};
 use crate::mechanics::equations_of_motion::{equations_of_motion, Loads, MomentCentre};
@@ -54,7 +56,7 @@ impl Analyser<'_> {
             let Solution {
                 values: solution,
                 free,
-            } = solve_linear(&equations, &wanted).map_err(|e| self.solve_error(at, e))?;
+            } = solve_linear_in_stages(&equations, &wanted).map_err(|e| self.solve_error(at, e))?;
             // Elimination can leave fractions inside fractions (a pivot over a pivot): such a
             // value in lowest terms over one denominator, when that is within the algebra's
             // bounds; the others as they are (their shortest form is chosen when shown).
@@ -120,7 +122,7 @@ impl Analyser<'_> {
         let (true, Some(with_values)) = (all_valued, with_values) else {
             return HashMap::new();
         };
-        let undetermined = match solve_linear(&with_values, wanted) {
+        let undetermined = match solve_linear_in_stages(&with_values, wanted) {
             Ok(solution) => solution.free,
             Err(SolveError::UnderDetermined(free)) => free,
             Err(SolveError::Inconsistent { .. }) => wanted.to_vec(),
@@ -144,17 +146,30 @@ impl Analyser<'_> {
             (false, _) => MomentCentre::MassCentre,
         };
         let rate = self.rate_of_angular_momentum(at, about == MomentCentre::FixedPoint)?;
+        // With `euler angles` at θ = 90° (say) the loads are taken there, as the kinematics.
+        let reduced = |v: &Vector| at_reducing_angle(scene, v).map_err(self.algebra(at));
+        let values: Vec<Vector> = scene
+            .forces
+            .iter()
+            .map(|f| reduced(&f.value))
+            .collect::<Result<_, _>>()?;
+        let couples: Vec<Vector> = scene
+            .couples
+            .iter()
+            .map(reduced)
+            .collect::<Result<_, _>>()?;
         let forces: Vec<AppliedForce> = scene
             .forces
             .iter()
-            .map(|f| AppliedForce {
-                value: &f.value,
+            .zip(&values)
+            .map(|(f, value)| AppliedForce {
+                value,
                 point: &f.point,
             })
             .collect();
         let loads = Loads {
             forces: &forces,
-            couples: &scene.couples,
+            couples: &couples,
         };
         let body = self.mass_centre(at)?;
         equations_of_motion(&body, &a, &rate, loads, about).map_err(self.algebra(at))

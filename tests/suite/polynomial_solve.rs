@@ -271,6 +271,36 @@ fn a_linear_unknown_behind_a_pivot_holding_the_polynomial_unknown() {
         assert!(residuals(&equations, branch).iter().all(Expr::is_zero));
         let x = value_at(&value_of(branch, "x"), &top_value);
         assert!((x - (3.0 + sign * 5f64.sqrt()) / 2.0).abs() < 1e-14);
+        // y = 1/x is written with no root in its denominator: y = 3 − x = (3 ∓ √5)/2.
+        assert_eq!(
+            value_of(branch, "y"),
+            (&Expr::int(3) - &value_of(branch, "x"))
+        );
+    }
+}
+
+#[test]
+fn a_value_at_a_quadratic_root_has_no_root_in_its_denominator() {
+    // F = m/(phidot − a) at the roots of the precession: the conjugate clears √Δ below.
+    let equations = exprs(&["F (phidot - a) - m", PRECESSION]);
+    let unknowns = symbols(&["F", "phidot"]);
+    let solved = solve(&equations, &unknowns, &top_value, &|_| false).unwrap();
+    assert_eq!(solved.branches.len(), 2);
+    for branch in &solved.branches {
+        let f = value_of(branch, "F");
+        let (_, denominator) = f.cancelled_parts().unwrap();
+        assert!(!denominator.to_string().contains("sqrt"), "{f}");
+        assert!(
+            residuals(&equations, branch).iter().all(Expr::is_zero),
+            "{f}"
+        );
+        let rate = value_at(&value_of(branch, "phidot"), &top_value);
+        let expected = 1.02 / (rate - 1.3);
+        let got = value_at(&f, &top_value);
+        assert!(
+            (got - expected).abs() < 1e-9 * expected.abs(),
+            "{got} vs {expected}"
+        );
     }
 }
 

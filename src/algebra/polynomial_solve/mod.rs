@@ -16,6 +16,7 @@ mod cardano;
 mod quadratic;
 mod rational_roots;
 mod roots;
+mod surd;
 
 use super::error::AlgebraError;
 use super::expr::Expr;
@@ -182,8 +183,17 @@ impl Parametric<'_> {
         root: &Expr,
         values: &[(Symbol, Expr)],
     ) -> Result<Result<Branch, String>, AlgebraError> {
+        let others: Vec<&Expr> = values
+            .iter()
+            .map(|(_, v)| v)
+            .chain(self.reduced.pivot_coefficients())
+            .collect();
+        let surd = surd::QuadraticSurd::of(root, &others);
         let at_root = |e: &Expr| -> Result<Expr, AlgebraError> {
-            exact(&e.subs(&|s| (s == self.u).then(|| root.clone()))?)
+            match &surd {
+                Some(surd) => surd.value_at(e, self.u, root),
+                None => exact(&e.subs(&|s| (s == self.u).then(|| root.clone()))?),
+            }
         };
         let vanishes_at_root = |e: &Expr| -> Result<bool, AlgebraError> {
             let value = at_root(e)?;

@@ -38,7 +38,6 @@ mod rational;
 mod sign;
 mod simplify;
 mod square_rewrite;
-pub mod staged_linear_solve;
 mod subs;
 mod sum_of_products;
 mod symbol;

@@ -90,7 +90,7 @@ impl QuadraticSurd {
             View::Add(terms) => Expr::add_all(each(terms)?),
             View::Mul(factors) => Expr::mul_all(each(factors)?),
             View::Func(f, argument) => Expr::func(f, self.with_placeholder(argument)?),
-            View::Pow(base, exponent) => match half_integer(&exponent) {
+            View::Pow(base, exponent) => match half_integer(exponent) {
                 Some(n) if *base == self.radicand => Expr::sym(self.placeholder).powi(n),
                 _ => self
                     .with_placeholder(base)?

@@ -28,6 +28,7 @@
 mod balance;
 mod points;
 mod principal;
+mod scene_solve;
 mod unknowns;
 
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};

@@ -307,6 +307,9 @@ pub struct Request {
     pub span: Span,
     /// `find D_y in N`: the answer must be a number, given in this unit (as written).
     pub unit: Option<(String, super::units::Unit)>,
+    /// When the equations have several real solutions (a top's slow and fast precession) and
+    /// this result differs between them: which solution (1, 2, …) this row is.
+    pub solution: Option<usize>,
 }
 
 impl Request {

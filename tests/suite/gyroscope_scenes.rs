@@ -8,8 +8,9 @@ use kinetics::scene::{Analysis, Scene, Value};
 use kinetics::solution::{render, Format};
 use std::process::Command;
 
-const EXAMPLES: [&str; 3] = [
+const EXAMPLES: [&str; 4] = [
     "gyroscope_required_moment",
+    "top_slow_and_fast_precession",
     "wheel_gyroscope_horizontal",
     "torque_free_cylinder",
 ];
@@ -84,6 +85,33 @@ fn the_wheel_precesses_at_its_weights_moment_over_its_spin_momentum() {
     close(number(&scene, &a, "phidot"), phidot, "phidot");
     close(number(&scene, &a, "R_y"), m * g("g"), "R_y");
     close(number(&scene, &a, "R_z"), -m * l * phidot * phidot, "R_z");
+}
+
+/// The top (OG = r): `(I − I′) cos θ φ̇² + I ψ̇ φ̇ − m g r = 0`, solved here by the quadratic formula;
+/// each root is a solution of its own, the slow one first.
+#[test]
+fn the_top_precesses_slowly_or_fast_at_the_roots_of_its_quadratic() {
+    let (scene, a) = analysed_example("top_slow_and_fast_precession", "");
+    let g = |n: &str| given(&scene, n);
+    let (m, r, psidot, theta) = (g("m"), g("r"), g("psidot"), 30f64.to_radians());
+    let (i, i_prime) = (m * r * r / 2.0, m * r * r / 4.0 + m * r * r);
+    let (qa, qb, qc) = ((i - i_prime) * theta.cos(), i * psidot, -m * g("g") * r);
+    let root = (qb * qb - 4.0 * qa * qc).sqrt();
+    let mut roots = [(-qb + root) / (2.0 * qa), (-qb - root) / (2.0 * qa)];
+    roots.sort_by(f64::total_cmp);
+    let rows: Vec<(Option<usize>, f64)> = a
+        .results
+        .iter()
+        .map(|(request, value)| match value {
+            Value::Scalar(e) => (request.solution, e.eval(&|s| scene.value(s)).unwrap()),
+            other => panic!("phidot is a scalar: {other:?}"),
+        })
+        .collect();
+    assert_eq!(rows.len(), 2, "{rows:?}");
+    assert_eq!((rows[0].0, rows[1].0), (Some(1), Some(2)));
+    close(rows[0].1, roots[0], "the slow precession");
+    close(rows[1].1, roots[1], "the fast precession");
+    assert!(roots[0] > 0.0 && roots[1] > 10.0 * roots[0]);
 }
 
 /// Torque-free: `ψ̇ = (I′ − I) φ̇ cos θ / I` (direct: ψ̇ and φ̇ of one sign, I < I′), ω at

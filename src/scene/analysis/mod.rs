@@ -89,7 +89,11 @@ struct Analyser<'a> {
     hdot_o: Option<Vector>,
     /// `T_trans`, `T_rot` and `T` about G.
     energy_split: Option<[Expr; 3]>,
-    unknowns: Option<HashMap<Symbol, Expr>>,
+    /// The unknowns' values in each solution of the equations (one, unless an unknown
+    /// entered polynomially and several real roots remain).
+    unknowns: Option<Vec<HashMap<Symbol, Expr>>>,
+    /// Which solution the unknowns are looked up in.
+    solution: usize,
     /// Unknowns solved in general that the givens' values leave undetermined.
     undetermined_with_values: HashMap<Symbol, Expr>,
 }
@@ -123,9 +127,19 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
     let mut a = Analyser::new(scene);
     let mut results = Vec::new();
     for request in &scene.requests {
-        let value = a.request(request)?;
-        let value = a.in_givens(request.span, value)?;
-        results.push((request.clone(), value));
+        let raw = a.request(request)?;
+        let value = a.in_givens(request.span, raw.clone())?;
+        let others = a.in_other_solutions(request, &raw, &value)?;
+        if others.is_empty() {
+            results.push((request.clone(), value));
+            continue;
+        }
+        // A row per solution, each labelled with its number.
+        for (k, value) in std::iter::once(value).chain(others).enumerate() {
+            let mut row = request.clone();
+            row.solution = Some(k + 1);
+            results.push((row, value));
+        }
     }
     let domains = scene.domains();
     Ok(Analysis {
@@ -193,6 +207,7 @@ impl<'a> Analyser<'a> {
             hdot_o: None,
             energy_split: None,
             unknowns: None,
+            solution: 0,
             undetermined_with_values: HashMap::new(),
         }
     }

@@ -7,7 +7,7 @@ use super::super::kinematic_constraints;
 use super::super::model::{Quantity, Request, Span};
 use super::super::stated_kinematics::at_reducing_angle;
 use super::scene_solve::solve_scene;
-use super::{zero_vector, Analyser};
+use super::{zero_vector, Analyser, Value};
 use crate::algebra::polynomial_solve::{Solutions, SolveError};
 use crate::algebra::{AlgebraError, Axis, Expr, Symbol, Vector, View};
 use crate::mechanics::angular_momentum::angular_momentum_before;
@@ -58,9 +58,8 @@ impl Analyser<'_> {
                 dropped,
                 free,
                 polynomial,
-            } = solve_scene(self.scene, &equations, &wanted, at)?
+            } = solve_scene(self.scene, &equations, &wanted)
                 .map_err(|e| self.solve_error(at, e))?;
-            let solution = branches.into_iter().next().unwrap_or_default();
             if let Some((u, p)) = polynomial {
                 let mut relations = vec![Relation::new(p, Expr::zero(), Axis::X)];
                 relations.extend(
@@ -80,30 +79,42 @@ impl Analyser<'_> {
             // Elimination can leave fractions inside fractions (a pivot over a pivot): such a
             // value in lowest terms over one denominator, when that is within the algebra's
             // bounds; the others as they are (their shortest form is chosen when shown).
-            let solution: Vec<(Symbol, Expr)> = solution
+            let branches: Vec<Vec<(Symbol, Expr)>> = branches
                 .into_iter()
-                .map(|(u, v)| {
-                    if has_nested_fraction(&v) {
-                        (u, v.cancel().unwrap_or(v))
-                    } else {
-                        (u, v)
-                    }
+                .map(|branch| {
+                    branch
+                        .into_iter()
+                        .map(|(u, v)| match has_nested_fraction(&v) {
+                            true => (u, v.cancel().unwrap_or(v)),
+                            false => (u, v),
+                        })
+                        .collect()
                 })
                 .collect();
-            self.plan.push(Step {
-                table: None,
-                title: "solve the equations for the unknowns".into(),
-                relations: solution
+            let several = branches.len() > 1;
+            for (k, branch) in branches.iter().enumerate() {
+                let title = match several {
+                    true => format!("solution {} of {}", k + 1, branches.len()),
+                    false => "solve the equations for the unknowns".to_string(),
+                };
+                let relations = branch
                     .iter()
                     .map(|(u, v)| Relation::new(Expr::sym(*u), v.clone(), Axis::X))
-                    .collect(),
-            });
-            let mut map: HashMap<Symbol, Expr> = solution.into_iter().collect();
-            for f in free {
-                map.remove(&f);
+                    .collect();
+                self.plan.push(Step::new(title, relations));
             }
-            self.unknowns = Some(map);
-            self.undetermined_with_values = self.undetermined_with_values(&equations, &wanted, at);
+            let maps = branches
+                .into_iter()
+                .map(|branch| {
+                    let mut map: HashMap<Symbol, Expr> = branch.into_iter().collect();
+                    for f in &free {
+                        map.remove(f);
+                    }
+                    map
+                })
+                .collect();
+            self.unknowns = Some(maps);
+            self.undetermined_with_values = self.undetermined_with_values(&equations, &wanted);
         }
         if let Some(equations) = self.undetermined_with_values.get(&s) {
             // Named as the request is written when it asks for this unknown (`T_BC in N`).
@@ -117,8 +128,34 @@ impl Analyser<'_> {
         }
         self.unknowns
             .as_ref()
-            .and_then(|m| m.get(&s).cloned())
+            .and_then(|solutions| solutions.get(self.solution)?.get(&s).cloned())
             .ok_or_else(|| self.solve_error(at, SolveError::UnderDetermined(vec![s])))
+    }
+
+    /// The request's value in each solution after the first (`raw` as derived, `first` its
+    /// value in the first solution); none when the equations have one solution or the value
+    /// is the same in all.
+    pub(super) fn in_other_solutions(
+        &mut self,
+        request: &Request,
+        raw: &Value,
+        first: &Value,
+    ) -> Result<Vec<Value>, Diagnostic> {
+        let count = self.unknowns.as_ref().map_or(1, Vec::len);
+        let mut values = Vec::new();
+        for k in 1..count {
+            self.solution = k;
+            let value = match request.quantity {
+                Quantity::Unknown(s) => self.unknown(request.span, s).map(Value::Scalar),
+                _ => self.in_givens(request.span, raw.clone()),
+            };
+            self.solution = 0;
+            values.push(value?);
+        }
+        match values.iter().all(|v| v == first) {
+            true => Ok(Vec::new()),
+            false => Ok(values),
+        }
     }
 
     /// The unknowns that the equations determine in general, dividing by a symbolic pivot,
@@ -130,7 +167,6 @@ impl Analyser<'_> {
         &self,
         equations: &[Expr],
         wanted: &[Symbol],
-        at: Span,
     ) -> HashMap<Symbol, Expr> {
         let scene = self.scene;
         let value = |s: Symbol| scene.exact_value(s).map(Expr::num);
@@ -143,11 +179,11 @@ impl Analyser<'_> {
         let (true, Some(with_values)) = (all_valued, with_values) else {
             return HashMap::new();
         };
-        let undetermined = match solve_scene(scene, &with_values, wanted, at) {
-            Ok(Ok(solutions)) => solutions.free,
-            Ok(Err(SolveError::UnderDetermined(free))) => free,
-            Ok(Err(SolveError::Inconsistent { .. })) => wanted.to_vec(),
-            _ => Vec::new(),
+        let undetermined = match solve_scene(scene, &with_values, wanted) {
+            Ok(solutions) => solutions.free,
+            Err(SolveError::UnderDetermined(free)) => free,
+            Err(SolveError::Inconsistent { .. }) => wanted.to_vec(),
+            Err(_) => Vec::new(),
         };
         let together = Expr::add_all(equations.iter().cloned());
         undetermined

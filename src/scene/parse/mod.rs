@@ -267,6 +267,7 @@ impl Reader<'_> {
                         name,
                         span: Span { start, end },
                         unit,
+                        solution: None,
                     });
                 }
             }

@@ -27,16 +27,17 @@
 
 mod balance;
 mod points;
+mod presented;
 mod principal;
 mod scene_solve;
 mod unknowns;
 
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
 use super::model::{ConstraintKind, Part, Quantity, Request, Scene, Span};
-use crate::algebra::{AlgebraError, Domains, Expr, Matrix, Symbol, Vector};
+use crate::algebra::{AlgebraError, Expr, Matrix, Symbol, Vector};
 use crate::mechanics::angular_momentum::{angular_momentum, angular_momentum_about_point};
 use crate::mechanics::composite_body::{composite_body, MassProperties};
-use crate::mechanics::derivation::{presented, Derivation, Relation, Step};
+use crate::mechanics::derivation::{Derivation, Relation, Step};
 use crate::mechanics::inertia::InertiaTensor;
 use crate::mechanics::inertia::MassPart;
 use crate::mechanics::inertia_about_point::inertia_about_fixed_point;
@@ -48,7 +49,7 @@ use crate::mechanics::principal_frame::PrincipalFrame;
 use crate::mechanics::rotating_frame::{
     rate_of_angular_momentum, rate_of_angular_momentum_about_point,
 };
-use crate::mechanics::two_plane_balance::{Correction, CorrectionAngle};
+use crate::mechanics::two_plane_balance::Correction;
 use crate::parse::Diagnostic;
 use std::collections::HashMap;
 
@@ -149,30 +150,6 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
             .map(|(request, value)| (request, value.presented(&domains)))
             .collect(),
     })
-}
-
-impl Value {
-    /// The value as it is shown: each component in its shortest form
-    /// ([`crate::mechanics::derivation::presented`]).
-    fn presented(self, domains: &Domains) -> Value {
-        match self {
-            Value::Scalar(e) => Value::Scalar(presented(&e, domains)),
-            Value::Vector(v) => Value::Vector(v.map(|c| presented(&c, domains))),
-            Value::Balance(corrections) => Value::Balance(Box::new(corrections.map(|k| {
-                let angle = match k.angle {
-                    CorrectionAngle::Atan2 { q, p } => CorrectionAngle::Atan2 {
-                        q: presented(&q, domains),
-                        p: presented(&p, domains),
-                    },
-                    exact_or_undefined => exact_or_undefined,
-                };
-                let mass = presented(&k.mass, domains);
-                Correction { mass, angle, ..k }
-            }))),
-            Value::Tensor(m) => Value::Tensor(m.map(|c| presented(&c, domains))),
-            Value::Principal(p) => Value::Principal(principal::presented(p, domains)),
-        }
-    }
 }
 
 /// The body's mass, mass centre (from O) and centroidal inertia, for callers that need the

@@ -387,8 +387,23 @@ fn derive_in(scene: &Scene, name: &str, quantity: Quantity) -> Result<Value, Dia
             end: scene.source.len(),
         },
         unit: None,
+        solution: None,
     }];
     let analysis = analyse(&alone)?;
+    if analysis.results.len() > 1 {
+        let end = Span {
+            start: scene.source.len(),
+            end: scene.source.len(),
+        };
+        return Err(scene.error_at(
+            end,
+            format!(
+                "{name} has {} values, one in each solution of the scene's equations",
+                analysis.results.len()
+            ),
+            "a claim about a quantity with several values is not checked: make a claim about a quantity the solutions share, or give the multi-valued unknown a value",
+        ));
+    }
     Ok(analysis
         .results
         .into_iter()

@@ -8,6 +8,7 @@ pub mod parse;
 mod quantity_dimension;
 pub mod simulation;
 pub mod unit_text;
+pub mod stated_kinematics;
 pub mod units;
 mod units_in_math;
 

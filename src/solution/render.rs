@@ -103,8 +103,17 @@ fn computed<'a>(
     v: &'a Value,
     dims: &Dimensions,
 ) -> Vec<Result<'a>> {
-    let name = Cow::Borrowed(shown_name(request));
-    let name_latex = quantity_latex(request.quantity);
+    // One of several solutions: `phidot (solution 1)`, `{\dot{\phi}}^{(1)}`.
+    let (name, name_latex) = match request.solution {
+        None => (
+            Cow::Borrowed(shown_name(request)),
+            quantity_latex(request.quantity),
+        ),
+        Some(k) => (
+            Cow::Owned(format!("{} (solution {k})", shown_name(request))),
+            format!("{{{}}}^{{({k})}}", quantity_latex(request.quantity)),
+        ),
+    };
     let unit = result_unit(request, dims);
     let result = match v {
         Value::Scalar(e) => scalar(scene, name, name_latex, e.clone(), unit),

@@ -37,6 +37,7 @@ mod exact_numbers;
 mod expression_generator;
 mod general_body_print;
 mod gyroscope_numeric;
+mod gyroscope_scenes;
 mod html_angles;
 mod html_headings;
 mod html_page;

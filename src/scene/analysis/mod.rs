@@ -27,15 +27,17 @@
 
 mod balance;
 mod points;
+mod presented;
 mod principal;
+mod scene_solve;
 mod unknowns;
 
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
-use super::model::{ConstraintKind, Quantity, Request, Scene, Span};
-use crate::algebra::{AlgebraError, Domains, Expr, Matrix, Symbol, Vector};
+use super::model::{ConstraintKind, Part, Quantity, Request, Scene, Span};
+use crate::algebra::{AlgebraError, Expr, Matrix, Symbol, Vector};
 use crate::mechanics::angular_momentum::{angular_momentum, angular_momentum_about_point};
 use crate::mechanics::composite_body::{composite_body, MassProperties};
-use crate::mechanics::derivation::{presented, Derivation, Relation, Step};
+use crate::mechanics::derivation::{Derivation, Relation, Step};
 use crate::mechanics::inertia::InertiaTensor;
 use crate::mechanics::inertia::MassPart;
 use crate::mechanics::inertia_about_point::inertia_about_fixed_point;
@@ -47,7 +49,7 @@ use crate::mechanics::principal_frame::PrincipalFrame;
 use crate::mechanics::rotating_frame::{
     rate_of_angular_momentum, rate_of_angular_momentum_about_point,
 };
-use crate::mechanics::two_plane_balance::{Correction, CorrectionAngle};
+use crate::mechanics::two_plane_balance::Correction;
 use crate::parse::Diagnostic;
 use std::collections::HashMap;
 
@@ -88,7 +90,11 @@ struct Analyser<'a> {
     hdot_o: Option<Vector>,
     /// `T_trans`, `T_rot` and `T` about G.
     energy_split: Option<[Expr; 3]>,
-    unknowns: Option<HashMap<Symbol, Expr>>,
+    /// The unknowns' values in each solution of the equations (one, unless an unknown
+    /// entered polynomially and several real roots remain).
+    unknowns: Option<Vec<HashMap<Symbol, Expr>>>,
+    /// Which solution the unknowns are looked up in.
+    solution: usize,
     /// Unknowns solved in general that the givens' values leave undetermined.
     undetermined_with_values: HashMap<Symbol, Expr>,
 }
@@ -122,9 +128,19 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
     let mut a = Analyser::new(scene);
     let mut results = Vec::new();
     for request in &scene.requests {
-        let value = a.request(request)?;
-        let value = a.in_givens(request.span, value)?;
-        results.push((request.clone(), value));
+        let raw = a.request(request)?;
+        let value = a.in_givens(request.span, raw.clone())?;
+        let others = a.in_other_solutions(request, &raw, &value)?;
+        if others.is_empty() {
+            results.push((request.clone(), value));
+            continue;
+        }
+        // A row per solution, each labelled with its number.
+        for (k, value) in std::iter::once(value).chain(others).enumerate() {
+            let mut row = request.clone();
+            row.solution = Some(k + 1);
+            results.push((row, value));
+        }
     }
     let domains = scene.domains();
     Ok(Analysis {
@@ -134,30 +150,6 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
             .map(|(request, value)| (request, value.presented(&domains)))
             .collect(),
     })
-}
-
-impl Value {
-    /// The value as it is shown: each component in its shortest form
-    /// ([`crate::mechanics::derivation::presented`]).
-    fn presented(self, domains: &Domains) -> Value {
-        match self {
-            Value::Scalar(e) => Value::Scalar(presented(&e, domains)),
-            Value::Vector(v) => Value::Vector(v.map(|c| presented(&c, domains))),
-            Value::Balance(corrections) => Value::Balance(Box::new(corrections.map(|k| {
-                let angle = match k.angle {
-                    CorrectionAngle::Atan2 { q, p } => CorrectionAngle::Atan2 {
-                        q: presented(&q, domains),
-                        p: presented(&p, domains),
-                    },
-                    exact_or_undefined => exact_or_undefined,
-                };
-                let mass = presented(&k.mass, domains);
-                Correction { mass, angle, ..k }
-            }))),
-            Value::Tensor(m) => Value::Tensor(m.map(|c| presented(&c, domains))),
-            Value::Principal(p) => Value::Principal(principal::presented(p, domains)),
-        }
-    }
 }
 
 /// The body's mass, mass centre (from O) and centroidal inertia, for callers that need the
@@ -192,6 +184,7 @@ impl<'a> Analyser<'a> {
             hdot_o: None,
             energy_split: None,
             unknowns: None,
+            solution: 0,
             undetermined_with_values: HashMap::new(),
         }
     }
@@ -302,13 +295,7 @@ impl<'a> Analyser<'a> {
         }
         parts
             .iter()
-            .map(|p| {
-                Ok(MassPart {
-                    mass: p.mass.clone(),
-                    position: p.position.clone(),
-                    inertia: p.shape.centroidal_inertia(&p.mass)?.rotated(&p.rotation)?,
-                })
-            })
+            .map(Part::mass_part)
             .collect::<Result<_, AlgebraError>>()
             .map_err(self.algebra(at))
     }

@@ -5,9 +5,11 @@
 
 use super::super::kinematic_constraints;
 use super::super::model::{Quantity, Request, Span};
-use super::{zero_vector, Analyser};
-use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
-use crate::algebra::{AlgebraError, Axis, Expr, Symbol, View};
+use super::super::stated_kinematics::at_reducing_angle;
+use super::scene_solve::solve_scene;
+use super::{zero_vector, Analyser, Value};
+use crate::algebra::polynomial_solve::{Solutions, SolveError};
+use crate::algebra::{AlgebraError, Axis, Expr, Symbol, Vector, View};
 use crate::mechanics::angular_momentum::angular_momentum_before;
 use crate::mechanics::derivation::{Derivation, Relation, Step};
 use crate::mechanics::equations_of_motion::{equations_of_motion, Loads, MomentCentre};
@@ -51,36 +53,67 @@ impl Analyser<'_> {
                 .map(|u| u.0)
                 .filter(|u| equations.iter().any(|e| e.contains(*u)))
                 .collect();
-            let Solution {
-                values: solution,
+            let Solutions {
+                branches,
+                dropped,
                 free,
-            } = solve_linear(&equations, &wanted).map_err(|e| self.solve_error(at, e))?;
+                polynomial,
+            } = solve_scene(self.scene, &equations, &wanted)
+                .map_err(|e| self.solve_error(at, e))?;
+            if let Some((u, p)) = polynomial {
+                let mut relations = vec![Relation::new(p, Expr::zero(), Axis::X)];
+                relations.extend(
+                    dropped
+                        .iter()
+                        .map(|d| Relation::new(Expr::sym(d.unknown), d.value.clone(), Axis::X)),
+                );
+                let title = match dropped.is_empty() {
+                    true => format!("the equations reduce to a polynomial in ${}$", u.latex()),
+                    false => format!(
+                        "the equations reduce to a polynomial in ${}$; the roots the problem's conditions rule out follow it",
+                        u.latex()
+                    ),
+                };
+                self.plan.push(Step::new(title, relations));
+            }
             // Elimination can leave fractions inside fractions (a pivot over a pivot): such a
             // value in lowest terms over one denominator, when that is within the algebra's
             // bounds; the others as they are (their shortest form is chosen when shown).
-            let solution: Vec<(Symbol, Expr)> = solution
+            let branches: Vec<Vec<(Symbol, Expr)>> = branches
                 .into_iter()
-                .map(|(u, v)| {
-                    if has_nested_fraction(&v) {
-                        (u, v.cancel().unwrap_or(v))
-                    } else {
-                        (u, v)
-                    }
+                .map(|branch| {
+                    branch
+                        .into_iter()
+                        .map(|(u, v)| match has_nested_fraction(&v) {
+                            true => (u, v.cancel().unwrap_or(v)),
+                            false => (u, v),
+                        })
+                        .collect()
                 })
                 .collect();
-            self.plan.push(Step {
-                table: None,
-                title: "solve the equations for the unknowns".into(),
-                relations: solution
+            let several = branches.len() > 1;
+            for (k, branch) in branches.iter().enumerate() {
+                let title = match several {
+                    true => format!("solution {} of {}", k + 1, branches.len()),
+                    false => "solve the equations for the unknowns".to_string(),
+                };
+                let relations = branch
                     .iter()
                     .map(|(u, v)| Relation::new(Expr::sym(*u), v.clone(), Axis::X))
-                    .collect(),
-            });
-            let mut map: HashMap<Symbol, Expr> = solution.into_iter().collect();
-            for f in free {
-                map.remove(&f);
+                    .collect();
+                self.plan.push(Step::new(title, relations));
             }
-            self.unknowns = Some(map);
+            let maps = branches
+                .into_iter()
+                .map(|branch| {
+                    let mut map: HashMap<Symbol, Expr> = branch.into_iter().collect();
+                    for f in &free {
+                        map.remove(f);
+                    }
+                    map
+                })
+                .collect();
+            self.unknowns = Some(maps);
             self.undetermined_with_values = self.undetermined_with_values(&equations, &wanted);
         }
         if let Some(equations) = self.undetermined_with_values.get(&s) {
@@ -95,8 +128,34 @@ impl Analyser<'_> {
         }
         self.unknowns
             .as_ref()
-            .and_then(|m| m.get(&s).cloned())
+            .and_then(|solutions| solutions.get(self.solution)?.get(&s).cloned())
             .ok_or_else(|| self.solve_error(at, SolveError::UnderDetermined(vec![s])))
+    }
+
+    /// The request's value in each solution after the first (`raw` as derived, `first` its
+    /// value in the first solution); none when the equations have one solution or the value
+    /// is the same in all.
+    pub(super) fn in_other_solutions(
+        &mut self,
+        request: &Request,
+        raw: &Value,
+        first: &Value,
+    ) -> Result<Vec<Value>, Diagnostic> {
+        let count = self.unknowns.as_ref().map_or(1, Vec::len);
+        let mut values = Vec::new();
+        for k in 1..count {
+            self.solution = k;
+            let value = match request.quantity {
+                Quantity::Unknown(s) => self.unknown(request.span, s).map(Value::Scalar),
+                _ => self.in_givens(request.span, raw.clone()),
+            };
+            self.solution = 0;
+            values.push(value?);
+        }
+        match values.iter().all(|v| v == first) {
+            true => Ok(Vec::new()),
+            false => Ok(values),
+        }
     }
 
     /// The unknowns that the equations determine in general, dividing by a symbolic pivot,
@@ -120,8 +179,8 @@ impl Analyser<'_> {
         let (true, Some(with_values)) = (all_valued, with_values) else {
             return HashMap::new();
         };
-        let undetermined = match solve_linear(&with_values, wanted) {
-            Ok(solution) => solution.free,
+        let undetermined = match solve_scene(scene, &with_values, wanted) {
+            Ok(solutions) => solutions.free,
             Err(SolveError::UnderDetermined(free)) => free,
             Err(SolveError::Inconsistent { .. }) => wanted.to_vec(),
             Err(_) => Vec::new(),
@@ -144,17 +203,30 @@ impl Analyser<'_> {
             (false, _) => MomentCentre::MassCentre,
         };
         let rate = self.rate_of_angular_momentum(at, about == MomentCentre::FixedPoint)?;
+        // With `euler angles` at θ = 90° (say) the loads are taken there, as the kinematics.
+        let reduced = |v: &Vector| at_reducing_angle(scene, v).map_err(self.algebra(at));
+        let values: Vec<Vector> = scene
+            .forces
+            .iter()
+            .map(|f| reduced(&f.value))
+            .collect::<Result<_, _>>()?;
+        let couples: Vec<Vector> = scene
+            .couples
+            .iter()
+            .map(reduced)
+            .collect::<Result<_, _>>()?;
         let forces: Vec<AppliedForce> = scene
             .forces
             .iter()
-            .map(|f| AppliedForce {
-                value: &f.value,
+            .zip(&values)
+            .map(|(f, value)| AppliedForce {
+                value,
                 point: &f.point,
             })
             .collect();
         let loads = Loads {
             forces: &forces,
-            couples: &scene.couples,
+            couples: &couples,
         };
         let body = self.mass_centre(at)?;
         equations_of_motion(&body, &a, &rate, loads, about).map_err(self.algebra(at))

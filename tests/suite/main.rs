@@ -36,6 +36,7 @@ mod engineer_tensor_lines;
 mod exact_numbers;
 mod expression_generator;
 mod general_body_print;
+mod heavy_top;
 mod html_angles;
 mod html_headings;
 mod html_page;

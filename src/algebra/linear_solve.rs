@@ -22,6 +22,26 @@ pub enum SolveError {
         equation: usize,
         residual: String,
     },
+    /// What is left after elimination is a polynomial in `unknown` of a degree above four.
+    DegreeTooHigh {
+        unknown: Symbol,
+        degree: u32,
+    },
+    /// An unknown enters other than as a power with a whole exponent (`sin u`, `√u`).
+    NotPolynomial {
+        unknown: Symbol,
+        term: String,
+    },
+    /// No unknown leaves the others linear, so no single polynomial in one unknown is
+    /// reached (the term is the first that is not linear).
+    NoSinglePolynomial {
+        term: String,
+    },
+    /// The roots of the polynomial in `unknown` are not written exactly by the solver.
+    RootsNotExact {
+        unknown: Symbol,
+        reason: String,
+    },
 }
 
 impl From<AlgebraError> for SolveError {
@@ -46,6 +66,25 @@ impl std::fmt::Display for SolveError {
                 "over-determined: equation {} contradicts the others (it reduces to 0 = {residual})",
                 equation + 1
             ),
+            SolveError::DegreeTooHigh { unknown, degree } => write!(
+                f,
+                "the equations reduce to a polynomial of degree {degree} in {}; only polynomials of degree up to 4 are solved exactly",
+                unknown.name()
+            ),
+            SolveError::NotPolynomial { unknown, term } => write!(
+                f,
+                "{} enters the equations other than in whole powers (in {term}), so no polynomial in it can be solved",
+                unknown.name()
+            ),
+            SolveError::NoSinglePolynomial { term } => write!(
+                f,
+                "the equations are not linear in the unknowns (term {term}), and no one unknown leaves the others linear, so they do not reduce to a polynomial in one unknown"
+            ),
+            SolveError::RootsNotExact { unknown, reason } => write!(
+                f,
+                "the roots of the polynomial in {} are not written exactly: {reason}",
+                unknown.name()
+            ),
         }
     }
 }
@@ -61,6 +100,32 @@ pub struct Solution {
 /// system determines; the unknowns it leaves free are returned separately so the caller
 /// can decide whether that matters.
 pub fn solve_linear(equations: &[Expr], unknowns: &[Symbol]) -> Result<Solution, SolveError> {
+    let reduced = eliminate(equations, unknowns)?;
+    if let Some((equation, residual)) = reduced.residuals().next() {
+        return Err(SolveError::Inconsistent {
+            equation,
+            residual: residual.to_string(),
+        });
+    }
+    Ok(reduced.solution(unknowns)?)
+}
+
+/// A system after Gauss–Jordan elimination: each pivot row holds one unknown with a
+/// non-zero coefficient and no other pivot unknown; the rows past the pivots have zero
+/// coefficients, and each says `0 = right side`.
+pub(in crate::algebra) struct Reduced {
+    /// (index of the equation it came from, coefficients of the unknowns then the right side).
+    rows: Vec<(usize, Vec<Expr>)>,
+    /// (row, column) of each pivot, in column order.
+    pivots: Vec<(usize, usize)>,
+}
+
+/// Eliminates the unknowns from `equations[i] = 0`, each linear in them: their coefficients
+/// may hold any other symbols (a parameter of the system, such as an unknown solved apart).
+pub(in crate::algebra) fn eliminate(
+    equations: &[Expr],
+    unknowns: &[Symbol],
+) -> Result<Reduced, SolveError> {
     let n = unknowns.len();
     // Rows: coefficients of the unknowns, then the right side.
     let mut rows: Vec<(usize, Vec<Expr>)> = Vec::with_capacity(equations.len());
@@ -104,37 +169,54 @@ pub fn solve_linear(equations: &[Expr], unknowns: &[Symbol]) -> Result<Solution,
         pivots.push((next_row, col));
         next_row += 1;
     }
-    for (index, row) in &rows[next_row..] {
-        if !row[n].is_zero() {
-            return Err(SolveError::Inconsistent {
-                equation: *index,
-                residual: row[n].to_string(),
-            });
-        }
+    Ok(Reduced { rows, pivots })
+}
+
+impl Reduced {
+    /// The rows past the pivots whose right side is not zero: (index of the equation,
+    /// right side), each a condition `0 = right side` the elimination leaves.
+    pub(in crate::algebra) fn residuals(&self) -> impl Iterator<Item = (usize, &Expr)> {
+        self.rows[self.pivots.len()..]
+            .iter()
+            .filter_map(|(index, row)| row.last().filter(|r| !r.is_zero()).map(|r| (*index, r)))
     }
-    let mut solution = Vec::new();
-    let mut free = Vec::new();
-    for (col, u) in unknowns.iter().enumerate() {
-        match pivots.iter().find(|&&(_, c)| c == col) {
-            Some(&(r, _)) => {
-                let row = &rows[r].1;
-                if row[..n]
-                    .iter()
-                    .enumerate()
-                    .any(|(k, e)| k != col && !e.is_zero())
-                {
-                    free.push(*u);
-                } else {
-                    solution.push((*u, row[n].checked_div(&row[col])?.expand()?));
+
+    /// The pivots' coefficients (the expressions divided by).
+    pub(in crate::algebra) fn pivot_coefficients(&self) -> impl Iterator<Item = &Expr> {
+        self.pivots.iter().map(|&(r, c)| &self.rows[r].1[c])
+    }
+
+    /// The value of each unknown whose pivot row holds no other unknown, and the unknowns
+    /// left free (no pivot, or a pivot row that holds a free unknown).
+    pub(in crate::algebra) fn solution(
+        &self,
+        unknowns: &[Symbol],
+    ) -> Result<Solution, AlgebraError> {
+        let n = unknowns.len();
+        let mut solution = Vec::new();
+        let mut free = Vec::new();
+        for (col, u) in unknowns.iter().enumerate() {
+            match self.pivots.iter().find(|&&(_, c)| c == col) {
+                Some(&(r, _)) => {
+                    let row = &self.rows[r].1;
+                    if row[..n]
+                        .iter()
+                        .enumerate()
+                        .any(|(k, e)| k != col && !e.is_zero())
+                    {
+                        free.push(*u);
+                    } else {
+                        solution.push((*u, row[n].checked_div(&row[col])?.expand()?));
+                    }
                 }
+                None => free.push(*u),
             }
-            None => free.push(*u),
         }
+        Ok(Solution {
+            values: solution,
+            free,
+        })
     }
-    Ok(Solution {
-        values: solution,
-        free,
-    })
 }
 
 #[cfg(test)]

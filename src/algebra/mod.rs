@@ -32,6 +32,7 @@ mod operation_count;
 mod ops;
 mod pi;
 mod polynomial;
+pub mod polynomial_solve;
 mod radicals;
 mod rational;
 mod sign;

@@ -99,6 +99,16 @@ impl Sign {
 }
 
 impl Domains {
+    /// `e > 0` or `e < 0` when proved by the rules of the module documentation (None for a
+    /// sign not proved strict).
+    pub fn strict_sign(&self, e: &Expr) -> Option<std::cmp::Ordering> {
+        match self.sign(e) {
+            Sign::Positive => Some(std::cmp::Ordering::Greater),
+            Sign::Negative => Some(std::cmp::Ordering::Less),
+            _ => None,
+        }
+    }
+
     /// The sign of `e` proved by the rules of the module documentation.
     pub(crate) fn sign(&self, e: &Expr) -> Sign {
         match e.view() {

@@ -14,6 +14,7 @@
 //! SumM_x    -> \Sigma M_x        (a resultant)
 //! m_body    -> m_{\text{body}}   (a word as subscript is upright; axes stay italic)
 //! Lb        -> \mathit{Lb}       (a name of several letters, never read as L times b)
+//! I'        -> I'                (primes after a name without subscript: I′, a moment)
 //! ```
 //!
 //! `w` (ω) and `Dt` (Δt) are the chapter's aliases; [`Symbol::plain_latex`] is the spelling
@@ -241,9 +242,11 @@ impl Symbol {
     }
 
     /// True for the derivative of a kinematic symbol (an acceleration-like quantity) and
-    /// for symbols that name an acceleration (`alpha`, `a_x`).
+    /// for symbols that name an acceleration (`alpha`, `a_x`). An angle's first rate is a
+    /// velocity (`phidot`, φ̇, the rate of precession), its second an acceleration (`phiddot`).
     pub fn is_acceleration(self) -> bool {
-        self.0.dots > 0
+        let angle = matches!(&*self.0.base, "theta" | "phi" | "psi");
+        self.0.dots > u8::from(angle)
             || &*self.0.base == "alpha"
             || (&*self.0.base == "a" && self.0.role == Role::Kinematic)
     }
@@ -274,7 +277,10 @@ impl SymbolData {
             None => (name, String::new()),
         };
         let mut head = head;
-        if subscript.is_empty() {
+        // A primed name without a subscript (`I'`, the transverse moment of an
+        // axisymmetric body) keeps its primes on the base and takes no digits, dots or bar.
+        let primed = subscript.is_empty() && head.ends_with('\'');
+        if subscript.is_empty() && !primed {
             let digits = head.len() - head.trim_end_matches(|c: char| c.is_ascii_digit()).len();
             if digits > 0 && digits < head.len() {
                 subscript = head[head.len() - digits..].to_string();
@@ -283,14 +289,14 @@ impl SymbolData {
         }
         let mut dots = 0u8;
         for (suffix, n) in [("ddot", 2u8), ("dot", 1u8)] {
-            if head.len() > suffix.len() && head.ends_with(suffix) {
+            if !primed && head.len() > suffix.len() && head.ends_with(suffix) {
                 head = &head[..head.len() - suffix.len()];
                 dots = n;
                 break;
             }
         }
         let mut barred = false;
-        if head.len() > 3 && head.ends_with("bar") {
+        if !primed && head.len() > 3 && head.ends_with("bar") {
             head = &head[..head.len() - 3];
             barred = true;
         }
@@ -342,6 +348,7 @@ fn is_axis_subscript(subscript: &str) -> bool {
 }
 
 fn classify(base: &str, barred: bool, dots: u8, subscript: &str) -> Role {
+    let base = base.trim_end_matches('\'');
     if dots > 0 {
         return Role::Kinematic;
     }
@@ -361,6 +368,15 @@ fn classify(base: &str, barred: bool, dots: u8, subscript: &str) -> Role {
 /// that is a word (two or more letters, one of them lower case and not an axis) is upright,
 /// `m_{\text{body}}`, while `I_{xy}`, `C_{AB}` and `\omega_{12}` stay italic.
 fn latex_of(base: &str, barred: bool, dots: u8, subscript: &str, aliases: bool) -> String {
+    let stem = base.trim_end_matches('\'');
+    if stem.len() < base.len() {
+        // `I'` is I′: the letter's spelling, then its primes.
+        let primes = &base[stem.len()..];
+        return format!(
+            "{}{primes}",
+            latex_of(stem, barred, dots, subscript, aliases)
+        );
+    }
     if let Some(rest) = base.strip_prefix("Sum").filter(|r| !r.is_empty()) {
         // `SumM_x` is the resultant ΣM_x.
         return format!(
@@ -500,6 +516,8 @@ mod tests {
             ("I_xy'", "I_{xy'}", Role::Inertia),
             ("Lb", r"\mathit{Lb}", Role::Other),
             ("SumLb", r"\Sigma \mathit{Lb}", Role::Other),
+            ("I'", "I'", Role::Inertia),
+            ("I''", "I''", Role::Inertia),
         ];
         for (name, latex, role) in cases {
             let s = Symbol::new(name);

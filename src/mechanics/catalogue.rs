@@ -5,15 +5,19 @@ use super::angular_momentum::{angular_momentum, angular_momentum_about_point};
 use super::balancing::{dynamic_balancing, Unbalance};
 use super::derivation::Derivation;
 use super::euler::{body_angular_velocity, euler_equations};
+use super::eulerian_angles::EulerianAngles;
 use super::fixed_axis::{bearing_reactions, fixed_axis_rotation};
+use super::gyroscope::gyroscope_equations;
 use super::impulse_momentum::{impulse_momentum, ImpulseMomentum};
 use super::inertia::InertiaTensor;
 use super::kinetic_energy::kinetic_energy;
 use super::rotating_frame::rate_of_angular_momentum;
+use super::steady_precession::steady_precession;
+use super::torque_free_axisymmetric::torque_free_axisymmetric;
 use crate::algebra::{AlgebraError, Axis, Expr, Vector};
 
 /// The derivations `derive` knows, in the chapter's order.
-pub const NAMES: [&str; 11] = [
+pub const NAMES: [&str; 14] = [
     "H_G",
     "H_O",
     "T",
@@ -25,6 +29,9 @@ pub const NAMES: [&str; 11] = [
     "fixed_axis",
     "reactions",
     "balancing",
+    "gyroscope",
+    "steady_precession",
+    "torque_free",
 ];
 
 /// What each derivation of [`NAMES`] is about: the reference point and the axes, in the
@@ -157,6 +164,9 @@ pub fn derive_general_along(
             "G",
         ),
         "euler" => euler_equations(&inertia),
+        "gyroscope" => gyroscope_equations(&EulerianAngles::chapter(), "O").map(|(_, d)| d),
+        "steady_precession" => steady_precession(&EulerianAngles::chapter(), "O").map(|(_, d)| d),
+        "torque_free" => torque_free_axisymmetric(&EulerianAngles::chapter()).map(|(_, d)| d),
         "fixed_axis" => fixed_axis_rotation(&inertia, axis),
         "reactions" => {
             bearing_reactions(&inertia, &m, (&bar(1), &bar(2)), &Expr::symbol("l"), axis)

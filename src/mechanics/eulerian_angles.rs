@@ -88,7 +88,7 @@ pub fn eulerian_kinematics(
         title: "Eulerian angles".into(),
         steps: vec![
             Step::new(
-                r"the vertical in Oxyz (x along the line of nodes, z along the axis), $\mathbf{K} = \sin\theta\,\mathbf{j} + \cos\theta\,\mathbf{k}$",
+                r"the vertical in Oxyz (x along the line of nodes, z along the axis), $\mathbf{K} = \mathrm{sin}\,\theta\,\mathbf{j} + \mathrm{cos}\,\theta\,\mathbf{k}$",
                 Relation::components("K", &vertical),
             ),
             Step::new(

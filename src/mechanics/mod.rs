@@ -12,6 +12,7 @@ pub mod equations_of_motion;
 pub mod euler;
 pub mod eulerian_angles;
 pub mod fixed_axis;
+pub mod gyroscope;
 pub mod impulse_momentum;
 pub mod inertia;
 pub mod inertia_about_point;
@@ -27,6 +28,8 @@ pub mod resultant;
 pub mod rotating_frame;
 pub mod rotation;
 pub mod shapes;
+pub mod steady_precession;
+pub mod torque_free_axisymmetric;
 pub mod two_plane_balance;
 pub mod validation;
 

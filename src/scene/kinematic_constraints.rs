@@ -11,6 +11,7 @@
 //! momentum, not alone.
 
 use super::model::{ConstraintKind, Scene, Span};
+use super::stated_kinematics::stated_kinematics;
 use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
 use crate::algebra::{AlgebraError, Axis, Expr, Symbol, Vector};
 use crate::mechanics::derivation::{Relation, Step};
@@ -72,7 +73,8 @@ pub fn solve_constraints(
     at: Span,
 ) -> Result<(SolvedConstraints, Vec<Step>), Diagnostic> {
     let located = |span: Span| scene.algebra_error_at(span);
-    let omega = scene.omega.clone().unwrap_or_else(zero_vector);
+    let (stated, mut steps) = stated_kinematics(scene).map_err(located(at))?;
+    let omega = stated.omega.clone();
     let mut equations: Vec<Expr> = Vec::new();
     // The constraint each equation came from, to locate errors.
     let mut sources: Vec<Span> = Vec::new();
@@ -109,7 +111,6 @@ pub fn solve_constraints(
             }
         }
     }
-    let mut steps = Vec::new();
     let impact = !scene.impulses.is_empty() && !equations.is_empty();
     let solved = if equations.is_empty() {
         vec![]
@@ -160,21 +161,23 @@ pub fn solve_constraints(
     };
     let substituted = |v: &Vector| kinematics.substitute_vector(v).map_err(located(at));
     let omega = substituted(&omega)?;
-    let omega_dot = substituted(&scene.omega_dot.clone().unwrap_or_else(zero_vector))?;
-    let frame_rate = substituted(&scene.frame_rate.clone().unwrap_or_else(|| omega.clone()))?;
+    let omega_dot = substituted(&stated.omega_dot)?;
+    let frame_rate = substituted(stated.frame_rate.as_ref().unwrap_or(&omega))?;
+    // The Eulerian angles' steps show ω and Ω already, unless constraints changed them.
+    let shown_already = scene.euler_angles.is_some() && kinematics.solved.is_empty();
     let mut relations = Relation::components("omega", &omega);
-    if scene.frame_rate.is_some() {
+    if stated.frame_rate.is_some() {
         relations.extend(Relation::components("Omega", &frame_rate));
     }
-    steps.push(Step {
+    steps.extend((!shown_already).then(|| Step {
         table: None,
-        title: if scene.frame_rate.is_some() {
+        title: if stated.frame_rate.is_some() {
             r"angular velocity $\boldsymbol{\omega}$ of the body and $\boldsymbol{\Omega}$ of the frame ($\boldsymbol{\Omega} \neq \boldsymbol{\omega}$: $[I]$ is constant in this frame)".into()
         } else {
             r"angular velocity $\boldsymbol{\omega}$ (axes fixed in the body, $\boldsymbol{\Omega} = \boldsymbol{\omega}$)".into()
         },
         relations,
-    });
+    }));
     kinematics.omega = omega;
     kinematics.omega_dot = omega_dot;
     kinematics.frame_rate = frame_rate;

@@ -7,6 +7,7 @@ pub mod model;
 pub mod parse;
 mod quantity_dimension;
 pub mod simulation;
+pub mod stated_kinematics;
 pub mod units;
 mod units_in_math;
 

@@ -4,6 +4,8 @@
 
 use super::units::Dimension;
 use crate::algebra::{AlgebraError, Domain, Domains, Expr, Symbol, Vector, Q};
+use crate::mechanics::eulerian_angles::EulerianAngles;
+use crate::mechanics::inertia::MassPart;
 use crate::mechanics::shapes::Shape;
 use crate::parse::Diagnostic;
 
@@ -37,6 +39,68 @@ pub struct Places {
     pub before: Option<Span>,
     /// The first `impulse` statement (an impact: the scene must leave something to find).
     pub impulse: Option<Span>,
+    /// The `omegadot` statement.
+    pub omega_dot: Option<Span>,
+    /// The `frame` statement (`frame rate = ...` or `frame body-fixed`).
+    pub frame: Option<Span>,
+}
+
+/// `euler angles` (§18.9): the frame Oxyz follows the body's axis of symmetry z but not its
+/// spin, and the motion is given by the Eulerian angles φ (precession about the fixed
+/// vertical Z), θ (nutation), ψ (spin) and their rates, each a given or an unknown:
+/// `Ω = φ̇ K + θ̇ i`, `ω = Ω + ψ̇ k`, `K = sin θ j + cos θ k`
+/// ([`crate::mechanics::eulerian_angles`]). `steady` is steady precession:
+/// `θ̇ = φ̈ = θ̈ = ψ̈ = 0`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct EulerAnglesStatement {
+    pub steady: bool,
+    pub span: Span,
+}
+
+impl EulerAnglesStatement {
+    /// The angles' chapter names (`phi`, `theta`, `psi`).
+    pub fn angles() -> EulerianAngles {
+        EulerianAngles::chapter()
+    }
+
+    /// The symbols of the kinematics: θ and the six rates (φ and ψ themselves do not enter
+    /// ω, ω̇ or Ω).
+    pub fn symbols() -> [Symbol; 7] {
+        let a = Self::angles();
+        let [phi, theta, psi] = [a.precession, a.nutation, a.spin];
+        [
+            theta,
+            phi.dot(),
+            theta.dot(),
+            psi.dot(),
+            phi.dot().dot(),
+            theta.dot().dot(),
+            psi.dot().dot(),
+        ]
+    }
+
+    /// The rates steady precession makes zero: `θ̇, φ̈, θ̈, ψ̈` (none without `steady`).
+    pub fn zero(&self) -> Vec<Symbol> {
+        let a = Self::angles();
+        match self.steady {
+            true => vec![
+                a.nutation.dot(),
+                a.precession.dot().dot(),
+                a.nutation.dot().dot(),
+                a.spin.dot().dot(),
+            ],
+            false => vec![],
+        }
+    }
+
+    /// The symbols the scene must declare, as givens or unknowns.
+    pub fn declared(&self) -> Vec<Symbol> {
+        let zero = self.zero();
+        Self::symbols()
+            .into_iter()
+            .filter(|s| !zero.contains(s))
+            .collect()
+    }
 }
 
 /// A given quantity: symbolic, or with a value converted to SI.
@@ -63,6 +127,20 @@ pub struct Part {
     pub mass: Expr,
     pub position: Vector,
     pub rotation: crate::algebra::Matrix,
+}
+
+impl Part {
+    /// The part as mechanics takes it: its centroidal inertia turned into the frame's axes.
+    pub fn mass_part(&self) -> Result<MassPart, AlgebraError> {
+        Ok(MassPart {
+            mass: self.mass.clone(),
+            position: self.position.clone(),
+            inertia: self
+                .shape
+                .centroidal_inertia(&self.mass)?
+                .rotated(&self.rotation)?,
+        })
+    }
 }
 
 /// A force with its point of application.
@@ -254,6 +332,8 @@ pub struct Scene {
     /// `about G`: with a fixed point, derive about the mass centre G (`H_G`, then
     /// `H_O = H_G + r̄ × m v̄`, `ΣM_O = Ḣ_G + r̄ × m ā`) instead of about O with `[I_O]`.
     pub about_mass_centre: bool,
+    /// `euler angles` (`steady`): ω, ω̇ and Ω come from the Eulerian angles' rates.
+    pub euler_angles: Option<EulerAnglesStatement>,
     pub omega: Option<Vector>,
     /// Rates of ω's components as seen in the frame (`(dω/dt)_frame`).
     pub omega_dot: Option<Vector>,

@@ -28,10 +28,11 @@
 mod balance;
 mod points;
 mod principal;
+mod scene_solve;
 mod unknowns;
 
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
-use super::model::{ConstraintKind, Quantity, Request, Scene, Span};
+use super::model::{ConstraintKind, Part, Quantity, Request, Scene, Span};
 use crate::algebra::{AlgebraError, Domains, Expr, Matrix, Symbol, Vector};
 use crate::mechanics::angular_momentum::{angular_momentum, angular_momentum_about_point};
 use crate::mechanics::composite_body::{composite_body, MassProperties};
@@ -302,13 +303,7 @@ impl<'a> Analyser<'a> {
         }
         parts
             .iter()
-            .map(|p| {
-                Ok(MassPart {
-                    mass: p.mass.clone(),
-                    position: p.position.clone(),
-                    inertia: p.shape.centroidal_inertia(&p.mass)?.rotated(&p.rotation)?,
-                })
-            })
+            .map(Part::mass_part)
             .collect::<Result<_, AlgebraError>>()
             .map_err(self.algebra(at))
     }

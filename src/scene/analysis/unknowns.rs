@@ -5,9 +5,11 @@
 
 use super::super::kinematic_constraints;
 use super::super::model::{Quantity, Request, Span};
+use super::super::stated_kinematics::at_reducing_angle;
+use super::scene_solve::solve_scene;
 use super::{zero_vector, Analyser};
-use crate::algebra::linear_solve::{solve_linear, Solution, SolveError};
-use crate::algebra::{AlgebraError, Axis, Expr, Symbol, View};
+use crate::algebra::polynomial_solve::{Solutions, SolveError};
+use crate::algebra::{AlgebraError, Axis, Expr, Symbol, Vector, View};
 use crate::mechanics::angular_momentum::angular_momentum_before;
 use crate::mechanics::derivation::{Derivation, Relation, Step};
 use crate::mechanics::equations_of_motion::{equations_of_motion, Loads, MomentCentre};
@@ -51,10 +53,30 @@ impl Analyser<'_> {
                 .map(|u| u.0)
                 .filter(|u| equations.iter().any(|e| e.contains(*u)))
                 .collect();
-            let Solution {
-                values: solution,
+            let Solutions {
+                branches,
+                dropped,
                 free,
-            } = solve_linear(&equations, &wanted).map_err(|e| self.solve_error(at, e))?;
+                polynomial,
+            } = solve_scene(self.scene, &equations, &wanted, at)?
+                .map_err(|e| self.solve_error(at, e))?;
+            let solution = branches.into_iter().next().unwrap_or_default();
+            if let Some((u, p)) = polynomial {
+                let mut relations = vec![Relation::new(p, Expr::zero(), Axis::X)];
+                relations.extend(
+                    dropped
+                        .iter()
+                        .map(|d| Relation::new(Expr::sym(d.unknown), d.value.clone(), Axis::X)),
+                );
+                let title = match dropped.is_empty() {
+                    true => format!("the equations reduce to a polynomial in ${}$", u.latex()),
+                    false => format!(
+                        "the equations reduce to a polynomial in ${}$; the roots the problem's conditions rule out follow it",
+                        u.latex()
+                    ),
+                };
+                self.plan.push(Step::new(title, relations));
+            }
             // Elimination can leave fractions inside fractions (a pivot over a pivot): such a
             // value in lowest terms over one denominator, when that is within the algebra's
             // bounds; the others as they are (their shortest form is chosen when shown).
@@ -81,7 +103,7 @@ impl Analyser<'_> {
                 map.remove(&f);
             }
             self.unknowns = Some(map);
-            self.undetermined_with_values = self.undetermined_with_values(&equations, &wanted);
+            self.undetermined_with_values = self.undetermined_with_values(&equations, &wanted, at);
         }
         if let Some(equations) = self.undetermined_with_values.get(&s) {
             // Named as the request is written when it asks for this unknown (`T_BC in N`).
@@ -108,6 +130,7 @@ impl Analyser<'_> {
         &self,
         equations: &[Expr],
         wanted: &[Symbol],
+        at: Span,
     ) -> HashMap<Symbol, Expr> {
         let scene = self.scene;
         let value = |s: Symbol| scene.exact_value(s).map(Expr::num);
@@ -120,11 +143,11 @@ impl Analyser<'_> {
         let (true, Some(with_values)) = (all_valued, with_values) else {
             return HashMap::new();
         };
-        let undetermined = match solve_linear(&with_values, wanted) {
-            Ok(solution) => solution.free,
-            Err(SolveError::UnderDetermined(free)) => free,
-            Err(SolveError::Inconsistent { .. }) => wanted.to_vec(),
-            Err(_) => Vec::new(),
+        let undetermined = match solve_scene(scene, &with_values, wanted, at) {
+            Ok(Ok(solutions)) => solutions.free,
+            Ok(Err(SolveError::UnderDetermined(free))) => free,
+            Ok(Err(SolveError::Inconsistent { .. })) => wanted.to_vec(),
+            _ => Vec::new(),
         };
         let together = Expr::add_all(equations.iter().cloned());
         undetermined
@@ -144,17 +167,30 @@ impl Analyser<'_> {
             (false, _) => MomentCentre::MassCentre,
         };
         let rate = self.rate_of_angular_momentum(at, about == MomentCentre::FixedPoint)?;
+        // With `euler angles` at θ = 90° (say) the loads are taken there, as the kinematics.
+        let reduced = |v: &Vector| at_reducing_angle(scene, v).map_err(self.algebra(at));
+        let values: Vec<Vector> = scene
+            .forces
+            .iter()
+            .map(|f| reduced(&f.value))
+            .collect::<Result<_, _>>()?;
+        let couples: Vec<Vector> = scene
+            .couples
+            .iter()
+            .map(reduced)
+            .collect::<Result<_, _>>()?;
         let forces: Vec<AppliedForce> = scene
             .forces
             .iter()
-            .map(|f| AppliedForce {
-                value: &f.value,
+            .zip(&values)
+            .map(|(f, value)| AppliedForce {
+                value,
                 point: &f.point,
             })
             .collect();
         let loads = Loads {
             forces: &forces,
-            couples: &scene.couples,
+            couples: &couples,
         };
         let body = self.mass_centre(at)?;
         equations_of_motion(&body, &a, &rate, loads, about).map_err(self.algebra(at))

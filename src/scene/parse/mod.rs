@@ -14,6 +14,7 @@ use syntax_error::{expected_words, syntax_error};
 mod balance;
 mod before_grammar;
 mod body;
+mod euler_angles;
 mod given;
 mod named;
 mod orientation;
@@ -100,6 +101,7 @@ pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene,
             parts: vec![],
             fixed_point: false,
             about_mass_centre: false,
+            euler_angles: None,
             omega: None,
             omega_dot: None,
             frame_rate: None,
@@ -129,6 +131,7 @@ pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene,
     for statement in statements {
         reader.statement(statement)?;
     }
+    reader.euler_angles_complete()?;
     reader.resolve_requests()?;
     reader.impact_is_determined()?;
     Ok(reader.scene)
@@ -154,7 +157,11 @@ impl Reader<'_> {
         let at = span(&p);
         let rule = p.as_rule();
         let mut inner: Vec<Pair<Rule>> = p.into_inner().collect();
+        if matches!(rule, Rule::omega | Rule::omegadot | Rule::frame) {
+            self.not_derived_from_euler_angles(at)?;
+        }
         match rule {
+            Rule::euler_angles => self.euler_angles(&inner, at)?,
             Rule::title => self.scene.title = inner.first().map(|t| t.as_str().trim().to_string()),
             Rule::given => self.given(inner)?,
             Rule::body => self.body(inner, at)?,
@@ -272,6 +279,8 @@ impl Reader<'_> {
         match rule {
             Rule::body => self.scene.places.body.push(place),
             Rule::omega => self.scene.places.omega = Some(place),
+            Rule::omegadot => self.scene.places.omega_dot = Some(place),
+            Rule::frame => self.scene.places.frame = Some(place),
             Rule::force => self.scene.places.forces.push(place),
             Rule::couple => self.scene.places.couples.push(place),
             Rule::before if self.scene.places.before.is_none() => {
@@ -365,6 +374,7 @@ impl Reader<'_> {
                 .error(span(name), meaning)
                 .with_help("choose another name"));
         }
+        self.declarable_with_euler_angles(name)?;
         // `t` is the time unless the scene declares it (a thickness, say).
         let undeclared_time = name.as_str() == TIME && self.scene.dimension(symbol).is_none();
         if self.dims.contains_key(&symbol) && !undeclared_time {
@@ -453,6 +463,7 @@ impl Reader<'_> {
                     unknown.name()
                 )));
         }
+        let e = self.vertical_in(e, span(p))?;
         self.finite_with_values(&self.in_si(&e, span(p))?, span(p))?;
         Ok(e)
     }
@@ -560,9 +571,18 @@ impl Reader<'_> {
     }
 }
 
-/// Unknowns without a unit: forces by their usual names, otherwise angular velocities.
+/// Unknowns without a unit: forces by their usual names, otherwise angular velocities; an
+/// Eulerian angle is a number (in radians), its rate an angular velocity, and its second
+/// rate an angular acceleration.
 fn default_dimension(name: &str) -> Dimension {
     let s = Symbol::new(name);
+    if matches!(s.base(), "phi" | "theta" | "psi") && s.axis().is_none() {
+        return match s.dots() {
+            0 => Dimension::NONE,
+            1 => Dimension::ANGULAR_VELOCITY,
+            _ => Dimension::ANGULAR_ACCELERATION,
+        };
+    }
     match s.base() {
         "w" | "omega" => Dimension::ANGULAR_VELOCITY,
         "alpha" => Dimension::ANGULAR_ACCELERATION,

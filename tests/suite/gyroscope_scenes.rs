@@ -1,0 +1,151 @@
+//! The gyroscope's scenes (§18.9–18.11, `euler angles steady`): each example's result against
+//! the textbook's closed form evaluated here in f64 from the givens (independently of the
+//! analysis), their worked solutions as snapshots, and the plan of a steady precession, which
+//! pulls neither Euler's equations for a general body nor an integration.
+
+use crate::common::examples::{analysed_example, result};
+use kinetics::scene::{Analysis, Scene, Value};
+use kinetics::solution::{render, Format};
+use std::process::Command;
+
+const EXAMPLES: [&str; 3] = [
+    "gyroscope_required_moment",
+    "wheel_gyroscope_horizontal",
+    "torque_free_cylinder",
+];
+
+/// The value of a scalar request with the givens' values.
+fn number(scene: &Scene, analysis: &Analysis, name: &str) -> f64 {
+    match result(analysis, name) {
+        Value::Scalar(e) => e.eval(&|s| scene.value(s)).expect("a number"),
+        other => panic!("{name} is not a scalar: {other:?}"),
+    }
+}
+
+/// The components of a vector request with the givens' values.
+fn numbers(scene: &Scene, analysis: &Analysis, name: &str) -> [f64; 3] {
+    match result(analysis, name) {
+        Value::Vector(v) => {
+            let c = |k: usize| v[k].eval(&|s| scene.value(s)).expect("a number");
+            [c(0), c(1), c(2)]
+        }
+        other => panic!("{name} is not a vector: {other:?}"),
+    }
+}
+
+/// A given's SI value.
+fn given(scene: &Scene, name: &str) -> f64 {
+    scene
+        .value(kinetics::algebra::Symbol::new(name))
+        .unwrap_or_else(|| panic!("{name} has a value"))
+}
+
+fn close(derived: f64, expected: f64, what: &str) {
+    assert!(
+        (derived - expected).abs() <= 1e-9 * expected.abs().max(1.0),
+        "{what}: derived {derived}, by the closed form {expected}"
+    );
+}
+
+/// Eq. 18.44 about O with the weight: `M_x = φ̇ sin θ (I ω_z − I′ φ̇ cos θ) − m g c sin θ`.
+#[test]
+fn the_required_couple_is_that_of_steady_precession_less_the_weight() {
+    let (scene, a) = analysed_example("gyroscope_required_moment", "");
+    let g = |n: &str| given(&scene, n);
+    let (m, r, c, theta) = (g("m"), g("r"), g("c"), 60f64.to_radians());
+    let (phidot, psidot) = (g("phidot"), g("psidot"));
+    let (i, i_prime) = (m * r * r / 2.0, m * r * r / 4.0 + m * c * c);
+    let omega_z = psidot + phidot * theta.cos();
+    let m_x = phidot * theta.sin() * (i * omega_z - i_prime * phidot * theta.cos())
+        - m * g("g") * c * theta.sin();
+    close(number(&scene, &a, "M_x"), m_x, "M_x");
+    close(number(&scene, &a, "M_y"), 0.0, "M_y");
+    close(number(&scene, &a, "M_z"), 0.0, "M_z");
+    // G on a circle of radius c sin θ about the vertical: the pivot holds up the weight and
+    // gives the centripetal force m c sin θ φ̇², horizontal, towards the vertical through O.
+    let (r_y, r_z) = (number(&scene, &a, "R_y"), number(&scene, &a, "R_z"));
+    let vertical = r_y * theta.sin() + r_z * theta.cos();
+    let horizontal = r_y * theta.cos() - r_z * theta.sin();
+    close(vertical, m * g("g"), "the vertical component of R");
+    close(
+        horizontal,
+        m * c * theta.sin() * phidot * phidot,
+        "its horizontal one",
+    );
+}
+
+/// At θ = 90°: `m g L = I ψ̇ φ̇`, `I = m r²/2`; `R_y = m g`, `R_z = −m L φ̇²`.
+#[test]
+fn the_wheel_precesses_at_its_weights_moment_over_its_spin_momentum() {
+    let (scene, a) = analysed_example("wheel_gyroscope_horizontal", "");
+    let g = |n: &str| given(&scene, n);
+    let (m, r, l, psidot) = (g("m"), g("r"), g("L"), g("psidot"));
+    let phidot = m * g("g") * l / (m * r * r / 2.0 * psidot);
+    close(number(&scene, &a, "phidot"), phidot, "phidot");
+    close(number(&scene, &a, "R_y"), m * g("g"), "R_y");
+    close(number(&scene, &a, "R_z"), -m * l * phidot * phidot, "R_z");
+}
+
+/// Torque-free: `ψ̇ = (I′ − I) φ̇ cos θ / I` (direct: ψ̇ and φ̇ of one sign, I < I′), ω at
+/// the angle γ from the axis with `tan γ = (I/I′) tan θ`, and `H_G = I′ φ̇ K`.
+#[test]
+fn the_torque_free_cylinder_spins_and_precesses_as_eq_18_50_says() {
+    let (scene, a) = analysed_example("torque_free_cylinder", "");
+    let g = |n: &str| given(&scene, n);
+    let (m, r, h, phidot, theta) = (g("m"), g("r"), g("h"), g("phidot"), 30f64.to_radians());
+    let (i, i_prime) = (m * r * r / 2.0, m * (3.0 * r * r + h * h) / 12.0);
+    let psidot = (i_prime - i) * phidot * theta.cos() / i;
+    close(number(&scene, &a, "psidot"), psidot, "psidot");
+    assert!(psidot * phidot > 0.0, "a long body precesses directly");
+    let omega = numbers(&scene, &a, "omega");
+    close(omega[0], 0.0, "omega_x");
+    close(omega[1] / omega[2], i / i_prime * theta.tan(), "tan(gamma)");
+    let h_g = numbers(&scene, &a, "H_G");
+    close(h_g[1], i_prime * phidot * theta.sin(), "H_y");
+    close(h_g[2], i_prime * phidot * theta.cos(), "H_z");
+}
+
+/// `kinetics plan` of a steady precession: the Eulerian angles' steps, `Ḣ_O = [I_O]{ω̇} +
+/// Ω × H_O`; neither Euler's equations for a general body (Ω = ω) nor an integration.
+#[test]
+fn the_plan_of_a_steady_precession_pulls_only_what_it_needs() {
+    let path = format!(
+        "{}/examples/scenes/wheel_gyroscope_horizontal.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_kinetics"))
+        .args(["plan", &path])
+        .output()
+        .expect("the binary runs");
+    assert!(out.status.success());
+    let plan = String::from_utf8_lossy(&out.stdout);
+    for wanted in [
+        "Ω = φ̇ K + θ̇ i",
+        "steady precession",
+        "Ω × H_O",
+        "equations of motion",
+    ] {
+        assert!(plan.contains(wanted), "the plan lacks {wanted:?}:\n{plan}");
+    }
+    for unwanted in ["Euler's equations", "integrat", "Ω = ω", "kinetic energy"] {
+        assert!(
+            !plan.contains(unwanted),
+            "the plan has {unwanted:?}:\n{plan}"
+        );
+    }
+}
+
+#[test]
+fn worked_solutions_of_the_gyroscopes_in_text_and_latex() {
+    for name in EXAMPLES {
+        let (scene, a) = analysed_example(name, "");
+        insta::assert_snapshot!(
+            format!("{name}_text"),
+            render(&scene, &a, Format::Text, false)
+        );
+        insta::assert_snapshot!(
+            format!("{name}_latex"),
+            render(&scene, &a, Format::Latex, false)
+        );
+    }
+}

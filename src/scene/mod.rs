@@ -8,6 +8,7 @@ pub mod parse;
 mod quantity_dimension;
 pub mod simulation;
 pub mod stated_kinematics;
+pub mod top_simulation;
 pub mod units;
 mod units_in_math;
 

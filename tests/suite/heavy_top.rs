@@ -21,9 +21,11 @@ fn angles(
     sampling: &Sampling<f64>,
 ) -> (Vec<(f64, EulerianAngles)>, MethodUsed) {
     let problem = top.problem(&start).unwrap();
-    let mut along = AnglesAlongMotion::starting_at(start);
+    let limits = nutation_limits(top, &start).unwrap();
+    let mut along =
+        AnglesAlongMotion::starting_at(start, 0.0, limits.phi_dot_band, limits.psi_dot_band);
     let mut out = Vec::new();
-    let mut sink = |s: Sample<f64>| out.push((s.t, along.next(&s.orientation, &s.omega)));
+    let mut sink = |s: Sample<f64>| out.push((s.t, along.next(s.t, &s.orientation, &s.omega)));
     let (_, used) = simulate_choice(&problem, &choice, sampling, &mut sink, &mut |_| {}).unwrap();
     (out, used)
 }
@@ -246,5 +248,45 @@ fn the_angles_agree_with_the_eulerian_angle_equations_integrated_directly() {
                 "t = {t}, component {k}: {g} against {w}"
             );
         }
+    }
+}
+
+/// Sampled every half second, while ψ turns ~16 times in between, φ and ψ still count their
+/// turns (from the bands of φ̇ and ψ̇ over the nutation): the same as sampled every 5 ms.
+#[test]
+fn sparse_samples_count_the_turns_from_the_bands_of_the_rates() {
+    let top = HeavyTop::new(0.9, 1.6, 4.0).unwrap();
+    let initial = start(0.9, -0.8, 1.0, 200.0);
+    let limits = nutation_limits(&top, &initial).unwrap();
+    let (phi_band, psi_band) = (limits.phi_dot_band.unwrap(), limits.psi_dot_band.unwrap());
+    assert!(
+        (psi_band.1 - psi_band.0) * 0.5 < std::f64::consts::PI,
+        "{limits:?}"
+    );
+    let sparse = Sampling::Every {
+        interval: 0.5,
+        end: 5.0,
+    };
+    let dense = Sampling::Every {
+        interval: 0.005,
+        end: 5.0,
+    };
+    let (sparse, _) = angles(&top, initial, TIGHT, &sparse);
+    let (dense, _) = angles(&top, initial, TIGHT, &dense);
+    for (t, a) in sparse.iter().skip(1) {
+        let (_, b) = dense.iter().find(|(u, _)| (u - t).abs() < 1e-9).unwrap();
+        assert!(
+            (a.phi - b.phi).abs() < 1e-8 && (a.psi - b.psi).abs() < 1e-7,
+            "{t}: {a:?} {b:?}"
+        );
+        assert!(a.psi > 50.0 * t, "ψ counted its turns: {}", a.psi);
+        assert!(
+            phi_band.0 <= a.phi_dot && a.phi_dot <= phi_band.1,
+            "{a:?} {phi_band:?}"
+        );
+        assert!(
+            psi_band.0 <= a.psi_dot && a.psi_dot <= psi_band.1,
+            "{a:?} {psi_band:?}"
+        );
     }
 }

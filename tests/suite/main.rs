@@ -79,6 +79,7 @@ mod simulate_cli_memory;
 mod simulate_cli_methods;
 mod simulate_extreme_momentum;
 mod simulate_memory;
+mod simulate_top_cli;
 mod simulate_without_find;
 mod skewed_rotor;
 mod solved_unknowns;

@@ -25,6 +25,12 @@
 //! quadratic `f/d` on the side where `f/d` starts positive; `f/d` at 0 is zero exactly for
 //! steady precession (`I′ φ̇² cos θ − I ω_z φ̇ + W c = 0`), whose limits coincide. Each root
 //! is found by bisection within its bracket, to the rounding of `f`.
+//!
+//! Between the turning angles the rates stay in bands: `φ̇ = (a − b u)/(1 − u²)` with
+//! `a = p_φ/I′`, and `ψ̇ = ω_z − u φ̇`, extreme at the ends of `[cos θ_max, cos θ_min]` or
+//! where their derivatives vanish, `b u² − 2a u + b = 0` and `a u² − 2b u + a = 0`. So
+//! over a time `Δt` φ grows by between `φ̇_min Δt` and `φ̇_max Δt`: what counts its turns
+//! between two samples however far apart, when the band is narrower than `2π/Δt`.
 
 use super::eulerian_angles::EulerianAngles;
 use super::heavy_top::{validate_start, HeavyTop};
@@ -43,6 +49,37 @@ pub struct NutationLimits {
     pub theta_min: f64,
     /// The largest θ (rad).
     pub theta_max: f64,
+    /// `(φ̇_min, φ̇_max)` over the nutation; `None` when the axis reaches the vertical
+    /// (`1 − u² = 0`, where φ̇ has no bound the formula can give).
+    pub phi_dot_band: Option<(f64, f64)>,
+    /// `(ψ̇_min, ψ̇_max)` over the nutation; `None` as for φ̇.
+    pub psi_dot_band: Option<(f64, f64)>,
+}
+
+/// The least and greatest of `rate(u)` for `u` in `[u_low, u_high]`: at the ends and at the
+/// roots of `p u² − 2 q u + p = 0` between them. `None` when an end is `±1`.
+fn band(u_low: f64, u_high: f64, p: f64, q: f64, rate: impl Fn(f64) -> f64) -> Option<(f64, f64)> {
+    if u_low <= -1.0 || u_high >= 1.0 {
+        return None;
+    }
+    let mut candidates = vec![u_low, u_high];
+    // p u² − 2 q u + p = 0: u = (q ± √(q² − p²))/p, the smaller root as p/(q ± √…).
+    let discriminant = q * q - p * p;
+    if p != 0.0 && discriminant >= 0.0 {
+        let big = q + q.signum() * discriminant.sqrt();
+        candidates.push(big / p);
+        if big != 0.0 {
+            candidates.push(p / big);
+        }
+    }
+    let values: Vec<f64> = candidates
+        .into_iter()
+        .filter(|u| (u_low..=u_high).contains(u))
+        .map(rate)
+        .collect();
+    let low = values.iter().copied().fold(f64::INFINITY, f64::min);
+    let high = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    (low.is_finite() && high.is_finite()).then_some((low, high))
 }
 
 /// The conserved quantities of `top` started at `initial` and its turning angles.
@@ -96,12 +133,17 @@ pub fn nutation_limits(
     if !vertical_momentum.is_finite() || !cubic.iter().all(|c| c.is_finite()) {
         return Err(non_finite("the momentum about the vertical p_φ"));
     }
+    let (u_low, u_high) = ((u0 + d_min).max(-1.0), (u0 + d_max).min(1.0));
+    let a_phi = vertical_momentum / i_t;
+    let phi_dot = |u: f64| (a_phi - b * u) / ((1.0 - u) * (1.0 + u));
     Ok(NutationLimits {
         spin,
         vertical_momentum,
         energy,
         theta_min: theta(d_max),
         theta_max: theta(d_min),
+        phi_dot_band: band(u_low, u_high, b, a_phi, phi_dot),
+        psi_dot_band: band(u_low, u_high, a_phi, b, |u| spin - u * phi_dot(u)),
     })
 }
 

@@ -42,9 +42,15 @@ fn predicted(stderr: &str) -> (f64, f64) {
 
 #[test]
 fn a_released_top_nutates_between_the_angles_it_prints() {
+    // The README's example, the same top as `top(30.0, false, "")`.
+    let shipped = format!(
+        "{}/examples/simulate/released_top.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&shipped).unwrap();
     let run = kinetics_with_input(
         &["simulate", "-", "--until", "3", "--every", "0.0005"],
-        top(30.0, false, ""),
+        text,
     );
     assert_eq!(run.code, 0, "{}", run.stderr);
     assert_eq!(

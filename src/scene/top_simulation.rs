@@ -11,9 +11,10 @@
 //! the scene does not declare them; a rate `steady` makes zero starts at 0.
 //!
 //! Every error stands at the statement it comes from: the moments at the body, the loads at
-//! the first load, an angle or rate at the `euler angles` statement.
+//! the first load whose moment is not of the weight's form (else the first load), an angle
+//! or rate at the `euler angles` statement.
 
-use super::model::{EulerAnglesStatement, Part, Scene};
+use super::model::{EulerAnglesStatement, Part, Scene, Span};
 use super::simulation::{body_place, loads_place, number};
 use crate::algebra::{Expr, Symbol, Vector};
 use crate::mechanics::composite_body::composite_body;
@@ -61,14 +62,42 @@ pub fn heavy_top(scene: &Scene) -> Result<(HeavyTop, EulerianAngles), Diagnostic
         body,
     )?;
     let axial = number(scene, axial, "the axial moment of inertia I", body)?;
-    let moment = scene
+    let places = &scene.places;
+    let loads: Vec<(Vector, Span)> = scene
         .forces
         .iter()
         .map(|f| (&f.point - &reference).cross(&f.value))
-        .chain(scene.couples.iter().cloned())
+        .zip(places.forces.iter().copied())
+        .chain(
+            scene
+                .couples
+                .iter()
+                .cloned()
+                .zip(places.couples.iter().copied()),
+        )
+        .collect();
+    let moment = loads
+        .iter()
+        .map(|(m, _)| m.clone())
         .fold(Vector::from_element(Expr::zero()), |a, b| a + b);
     let theta = EulerAnglesStatement::angles().nutation;
-    let weight_arm = weight_arm(scene, &moment, theta)?;
+    let weight_arm = match weight_arm(scene, &moment, theta, loads_place(scene)) {
+        Ok(weight_arm) => weight_arm,
+        Err(refusal) => {
+            // Blamed on the first load (in the file) whose own moment is not of that form.
+            let culprit = loads
+                .iter()
+                .filter(|(m, at)| weight_arm(scene, m, theta, *at).is_err())
+                .map(|(_, at)| *at)
+                .min_by_key(|at| at.start);
+            return Err(match culprit {
+                Some(at) => weight_arm(scene, &moment, theta, at)
+                    .err()
+                    .unwrap_or(refusal),
+                None => refusal,
+            });
+        }
+    };
     let top = HeavyTop::new(axial, transverse, weight_arm).map_err(|e| {
         scene.error_at(
             body,
@@ -87,9 +116,9 @@ pub fn heavy_top(scene: &Scene) -> Result<(HeavyTop, EulerianAngles), Diagnostic
     Ok((top, start))
 }
 
-/// `W c` from `ΣM = W c sin θ i`: read at θ = 90°, checked at [`CHECK_ANGLES`].
-fn weight_arm(scene: &Scene, moment: &Vector, theta: Symbol) -> Result<f64, Diagnostic> {
-    let at = loads_place(scene);
+/// `W c` from `ΣM = W c sin θ i`: read at θ = 90°, checked at [`CHECK_ANGLES`]; a
+/// refusal stands at `at`.
+fn weight_arm(scene: &Scene, moment: &Vector, theta: Symbol, at: Span) -> Result<f64, Diagnostic> {
     let evaluate = |angle: f64| -> Result<[f64; 3], Diagnostic> {
         let mut m = [0.0; 3];
         for (k, component) in moment.iter().enumerate() {

@@ -139,4 +139,6 @@ fn a_load_other_than_the_weight_is_refused_at_the_load() {
         "{}",
         run.stderr
     );
+    // Blamed on the couple (line 18 of the scene), not on the weight before it.
+    assert!(run.stderr.contains(":18:"), "{}", run.stderr);
 }

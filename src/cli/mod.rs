@@ -8,10 +8,12 @@ mod input;
 #[cfg(feature = "plot")]
 mod plot;
 mod progress;
+mod sample_rows;
 mod show;
 mod simplify;
 mod simulate;
 mod simulate_flags;
+mod simulate_top;
 mod solve;
 
 use clap::{Parser, Subcommand};

@@ -1,33 +1,30 @@
-//! What `--plot` draws (feature `plot`): ω(t) of `kinetics simulate`, and one
-//! work-precision diagram per body of `kinetics bench work-precision`.
+//! What `--plot` draws (feature `plot`): ω(t) of `kinetics simulate` (for a top, the path
+//! of its axis seen from above and θ(t)), and one work-precision diagram per body of
+//! `kinetics bench work-precision`.
 //!
 //! A simulation streams its samples; only the plot keeps points, at most [`PLOT_POINTS`] of
 //! them: a longer run keeps every `stride`-th sample, `stride = ⌈samples / PLOT_POINTS⌉`.
-//! The path is checked before the run (see `writable_path`), so that a plot that cannot be
+//! The path is checked before the run ([`writable_path`], called before the scene is read), so that a plot that cannot be
 //! written fails before any sample is computed, not after the whole CSV was streamed.
 
+use kinetics::numeric::rigid_body::eulerian_angles::EulerianAngles;
 use kinetics::numeric::rigid_body::sample_sink::Sample;
 use kinetics::numeric::rigid_body::simulate::Sampling;
-use kinetics::numeric::work_precision::plot::{line_chart, Series};
+use kinetics::numeric::work_precision::plot::{line_chart, side_by_side, Chart, Series};
 use kinetics::numeric::work_precision::study::Row;
 use std::path::{Path, PathBuf};
 
 /// Most points kept for the plot; longer runs are thinned evenly.
 const PLOT_POINTS: usize = 20_000;
 
-/// ω(t) in body axes, gathered sample by sample for an SVG chart.
-pub struct OmegaPlot {
-    path: PathBuf,
+/// Which samples a plot keeps: every `stride`-th, so that at most about [`PLOT_POINTS`].
+struct Thinning {
     stride: usize,
     seen: usize,
-    lines: [Vec<(f64, f64)>; 3],
 }
 
-impl OmegaPlot {
-    /// A plot into `path` of a run sampled by `sampling`, the path checked
-    /// ([`writable_path`]) before anything is simulated.
-    pub fn new(path: &Path, force: bool, sampling: &Sampling<f64>) -> Result<Self, String> {
-        writable_path(path, force)?;
+impl Thinning {
+    fn new(sampling: &Sampling<f64>) -> Self {
         let count = match sampling {
             Sampling::Times(times) => times.len(),
             Sampling::Every { interval, end } if *interval > 0.0 && end.is_finite() => {
@@ -35,22 +32,45 @@ impl OmegaPlot {
             }
             Sampling::Every { .. } => 1,
         };
-        Ok(OmegaPlot {
-            path: path.to_path_buf(),
+        Thinning {
             stride: count.div_ceil(PLOT_POINTS).max(1),
             seen: 0,
+        }
+    }
+
+    /// Whether the next sample is kept.
+    fn keeps_next(&mut self) -> bool {
+        let keep = self.seen.is_multiple_of(self.stride);
+        self.seen += 1;
+        keep
+    }
+}
+
+/// ω(t) in body axes, gathered sample by sample for an SVG chart.
+pub struct OmegaPlot {
+    path: PathBuf,
+    thinning: Thinning,
+    lines: [Vec<(f64, f64)>; 3],
+}
+
+impl OmegaPlot {
+    /// A plot into `path` (checked by [`writable_path`] before anything is simulated) of a
+    /// run sampled by `sampling`.
+    pub fn new(path: &Path, sampling: &Sampling<f64>) -> Self {
+        OmegaPlot {
+            path: path.to_path_buf(),
+            thinning: Thinning::new(sampling),
             lines: Default::default(),
-        })
+        }
     }
 
     /// Keeps the sample when it is the first of its stride.
     pub fn add(&mut self, s: &Sample<f64>) {
-        if self.seen.is_multiple_of(self.stride) {
+        if self.thinning.keeps_next() {
             for (line, w) in self.lines.iter_mut().zip(s.omega.iter()) {
                 line.push((s.t, *w));
             }
         }
-        self.seen += 1;
     }
 
     /// Writes the SVG file.
@@ -73,12 +93,75 @@ impl OmegaPlot {
     }
 }
 
+/// A top's motion: the path of the tip of its unit axis seen from above,
+/// `(X, Y) = (sin θ sin φ, −sin θ cos φ)` (the nutation loops), beside θ(t) in degrees.
+pub struct TopPlot {
+    path: PathBuf,
+    thinning: Thinning,
+    tip: Vec<(f64, f64)>,
+    theta: Vec<(f64, f64)>,
+}
+
+impl TopPlot {
+    /// As [`OmegaPlot::new`].
+    pub fn new(path: &Path, sampling: &Sampling<f64>) -> Self {
+        TopPlot {
+            path: path.to_path_buf(),
+            thinning: Thinning::new(sampling),
+            tip: Vec::new(),
+            theta: Vec::new(),
+        }
+    }
+
+    /// Keeps the angles at `t` when they are the first of their stride.
+    pub fn add(&mut self, t: f64, angles: &EulerianAngles) {
+        if self.thinning.keeps_next() {
+            let (sin_theta, sin_phi, cos_phi) =
+                (angles.theta.sin(), angles.phi.sin(), angles.phi.cos());
+            self.tip.push((sin_theta * sin_phi, -sin_theta * cos_phi));
+            self.theta.push((t, angles.theta.to_degrees()));
+        }
+    }
+
+    /// Writes the SVG file: the two charts side by side.
+    pub fn draw(self) -> Result<(), String> {
+        let tip = [Series {
+            name: "tip of the axis".into(),
+            points: self.tip,
+        }];
+        let theta = [Series {
+            name: "θ".into(),
+            points: self.theta,
+        }];
+        side_by_side(
+            &self.path,
+            (1300, 620),
+            &[
+                Chart {
+                    title: "the axis seen from above",
+                    x_label: "X",
+                    y_label: "Y",
+                    series: &tip,
+                    equal_axes: true,
+                },
+                Chart {
+                    title: "nutation",
+                    x_label: "t [s]",
+                    y_label: "θ [°]",
+                    series: &theta,
+                    equal_axes: false,
+                },
+            ],
+        )
+    }
+}
+
 /// Refuses a plot path that would fail only after the whole run, or write where the user
 /// did not mean: a directory; a missing parent directory, or one that cannot be written
 /// (tried with a file created and removed at once); an existing file, or a symbolic link
 /// (dangling or not: writing follows it), unless `force`, and then the link's target is
 /// checked in turn.
-fn writable_path(path: &Path, force: bool) -> Result<(), String> {
+pub fn writable_path(path: &Path, force: bool) -> Result<(), String> {
     let refuse = |reason: String| Err(format!("error: --plot {}: {reason}", path.display()));
     let mut target = path.to_path_buf();
     // A chain of links is followed as the write will follow it, to a bound of hops.

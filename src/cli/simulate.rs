@@ -3,7 +3,8 @@
 //! and the orientation for the scene's body, streaming the samples (memory stays flat).
 //!
 //! Each row is formatted and written as its sample arrives; only the plot (`--plot`, with
-//! the `plot` feature) keeps points, a bounded number of them. `--rtol` belongs to dop853
+//! the `plot` feature) keeps points, a bounded number of them. A scene with `euler angles`
+//! is a heavy top, and its rows are its Eulerian angles (`simulate_top`). `--rtol` belongs to dop853
 //! (and to auto, which may integrate with it) and `--step` to rk4 and splitting: a flag the
 //! chosen method does not use is refused with the reason, not ignored.
 //!
@@ -13,13 +14,14 @@
 //! overflow found later stops the run with an error at the body, never an `inf` row.
 
 use super::error::CliError;
+use super::sample_rows::SampleRows;
 use super::simulate_flags::{positive, sampling};
 use kinetics::numeric::integrators::splitting::SplittingOrder;
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice, MethodUsed};
 use kinetics::numeric::rigid_body::sample_sink::Sample;
-use kinetics::numeric::rigid_body::simulate::Method;
-use kinetics::scene::{parse_scene_to_simulate, simulation};
-use std::io::Write;
+use kinetics::numeric::rigid_body::simulate::{Method, SimulationStatistics};
+use kinetics::numeric::NumericError;
+use kinetics::scene::{parse_scene_to_simulate, simulation, Scene};
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum MethodName {
@@ -69,7 +71,8 @@ pub struct Args {
     pub step: Option<f64>,
     #[arg(long, value_enum, default_value_t = Output::Csv)]
     pub format: Output,
-    /// Also draw ω(t) into this SVG file.
+    /// Also draw ω(t) into this SVG file (for a scene with `euler angles`: the path of the
+    /// axis seen from above, and θ(t)).
     #[cfg(feature = "plot")]
     #[arg(long)]
     pub plot: Option<std::path::PathBuf>,
@@ -155,26 +158,28 @@ pub fn run(args: Args) -> Result<String, CliError> {
     let choice = method_choice(args.method, args.rtol, args.step)?;
     let sampling = sampling(args.until, args.every, args.at.as_deref(), args.force)?;
     #[cfg(feature = "plot")]
-    let mut plot = match &args.plot {
-        Some(path) => {
-            Some(super::plot::OmegaPlot::new(path, args.force, &sampling).map_err(CliError::Plot)?)
-        }
-        None => None,
-    };
+    if let Some(path) = &args.plot {
+        super::plot::writable_path(path, args.force).map_err(CliError::Plot)?;
+    }
     let (name, text) = super::input::read_file(&args.scene)?;
     let scene = parse_scene_to_simulate(&name, &text)?;
+    if scene.euler_angles.is_some() {
+        return super::simulate_top::run(&args, &scene, name, &choice, &sampling);
+    }
     let problem = simulation::problem(&scene)?;
-    let stdout = std::io::stdout();
-    let mut out = std::io::BufWriter::new(stdout.lock());
-    let mut written = 0usize;
-    let mut failure: Option<std::io::Error> = None;
-    let header = "t,w_x,w_y,w_z,q_w,q_x,q_y,q_z,T,H";
+    #[cfg(feature = "plot")]
+    let mut plot = args
+        .plot
+        .as_ref()
+        .map(|path| super::plot::OmegaPlot::new(path, &sampling));
+    let mut rows = SampleRows::new(
+        std::io::BufWriter::new(std::io::stdout().lock()),
+        args.format,
+        "t,w_x,w_y,w_z,q_w,q_x,q_y,q_z,T,H",
+    );
     let mut sink = |s: Sample<f64>| {
-        if failure.is_some() {
-            return;
-        }
         let q = s.orientation.into_inner();
-        let fields = [
+        rows.push(&[
             s.t,
             s.omega.x,
             s.omega.y,
@@ -185,60 +190,47 @@ pub fn run(args: Args) -> Result<String, CliError> {
             q.k,
             s.kinetic_energy,
             s.angular_momentum_magnitude,
-        ];
-        let row = fields
-            .iter()
-            .map(|v| format!("{v:.17e}"))
-            .collect::<Vec<_>>()
-            .join(",");
-        // The header (or the JSON array's opening) goes out with the first sample, so that
-        // a problem refused before it leaves standard output empty.
-        let result = match (args.format, written) {
-            (Output::Csv, 0) => writeln!(out, "{header}\n{row}"),
-            (Output::Csv, _) => writeln!(out, "{row}"),
-            (Output::Json, 0) => write!(out, "[[{row}]"),
-            (Output::Json, _) => write!(out, ",[{row}]"),
-        };
-        if let Err(e) = result {
-            failure = Some(e);
-        }
+        ]);
         #[cfg(feature = "plot")]
         if let Some(plot) = &mut plot {
             plot.add(&s);
         }
-        written += 1;
     };
     let (statistics, used) = super::progress::with_bar(|progress| {
         simulate_choice(&problem, &choice, &sampling, &mut sink, progress)
     })
-    .map_err(|source| match simulation::located(&scene, &source) {
+    .map_err(|source| located(&scene, name, source))?;
+    rows.finish()?;
+    #[cfg(feature = "plot")]
+    if let Some(plot) = plot {
+        plot.draw().map_err(CliError::Plot)?;
+    }
+    eprintln!(
+        "{} samples; method: {}",
+        statistics.samples,
+        method_report(&statistics, used)
+    );
+    Ok(String::new())
+}
+
+/// A failed run's error at the scene's statement it comes from, else about the file.
+pub(super) fn located(scene: &Scene, name: String, source: NumericError) -> CliError {
+    match simulation::located(scene, &source) {
         Some(located) => CliError::from(located),
         None => CliError::Numeric {
             name: Some(name),
             source,
         },
-    })?;
-    if let Some(e) = failure {
-        return Err(CliError::Io {
-            action: "write the samples".into(),
-            source: e,
-        });
     }
-    if args.format == Output::Json {
-        writeln!(out, "]").map_err(CliError::io("write"))?;
-    }
-    out.flush().map_err(CliError::io("write"))?;
-    #[cfg(feature = "plot")]
-    if let Some(plot) = plot {
-        plot.draw().map_err(CliError::Plot)?;
-    }
-    let method = match used {
+}
+
+/// The method as the closing line reports it: the closed form, or the steps taken.
+pub(super) fn method_report(statistics: &SimulationStatistics, used: MethodUsed) -> String {
+    match used {
         MethodUsed::Exact => "exact (closed form)".to_string(),
         MethodUsed::Integrator => format!(
             "{} steps, {} rejected",
             statistics.steps, statistics.rejected_steps
         ),
-    };
-    eprintln!("{} samples; method: {method}", statistics.samples);
-    Ok(String::new())
+    }
 }

@@ -9,6 +9,7 @@ mod quantity_dimension;
 pub mod simulation;
 pub mod unit_text;
 pub mod stated_kinematics;
+pub mod top_simulation;
 pub mod units;
 mod units_in_math;
 

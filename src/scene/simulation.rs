@@ -30,12 +30,12 @@ const RANGE_HELP: &str =
     "a simulation computes in f64, up to about 1.8e308 (SI units): check the mass, the sizes and omega";
 
 /// The first `body` statement: where the body as a whole is blamed.
-fn body_place(scene: &Scene) -> Span {
+pub(super) fn body_place(scene: &Scene) -> Span {
     scene.places.body.first().copied().unwrap_or_default()
 }
 
 /// The value of `e`, or an error at `at`: a symbol without a value, or a value beyond f64.
-fn number(scene: &Scene, e: &Expr, what: &str, at: Span) -> Result<f64, Diagnostic> {
+pub(super) fn number(scene: &Scene, e: &Expr, what: &str, at: Span) -> Result<f64, Diagnostic> {
     e.eval(&|s: Symbol| scene.value(s))
         .map_err(|err| match err {
             AlgebraError::NotFinite { .. } => {
@@ -51,7 +51,7 @@ fn number(scene: &Scene, e: &Expr, what: &str, at: Span) -> Result<f64, Diagnost
 
 /// Where the moment of the loads is blamed: the first load (in the file) one of whose
 /// components has no finite value, else the first load.
-fn loads_place(scene: &Scene) -> Span {
+pub(super) fn loads_place(scene: &Scene) -> Span {
     let places = &scene.places;
     let fails = |v: &Vector| {
         v.iter()

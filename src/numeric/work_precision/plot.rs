@@ -1,6 +1,8 @@
-//! Line charts as SVG (plotters): time series of a simulation and work-precision diagrams.
-//! Logarithmic quantities are plotted as their base-10 logarithms on linear axes.
+//! Line charts as SVG (plotters): time series of a simulation, the path of a top's axis seen
+//! from above, and work-precision diagrams. Logarithmic quantities are plotted as their
+//! base-10 logarithms on linear axes.
 
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -8,6 +10,16 @@ use std::path::Path;
 pub struct Series {
     pub name: String,
     pub points: Vec<(f64, f64)>,
+}
+
+/// One chart: its title, axis labels and lines. With `equal_axes` both axes span the same
+/// range (a path in a plane drawn undistorted in a square panel).
+pub struct Chart<'a> {
+    pub title: &'a str,
+    pub x_label: &'a str,
+    pub y_label: &'a str,
+    pub series: &'a [Series],
+    pub equal_axes: bool,
 }
 
 /// Draws the series into an SVG file at `path`.
@@ -18,6 +30,36 @@ pub fn line_chart(
     y_label: &str,
     series: &[Series],
 ) -> Result<(), String> {
+    let chart = Chart {
+        title,
+        x_label,
+        y_label,
+        series,
+        equal_axes: false,
+    };
+    side_by_side(path, (900, 560), &[chart])
+}
+
+/// Draws the charts side by side, in panels of equal width, into an SVG file at `path` of
+/// `size` pixels.
+pub fn side_by_side(path: &Path, size: (u32, u32), charts: &[Chart]) -> Result<(), String> {
+    let root = SVGBackend::new(path, size).into_drawing_area();
+    let draw = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
+    root.fill(&WHITE).map_err(|e| draw(&e))?;
+    for (panel, chart) in root.split_evenly((1, charts.len())).iter().zip(charts) {
+        draw_chart(panel, chart).map_err(|e| draw(&e))?;
+    }
+    root.present().map_err(|e| draw(&e))
+}
+
+fn draw_chart(panel: &DrawingArea<SVGBackend, Shift>, chart: &Chart) -> Result<(), String> {
+    let Chart {
+        title,
+        x_label,
+        y_label,
+        series,
+        equal_axes,
+    } = *chart;
     let finite = || {
         series
             .iter()
@@ -43,11 +85,15 @@ pub fn line_chart(
         let d = if hi > lo { (hi - lo) * 0.05 } else { 1.0 };
         (lo - d, hi + d)
     };
+    if equal_axes {
+        // Both ranges widened about their middles to the larger span.
+        let half = 0.5 * (x1 - x0).max(y1 - y0);
+        let (xm, ym) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+        (x0, x1, y0, y1) = (xm - half, xm + half, ym - half, ym + half);
+    }
     let ((x0, x1), (y0, y1)) = (pad(x0, x1), pad(y0, y1));
-    let root = SVGBackend::new(path, (900, 560)).into_drawing_area();
-    let draw = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
-    root.fill(&WHITE).map_err(|e| draw(&e))?;
-    let mut chart = ChartBuilder::on(&root)
+    let draw = |e: &dyn std::fmt::Display| e.to_string();
+    let mut chart = ChartBuilder::on(panel)
         .caption(title, ("sans-serif", 22))
         .margin(12)
         .x_label_area_size(40)
@@ -87,5 +133,5 @@ pub fn line_chart(
         .border_style(BLACK)
         .draw()
         .map_err(|e| draw(&e))?;
-    root.present().map_err(|e| draw(&e))
+    Ok(())
 }

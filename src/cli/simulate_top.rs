@@ -12,6 +12,7 @@
 use super::error::CliError;
 use super::sample_rows::SampleRows;
 use super::simulate::{located, method_report, Args};
+use kinetics::algebra::four_significant_figures;
 use kinetics::numeric::rigid_body::eulerian_angles::AnglesAlongMotion;
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice};
 use kinetics::numeric::rigid_body::nutation_limits::{nutation_limits, NutationLimits};
@@ -105,15 +106,17 @@ fn turns_countable(limits: &NutationLimits, sampling: &Sampling<f64>) -> Result<
     };
     let width = (phi.1 - phi.0).max(psi.1 - psi.0);
     if width * gap > std::f64::consts::PI {
+        // A band's end within round-off of zero (a top released with φ̇ = 0) reads as 0.
+        let shown = |x: f64| four_significant_figures(if x.abs() < 1e-9 * width { 0.0 } else { x });
         return Err(CliError::Usage(format!(
             "samples {gap} s apart are too far apart to count the turns of phi and psi: over \
-             the nutation phidot ranges over [{:.6e}, {:.6e}] and psidot over [{:.6e}, {:.6e}] \
-             rad/s; sample at most every {:.3e} s",
-            phi.0,
-            phi.1,
-            psi.0,
-            psi.1,
-            std::f64::consts::PI / width
+             the nutation phidot ranges over [{}, {}] and psidot over [{}, {}] rad/s; sample at \
+             most every {} s",
+            shown(phi.0),
+            shown(phi.1),
+            shown(psi.0),
+            shown(psi.1),
+            four_significant_figures(std::f64::consts::PI / width)
         )));
     }
     Ok(())

@@ -4,7 +4,9 @@
 //!
 //! - `omega`, `omegadot` and `frame` are derived, so writing them too is refused;
 //! - θ and the rates the kinematics use are declared (givens or unknowns) with the right
-//!   units; with `steady`, `θ̇ = φ̈ = θ̈ = ψ̈ = 0` and they are not declared;
+//!   units; with `steady`, `θ̇ = φ̈ = θ̈ = ψ̈ = 0` and they are not declared; without it a
+//!   second rate (`phiddot`, `thetaddot`, `psiddot`) not declared is an unknown, which the
+//!   equations of motion give (a top to simulate declares only its state);
 //! - `K`, the fixed vertical, is `sin θ j + cos θ k` in the scene's mathematics;
 //! - the body is axisymmetric about z (`I_x = I_y`, no product of inertia; about O with a
 //!   fixed point, else about G): otherwise `[I]` would not be constant in Oxyz, which does
@@ -148,14 +150,19 @@ impl Reader<'_> {
             })
     }
 
-    /// At the end of the file: the angles and rates are declared with their units, and the
-    /// body is axisymmetric about z.
-    pub(super) fn euler_angles_complete(&self) -> Result<(), Diagnostic> {
+    /// At the end of the file: the angles and first rates are declared with their units, a
+    /// second rate not declared is an unknown, and the body is axisymmetric about z.
+    pub(super) fn euler_angles_complete(&mut self) -> Result<(), Diagnostic> {
         let Some(statement) = self.scene.euler_angles else {
             return Ok(());
         };
         let at = (statement.span.start, statement.span.end);
         for s in statement.declared() {
+            if s.dots() == 2 && self.scene.dimension(s).is_none() {
+                self.scene
+                    .unknowns
+                    .push((s, Dimension::ANGULAR_ACCELERATION));
+            }
             let want = match s.dots() {
                 0 => Dimension::NONE,
                 1 => Dimension::ANGULAR_VELOCITY,
@@ -267,6 +274,7 @@ fn what(s: Symbol) -> &'static str {
 mod tests {
     use crate::parse::parse_expression;
     use crate::scene::parse_scene;
+    use crate::scene::units::Dimension;
 
     const TOP: &str = "given m = 2 kg
 given r = 100 mm
@@ -310,12 +318,20 @@ find phidot";
         assert!(error.message.contains("need thetadot"), "{}", error.message);
         let declared = general.replace(
             "unknown phidot",
-            "unknown phidot\ngiven thetadot = 0 rad/s\ngiven phiddot = 0 rad/s^2\ngiven thetaddot = 0 rad/s^2\ngiven psiddot = 0 rad/s^2",
+            "unknown phidot\ngiven thetadot = 0 rad/s\ngiven phiddot = 0 rad/s^2",
         );
         let scene = parse_scene("top.scene", &declared).unwrap();
         assert!(scene
             .euler_angles
             .is_some_and(|s| !s.steady && s.zero().is_empty()));
         assert_eq!(scene.omega, None::<crate::algebra::Vector>);
+        // The second rates not declared are unknowns, in rad/s².
+        let implicit: Vec<&str> = scene
+            .unknowns
+            .iter()
+            .filter(|u| u.1 == Dimension::ANGULAR_ACCELERATION)
+            .map(|u| u.0.name())
+            .collect();
+        assert_eq!(implicit, ["thetaddot", "psiddot"]);
     }
 }

@@ -158,14 +158,22 @@ fn number_and_rest(e: &Expr) -> (Q, Expr) {
     }
 }
 
-/// The kinematic part of a term: its factors that hold a time-dependent symbol.
+/// The kinematic part of a term: its factors that hold a time-dependent symbol, except a
+/// sum below the line, which belongs with the coefficient it divides (`m r² ψ̇/(¼ m r² sin θ
+/// + m L² sin θ)` is the rate ψ̇ times a coefficient that reduces, `4 r² /((r² + 4L²) sin θ)`).
 fn kinematic_part(term: &Expr) -> Expr {
     Expr::mul_all(
         term.monomial()
             .iter()
-            .filter(|f| has_kinematic_symbol(f))
+            .filter(|f| in_kinematic_part(f))
             .cloned(),
     )
+}
+
+fn in_kinematic_part(factor: &Expr) -> bool {
+    let divides_by_a_sum = matches!(factor.view(), View::Pow(base, exponent)
+        if matches!(base.view(), View::Add(_)) && exponent.as_num().is_some_and(Q::is_negative));
+    has_kinematic_symbol(factor) && !divides_by_a_sum
 }
 
 /// Whether the terms of a sum carry different kinematic parts.
@@ -186,7 +194,7 @@ fn kinematic_groups(e: &Expr) -> Option<Vec<(Expr, Vec<Expr>)>> {
     let mut groups: Vec<(Expr, Vec<Expr>)> = Vec::new();
     for term in e.terms() {
         let part = kinematic_part(term);
-        let coefficient = term.without_factors(has_kinematic_symbol);
+        let coefficient = term.without_factors(in_kinematic_part);
         match groups.iter_mut().find(|(p, _)| *p == part) {
             Some((_, coefficients)) => coefficients.push(coefficient),
             None => groups.push((part, vec![coefficient])),

@@ -63,6 +63,22 @@ fn kinematic_groups_stay_apart_and_mass_properties_are_factored() {
     );
 }
 
+/// A sum below the line that holds an angle (a top's θ̈, φ̈ solved from its equations) is
+/// the coefficient's, not the kinematic part's: each rate's coefficient reduces on its own.
+/// By hand, −¼ m r² sin θ − m L² sin θ = −¼ m (r² + 4L²) sin θ, so
+/// −m r² ψ̇ θ̇/(2 · that) = 2 r² ψ̇ θ̇/((r² + 4L²) sin θ) and 2 m L² φ̇ θ̇ cos θ/that =
+/// −8 L² φ̇ θ̇ cos θ/((r² + 4L²) sin θ).
+#[test]
+fn a_denominator_holding_an_angle_reduces_with_the_coefficient() {
+    let denominator = "(-1/4*m*r^2*sin(theta) - m*L^2*sin(theta))";
+    assert_eq!(
+        simplified(&format!(
+            "-m*r^2*psidot*thetadot/(2*{denominator}) + 2*m*L^2*phidot*thetadot*cos(theta)/{denominator}"
+        )),
+        "2*r^2*psidot*thetadot/((4*L^2 + r^2)*sin(theta)) - 8*L^2*phidot*thetadot*cos(theta)/((4*L^2 + r^2)*sin(theta))"
+    );
+}
+
 #[test]
 fn canonical_and_expanded_forms_remain_on_request() {
     let (_, canonical, _) = kinetics(&["simplify", "--canonical", "(a^2-b^2)/(a-b)"]);

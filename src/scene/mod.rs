@@ -7,9 +7,9 @@ pub mod model;
 pub mod parse;
 mod quantity_dimension;
 pub mod simulation;
-pub mod unit_text;
 pub mod stated_kinematics;
 pub mod top_simulation;
+pub mod unit_text;
 pub mod units;
 mod units_in_math;
 

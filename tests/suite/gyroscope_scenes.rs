@@ -4,15 +4,17 @@
 //! pulls neither Euler's equations for a general body nor an integration.
 
 use crate::common::examples::{analysed_example, result};
+use kinetics::mechanics::torque_free_axisymmetric::PrecessionSense;
 use kinetics::scene::{Analysis, Scene, Value};
 use kinetics::solution::{render, Format};
 use std::process::Command;
 
-const EXAMPLES: [&str; 4] = [
+const EXAMPLES: [&str; 5] = [
     "gyroscope_required_moment",
     "top_slow_and_fast_precession",
     "wheel_gyroscope_horizontal",
     "torque_free_cylinder",
+    "torque_free_disk",
 ];
 
 /// The value of a scalar request with the givens' values.
@@ -31,6 +33,26 @@ fn numbers(scene: &Scene, analysis: &Analysis, name: &str) -> [f64; 3] {
             [c(0), c(1), c(2)]
         }
         other => panic!("{name} is not a vector: {other:?}"),
+    }
+}
+
+/// `find precession`: tan γ with the givens' values, and the sense.
+fn precession(scene: &Scene, analysis: &Analysis) -> (f64, PrecessionSense) {
+    match result(analysis, "precession") {
+        Value::Precession(p) => (
+            p.tan_gamma.eval(&|s| scene.value(s)).expect("a number"),
+            p.sense,
+        ),
+        other => panic!("precession is not a precession: {other:?}"),
+    }
+}
+
+/// The sense by the sign of `I′ − I` in f64 (the textbook's rule, §18.11).
+fn sense_by_hand(i: f64, i_prime: f64) -> PrecessionSense {
+    if i_prime > i {
+        PrecessionSense::Direct
+    } else {
+        PrecessionSense::Retrograde
     }
 }
 
@@ -131,6 +153,111 @@ fn the_torque_free_cylinder_spins_and_precesses_as_eq_18_50_says() {
     let h_g = numbers(&scene, &a, "H_G");
     close(h_g[1], i_prime * phidot * theta.sin(), "H_y");
     close(h_g[2], i_prime * phidot * theta.cos(), "H_z");
+    let (tan_gamma, sense) = precession(&scene, &a);
+    close(
+        tan_gamma,
+        i / i_prime * theta.tan(),
+        "tan(gamma) of find precession",
+    );
+    assert_eq!(sense, sense_by_hand(i, i_prime));
+    assert_eq!(sense, PrecessionSense::Direct);
+}
+
+/// A thin disk (`I = m r²/2 > I′ = m r²/4`): retrograde, `ψ̇ = −φ̇ cos θ / 2`, and
+/// `tan γ = 2 tan θ`, γ beyond θ; the binary's JSON gives γ in degrees and the sense in words.
+#[test]
+fn the_torque_free_disk_precesses_retrograde() {
+    let (scene, a) = analysed_example("torque_free_disk", "");
+    let g = |n: &str| given(&scene, n);
+    let (m, r, phidot, theta) = (g("m"), g("r"), g("phidot"), g("theta"));
+    let (i, i_prime) = (m * r * r / 2.0, m * r * r / 4.0);
+    let psidot = (i_prime - i) * phidot * theta.cos() / i;
+    close(number(&scene, &a, "psidot"), psidot, "psidot");
+    assert!(psidot * phidot < 0.0, "a flat body precesses retrograde");
+    let tan_gamma = i / i_prime * theta.tan();
+    let (derived, sense) = precession(&scene, &a);
+    close(derived, tan_gamma, "tan(gamma)");
+    assert_eq!(sense, sense_by_hand(i, i_prime));
+    assert_eq!(sense, PrecessionSense::Retrograde);
+    let path = format!(
+        "{}/examples/scenes/torque_free_disk.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_kinetics"))
+        .args(["solve", "--format", "json", &path])
+        .output()
+        .expect("the binary runs");
+    assert!(out.status.success());
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let row = |name: &str| {
+        doc["results"]
+            .as_array()
+            .and_then(|rows| rows.iter().find(|r| r["name"] == name))
+            .unwrap_or_else(|| panic!("no row {name}"))
+            .clone()
+    };
+    let gamma = row("gamma");
+    assert_eq!(gamma["unit"], "deg");
+    let degrees = gamma["value"].as_f64().expect("a number");
+    close(degrees, tan_gamma.atan().to_degrees(), "gamma in degrees");
+    assert!(
+        degrees > theta.to_degrees(),
+        "gamma > theta in retrograde precession"
+    );
+    let words = row("precession");
+    assert_eq!(words["text"], "retrograde precession (I' < I)");
+    assert!(words["value"].is_null());
+}
+
+/// `find precession` is refused at the `find` in a scene with loads, or without `euler
+/// angles`, saying why.
+#[test]
+fn a_precession_is_refused_with_loads_or_without_eulerian_angles() {
+    let path = format!(
+        "{}/examples/scenes/torque_free_disk.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).expect("the example exists");
+    let refusal = |text: &str| {
+        let scene = kinetics::parse_scene(&path, text).unwrap_or_else(|d| panic!("{}", d.render()));
+        let d = kinetics::analyse(&scene).expect_err("refused");
+        let at = &text[d.span.offset()..d.span.offset() + d.span.len()];
+        (d.message, at.to_string())
+    };
+    let loaded = text
+        .replace(
+            "vbar = 0",
+            "given g = 9.81 m/s^2\nforce W = -m*g*K at (0, 0, 0)\nvbar = 0",
+        )
+        .replace("find psidot, precession", "find precession");
+    let (message, at) = refusal(&loaded);
+    assert!(message.contains("under no force"), "{message}");
+    assert_eq!(at, "precession");
+    let unstated = text
+        .replace("euler angles steady\n", "omega = w*k\n")
+        .replace("unknown psidot", "given w = 3 rad/s")
+        .replace("find psidot, precession", "find precession");
+    let (message, at) = refusal(&unstated);
+    assert!(message.contains("euler angles"), "{message}");
+    assert_eq!(at, "precession");
+}
+
+/// A cylinder whose length has no value: the sign of `I′ − I = m (h² − 3 r²)/12` is open, and
+/// `find precession` says so, naming h.
+#[test]
+fn a_precession_whose_sense_needs_values_is_refused_naming_them() {
+    let path = format!(
+        "{}/examples/scenes/torque_free_cylinder.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path)
+        .expect("the example exists")
+        .replace("given h = 2 m", "given h : m")
+        .replace("find psidot, omega, H_G, precession", "find precession");
+    let scene = kinetics::parse_scene(&path, &text).unwrap_or_else(|d| panic!("{}", d.render()));
+    let d = kinetics::analyse(&scene).expect_err("refused");
+    assert!(d.message.contains("not decided"), "{}", d.message);
+    assert!(d.message.contains("values for h"), "{}", d.message);
 }
 
 /// `kinetics plan` of a steady precession: the Eulerian angles' steps, `Ḣ_O = [I_O]{ω̇} +

@@ -304,3 +304,107 @@ fn worked_solutions_of_the_gyroscopes_in_text_and_latex() {
         );
     }
 }
+
+/// `kinetics solve` of a scene given on standard input: (success, stdout, stderr).
+fn solve_stdin(scene: &str, format: &str) -> (bool, String, String) {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_kinetics"))
+        .args(["solve", "--format", format, "-"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(scene.as_bytes())
+        .expect("written");
+    let out = child.wait_with_output().expect("the binary ends");
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// The top of `top_slow_and_fast_precession` spinning at 300 rpm: `I²ψ̇² − 4 (I′ − I) cos θ m g
+/// r < 0` by hand in f64, so both roots of the quadratic in φ̇ are complex and the scene says
+/// so at its `find`, with the reason, instead of "under-determined".
+#[test]
+fn a_top_spinning_too_slowly_is_refused_with_the_reason() {
+    let path = format!(
+        "{}/examples/scenes/top_slow_and_fast_precession.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path)
+        .expect("the example exists")
+        .replace("given psidot = 1800 rpm", "given psidot = 300 rpm");
+    let (m, r, g, theta) = (0.5f64, 0.04f64, 9.81f64, 30f64.to_radians());
+    let psidot = 300.0 * std::f64::consts::TAU / 60.0;
+    let (i, i_prime) = (m * r * r / 2.0, 1.25 * m * r * r);
+    let discriminant = (i * psidot).powi(2) - 4.0 * (i_prime - i) * theta.cos() * m * g * r;
+    assert!(discriminant < 0.0, "by hand the top spins too slowly");
+    let (ok, _, stderr) = solve_stdin(&text, "text");
+    assert!(!ok);
+    for wanted in [
+        "no solution: every root for phidot is ruled out",
+        "discriminant",
+        "is negative",
+        "find phidot",
+        "spinning too slowly",
+    ] {
+        assert!(stderr.contains(wanted), "{wanted:?} not in:\n{stderr}");
+    }
+}
+
+/// A top whose distance r from the pivot is unknown: `r (r φ̇ (ψ̇/2 − 3/4 φ̇ cos θ) − g) = 0`
+/// (eq. 18.44 with I = m r²/2, I′ = 5/4 m r²); r = 0 is dropped in the plan, with the reason
+/// (r, a length, must be positive), in text and in JSON, and r is `4g/(φ̇ (2ψ̇ − 3φ̇ cos θ))`.
+#[test]
+fn a_dropped_root_is_shown_with_its_reason() {
+    let scene = "given m = 0.5 kg
+given g = 9.81 m/s^2
+given theta = 30 deg
+given psidot = 1800 rpm
+given phidot = 2 rad/s
+unknown r : m
+unknown R_x, R_y, R_z : N
+euler angles steady
+fixed point
+body disk(r) mass m at (0, 0, r) along z
+force W = -m*g*K at (0, 0, r)
+force R = R_x*i + R_y*j + R_z*k at (0, 0, 0)
+find r
+";
+    let (ok, text, stderr) = solve_stdin(scene, "text");
+    assert!(ok, "{stderr}");
+    let step = text
+        .split("\n\n")
+        .find(|s| s.contains("a root ruled out"))
+        .unwrap_or_else(|| panic!("no dropped root in:\n{text}"));
+    assert!(
+        step.contains("r would be zero; it must be positive"),
+        "{step}"
+    );
+    assert!(step.contains("\n  r = 0"), "{step}");
+    let (ok, json, _) = solve_stdin(scene, "json");
+    assert!(ok);
+    let doc: serde_json::Value = serde_json::from_str(&json).expect("JSON");
+    let titles: Vec<&str> = doc["plan"]
+        .as_array()
+        .expect("a plan")
+        .iter()
+        .filter_map(|t| t.as_str())
+        .collect();
+    assert!(
+        titles.contains(&"a root ruled out: r would be zero; it must be positive"),
+        "{titles:?}"
+    );
+    let (g, theta, phidot) = (9.81f64, 30f64.to_radians(), 2.0f64);
+    let psidot = 1800.0 * std::f64::consts::TAU / 60.0;
+    let r = 4.0 * g / (phidot * (2.0 * psidot - 3.0 * phidot * theta.cos()));
+    let derived = doc["results"][0]["value"].as_f64().expect("r has a value");
+    close(derived, r, "r");
+}

@@ -86,9 +86,8 @@ pub(super) fn biquadratic(
                 reason: format!("complex: {}² is complex ({})", u.name(), d.reason),
                 condition: Condition {
                     words: format!(
-                        "complex: ${}^2$ is complex ({})",
-                        u.latex(),
-                        d.condition.words
+                        r"complex: ${u}^2$ is complex, the discriminant $\Delta$ of the quadratic in ${u}^2$ being negative",
+                        u = u.latex()
                     ),
                     ..d.condition.clone()
                 },

@@ -224,6 +224,9 @@ impl Context {
                 Ok(Value::Balance(_)) => {
                     Meaning::Underivable("a balance is not a quantity of a claim".into())
                 }
+                Ok(Value::Precession(_)) => Meaning::Underivable(
+                    "the sense of a precession is not a quantity of a claim".into(),
+                ),
                 Ok(Value::Tensor(_) | Value::Principal(_)) => Meaning::Underivable(
                     "a tensor or a frame of axes is not a value a claim can hold".into(),
                 ),

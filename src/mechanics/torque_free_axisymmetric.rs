@@ -59,6 +59,14 @@ pub fn precession_sense(
     }
 }
 
+/// What a scene asks of a body under no force (`find precession`): the angle γ between ω and
+/// the axis, `tan γ = (I/I') tan θ` with the body's moments, and the sense of the precession.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Precession {
+    pub tan_gamma: Expr,
+    pub sense: PrecessionSense,
+}
+
 /// The motion of the body under no force, in ω_z (the symbol `w_z`) and θ.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TorqueFreeMotion {

@@ -226,11 +226,14 @@ pub enum Quantity {
     Unknown(Symbol),
     /// `balance in planes z = a, z = b at radius r`: two correction masses ([`Scene::balance`]).
     Balance,
+    /// `precession`: with `euler angles` and no loads, the angle γ between ω and the axis
+    /// and the sense of the torque-free precession (direct or retrograde).
+    Precession,
 }
 
 impl Quantity {
     /// The chapter's quantities by the names a scene writes them with.
-    pub const NAMED: [(&'static str, Quantity); 18] = [
+    pub const NAMED: [(&'static str, Quantity); 19] = [
         ("omega", Quantity::AngularVelocity),
         ("vbar", Quantity::MassCentreVelocity),
         ("mvbar", Quantity::LinearMomentum),
@@ -249,6 +252,7 @@ impl Quantity {
         ("I_O", Quantity::InertiaAboutO),
         ("principal_G", Quantity::PrincipalAboutG),
         ("principal_O", Quantity::PrincipalAboutO),
+        ("precession", Quantity::Precession),
     ];
 
     /// What the quantity is, in words (`the kinetic energy`).
@@ -277,6 +281,7 @@ impl Quantity {
             Quantity::PrincipalAboutO => "the principal moments and axes about O",
             Quantity::Unknown(_) => "an unknown",
             Quantity::Balance => "the two-plane balance",
+            Quantity::Precession => "the angle γ and the sense of the torque-free precession",
         }
     }
 

@@ -31,7 +31,7 @@ impl Quantity {
             // Its moments' (its axes are unit vectors).
             Quantity::PrincipalAboutG | Quantity::PrincipalAboutO => Dimension::INERTIA,
             Quantity::Unknown(s) => return declared.get(&s).copied(),
-            Quantity::Balance => return None,
+            Quantity::Balance | Quantity::Precession => return None,
         })
     }
 }

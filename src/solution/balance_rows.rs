@@ -67,11 +67,21 @@ fn no_correction(scene: &Scene, correction: &Correction) -> bool {
 
 /// The angle of no correction.
 fn undefined<'a>(name: String, name_latex: String) -> Result<'a> {
+    in_words(name, name_latex, "undefined", r"\text{undefined}".into())
+}
+
+/// A result said in words (`text`; `latex`, its words in `\text{…}`), with no number.
+pub(super) fn in_words<'a>(
+    name: String,
+    name_latex: String,
+    text: &str,
+    latex: String,
+) -> Result<'a> {
     Result {
         name: Cow::Owned(name),
         name_latex,
-        text: "undefined".into(),
-        latex: r"\text{undefined}".into(),
+        text: text.into(),
+        latex,
         value: None,
         unit: None,
         form: None,
@@ -79,7 +89,7 @@ fn undefined<'a>(name: String, name_latex: String) -> Result<'a> {
 }
 
 /// An angle known only as a number, in degrees.
-fn number<'a>(name: String, name_latex: String, degrees: f64) -> Result<'a> {
+pub(super) fn number<'a>(name: String, name_latex: String, degrees: f64) -> Result<'a> {
     let text = format_value(degrees);
     Result {
         name: Cow::Owned(name),

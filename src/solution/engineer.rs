@@ -103,10 +103,11 @@ fn number_text(n: &Number) -> String {
 pub(super) fn answers_text(results: &[Result]) -> String {
     results
         .iter()
-        .filter(|r| r.value.is_some())
+        .filter(|r| r.value.is_some() || r.is_words())
         .filter_map(|r| {
+            let shown = value_text(r).or_else(|| r.is_words().then(|| r.text.clone()));
             super::inertia_results::text(r, true)
-                .or_else(|| Some(format!("  {} = {}\n", r.name, value_text(r)?)))
+                .or_else(|| Some(format!("  {} = {}\n", r.name, shown?)))
         })
         .collect()
 }
@@ -128,7 +129,10 @@ pub(super) fn text(
     }
     out.push_str("\nResults\n");
     out.push_str(&answers_text(results));
-    for r in results.iter().filter(|r| r.value.is_none()) {
+    for r in results
+        .iter()
+        .filter(|r| r.value.is_none() && !r.is_words())
+    {
         out.push_str(&format!(
             "  {} has no value: a given it needs is symbolic\n",
             r.name
@@ -148,6 +152,7 @@ pub(super) fn text(
 }
 
 /// The engineer's page as JSON: `{title, givens, results: [{name, value, unit}],
+/// a result said in words with its `text` too,
 /// intermediate: [{step, values: [{name, value, unit}]}]}` (`docs/solution.schema.json`).
 pub(super) fn json(
     scene: &Scene,
@@ -159,11 +164,17 @@ pub(super) fn json(
     serde_json::json!({
         "title": scene.title,
         "givens": super::render::givens_json(scene),
-        "results": results.iter().map(|r| serde_json::json!({
-            "name": r.name,
-            "value": super::render::value_json(r),
-            "unit": r.unit,
-        })).collect::<Vec<_>>(),
+        "results": results.iter().map(|r| {
+            let mut row = serde_json::json!({
+                "name": r.name,
+                "value": super::render::value_json(r),
+                "unit": r.unit,
+            });
+            if r.is_words() {
+                row["text"] = serde_json::json!(r.text);
+            }
+            row
+        }).collect::<Vec<_>>(),
         "intermediate": intermediate(scene, analysis, dims).iter().map(|s| serde_json::json!({
             "step": s.title,
             "values": s.values.iter().map(number).collect::<Vec<_>>(),

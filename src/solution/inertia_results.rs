@@ -73,7 +73,7 @@ fn rows<'a>(r: &'a Result) -> Option<Vec<Row<'a>>> {
             });
             Some(moments.chain(axes).chain(remark).collect())
         }
-        Value::Scalar(_) | Value::Vector(_) | Value::Balance(_) => None,
+        Value::Scalar(_) | Value::Vector(_) | Value::Balance(_) | Value::Precession(_) => None,
     }
 }
 
@@ -96,7 +96,7 @@ pub(super) fn values(v: &Value, value: impl Fn(&Expr) -> Option<f64>) -> Option<
             .chain(p.axes.iter().flat_map(|e| e.iter()))
             .map(value)
             .collect(),
-        Value::Scalar(_) | Value::Vector(_) | Value::Balance(_) => None,
+        Value::Scalar(_) | Value::Vector(_) | Value::Balance(_) | Value::Precession(_) => None,
     }
 }
 
@@ -252,7 +252,9 @@ fn one_line_in(v: &Value, form: impl Fn(&Form) -> String, separator: &str) -> St
             });
             moments.chain(axes).collect::<Vec<_>>().join(separator)
         }
-        Value::Scalar(_) | Value::Vector(_) | Value::Balance(_) => String::new(),
+        Value::Scalar(_) | Value::Vector(_) | Value::Balance(_) | Value::Precession(_) => {
+            String::new()
+        }
     }
 }
 
@@ -444,6 +446,6 @@ pub(super) fn json_value(r: &Result) -> Option<serde_json::Value> {
             "axes": numbers.map(|v| v[3..].chunks(3).map(<[f64]>::to_vec).collect::<Vec<_>>()),
             "remark": p.remark.as_deref().map(markup::text),
         })),
-        Value::Scalar(_) | Value::Vector(_) | Value::Balance(_) => None,
+        Value::Scalar(_) | Value::Vector(_) | Value::Balance(_) | Value::Precession(_) => None,
     }
 }

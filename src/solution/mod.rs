@@ -11,6 +11,7 @@ mod inertia_results;
 mod mathml_value;
 pub mod numbers;
 pub mod parts_table;
+mod precession_rows;
 pub mod render;
 pub mod unit_latex;
 

@@ -50,6 +50,7 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
             Value::Tensor(m) => m.iter().collect(),
             // The axes are unit vectors: numbers without a unit.
             Value::Principal(p) => p.moments.iter().collect(),
+            Value::Precession(p) => vec![&p.tan_gamma],
         };
         for e in components.into_iter().filter(|e| !e.is_zero()) {
             let missing: Vec<&str> = e

@@ -49,6 +49,12 @@ impl Result<'_> {
     pub(super) fn is_number(&self) -> bool {
         self.form.is_none() || self.text.parse::<f64>().is_ok()
     }
+
+    /// Whether the result is said in words (a balance's angle "undefined", a precession's
+    /// sense), with neither a form nor a number.
+    pub(super) fn is_words(&self) -> bool {
+        self.form.is_none() && self.value.is_none()
+    }
 }
 
 fn results<'a>(scene: &Scene, analysis: &'a Analysis, dims: &Dimensions) -> Vec<Result<'a>> {
@@ -137,6 +143,7 @@ fn computed<'a>(
             form: Some(Cow::Borrowed(v)),
         },
         Value::Balance(corrections) => return super::balance_rows::rows(scene, corrections),
+        Value::Precession(p) => return super::precession_rows::rows(scene, p),
     };
     vec![in_requested_unit(request, result)]
 }
@@ -153,11 +160,13 @@ pub(super) fn form_lines(
         Some(Value::Scalar(e)) => print::broken(e, Axis::X, notation, first_em, width_em),
         Some(Value::Vector(v)) => print::broken_vector(v, notation, first_em, width_em),
         // Their rows are rendered by inertia_results; a balance's rows are results of their own.
-        Some(Value::Balance(_) | Value::Tensor(_) | Value::Principal(_)) => Vec::new(),
+        Some(Value::Balance(_) | Value::Tensor(_) | Value::Principal(_) | Value::Precession(_)) => {
+            Vec::new()
+        }
         // Known only as a number (shown as its value), or undefined (said in words).
         None if r.value.is_some() => Vec::new(),
         None => vec![match notation {
-            Notation::MathMl => "<mtext>undefined</mtext>".into(),
+            Notation::MathMl => format!("<mtext>{}</mtext>", print::mathml::escaped(&r.text)),
             _ => r.latex.clone(),
         }],
     }
@@ -204,6 +213,7 @@ pub(super) fn quantity_latex(quantity: Quantity) -> String {
         Quantity::PrincipalAboutG | Quantity::PrincipalAboutO => "I_1".into(),
         Quantity::Unknown(s) => print::latex(&Expr::sym(s)),
         Quantity::Balance => r"\text{balance}".into(),
+        Quantity::Precession => r"\text{precession}".into(),
     }
 }
 
@@ -410,7 +420,13 @@ fn latex_results(results: &[Result]) -> String {
                 let unbroken_em = match r.form.as_deref() {
                     Some(Value::Scalar(e)) => print::width_em(e, Axis::X),
                     Some(Value::Vector(v)) => print::line_break::vector_width_em(v),
-                    Some(Value::Balance(_) | Value::Tensor(_) | Value::Principal(_)) | None => 0.0,
+                    Some(
+                        Value::Balance(_)
+                        | Value::Tensor(_)
+                        | Value::Principal(_)
+                        | Value::Precession(_),
+                    )
+                    | None => 0.0,
                 };
                 if lines.len() > 1 || first_em + unbroken_em + tail_em > width_em {
                     return format!("{} \\\\\n&{tail}", aligned_row(name, &lines));

@@ -4,15 +4,17 @@
 //! pulls neither Euler's equations for a general body nor an integration.
 
 use crate::common::examples::{analysed_example, result};
+use kinetics::mechanics::torque_free_axisymmetric::PrecessionSense;
 use kinetics::scene::{Analysis, Scene, Value};
 use kinetics::solution::{render, Format};
 use std::process::Command;
 
-const EXAMPLES: [&str; 4] = [
+const EXAMPLES: [&str; 5] = [
     "gyroscope_required_moment",
     "top_slow_and_fast_precession",
     "wheel_gyroscope_horizontal",
     "torque_free_cylinder",
+    "torque_free_disk",
 ];
 
 /// The value of a scalar request with the givens' values.
@@ -31,6 +33,26 @@ fn numbers(scene: &Scene, analysis: &Analysis, name: &str) -> [f64; 3] {
             [c(0), c(1), c(2)]
         }
         other => panic!("{name} is not a vector: {other:?}"),
+    }
+}
+
+/// `find precession`: tan γ with the givens' values, and the sense.
+fn precession(scene: &Scene, analysis: &Analysis) -> (f64, PrecessionSense) {
+    match result(analysis, "precession") {
+        Value::Precession(p) => (
+            p.tan_gamma.eval(&|s| scene.value(s)).expect("a number"),
+            p.sense,
+        ),
+        other => panic!("precession is not a precession: {other:?}"),
+    }
+}
+
+/// The sense by the sign of `I′ − I` in f64 (the textbook's rule, §18.11).
+fn sense_by_hand(i: f64, i_prime: f64) -> PrecessionSense {
+    if i_prime > i {
+        PrecessionSense::Direct
+    } else {
+        PrecessionSense::Retrograde
     }
 }
 
@@ -131,6 +153,111 @@ fn the_torque_free_cylinder_spins_and_precesses_as_eq_18_50_says() {
     let h_g = numbers(&scene, &a, "H_G");
     close(h_g[1], i_prime * phidot * theta.sin(), "H_y");
     close(h_g[2], i_prime * phidot * theta.cos(), "H_z");
+    let (tan_gamma, sense) = precession(&scene, &a);
+    close(
+        tan_gamma,
+        i / i_prime * theta.tan(),
+        "tan(gamma) of find precession",
+    );
+    assert_eq!(sense, sense_by_hand(i, i_prime));
+    assert_eq!(sense, PrecessionSense::Direct);
+}
+
+/// A thin disk (`I = m r²/2 > I′ = m r²/4`): retrograde, `ψ̇ = −φ̇ cos θ / 2`, and
+/// `tan γ = 2 tan θ`, γ beyond θ; the binary's JSON gives γ in degrees and the sense in words.
+#[test]
+fn the_torque_free_disk_precesses_retrograde() {
+    let (scene, a) = analysed_example("torque_free_disk", "");
+    let g = |n: &str| given(&scene, n);
+    let (m, r, phidot, theta) = (g("m"), g("r"), g("phidot"), g("theta"));
+    let (i, i_prime) = (m * r * r / 2.0, m * r * r / 4.0);
+    let psidot = (i_prime - i) * phidot * theta.cos() / i;
+    close(number(&scene, &a, "psidot"), psidot, "psidot");
+    assert!(psidot * phidot < 0.0, "a flat body precesses retrograde");
+    let tan_gamma = i / i_prime * theta.tan();
+    let (derived, sense) = precession(&scene, &a);
+    close(derived, tan_gamma, "tan(gamma)");
+    assert_eq!(sense, sense_by_hand(i, i_prime));
+    assert_eq!(sense, PrecessionSense::Retrograde);
+    let path = format!(
+        "{}/examples/scenes/torque_free_disk.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_kinetics"))
+        .args(["solve", "--format", "json", &path])
+        .output()
+        .expect("the binary runs");
+    assert!(out.status.success());
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let row = |name: &str| {
+        doc["results"]
+            .as_array()
+            .and_then(|rows| rows.iter().find(|r| r["name"] == name))
+            .unwrap_or_else(|| panic!("no row {name}"))
+            .clone()
+    };
+    let gamma = row("gamma");
+    assert_eq!(gamma["unit"], "deg");
+    let degrees = gamma["value"].as_f64().expect("a number");
+    close(degrees, tan_gamma.atan().to_degrees(), "gamma in degrees");
+    assert!(
+        degrees > theta.to_degrees(),
+        "gamma > theta in retrograde precession"
+    );
+    let words = row("precession");
+    assert_eq!(words["text"], "retrograde precession (I' < I)");
+    assert!(words["value"].is_null());
+}
+
+/// `find precession` is refused at the `find` in a scene with loads, or without `euler
+/// angles`, saying why.
+#[test]
+fn a_precession_is_refused_with_loads_or_without_eulerian_angles() {
+    let path = format!(
+        "{}/examples/scenes/torque_free_disk.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).expect("the example exists");
+    let refusal = |text: &str| {
+        let scene = kinetics::parse_scene(&path, text).unwrap_or_else(|d| panic!("{}", d.render()));
+        let d = kinetics::analyse(&scene).expect_err("refused");
+        let at = &text[d.span.offset()..d.span.offset() + d.span.len()];
+        (d.message, at.to_string())
+    };
+    let loaded = text
+        .replace(
+            "vbar = 0",
+            "given g = 9.81 m/s^2\nforce W = -m*g*K at (0, 0, 0)\nvbar = 0",
+        )
+        .replace("find psidot, precession", "find precession");
+    let (message, at) = refusal(&loaded);
+    assert!(message.contains("under no force"), "{message}");
+    assert_eq!(at, "precession");
+    let unstated = text
+        .replace("euler angles steady\n", "omega = w*k\n")
+        .replace("unknown psidot", "given w = 3 rad/s")
+        .replace("find psidot, precession", "find precession");
+    let (message, at) = refusal(&unstated);
+    assert!(message.contains("euler angles"), "{message}");
+    assert_eq!(at, "precession");
+}
+
+/// A cylinder whose length has no value: the sign of `I′ − I = m (h² − 3 r²)/12` is open, and
+/// `find precession` says so, naming h.
+#[test]
+fn a_precession_whose_sense_needs_values_is_refused_naming_them() {
+    let path = format!(
+        "{}/examples/scenes/torque_free_cylinder.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path)
+        .expect("the example exists")
+        .replace("given h = 2 m", "given h : m")
+        .replace("find psidot, omega, H_G, precession", "find precession");
+    let scene = kinetics::parse_scene(&path, &text).unwrap_or_else(|d| panic!("{}", d.render()));
+    let d = kinetics::analyse(&scene).expect_err("refused");
+    assert!(d.message.contains("not decided"), "{}", d.message);
+    assert!(d.message.contains("values for h"), "{}", d.message);
 }
 
 /// `kinetics plan` of a steady precession: the Eulerian angles' steps, `Ḣ_O = [I_O]{ω̇} +
@@ -176,4 +303,108 @@ fn worked_solutions_of_the_gyroscopes_in_text_and_latex() {
             render(&scene, &a, Format::Latex, false)
         );
     }
+}
+
+/// `kinetics solve` of a scene given on standard input: (success, stdout, stderr).
+fn solve_stdin(scene: &str, format: &str) -> (bool, String, String) {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_kinetics"))
+        .args(["solve", "--format", format, "-"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(scene.as_bytes())
+        .expect("written");
+    let out = child.wait_with_output().expect("the binary ends");
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// The top of `top_slow_and_fast_precession` spinning at 300 rpm: `I²ψ̇² − 4 (I′ − I) cos θ m g
+/// r < 0` by hand in f64, so both roots of the quadratic in φ̇ are complex and the scene says
+/// so at its `find`, with the reason, instead of "under-determined".
+#[test]
+fn a_top_spinning_too_slowly_is_refused_with_the_reason() {
+    let path = format!(
+        "{}/examples/scenes/top_slow_and_fast_precession.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path)
+        .expect("the example exists")
+        .replace("given psidot = 1800 rpm", "given psidot = 300 rpm");
+    let (m, r, g, theta) = (0.5f64, 0.04f64, 9.81f64, 30f64.to_radians());
+    let psidot = 300.0 * std::f64::consts::TAU / 60.0;
+    let (i, i_prime) = (m * r * r / 2.0, 1.25 * m * r * r);
+    let discriminant = (i * psidot).powi(2) - 4.0 * (i_prime - i) * theta.cos() * m * g * r;
+    assert!(discriminant < 0.0, "by hand the top spins too slowly");
+    let (ok, _, stderr) = solve_stdin(&text, "text");
+    assert!(!ok);
+    for wanted in [
+        "no solution: every root for phidot is ruled out",
+        "discriminant",
+        "is negative",
+        "find phidot",
+        "spinning too slowly",
+    ] {
+        assert!(stderr.contains(wanted), "{wanted:?} not in:\n{stderr}");
+    }
+}
+
+/// A top whose distance r from the pivot is unknown: `r (r φ̇ (ψ̇/2 − 3/4 φ̇ cos θ) − g) = 0`
+/// (eq. 18.44 with I = m r²/2, I′ = 5/4 m r²); r = 0 is dropped in the plan, with the reason
+/// (r, a length, must be positive), in text and in JSON, and r is `4g/(φ̇ (2ψ̇ − 3φ̇ cos θ))`.
+#[test]
+fn a_dropped_root_is_shown_with_its_reason() {
+    let scene = "given m = 0.5 kg
+given g = 9.81 m/s^2
+given theta = 30 deg
+given psidot = 1800 rpm
+given phidot = 2 rad/s
+unknown r : m
+unknown R_x, R_y, R_z : N
+euler angles steady
+fixed point
+body disk(r) mass m at (0, 0, r) along z
+force W = -m*g*K at (0, 0, r)
+force R = R_x*i + R_y*j + R_z*k at (0, 0, 0)
+find r
+";
+    let (ok, text, stderr) = solve_stdin(scene, "text");
+    assert!(ok, "{stderr}");
+    let step = text
+        .split("\n\n")
+        .find(|s| s.contains("a root ruled out"))
+        .unwrap_or_else(|| panic!("no dropped root in:\n{text}"));
+    assert!(
+        step.contains("r would be zero; it must be positive"),
+        "{step}"
+    );
+    assert!(step.contains("\n  r = 0"), "{step}");
+    let (ok, json, _) = solve_stdin(scene, "json");
+    assert!(ok);
+    let doc: serde_json::Value = serde_json::from_str(&json).expect("JSON");
+    let titles: Vec<&str> = doc["plan"]
+        .as_array()
+        .expect("a plan")
+        .iter()
+        .filter_map(|t| t.as_str())
+        .collect();
+    assert!(
+        titles.contains(&"a root ruled out: r would be zero; it must be positive"),
+        "{titles:?}"
+    );
+    let (g, theta, phidot) = (9.81f64, 30f64.to_radians(), 2.0f64);
+    let psidot = 1800.0 * std::f64::consts::TAU / 60.0;
+    let r = 4.0 * g / (phidot * (2.0 * psidot - 3.0 * phidot * theta.cos()));
+    let derived = doc["results"][0]["value"].as_f64().expect("r has a value");
+    close(derived, r, "r");
 }

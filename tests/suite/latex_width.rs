@@ -45,6 +45,7 @@ fn example_samples() -> Vec<Sample> {
                 Value::Balance(corrections) => {
                     samples.extend(corrections.iter().map(|k| scalar(&k.mass, Axis::X)))
                 }
+                Value::Precession(p) => samples.push(scalar(&p.tan_gamma, Axis::X)),
                 // A matrix or a frame's rows are not broken to the page: no width to model.
                 Value::Tensor(_) | Value::Principal(_) => {}
             }

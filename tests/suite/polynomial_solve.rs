@@ -548,3 +548,57 @@ fn a_double_root_is_one_branch() {
     assert_eq!(solved.branches, vec![vec![(Symbol::new("x"), e("a"))]]);
     assert!(solved.dropped.is_empty());
 }
+
+/// Each dropped root's condition is a well-formed title (words, mathematics in the markup's
+/// subset) about its relation: the complex pair of `x² + 1` (the discriminant Δ = −4), of a
+/// biquadratic `x⁴ + 3x² + 2` (x² = −1, −2), of the cubic `x³ + x + 1` by Cardano
+/// (q²/4 + p³/27 = 31/108), and a root that makes a positive unknown negative (L = −1); the
+/// cubic's left side, q²/4 + p³/27 in the symbols of its reduced form, is not compared (zero
+/// in the table).
+#[test]
+fn each_dropped_roots_condition_is_a_title_about_its_relation() {
+    let ones = |_: Symbol| 1.0;
+    let cases: [(&[&str], &[&str], Expr, Expr); 4] = [
+        (&["x^2 + 1"], &["x"], Expr::symbol("Delta"), Expr::int(-4)),
+        (
+            &["x^4 + 3*x^2 + 2"],
+            &["x"],
+            Expr::symbol("x").checked_pow(&Expr::int(2)).unwrap(),
+            Expr::int(-1),
+        ),
+        (
+            &["x^3 + x + 1"],
+            &["x"],
+            Expr::zero(),
+            Expr::rational(31, 108),
+        ),
+        (
+            &["x^2 - 4", "L - x - 1"],
+            &["L", "x"],
+            Expr::symbol("L"),
+            Expr::int(-1),
+        ),
+    ];
+    for (equations, unknowns, lhs, rhs) in cases {
+        let solved = solve(&exprs(equations), &symbols(unknowns), &ones, &|s| {
+            s.name() == "L"
+        })
+        .unwrap();
+        assert!(!solved.dropped.is_empty(), "{equations:?}");
+        for d in &solved.dropped {
+            let words = &d.condition.words;
+            kinetics::print::markup::validate(words).unwrap_or_else(|e| panic!("{words:?}: {e:?}"));
+        }
+        assert!(
+            solved.dropped.iter().any(|d| d.condition.rhs == rhs),
+            "{equations:?}: {:?}",
+            solved.dropped
+        );
+        if !lhs.is_zero() {
+            assert!(
+                solved.dropped.iter().any(|d| d.condition.lhs == lhs),
+                "{equations:?}"
+            );
+        }
+    }
+}

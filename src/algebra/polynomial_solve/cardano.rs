@@ -14,7 +14,7 @@
 
 use super::quadratic::square_root;
 use super::roots::Found;
-use super::{DroppedRoot, SolveError};
+use super::{Condition, DroppedRoot, SolveError};
 use crate::algebra::error::AlgebraError;
 use crate::algebra::expr::Expr;
 use crate::algebra::rational::Q;
@@ -71,6 +71,11 @@ pub(super) fn cubic(coefficients: &[Q; 4], u: Symbol) -> Result<Found, SolveErro
                     reason: format!(
                         "complex: q²/4 + p³/27 = {discriminant} is positive for the reduced cubic t³ + p t + q, so one root is real and two are complex"
                     ),
+                    condition: Condition {
+                        words: r"complex: $q^2/4 + p^3/27$ is positive for the reduced cubic $t^3 + p t + q = 0$, so one root is real and two are complex".into(),
+                        lhs: reduced_discriminant()?,
+                        rhs: Expr::num(discriminant.clone()),
+                    },
                 });
             }
         }
@@ -110,4 +115,12 @@ fn real_cube_root(alpha: &Q, s: &Expr, plus: bool, discriminant: &Q) -> Result<E
         Ordering::Greater => v.checked_pow(&third)?,
         Ordering::Less => -(-v).checked_pow(&third)?,
     })
+}
+
+/// `q²/4 + p³/27` in the symbols p and q of the reduced cubic `t³ + p t + q`.
+fn reduced_discriminant() -> Result<Expr, AlgebraError> {
+    let (p, q) = (Expr::symbol("p"), Expr::symbol("q"));
+    let square = q.checked_pow(&Expr::int(2))?;
+    let cube = p.checked_pow(&Expr::int(3))?;
+    Ok(&(&Expr::rational(1, 4) * &square) + &(&Expr::rational(1, 27) * &cube))
 }

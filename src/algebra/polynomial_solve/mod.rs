@@ -56,6 +56,18 @@ pub struct DroppedRoot {
     pub unknown: Symbol,
     pub value: Expr,
     pub reason: String,
+    /// The reason as a page shows it.
+    pub condition: Condition,
+}
+
+/// Why a root is dropped, for a page: `words` (a title: words, mathematics in `$…$`) about
+/// the relation `lhs = rhs` (the discriminant and its value, the value that must be
+/// positive, the divisor that vanishes).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Condition {
+    pub words: String,
+    pub lhs: Expr,
+    pub rhs: Expr,
 }
 
 /// The real solutions of a system, the roots ruled out, and the unknowns left free.
@@ -148,10 +160,11 @@ impl Parametric<'_> {
         for root in found.real {
             match self.branch(&root, &values)? {
                 Ok(branch) => branches.push((root, branch)),
-                Err(reason) => dropped.push(DroppedRoot {
+                Err((reason, condition)) => dropped.push(DroppedRoot {
                     unknown: self.u,
                     value: root,
                     reason,
+                    condition,
                 }),
             }
         }
@@ -193,7 +206,7 @@ impl Parametric<'_> {
         &self,
         root: &Expr,
         values: &[(Symbol, Expr)],
-    ) -> Result<Result<Branch, String>, AlgebraError> {
+    ) -> Result<Result<Branch, (String, Condition)>, AlgebraError> {
         let others: Vec<&Expr> = values
             .iter()
             .map(|(_, v)| v)
@@ -212,8 +225,13 @@ impl Parametric<'_> {
         };
         for pivot in self.reduced.pivot_coefficients() {
             if pivot.contains(self.u) && vanishes_at_root(pivot)? {
-                return Ok(Err(format!(
-                    "makes the coefficient {pivot} that the elimination divides by zero"
+                return Ok(Err((
+                    format!("makes the coefficient {pivot} that the elimination divides by zero"),
+                    Condition {
+                        words: "it makes a coefficient the elimination divides by zero".into(),
+                        lhs: pivot.clone(),
+                        rhs: Expr::zero(),
+                    },
                 )));
             }
         }
@@ -224,7 +242,14 @@ impl Parametric<'_> {
             } else if let Some((_, v)) = values.iter().find(|(t, _)| *t == s) {
                 let (_, denominator) = v.cancelled_parts()?;
                 if denominator.contains(self.u) && vanishes_at_root(&denominator)? {
-                    return Ok(Err(format!("makes the denominator {denominator} zero")));
+                    return Ok(Err((
+                        format!("makes the denominator {denominator} zero"),
+                        Condition {
+                            words: "it makes a denominator zero".into(),
+                            lhs: denominator,
+                            rhs: Expr::zero(),
+                        },
+                    )));
                 }
                 at_root(v)?
             } else {
@@ -236,20 +261,20 @@ impl Parametric<'_> {
                 } else {
                     format!("gives {} = {value}, ", s.name())
                 };
-                match self.context.sign_of(&value) {
-                    Some(Ordering::Less) => {
-                        return Ok(Err(format!(
-                            "{named}negative, but {} must be positive",
-                            s.name()
-                        )))
-                    }
-                    Some(Ordering::Equal) => {
-                        return Ok(Err(format!(
-                            "{named}zero, but {} must be positive",
-                            s.name()
-                        )))
-                    }
-                    _ => {}
+                let sign = match self.context.sign_of(&value) {
+                    Some(Ordering::Less) => "negative",
+                    Some(Ordering::Equal) => "zero",
+                    _ => "",
+                };
+                if !sign.is_empty() {
+                    return Ok(Err((
+                        format!("{named}{sign}, but {} must be positive", s.name()),
+                        Condition {
+                            words: format!("${}$ would be {sign}; it must be positive", s.latex()),
+                            lhs: Expr::sym(s),
+                            rhs: value,
+                        },
+                    )));
                 }
             }
             branch.push((s, value));

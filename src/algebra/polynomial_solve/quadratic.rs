@@ -6,7 +6,7 @@
 //! `y = 0`, and none for `y < 0`.
 
 use super::roots::Found;
-use super::{exact, DroppedRoot, SolveContext};
+use super::{exact, Condition, DroppedRoot, SolveContext};
 use crate::algebra::common_factor::content_and_primitive;
 use crate::algebra::error::AlgebraError;
 use crate::algebra::expr::Expr;
@@ -46,6 +46,14 @@ pub(super) fn quadratic(
                 unknown: u,
                 value,
                 reason: format!("complex: the discriminant b² − 4ac = {discriminant} is negative"),
+                condition: Condition {
+                    words: format!(
+                        r"complex: the discriminant $\Delta = b^2 - 4ac$ of the quadratic $a {u}^2 + b {u} + c = 0$ is negative",
+                        u = u.latex()
+                    ),
+                    lhs: Expr::sym(Symbol::new("Delta")),
+                    rhs: discriminant.clone(),
+                },
             })
             .collect();
     } else {
@@ -63,6 +71,7 @@ pub(super) fn biquadratic(
     context: &SolveContext,
 ) -> Result<Found, AlgebraError> {
     let squares = quadratic(a, b, c, u, context)?;
+    let u_squared = Expr::sym(u).checked_pow(&Expr::int(2))?;
     let mut found = Found::default();
     let roots_of = |y: &Expr| -> Result<[Expr; 2], AlgebraError> {
         let s = square_root(y)?;
@@ -75,6 +84,13 @@ pub(super) fn biquadratic(
                 unknown: u,
                 value,
                 reason: format!("complex: {}² is complex ({})", u.name(), d.reason),
+                condition: Condition {
+                    words: format!(
+                        r"complex: ${u}^2$ is complex, the discriminant $\Delta$ of the quadratic in ${u}^2$ being negative",
+                        u = u.latex()
+                    ),
+                    ..d.condition.clone()
+                },
             }));
     }
     for y in squares.real {
@@ -93,6 +109,11 @@ pub(super) fn biquadratic(
                         unknown: u,
                         value,
                         reason: format!("complex: {}² = {y} is negative", u.name()),
+                        condition: Condition {
+                            words: format!("complex: ${}^2$ is negative", u.latex()),
+                            lhs: u_squared.clone(),
+                            rhs: y.clone(),
+                        },
                     }))
             }
             _ => found.real.extend(roots_of(&y)?),

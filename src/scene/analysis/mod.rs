@@ -23,6 +23,7 @@
 //! | a named impulse | its components, the unknowns among them solved | the same |
 //! | `I_G`, `principal_G` | body about G (then the principal frame) | the same |
 //! | `I_O`, `principal_O` | inertia about O (then the principal frame) | the same |
+//! | `precession` | body about G, the torque-free motion, γ and the sense with its I and I′ | the same |
 //! | an unknown | the equations of motion with `Ḣ_O` (or impulse and momentum); then the solution | the same with `Ḣ_G` |
 
 mod balance;
@@ -30,6 +31,7 @@ mod points;
 mod presented;
 mod principal;
 mod scene_solve;
+mod torque_free;
 mod unknowns;
 
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
@@ -49,6 +51,7 @@ use crate::mechanics::principal_frame::PrincipalFrame;
 use crate::mechanics::rotating_frame::{
     rate_of_angular_momentum, rate_of_angular_momentum_about_point,
 };
+use crate::mechanics::torque_free_axisymmetric::Precession;
 use crate::mechanics::two_plane_balance::Correction;
 use crate::parse::Diagnostic;
 use std::collections::HashMap;
@@ -64,6 +67,8 @@ pub enum Value {
     Tensor(Matrix),
     /// Principal moments, ascending, and axes (a right-handed frame).
     Principal(PrincipalFrame),
+    /// `find precession`: γ and the sense of the torque-free precession.
+    Precession(Box<Precession>),
 }
 
 /// The outcome: the plan (steps in the order done) and each request's result.
@@ -245,6 +250,7 @@ impl<'a> Analyser<'a> {
             Quantity::PrincipalAboutO => self.principal(r, true)?,
             Quantity::Unknown(s) => Value::Scalar(self.unknown(at, s)?),
             Quantity::Balance => self.balance(at)?,
+            Quantity::Precession => self.torque_free(at)?,
         })
     }
 
@@ -253,7 +259,9 @@ impl<'a> Analyser<'a> {
         let mut exprs: Vec<Expr> = match &value {
             Value::Scalar(e) => vec![e.clone()],
             Value::Vector(v) => v.iter().cloned().collect(),
-            Value::Balance(_) | Value::Tensor(_) | Value::Principal(_) => return Ok(value),
+            Value::Balance(_) | Value::Tensor(_) | Value::Principal(_) | Value::Precession(_) => {
+                return Ok(value)
+            }
         };
         let pending: Vec<Symbol> = self
             .scene
@@ -279,7 +287,9 @@ impl<'a> Analyser<'a> {
         Ok(match value {
             Value::Scalar(_) => Value::Scalar(exprs.remove(0)),
             Value::Vector(_) => Value::Vector(Vector::from_iterator(exprs)),
-            Value::Balance(_) | Value::Tensor(_) | Value::Principal(_) => value,
+            Value::Balance(_) | Value::Tensor(_) | Value::Principal(_) | Value::Precession(_) => {
+                value
+            }
         })
     }
 

@@ -5,6 +5,7 @@
 use super::{principal, Value};
 use crate::algebra::Domains;
 use crate::mechanics::derivation::presented;
+use crate::mechanics::torque_free_axisymmetric::Precession;
 use crate::mechanics::two_plane_balance::{Correction, CorrectionAngle};
 
 impl Value {
@@ -27,6 +28,10 @@ impl Value {
             }))),
             Value::Tensor(m) => Value::Tensor(m.map(|c| presented(&c, domains))),
             Value::Principal(p) => Value::Principal(principal::presented(p, domains)),
+            Value::Precession(p) => Value::Precession(Box::new(Precession {
+                tan_gamma: presented(&p.tan_gamma, domains),
+                sense: p.sense,
+            })),
         }
     }
 }

@@ -61,18 +61,34 @@ impl Analyser<'_> {
             } = solve_scene(self.scene, &equations, &wanted)
                 .map_err(|e| self.solve_error(at, e))?;
             if let Some((u, p)) = polynomial {
-                let mut relations = vec![Relation::new(p, Expr::zero(), Axis::X)];
-                relations.extend(
-                    dropped
-                        .iter()
-                        .map(|d| Relation::new(Expr::sym(d.unknown), d.value.clone(), Axis::X)),
-                );
-                let title = match dropped.is_empty() {
-                    true => format!("the equations reduce to a polynomial in ${}$", u.latex()),
-                    false => format!(
-                        "the equations reduce to a polynomial in ${}$; the roots the problem's conditions rule out follow it",
-                        u.latex()
-                    ),
+                let title = format!("the equations reduce to a polynomial in ${}$", u.latex());
+                let relations = vec![Relation::new(p, Expr::zero(), Axis::X)];
+                self.plan.push(Step::new(title, relations));
+            }
+            if branches.is_empty() {
+                if let Some(d) = dropped.first() {
+                    let mut reasons: Vec<&str> =
+                        dropped.iter().map(|d| d.reason.as_str()).collect();
+                    reasons.dedup();
+                    return Err(self.fail(
+                        at,
+                        format!(
+                            "no solution: every root for {} is ruled out ({})",
+                            d.unknown.name(),
+                            reasons.join("; ")
+                        ),
+                        "the givens admit no such motion (a top spinning too slowly has no real steady precession): change the givens or the unknowns",
+                    ));
+                }
+            }
+            // Each root the problem's conditions rule out, its value and the reason.
+            for d in &dropped {
+                let title = format!("a root ruled out: {}", d.condition.words);
+                let root = Relation::new(Expr::sym(d.unknown), d.value.clone(), Axis::X);
+                let why = Relation::new(d.condition.lhs.clone(), d.condition.rhs.clone(), Axis::X);
+                let relations = match why == root {
+                    true => vec![root],
+                    false => vec![root, why],
                 };
                 self.plan.push(Step::new(title, relations));
             }

@@ -1,0 +1,96 @@
+//! `find precession`: an axisymmetric body under no force (§18.11), stated by its Eulerian
+//! angles. The motion is [`torque_free_axisymmetric`]'s, in the symbols I and I′; the body
+//! about G gives them (`I = Ī_z`, `I′ = Ī_x = Ī_y`), and the sense is decided from the sign
+//! of `I′ − I` ([`precession_sense`]), with the givens' values where the symbols leave it open.
+
+use super::super::model::{EulerAnglesStatement, Span};
+use super::{Analyser, Value};
+use crate::algebra::{Axis, Expr, Func, Symbol};
+use crate::mechanics::derivation::{presented, Relation, Step};
+use crate::mechanics::gyroscope::{axial_moment, transverse_moment};
+use crate::mechanics::torque_free_axisymmetric::{
+    precession_sense, torque_free_axisymmetric, Precession,
+};
+use crate::parse::Diagnostic;
+
+impl Analyser<'_> {
+    pub(super) fn torque_free(&mut self, at: Span) -> Result<Value, Diagnostic> {
+        let scene = self.scene;
+        if scene.euler_angles.is_none() {
+            return Err(self.fail(
+                at,
+                "precession is the torque-free precession of a body stated by its Eulerian angles, and this scene has no 'euler angles'",
+                "add 'euler angles' (the frame follows the axis of symmetry z, not the spin)",
+            ));
+        }
+        if !scene.forces.is_empty() || !scene.couples.is_empty() {
+            return Err(self.fail(
+                at,
+                "precession is the motion of a body under no force, and this scene has forces or couples on its body",
+                "remove the loads for a body under no force, or ask for the unknowns the loads determine",
+            ));
+        }
+        let inertia = self.body(at)?.inertia.clone();
+        let [i_x, i_y, i_z] = inertia.moments.clone();
+        let equal = (&i_x - &i_y).expand().is_ok_and(|d| d.is_zero());
+        if !equal || inertia.products.iter().any(|p| !p.is_zero()) {
+            return Err(self.fail(
+                at,
+                "precession needs a body axisymmetric about z (I_x = I_y about G, no products of inertia), and this body is not",
+                "state the body along z ('body cylinder(r, h) mass m along z')",
+            ));
+        }
+        let (motion, derivation) =
+            torque_free_axisymmetric(&EulerAnglesStatement::angles()).map_err(self.algebra(at))?;
+        self.plan.extend(derivation.steps);
+        let (axial, transverse) = (axial_moment(), transverse_moment());
+        let moment = |s: Symbol| {
+            (s == axial)
+                .then(|| i_z.clone())
+                .or_else(|| (s == transverse).then(|| i_x.clone()))
+        };
+        let tan_gamma = motion.tan_gamma.subs(&moment).map_err(self.algebra(at))?;
+        let gamma = Expr::func(Func::Tan, Expr::symbol("gamma"));
+        self.plan.push(Step::new(
+            r"this body's moments of inertia about $G$: $I = \bar I_z$, $I' = \bar I_x = \bar I_y$; the sign of $I' - I$ is the sense of the precession",
+            vec![
+                Relation::new(Expr::sym(axial), i_z.clone(), Axis::Z),
+                Relation::new(Expr::sym(transverse), i_x.clone(), Axis::X),
+                Relation::new(
+                    &Expr::sym(transverse) - &Expr::sym(axial),
+                    &i_x - &i_z,
+                    Axis::Z,
+                ),
+                Relation::new(gamma, tan_gamma.clone(), Axis::Z),
+            ],
+        ));
+        let domains = scene.domains();
+        let with_values = |e: &Expr| {
+            e.subs(&|s| scene.exact_value(s).map(Expr::num))
+                .unwrap_or_else(|_| e.clone())
+        };
+        let sense = precession_sense(&i_z, &i_x, &domains)
+            .or_else(|| precession_sense(&with_values(&i_z), &with_values(&i_x), &domains));
+        let Some(sense) = sense else {
+            let open: Vec<&str> = (&i_x - &i_z)
+                .symbols()
+                .into_iter()
+                .filter(|s| scene.value(*s).is_none())
+                .map(|s| s.name())
+                .collect();
+            return Err(self.fail(
+                at,
+                format!(
+                    "the sense of the precession is the sign of I' - I = {}, which is not decided without values for {}",
+                    presented(&(&i_x - &i_z), &domains),
+                    open.join(", ")
+                ),
+                format!(
+                    "give them values, e.g. 'given {} = <number> <unit>'",
+                    open.first().copied().unwrap_or("r")
+                ),
+            ));
+        };
+        Ok(Value::Precession(Box::new(Precession { tan_gamma, sense })))
+    }
+}

@@ -4,8 +4,10 @@
 
 use super::units::Dimension;
 use crate::algebra::{AlgebraError, Domain, Domains, Expr, Symbol, Vector, Q};
+use crate::mechanics::composite_body::composite_body;
 use crate::mechanics::eulerian_angles::EulerianAngles;
-use crate::mechanics::inertia::MassPart;
+use crate::mechanics::inertia::{InertiaTensor, MassPart};
+use crate::mechanics::inertia_about_point::inertia_about_fixed_point;
 use crate::mechanics::shapes::Shape;
 use crate::parse::Diagnostic;
 
@@ -440,6 +442,23 @@ impl Scene {
     /// scene has a fixed point and does not ask for the centroidal route (`about G`).
     pub fn about_fixed_point(&self) -> bool {
         self.fixed_point && !self.about_mass_centre
+    }
+
+    /// The body's moments and products of inertia in the frame's axes and the point they are
+    /// about: the fixed point O (the origin) when `about_o`, else the mass centre G.
+    pub fn inertia_of_body(&self, about_o: bool) -> Result<(InertiaTensor, Vector), AlgebraError> {
+        let parts: Vec<MassPart> = self
+            .parts
+            .iter()
+            .map(Part::mass_part)
+            .collect::<Result<_, _>>()?;
+        Ok(if about_o {
+            let inertia = inertia_about_fixed_point(&parts)?.0;
+            (inertia, Vector::from_element(Expr::zero()))
+        } else {
+            let body = composite_body(&parts)?.0;
+            (body.inertia, body.centroid)
+        })
     }
 
     pub fn is_unknown(&self, s: Symbol) -> bool {

@@ -14,11 +14,9 @@
 //! the first load whose moment is not of the weight's form (else the first load), an angle
 //! or rate at the `euler angles` statement.
 
-use super::model::{EulerAnglesStatement, Part, Scene, Span};
+use super::model::{EulerAnglesStatement, Scene, Span};
 use super::simulation::{body_place, loads_place, number};
 use crate::algebra::{Expr, Symbol, Vector};
-use crate::mechanics::composite_body::composite_body;
-use crate::mechanics::inertia_about_point::inertia_about_fixed_point;
 use crate::numeric::rigid_body::eulerian_angles::EulerianAngles;
 use crate::numeric::rigid_body::heavy_top::HeavyTop;
 use crate::parse::Diagnostic;
@@ -41,19 +39,7 @@ pub fn heavy_top(scene: &Scene) -> Result<(HeavyTop, EulerianAngles), Diagnostic
     let body = body_place(scene);
     let algebra =
         |e: crate::algebra::AlgebraError| scene.error_at(body, e.to_string(), "simplify the body");
-    let parts: Vec<_> = scene
-        .parts
-        .iter()
-        .map(Part::mass_part)
-        .collect::<Result<_, _>>()
-        .map_err(algebra)?;
-    let (inertia, reference) = if scene.fixed_point {
-        let inertia = inertia_about_fixed_point(&parts).map_err(algebra)?.0;
-        (inertia, Vector::from_element(Expr::zero()))
-    } else {
-        let properties = composite_body(&parts).map_err(algebra)?.0;
-        (properties.inertia, properties.centroid)
-    };
+    let (inertia, reference) = scene.inertia_of_body(scene.fixed_point).map_err(algebra)?;
     let [_, transverse, axial] = &inertia.moments;
     let transverse = number(
         scene,

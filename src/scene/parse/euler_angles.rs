@@ -12,12 +12,10 @@
 //!   fixed point, else about G): otherwise `[I]` would not be constant in Oxyz, which does
 //!   not spin with the body.
 
-use super::super::model::{EulerAnglesStatement, Part, Span};
+use super::super::model::{EulerAnglesStatement, Span};
 use super::super::units::Dimension;
 use super::{span, Reader, Rule};
 use crate::algebra::{Expr, Func, Symbol};
-use crate::mechanics::composite_body::composite_body;
-use crate::mechanics::inertia_about_point::inertia_about_fixed_point;
 use crate::parse::Diagnostic;
 use pest::iterators::Pair;
 
@@ -206,17 +204,9 @@ impl Reader<'_> {
         let algebra = |e: crate::algebra::AlgebraError| {
             self.error(at, e.to_string()).with_help("simplify the body")
         };
-        let parts: Vec<_> = scene
-            .parts
-            .iter()
-            .map(Part::mass_part)
-            .collect::<Result<_, _>>()
-            .map_err(algebra)?;
-        let (inertia, about) = if scene.about_fixed_point() {
-            (inertia_about_fixed_point(&parts).map_err(algebra)?.0, "O")
-        } else {
-            (composite_body(&parts).map_err(algebra)?.0.inertia, "G")
-        };
+        let about_o = scene.about_fixed_point();
+        let inertia = scene.inertia_of_body(about_o).map_err(algebra)?.0;
+        let about = if about_o { "O" } else { "G" };
         let [i_x, i_y, _] = &inertia.moments;
         let exact = |s: Symbol| scene.exact_given(s);
         let is_zero = |e: &Expr| -> bool {

@@ -12,11 +12,9 @@
 //! quotient stays on the line (`a^{1/2}`); `30 deg` is `30^\circ`.
 
 use super::diagnostic::Diagnostic;
-use super::expression::{parse_checked, to_ast, Rule};
-use super::limits::check_input;
+use super::expression::{statement_sides, to_ast};
 use super::lower::{Ast, Node};
 use crate::algebra::{reads_as_several_letters, Func, Symbol};
-use pest::iterators::Pair;
 
 /// A statement as written, in the two notations.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -28,16 +26,7 @@ pub struct Written {
 /// The expression or equation `source` as written (parse errors located as
 /// [`parse_statement`](super::parse_statement)'s; the caller lowers it for the algebra's).
 pub fn statement_as_written(source_name: &str, source: &str) -> Result<Written, Diagnostic> {
-    check_input(source_name, source)?;
-    let mut pairs = parse_checked(Rule::statement_input, source_name, source)?;
-    let sides: Vec<Pair<Rule>> = pairs
-        .next()
-        .map(|p| {
-            p.into_inner()
-                .filter(|q| q.as_rule() == Rule::expr)
-                .collect()
-        })
-        .unwrap_or_default();
+    let sides = statement_sides(source_name, source)?;
     let mut latex = Vec::new();
     let mut text = Vec::new();
     for side in sides {

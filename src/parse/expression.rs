@@ -97,15 +97,7 @@ fn parse_expression_in(
 
 /// Parses an expression or an equation `lhs = rhs`.
 pub fn parse_statement(source_name: &str, source: &str) -> Result<Statement, Diagnostic> {
-    let mut pairs = parse_rule(Rule::statement_input, source_name, source)?;
-    let sides: Vec<Pair<Rule>> = pairs
-        .next()
-        .map(|p| {
-            p.into_inner()
-                .filter(|q| q.as_rule() == Rule::expr)
-                .collect()
-        })
-        .unwrap_or_default();
+    let sides = statement_sides(source_name, source)?;
     let mut exprs = sides
         .into_iter()
         .map(|p| build(p, source_name, source, None))
@@ -133,6 +125,22 @@ pub fn parse_equation(source_name: &str, source: &str) -> Result<Equation, Diagn
             "expected an equation 'left = right', found an expression",
         )),
     }
+}
+
+/// A statement's sides as the grammar reads them: one expression, or the two of `lhs = rhs`.
+pub(super) fn statement_sides<'i>(
+    source_name: &str,
+    source: &'i str,
+) -> Result<Vec<Pair<'i, Rule>>, Diagnostic> {
+    let mut pairs = parse_rule(Rule::statement_input, source_name, source)?;
+    Ok(pairs
+        .next()
+        .map(|p| {
+            p.into_inner()
+                .filter(|q| q.as_rule() == Rule::expr)
+                .collect()
+        })
+        .unwrap_or_default())
 }
 
 fn parse_rule<'i>(

@@ -262,19 +262,11 @@ fn units_as_people_write_them() {
     ] {
         let path = dir.join("units.scene");
         std::fs::write(&path, scene_with_given(quantity)).expect("writable");
-        let (code, out, err) = kinetics(&[
-            "solve",
-            "--numbers",
-            "--format",
-            "json",
-            path.to_str().unwrap(),
-        ]);
-        assert_eq!(code, 0, "{quantity}: {err}");
-        let json: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+        let json = numbers_json(&path, quantity);
         let given = json["givens"]
             .as_array()
             .and_then(|g| g.iter().find(|g| g["name"] == "q"))
-            .unwrap_or_else(|| panic!("{quantity}: {out}"));
+            .unwrap_or_else(|| panic!("{quantity}: {json}"));
         let (number, unit) = si.split_once(' ').expect("a number and a unit");
         assert_eq!(given["unit"], unit, "{quantity}");
         assert_eq!(
@@ -361,15 +353,7 @@ fn find_in_takes_units_as_written() {
     let expected = 0.5 * (0.5 * 2.0 * 0.1 * 0.1) * 3.0 * 3.0;
     for unit in ["N·m", "N m", "N*m", "J", "kg·m²/s^2", "kg m^2 s⁻²"] {
         std::fs::write(&path, format!("{scene}find T in {unit}\n")).expect("writable");
-        let (code, out, err) = kinetics(&[
-            "solve",
-            "--numbers",
-            "--format",
-            "json",
-            path.to_str().unwrap(),
-        ]);
-        assert_eq!(code, 0, "{unit}: {err}");
-        let json: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+        let json = numbers_json(&path, unit);
         let result = &json["results"][0];
         assert_eq!(result["unit"], unit, "{unit}");
         let value = result["value"].as_f64().expect("a number");
@@ -416,4 +400,18 @@ fn the_degree_sign_is_the_degree() {
     assert!(sign.contains("T = "), "{sign}");
     let (code, out, err) = kinetics(&["simplify", "cos(60°)"]);
     assert_eq!((code, out.trim()), (0, "1/2"), "{err}");
+}
+
+/// `kinetics solve --numbers --format json` of the scene at `path`, which must succeed
+/// (`case` names the input in the failure).
+fn numbers_json(path: &std::path::Path, case: &str) -> serde_json::Value {
+    let (code, out, err) = kinetics(&[
+        "solve",
+        "--numbers",
+        "--format",
+        "json",
+        path.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{case}: {err}");
+    serde_json::from_str(&out).expect("JSON")
 }

@@ -81,7 +81,7 @@ fn differentiate(e: &Expr, atom: &dyn Fn(Symbol) -> Expr) -> Result<Expr, Algebr
             if da.is_zero() {
                 return Ok(Expr::zero());
             }
-            &f.derivative_at(arg) * &da
+            &f.derivative_at(arg)? * &da
         }
     })
 }

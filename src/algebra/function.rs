@@ -1,15 +1,19 @@
-//! The elementary functions an expression may hold: `sin`, `cos`, `tan`, `abs`.
+//! The elementary functions an expression may hold: `sin`, `cos`, `tan`, `abs`, and the
+//! inverse cosine `acos` (the trigonometric form of a cubic's three real roots).
 //! (`sqrt(x)` is the power `x^(1/2)`.)
 //!
 //! Construction applies the parity rules `sin(-x) = -sin x`, `cos(-x) = cos x`,
 //! `tan(-x) = -tan x`, `|-x| = |x|`, `||x|| = |x|`, the values at zero and the exact values
 //! at the multiples of 15° (`sin(π/6) = 1/2`, `cos(13π/6) = cos(π/6) = √3/2`; see
-//! `exact_angle.rs`). `tan` at an odd multiple of π/2 is undefined: [`Func::checked_apply`]
-//! refuses it, [`Func::apply`] leaves it as `tan(π/2)`.
+//! `exact_angle.rs`), and their inverse: `acos x = kπ/12` when `x = cos(kπ/12)` exactly
+//! (`acos(1/2) = π/3`), `cos(acos x) = x`. `tan` at an odd multiple of π/2 is undefined, and
+//! `acos` of a number outside `[−1, 1]`: [`Func::checked_apply`] refuses them,
+//! [`Func::apply`] leaves them as they are (`tan(π/2)`).
 
 use super::error::AlgebraError;
 use super::exact_angle::{at_multiple_of_pi, ExactValue};
 use super::expr::{Expr, View};
+use super::rational::Q;
 
 /// An elementary function of one argument.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -18,16 +22,19 @@ pub enum Func {
     Cos,
     Tan,
     Abs,
+    /// The inverse cosine, valued in `[0, π]`.
+    Acos,
 }
 
 impl Func {
-    /// The function of this ASCII name (`sin`, `cos`, `tan`, `abs`).
+    /// The function of this ASCII name (`sin`, `cos`, `tan`, `abs`, `acos` or `arccos`).
     pub fn from_name(name: &str) -> Option<Func> {
         Some(match name {
             "sin" => Func::Sin,
             "cos" => Func::Cos,
             "tan" => Func::Tan,
             "abs" => Func::Abs,
+            "acos" | "arccos" => Func::Acos,
             _ => return None,
         })
     }
@@ -38,22 +45,43 @@ impl Func {
             Func::Cos => "cos",
             Func::Tan => "tan",
             Func::Abs => "abs",
+            Func::Acos => "acos",
         }
     }
 
-    /// `f(arg)` in canonical form, or an error when `f` is undefined there (`tan(π/2)`).
+    /// The name as a page prints it (`sin`, `arccos`): LaTeX's operator without its backslash.
+    pub fn page_name(self) -> &'static str {
+        match self {
+            Func::Acos => "arccos",
+            _ => self.name(),
+        }
+    }
+
+    /// `f(arg)` in canonical form, or an error when `f` is undefined there (`tan(π/2)`,
+    /// `acos 2`).
     pub fn checked_apply(self, arg: Expr) -> Result<Expr, AlgebraError> {
         let value = self.apply(arg);
         match value.view() {
             View::Func(Func::Tan, a) if a.as_multiple_of_pi().is_some() => {
                 Err(AlgebraError::Undefined(format!("tan({a})")))
             }
+            View::Func(Func::Acos, a) if a.as_num().is_some_and(|x| x.abs() > Q::ONE) => Err(
+                AlgebraError::Undefined(format!("acos({a}), whose argument is not in [-1, 1]")),
+            ),
             _ => Ok(value),
         }
     }
 
     /// `f(arg)` in canonical form (`tan` at an odd multiple of π/2 as `tan(π/2)`).
     pub fn apply(self, arg: Expr) -> Expr {
+        if self == Func::Acos {
+            return inverse_cosine(arg);
+        }
+        if let View::Func(Func::Acos, x) = arg.view() {
+            if self == Func::Cos {
+                return x.clone();
+            }
+        }
         if let Some(q) = arg.as_multiple_of_pi() {
             match at_multiple_of_pi(self, q) {
                 Some(ExactValue::Value(value)) => return value,
@@ -83,19 +111,22 @@ impl Func {
             return match self {
                 Func::Sin | Func::Tan => -self.apply(positive),
                 Func::Cos | Func::Abs => self.apply(positive),
+                Func::Acos => unreachable!("acos returned above"),
             };
         }
         Expr::func_node(self, arg)
     }
 
-    /// `f'(u)`, the derivative with respect to the argument, evaluated at `u`.
-    pub fn derivative_at(self, u: &Expr) -> Expr {
-        match self {
+    /// `f'(u)`, the derivative with respect to the argument, evaluated at `u`; an error where
+    /// it is infinite (`acos' u = −1/√(1 − u²)` at `u = ±1`).
+    pub fn derivative_at(self, u: &Expr) -> Result<Expr, AlgebraError> {
+        Ok(match self {
             Func::Sin => Func::Cos.apply(u.clone()),
             Func::Cos => -Func::Sin.apply(u.clone()),
             Func::Tan => Expr::one() + Func::Tan.apply(u.clone()).powi(2),
             Func::Abs => u * &Func::Abs.apply(u.clone()).powi(-1),
-        }
+            Func::Acos => -(Expr::one() - u.powi(2)).checked_pow(&Expr::rational(-1, 2))?,
+        })
     }
 
     /// The function on a floating-point scalar.
@@ -105,8 +136,18 @@ impl Func {
             Func::Cos => x.cos(),
             Func::Tan => x.tan(),
             Func::Abs => x.abs(),
+            Func::Acos => x.acos(),
         }
     }
+}
+
+/// `acos x`: the angle `kπ/12` (`0 ≤ k ≤ 12`) when `x` is exactly its cosine, else `acos x`
+/// kept as it is.
+fn inverse_cosine(x: Expr) -> Expr {
+    (0..=12)
+        .map(|k| Expr::rational(k, 12) * Expr::pi())
+        .find(|angle| Func::Cos.apply(angle.clone()) == x)
+        .unwrap_or_else(|| Expr::func_node(Func::Acos, x))
 }
 
 #[cfg(test)]
@@ -127,5 +168,26 @@ mod tests {
             Func::Sin.apply(Expr::int(-2) * &abs_a),
             -Expr::func_node(Func::Sin, Expr::int(2) * &abs_a)
         );
+    }
+
+    /// `acos` at the cosines of the multiples of 15° is the angle, `cos(acos x) = x`, a
+    /// number outside [−1, 1] is refused, and elsewhere it stays `acos x`.
+    #[test]
+    fn inverse_cosine() {
+        let pi = Expr::pi;
+        let half = Expr::rational(1, 2);
+        assert_eq!(Func::Acos.apply(half.clone()), pi() / Expr::int(3));
+        assert_eq!(Func::Acos.apply(-half), Expr::rational(2, 3) * pi());
+        let root3_over_2 = Expr::int(3).checked_pow(&Expr::rational(1, 2)).unwrap() / Expr::int(2);
+        assert_eq!(Func::Acos.apply(root3_over_2), pi() / Expr::int(6));
+        assert_eq!(Func::Acos.apply(Expr::int(-1)), pi());
+        assert_eq!(Func::Acos.apply(Expr::zero()), pi() / Expr::int(2));
+        let third = Func::Acos.apply(Expr::rational(1, 3));
+        assert!(matches!(third.view(), View::Func(Func::Acos, _)));
+        assert_eq!(Func::Cos.apply(third.clone()), Expr::rational(1, 3));
+        let value: f64 = third.eval(&|_| None).unwrap();
+        assert!((value - (1.0f64 / 3.0).acos()).abs() < 1e-15);
+        assert!(Func::Acos.checked_apply(Expr::rational(3, 2)).is_err());
+        assert!(Func::Acos.derivative_at(&Expr::one()).is_err());
     }
 }

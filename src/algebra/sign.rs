@@ -143,6 +143,8 @@ impl Domains {
                     Sign::NonNegative
                 }
             }
+            // acos is valued in [0, π].
+            View::Func(Func::Acos, _) => Sign::NonNegative,
             View::Func(..) => Sign::Unknown,
         }
     }

@@ -148,6 +148,8 @@ fn function(f: Func, a: Bounded) -> Bounded {
         Func::Sin | Func::Cos => a.error + own,
         Func::Tan => (1.0 + v.to_f64().powi(2)) * (a.error + own),
         Func::Abs => a.error,
+        // |acos'(a)| = 1/√(1 − a²)
+        Func::Acos => (a.error + own) / (1.0 - a.value.to_f64().powi(2)).sqrt(),
     };
     Bounded { value: v, error }
 }

@@ -197,7 +197,9 @@ impl Writer<'_> {
             }
             (_, [x], Notation::Latex) if Func::from_name(name).is_some() => {
                 out.push('\\');
-                out.push_str(name);
+                if let Some(f) = Func::from_name(name) {
+                    out.push_str(f.page_name());
+                }
                 self.function_argument(out, x);
             }
             _ => {
@@ -254,16 +256,16 @@ impl Writer<'_> {
 
     fn power(&self, out: &mut String, base: &Node, exponent: &Node) {
         let function = match &base.ast {
-            Ast::Call(name, args) if args.len() == 1 && Func::from_name(name).is_some() => {
-                Some((name, &args[0]))
+            Ast::Call(name, args) if args.len() == 1 => {
+                Func::from_name(name).map(|f| (f, &args[0]))
             }
             _ => None,
         };
         match (function, self.notation) {
             // `\sin^2 t`: the exponent on the function's name.
-            (Some((name, argument)), Notation::Latex) if name != "abs" => {
+            (Some((f, argument)), Notation::Latex) if f != Func::Abs => {
                 out.push('\\');
-                out.push_str(name);
+                out.push_str(f.page_name());
                 self.superscript(out, exponent);
                 self.function_argument(out, argument);
             }

@@ -101,7 +101,7 @@ pub(super) enum Operation {
     /// A product, whose numbers are multiplied.
     Product,
     /// A function of an argument, `tan(x)`.
-    Function,
+    Function(Func),
 }
 
 impl Lowering<'_> {
@@ -155,7 +155,11 @@ impl Lowering<'_> {
                 format!("division by zero: {written} is zero to a negative power"),
                 "zero has no negative powers: check the base and the sign of the exponent",
             ),
-            (AlgebraError::Undefined(_), Operation::Function) => (
+            (AlgebraError::Undefined(_), Operation::Function(Func::Acos)) => (
+                format!("{written} is undefined: the inverse cosine takes a number in [-1, 1]"),
+                "a cosine lies between -1 and 1: check the argument",
+            ),
+            (AlgebraError::Undefined(_), Operation::Function(_)) => (
                 format!("{written} is undefined: the tangent of an odd multiple of 90° is infinite"),
                 "check the angle: cos is zero there",
             ),
@@ -354,7 +358,7 @@ impl Lowering<'_> {
         match Func::from_name(name) {
             Some(f) => f
                 .checked_apply(arg)
-                .map_err(|e| self.algebra_error(e, Operation::Function, whole)),
+                .map_err(|e| self.algebra_error(e, Operation::Function(f), whole)),
             None => arg
                 .checked_pow(&Expr::rational(1, 2))
                 .map_err(|e| self.algebra_error(e, Operation::Power, whole)),

@@ -84,7 +84,7 @@ fn superscript(out: &mut String, layout: &Layout, exponent: NodeId) {
 
 fn function_name(out: &mut String, f: Func) {
     out.push('\\');
-    out.push_str(f.name());
+    out.push_str(f.page_name());
 }
 
 /// `\sin\beta`, `\sin x`, `\sin(\beta + \theta)`.

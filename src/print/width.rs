@@ -121,7 +121,7 @@ pub(crate) fn parenthesised(layout: &Layout, id: NodeId) -> f64 {
 
 /// A function's upright name with a thin space each side.
 fn function(f: Func) -> f64 {
-    let name: f64 = f.name().chars().map(roman_letter).sum();
+    let name: f64 = f.page_name().chars().map(roman_letter).sum();
     name + 2.0 * THIN_SPACE_EM
 }
 

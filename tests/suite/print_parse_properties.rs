@@ -52,7 +52,7 @@ fn up_to_the_signs_of_sums(e: &Expr) -> Expr {
             match (f, negative_sum(&arg)) {
                 (Func::Sin | Func::Tan, true) => -Expr::func(f, -arg),
                 (Func::Cos | Func::Abs, true) => Expr::func(f, -arg),
-                (_, false) => Expr::func(f, arg),
+                (Func::Acos, true) | (_, false) => Expr::func(f, arg),
             }
         }
     }

@@ -50,7 +50,8 @@ fn every_kind() -> Vec<Expr> {
     vec![
         x.checked_pow(&Expr::rational(3, 2)).unwrap() + y.powi(-2) * &z,
         f(Func::Sin, &x * &y) - f(Func::Cos, z.clone()).powi(3) + f(Func::Tan, &y / &x),
-        f(Func::Abs, &z - &x) * Expr::rational(1, 3) - x.powi(21) / Expr::int(7),
+        f(Func::Abs, &z - &x) * Expr::rational(1, 3) - x.powi(21) / Expr::int(7)
+            + f(Func::Acos, &x / Expr::int(3)),
         y.checked_pow(&x).unwrap() + z.checked_pow(&Expr::rational(-5, 7)).unwrap(),
         -(&x * &y) / (&z * &z),
         &x * &y + &z,
@@ -88,7 +89,7 @@ type IsKind = fn(&Instruction) -> bool;
 fn every_instruction_kind_matches_the_interpreter_bit_for_bit() {
     let tape = Tape::compile(&every_kind(), &symbols(&["x", "y", "z"])).unwrap();
     use Instruction::*;
-    let kinds: [(&str, IsKind); 16] = [
+    let kinds: [(&str, IsKind); 17] = [
         ("Input", |i| matches!(i, Input(_))),
         ("Const", |i| matches!(i, Const(_))),
         ("Add", |i| matches!(i, Add(..))),
@@ -98,6 +99,7 @@ fn every_instruction_kind_matches_the_interpreter_bit_for_bit() {
         ("Neg", |i| matches!(i, Neg(_))),
         ("Powi", |i| matches!(i, Powi(..))),
         ("Sqrt", |i| matches!(i, Sqrt(_))),
+        ("Acos", |i| matches!(i, Acos(_))),
         ("Powf", |i| matches!(i, Powf(..))),
         ("MulAdd", |i| matches!(i, MulAdd(..))),
         ("MulSub", |i| matches!(i, MulSub(..))),
@@ -257,7 +259,9 @@ fn a_deep_tape_matches_the_interpreter() {
         use Instruction::*;
         let operands: Vec<u32> = match instruction {
             Input(_) | Const(_) => vec![],
-            Neg(a) | Powi(a, _) | Sqrt(a) | Sin(a) | Cos(a) | Tan(a) | Abs(a) => vec![a],
+            Neg(a) | Powi(a, _) | Sqrt(a) | Sin(a) | Cos(a) | Tan(a) | Abs(a) | Acos(a) => {
+                vec![a]
+            }
             Add(a, b) | Sub(a, b) | Mul(a, b) | Div(a, b) | Powf(a, b) => vec![a, b],
             MulAdd(a, b, c) | MulSub(a, b, c) => vec![a, b, c],
         };

@@ -249,6 +249,7 @@ fn key(instruction: Instruction) -> InstructionKey {
         Cos(a) => (11, r(a), 0),
         Tan(a) => (12, r(a), 0),
         Abs(a) => (13, r(a), 0),
+        Acos(a) => (16, r(a), 0),
     }
 }
 
@@ -311,6 +312,7 @@ impl Builder<'_> {
                     Func::Cos => Instruction::Cos(a),
                     Func::Tan => Instruction::Tan(a),
                     Func::Abs => Instruction::Abs(a),
+                    Func::Acos => Instruction::Acos(a),
                 })
             }
         };

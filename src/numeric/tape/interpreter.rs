@@ -40,6 +40,7 @@ pub enum Instruction {
     Cos(u32),
     Tan(u32),
     Abs(u32),
+    Acos(u32),
 }
 
 impl Instruction {
@@ -63,6 +64,7 @@ impl Instruction {
             Cos(a) => Cos(f(a)),
             Tan(a) => Tan(f(a)),
             Abs(a) => Abs(f(a)),
+            Acos(a) => Acos(f(a)),
         }
     }
 }
@@ -205,6 +207,7 @@ impl Tape {
                 Instruction::Cos(a) => lanes1(out, r(a), T::cos),
                 Instruction::Tan(a) => lanes1(out, r(a), T::tan),
                 Instruction::Abs(a) => lanes1(out, r(a), T::abs),
+                Instruction::Acos(a) => lanes1(out, r(a), T::acos),
             }
         }
     }

@@ -44,16 +44,18 @@ enum Helper {
     Sin,
     Cos,
     Tan,
+    Acos,
     Powf,
     Powi,
 }
 
 impl Helper {
     /// Every helper, in declaration order (so `helper as usize` indexes this array).
-    const ALL: [Helper; 5] = [
+    const ALL: [Helper; 6] = [
         Helper::Sin,
         Helper::Cos,
         Helper::Tan,
+        Helper::Acos,
         Helper::Powf,
         Helper::Powi,
     ];
@@ -63,6 +65,7 @@ impl Helper {
             Helper::Sin => "kinetics_tape_sin",
             Helper::Cos => "kinetics_tape_cos",
             Helper::Tan => "kinetics_tape_tan",
+            Helper::Acos => "kinetics_tape_acos",
             Helper::Powf => "kinetics_tape_powf",
             Helper::Powi => "kinetics_tape_powi",
         }
@@ -73,6 +76,7 @@ impl Helper {
             Helper::Sin => tape_sin as *const u8,
             Helper::Cos => tape_cos as *const u8,
             Helper::Tan => tape_tan as *const u8,
+            Helper::Acos => tape_acos as *const u8,
             Helper::Powf => tape_powf as *const u8,
             Helper::Powi => tape_powi as *const u8,
         }
@@ -81,7 +85,7 @@ impl Helper {
     /// The type of the second argument (`f64` → `f64` for the one-argument helpers).
     fn second_argument(self) -> Option<types::Type> {
         match self {
-            Helper::Sin | Helper::Cos | Helper::Tan => None,
+            Helper::Sin | Helper::Cos | Helper::Tan | Helper::Acos => None,
             Helper::Powf => Some(types::F64),
             Helper::Powi => Some(types::I32),
         }
@@ -98,6 +102,10 @@ extern "C" fn tape_cos(x: f64) -> f64 {
 
 extern "C" fn tape_tan(x: f64) -> f64 {
     x.tan()
+}
+
+extern "C" fn tape_acos(x: f64) -> f64 {
+    x.acos()
 }
 
 extern "C" fn tape_powf(x: f64, y: f64) -> f64 {
@@ -358,6 +366,10 @@ impl Lowering<'_> {
             Tan(a) => {
                 let a = self.operand(a);
                 self.call(Helper::Tan, &[a])
+            }
+            Acos(a) => {
+                let a = self.operand(a);
+                self.call(Helper::Acos, &[a])
             }
             Powf(a, b) => {
                 let (a, b) = (self.operand(a), self.operand(b));

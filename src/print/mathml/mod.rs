@@ -151,7 +151,7 @@ fn row(out: &mut String, inner: &str) {
 
 fn function_name(out: &mut String, f: Func) {
     out.push_str("<mi>");
-    out.push_str(f.name());
+    out.push_str(f.page_name());
     out.push_str("</mi>");
 }
 

@@ -181,6 +181,9 @@ impl Tree {
                     Func::Tan if u.cos().abs() < NEAR_POLE => return None,
                     Func::Tan => u.tan(),
                     Func::Abs => u.abs(),
+                    // Its slope is infinite at ±1.
+                    Func::Acos if u.abs() > 1.0 - NEAR_POLE => return None,
+                    Func::Acos => u.acos(),
                 }
             }
         };

@@ -10,7 +10,7 @@
 
 use kinetics::algebra::linear_solve::{solve_linear, SolveError};
 use kinetics::algebra::polynomial_solve::{solve_system, Solutions, SolveContext};
-use kinetics::algebra::{Expr, Symbol};
+use kinetics::algebra::{Expr, Symbol, Q};
 use kinetics::numeric::scalar::double_double::DoubleDouble as Dd;
 use kinetics::parse_expression;
 use proptest::prelude::*;
@@ -401,16 +401,115 @@ fn a_cubic_with_one_real_root_by_cardano() {
     assert!((x + 0.682_327_803_828_019).abs() < 1e-14);
 }
 
+/// x³ − 3x + 1 (p = −3, q = 1, q²/4 + p³/27 = −3/4): three real roots no real radicals
+/// write, by the trigonometric form 2 cos(⅓ arccos(−½) − 2πk/3) = 2 cos(2π/9 − 2πk/3); the
+/// arccos is exact (2π/3). Checked against 2 cos(2π/9), 2 cos(4π/9), 2 cos(8π/9) written
+/// here, the roots of the Chebyshev identity 8c³ − 6c = 2cos 3φ = −1 at 3φ = 2π/3 + 2πk.
 #[test]
-fn a_cubic_with_three_irrational_real_roots_is_refused() {
-    let err = solve(
+fn a_cubic_with_three_irrational_real_roots_by_the_trigonometric_form() {
+    let solved = solve(
         &exprs(&["x^3 - 3 x + 1"]),
         &symbols(&["x"]),
         &top_value,
         &|_| false,
     )
-    .unwrap_err();
-    assert!(matches!(err, SolveError::RootsNotExact { .. }), "{err}");
+    .unwrap();
+    assert!(solved.dropped.is_empty());
+    let roots: Vec<f64> = solved
+        .branches
+        .iter()
+        .map(|b| value_at(&b[0].1, &top_value))
+        .collect();
+    let ninth = std::f64::consts::PI / 9.0;
+    let expected = [
+        2.0 * (8.0 * ninth).cos(),
+        2.0 * (4.0 * ninth).cos(),
+        2.0 * (2.0 * ninth).cos(),
+    ];
+    assert_eq!(roots.len(), 3, "{roots:?}");
+    for (got, want) in roots.iter().zip(expected) {
+        assert!((got - want).abs() < 1e-14, "{roots:?} vs {expected:?}");
+    }
+    let printed: Vec<String> = solved.branches.iter().map(|b| b[0].1.to_string()).collect();
+    assert!(printed.iter().all(|r| !r.contains("acos")), "{printed:?}");
+}
+
+/// A cubic with letters for coefficients, a x³ + b x + c, is solved once the values tell
+/// the sign of q²/4 + p³/27: one real root by Cardano (a = 1, b = 2, c = −3 has the root 1)
+/// or three by the trigonometric form (a = 1, b = −7, c = 6: roots −3, 1, 2); without values
+/// the number of real roots is not known and the solver says which sign decides.
+#[test]
+fn a_symbolic_cubic_is_solved_at_the_values_that_tell_its_discriminant() {
+    let equations = exprs(&["a x^3 + b x + c"]);
+    let one_root = |s: Symbol| match s.name() {
+        "a" => 1.0,
+        "b" => 2.0,
+        "c" => -3.0,
+        _ => f64::NAN,
+    };
+    let solved = solve(&equations, &symbols(&["x"]), &one_root, &|_| false).unwrap();
+    assert_eq!((solved.branches.len(), solved.dropped.len()), (1, 2));
+    assert!((value_at(&solved.branches[0][0].1, &one_root) - 1.0).abs() < 1e-14);
+    let three_roots = |s: Symbol| match s.name() {
+        "a" => 1.0,
+        "b" => -7.0,
+        "c" => 6.0,
+        _ => f64::NAN,
+    };
+    let solved = solve(&equations, &symbols(&["x"]), &three_roots, &|_| false).unwrap();
+    let roots: Vec<f64> = solved
+        .branches
+        .iter()
+        .map(|b| value_at(&b[0].1, &three_roots))
+        .collect();
+    assert_eq!(roots.len(), 3);
+    for (got, want) in roots.iter().zip([-3.0, 1.0, 2.0]) {
+        assert!((got - want).abs() < 1e-13, "{roots:?}");
+    }
+    let unknown = |x: &Expr| -> Option<Ordering> { x.as_num().map(|q| q.cmp(&Q::ZERO)) };
+    let context = SolveContext {
+        sign: &unknown,
+        positive: &|_| false,
+    };
+    let err = solve_system(&equations, &symbols(&["x"]), &context).unwrap_err();
+    assert!(
+        matches!(err, SolveError::RootsNotExact { .. }) && err.to_string().contains("q²/4 + p³/27"),
+        "{err}"
+    );
+}
+
+/// Quartics with odd powers and no rational root, by Ferrari's method:
+/// (x² − 2x − 1)(x² − 2x − 2) multiplied out has the roots 1 ± √2 and 1 ± √3; x⁴ + x + 1
+/// has no real root, its four complex roots dropped with the reason.
+#[test]
+fn a_quartic_with_odd_powers_by_ferrari() {
+    let equations = vec![e("(x^2 - 2 x - 1) (x^2 - 2 x - 2)").expand().unwrap()];
+    let solved = solve(&equations, &symbols(&["x"]), &top_value, &|_| false).unwrap();
+    let roots: Vec<f64> = solved
+        .branches
+        .iter()
+        .map(|b| value_at(&b[0].1, &top_value))
+        .collect();
+    let (r2, r3) = (2f64.sqrt(), 3f64.sqrt());
+    let expected = [1.0 - r3, 1.0 - r2, 1.0 + r2, 1.0 + r3];
+    assert_eq!(roots.len(), 4, "{roots:?}");
+    for (got, want) in roots.iter().zip(expected) {
+        assert!((got - want).abs() < 1e-13, "{roots:?} vs {expected:?}");
+    }
+    let none = solve(
+        &exprs(&["x^4 + x + 1"]),
+        &symbols(&["x"]),
+        &top_value,
+        &|_| false,
+    )
+    .unwrap();
+    assert!(none.branches.is_empty());
+    assert_eq!(none.dropped.len(), 4);
+    assert!(
+        none.dropped.iter().all(|d| d.reason.contains("Ferrari")),
+        "{:?}",
+        none.dropped
+    );
 }
 
 #[test]
@@ -454,6 +553,62 @@ fn from_roots(k: i64, roots: &[(i64, i64)]) -> Expr {
         .unwrap()
 }
 
+/// The number of distinct real roots of `Σ aₖ xᵏ` (integer coefficients, lowest power
+/// first) by Sturm's theorem: the sign changes of the Sturm sequence `p, p′, −rem(…)` at
+/// −∞ less those at +∞.
+fn distinct_real_roots_by_sturm(coefficients: &[f64]) -> usize {
+    type Poly = Vec<Q>;
+    let trim = |mut p: Poly| {
+        while p.len() > 1 && p.last().is_some_and(Q::is_zero) {
+            p.pop();
+        }
+        p
+    };
+    let remainder = |a: &Poly, b: &Poly| -> Poly {
+        let mut r = a.clone();
+        while r.len() >= b.len() && !(r.len() == 1 && r[0].is_zero()) {
+            let factor = r.last().unwrap().checked_div(b.last().unwrap()).unwrap();
+            let shift = r.len() - b.len();
+            for (i, bi) in b.iter().enumerate() {
+                r[i + shift] = &r[i + shift] - &(&factor * bi);
+            }
+            r.pop();
+            r = trim(r);
+            if r.is_empty() {
+                r.push(Q::ZERO);
+            }
+        }
+        r
+    };
+    let p: Poly = coefficients.iter().map(|&c| Q::int(c as i64)).collect();
+    let derivative: Poly = (1..p.len()).map(|k| &Q::int(k as i64) * &p[k]).collect();
+    let mut sequence = vec![p, derivative];
+    loop {
+        let n = sequence.len();
+        let r = remainder(&sequence[n - 2], &sequence[n - 1]);
+        if r.len() == 1 && r[0].is_zero() {
+            break;
+        }
+        sequence.push(r.into_iter().map(|c| -&c).collect());
+    }
+    let changes = |at_plus_infinity: bool| {
+        let signs: Vec<bool> = sequence
+            .iter()
+            .map(|p| {
+                let positive = p.last().unwrap() > &Q::ZERO;
+                let odd = (p.len() - 1) % 2 == 1;
+                if at_plus_infinity || !odd {
+                    positive
+                } else {
+                    !positive
+                }
+            })
+            .collect();
+        signs.windows(2).filter(|w| w[0] != w[1]).count()
+    };
+    changes(false) - changes(true)
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
@@ -492,30 +647,49 @@ proptest! {
 
     /// An integer cubic: each real root makes the cubic vanish in double-double arithmetic
     /// (Cardano's form subtracts nearly equal cube roots: f64 keeps only ten digits of
-    /// them), and there is at least one, or the casus irreducibilis is refused.
+    /// them), and there are as many distinct real roots as the sign of the discriminant
+    /// 18abcd − 4b³d + b²c² − 4ac³ − 27a²d² says: three when positive, one when negative.
     #[test]
     fn cubic_roots_satisfy_the_equation(a in 1i64..5, b in -9i64..10, c in -9i64..10, d in -9i64..10) {
         let equations = vec![e(&format!("({a}) x^3 + ({b}) x^2 + ({c}) x + ({d})"))];
         let n = |k: i64| Dd::from_f64(k as f64);
         let cubic = |x: Dd| ((n(a) * x + n(b)) * x + n(c)) * x + n(d);
-        match solve(&equations, &symbols(&["x"]), &top_value, &|_| false) {
-            Ok(solved) => {
-                prop_assert!(!solved.branches.is_empty());
-                for branch in &solved.branches {
-                    let x: Dd = branch[0].1.eval(&|_| None).unwrap();
-                    let scale = 1.0 + (n(a) * x * x * x).abs().to_f64() + (n(b) * x * x).abs().to_f64() + (n(c) * x).abs().to_f64();
-                    prop_assert!(cubic(x).abs().to_f64() < 1e-26 * scale, "{:?} at {:?}", cubic(x), branch);
-                }
-            }
-            Err(SolveError::RootsNotExact { .. }) => {
-                // Three distinct real roots: the discriminant is positive.
-                let (a, b, c, d) = (a as f64, b as f64, c as f64, d as f64);
-                let disc = 18.0 * a * b * c * d - 4.0 * b.powi(3) * d + b * b * c * c
-                    - 4.0 * a * c.powi(3) - 27.0 * a * a * d * d;
-                prop_assert!(disc > 0.0);
-            }
-            Err(other) => prop_assert!(false, "{}", other),
+        let solved = solve(&equations, &symbols(&["x"]), &top_value, &|_| false).unwrap();
+        for branch in &solved.branches {
+            let x: Dd = branch[0].1.eval(&|_| None).unwrap();
+            let scale = 1.0 + (n(a) * x * x * x).abs().to_f64() + (n(b) * x * x).abs().to_f64() + (n(c) * x).abs().to_f64();
+            prop_assert!(cubic(x).abs().to_f64() < 1e-26 * scale, "{:?} at {:?}", cubic(x), branch);
         }
+        let discriminant = 18 * a * b * c * d - 4 * b.pow(3) * d + b * b * c * c
+            - 4 * a * c.pow(3) - 27 * a * a * d * d;
+        match discriminant.cmp(&0) {
+            Ordering::Greater => prop_assert_eq!(solved.branches.len(), 3),
+            Ordering::Less => prop_assert_eq!(solved.branches.len(), 1),
+            Ordering::Equal => prop_assert!((1..=2).contains(&solved.branches.len())),
+        }
+    }
+
+    /// An integer quartic: each real root makes it vanish in double-double arithmetic, and
+    /// there are as many as Sturm's theorem counts (exact rational arithmetic, written here).
+    #[test]
+    fn quartic_roots_satisfy_the_equation(
+        b in -9i64..10, c in -9i64..10, d in -9i64..10, k in -9i64..10,
+    ) {
+        prop_assume!(d != 0 && k != 0);
+        let equations = vec![e(&format!("x^4 + ({b}) x^3 + ({c}) x^2 + ({d}) x + ({k})"))];
+        let n = |v: i64| Dd::from_f64(v as f64);
+        let quartic = |x: Dd| (((x + n(b)) * x + n(c)) * x + n(d)) * x + n(k);
+        let solved = solve(&equations, &symbols(&["x"]), &top_value, &|_| false).unwrap();
+        for branch in &solved.branches {
+            let x: Dd = branch[0].1.eval(&|_| None).unwrap();
+            let terms = [x.powi(4), n(b) * x.powi(3), n(c) * x * x, n(d) * x, n(k)];
+            let scale: f64 = terms.iter().map(|t| t.abs().to_f64()).sum();
+            prop_assert!(quartic(x).abs().to_f64() < 1e-24 * scale, "{:?} at {:?}", quartic(x), branch);
+        }
+        prop_assert_eq!(
+            solved.branches.len(),
+            distinct_real_roots_by_sturm(&[k as f64, d as f64, c as f64, b as f64, 1.0])
+        );
     }
 }
 

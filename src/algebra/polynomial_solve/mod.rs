@@ -13,6 +13,7 @@
 //! denominator zero, or makes an unknown that must be positive negative or zero.
 
 mod cardano;
+mod ferrari;
 mod quadratic;
 mod rational_roots;
 mod roots;

@@ -1,15 +1,14 @@
-//! The real roots of a polynomial `p(u) = Σ aₖ uᵏ` of degree up to four, exactly, by its
-//! degree once the power `uᵐ` (the root `0`) is pulled out:
-//!
-//! - numeric coefficients: the rational roots first (`rational_roots.rs`), then what is left
-//!   by the linear and quadratic formulas, Cardano's formula for a cubic
-//!   (`cardano.rs`), a biquadratic quartic as a quadratic in `u²`;
-//! - symbolic coefficients: `u = −a₀/a₁`, the quadratic formula
-//!   `u = (−a₁ ± √(a₁² − 4a₂a₀))/(2a₂)`, a biquadratic `a₄u⁴ + a₂u² + a₀` by the quadratic
-//!   formula in `u²` (`quadratic.rs`). A symbolic cubic, or a quartic with odd powers, is
-//!   refused ([`SolveError::RootsNotExact`]).
+//! The real roots of a polynomial `p(u) = Σ aₖ uᵏ` of degree up to four, exactly. Once the
+//! power `uᵐ` (the root `0`) is pulled out: its square-free part `p/gcd(p, p′)` (each root once), numeric coefficients' rational roots
+//! first (`rational_roots.rs`), then what is left, numbers or symbols, by its degree:
+//! `u = −a₀/a₁`, the quadratic formula `u = (−a₁ ± √(a₁² − 4a₂a₀))/(2a₂)`, a biquadratic
+//! `a₄u⁴ + a₂u² + a₀` by the quadratic formula in `u²` (`quadratic.rs`), a cubic by
+//! Cardano's formula or its trigonometric form (`cardano.rs`), a quartic by Ferrari's method
+//! (`ferrari.rs`). Where the number of real roots depends on a sign the context cannot tell
+//! (symbols without values), the roots are refused ([`SolveError::RootsNotExact`]).
 
 use super::cardano::cubic;
+use super::ferrari::quartic;
 use super::quadratic::{biquadratic, quadratic};
 use super::rational_roots::rational_roots;
 use super::{DroppedRoot, SolveContext, SolveError};
@@ -167,25 +166,30 @@ pub(super) fn real_roots(
     if p.zero_root > 0 {
         found.real.push(Expr::zero());
     }
-    let numbers: Option<Vec<Q>> = p.coefficients.iter().map(|a| a.as_num().cloned()).collect();
-    let numeric = numbers.is_some();
+    found.extend(distinct_real_roots(&p.coefficients, u, context)?);
+    Ok(found)
+}
+
+/// The real roots of `Σ aₖ uᵏ` (`a₀ ≠ 0`, lowest power first, degree up to four) of its
+/// square-free part, by the module documentation.
+pub(super) fn distinct_real_roots(
+    coefficients: &[Expr],
+    u: Symbol,
+    context: &SolveContext,
+) -> Result<Found, SolveError> {
+    let coefficients = square_free(coefficients, u)?;
+    let mut found = Found::default();
+    let numbers: Option<Vec<Q>> = coefficients.iter().map(|a| a.as_num().cloned()).collect();
     let a = match numbers {
         Some(numbers) => {
             let (rational, rest) = rational_roots(&numbers);
-            found.extend(Found {
-                real: rational.into_iter().map(Expr::num).collect(),
-                dropped: Vec::new(),
-            });
-            if let Ok(four) = <&[Q; 4]>::try_from(rest.as_slice()) {
-                found.extend(cubic(four, u)?);
-                return Ok(found);
-            }
+            found.real.extend(rational.into_iter().map(Expr::num));
             rest.into_iter().map(Expr::num).collect()
         }
-        None => p.coefficients.clone(),
+        None => coefficients,
     };
     let rest = match a.as_slice() {
-        [_] => Found::default(),
+        [] | [_] => Found::default(),
         [a0, a1] => Found {
             real: vec![(-a0).checked_div(a1)?.cancel()?],
             dropped: Vec::new(),
@@ -194,15 +198,60 @@ pub(super) fn real_roots(
         [c, odd1, b, odd3, a] if odd1.is_zero() && odd3.is_zero() => {
             biquadratic(a, b, c, u, context)?
         }
+        [d, c, b, a] => cubic(&[d.clone(), c.clone(), b.clone(), a.clone()], u, context)?,
+        [e, d, c, b, a] => quartic(
+            &[e.clone(), d.clone(), c.clone(), b.clone(), a.clone()],
+            u,
+            context,
+        )?,
         _ => {
-            let reason = match (numeric, a.len()) {
-                (true, _) => "it is a quartic with odd powers and no rational root, and Ferrari's method is not implemented".to_string(),
-                (false, 4) => "it is a cubic with symbolic coefficients; only a cubic with numbers for coefficients is solved (by Cardano's formula)".to_string(),
-                (false, _) => "it is a quartic with symbolic coefficients and odd powers; only a quartic in the square of the unknown is solved".to_string(),
-            };
-            return Err(SolveError::RootsNotExact { unknown: u, reason });
+            return Err(SolveError::DegreeTooHigh {
+                unknown: u,
+                degree: a.len() as u32 - 1,
+            })
         }
     };
     found.extend(rest);
     Ok(found)
+}
+
+/// The coefficients of `p/gcd(p, p′)`, which has each root of `p` once (a multiple root
+/// would make a discriminant zero, whose sign a value in floating point cannot tell).
+fn square_free(coefficients: &[Expr], u: Symbol) -> Result<Vec<Expr>, SolveError> {
+    if coefficients.len() < 3 {
+        return Ok(coefficients.to_vec());
+    }
+    let x = Expr::sym(u);
+    let p = Expr::add_all(
+        coefficients
+            .iter()
+            .enumerate()
+            .map(|(k, a)| a * &x.powi(k as i64)),
+    );
+    let derivative = Expr::add_all(
+        coefficients
+            .iter()
+            .enumerate()
+            .skip(1)
+            .map(|(k, a)| &(&Expr::int(k as i64) * a) * &x.powi(k as i64 - 1)),
+    );
+    let common = polynomial_gcd(&p, &derivative)?;
+    if !common.contains(u) {
+        return Ok(coefficients.to_vec());
+    }
+    let quotient = p.checked_div(&common)?.cancel()?.expand()?;
+    let mut out: Vec<Expr> = Vec::new();
+    for group in quotient.collect(&[u])? {
+        let power = if group.monomial.is_one() {
+            0
+        } else {
+            let (_, exponent) = group.monomial.base_and_exponent();
+            exponent.as_num().and_then(Q::to_i64).unwrap_or(0) as usize
+        };
+        if out.len() <= power {
+            out.resize(power + 1, Expr::zero());
+        }
+        out[power] = group.coefficient;
+    }
+    Ok(out)
 }

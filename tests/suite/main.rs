@@ -57,6 +57,7 @@ mod numeric_powers;
 mod operation_count;
 mod orientation_and_units;
 mod polynomial_gcd;
+mod polynomial_roots_truth;
 mod polynomial_solve;
 mod principal_axes;
 mod principal_axes_acceptance;

@@ -222,19 +222,15 @@ fn square_free(coefficients: &[Expr], u: Symbol) -> Result<Vec<Expr>, SolveError
         return Ok(coefficients.to_vec());
     }
     let x = Expr::sym(u);
-    let p = Expr::add_all(
+    // Denominators free of u (symbolic coefficients) multiplied out: the same roots.
+    let (p, _) = Expr::add_all(
         coefficients
             .iter()
             .enumerate()
             .map(|(k, a)| a * &x.powi(k as i64)),
-    );
-    let derivative = Expr::add_all(
-        coefficients
-            .iter()
-            .enumerate()
-            .skip(1)
-            .map(|(k, a)| &(&Expr::int(k as i64) * a) * &x.powi(k as i64 - 1)),
-    );
+    )
+    .cancelled_parts()?;
+    let derivative = p.diff(u)?;
     let common = polynomial_gcd(&p, &derivative)?;
     if !common.contains(u) {
         return Ok(coefficients.to_vec());

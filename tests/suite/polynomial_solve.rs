@@ -709,6 +709,22 @@ fn a_leading_coefficient_the_values_make_zero_leaves_a_lower_degree() {
     assert!((rate - expected).abs() < 1e-15, "{rate} vs {expected}");
 }
 
+/// (x − a)(x + b) multiplied out: the discriminant (b − a)² + 4ab is the square (a + b)², so
+/// the roots come out as a and −b, with no square root left.
+#[test]
+fn a_square_discriminant_leaves_no_square_root() {
+    let solved = solve(
+        &exprs(&["x^2 + (b - a) x - a b"]),
+        &symbols(&["x"]),
+        &top_value,
+        &|_| false,
+    )
+    .unwrap();
+    let mut roots: Vec<Expr> = solved.branches.iter().map(|b| b[0].1.clone()).collect();
+    roots.sort_by_key(|r| r.to_string());
+    assert_eq!(roots, [e("-b"), e("a")]);
+}
+
 #[test]
 fn a_double_root_is_one_branch() {
     // (x − a)² = x² − 2ax + a²: the discriminant expands to zero.

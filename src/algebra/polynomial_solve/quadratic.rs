@@ -9,12 +9,14 @@ use super::roots::Found;
 use super::{exact, Condition, DroppedRoot, SolveContext};
 use crate::algebra::common_factor::content_and_primitive;
 use crate::algebra::error::AlgebraError;
-use crate::algebra::expr::Expr;
+use crate::algebra::expr::{Expr, View};
+use crate::algebra::polynomial_gcd;
 use crate::algebra::rational::Q;
 use crate::algebra::symbol::Symbol;
 use std::cmp::Ordering;
 
-/// The roots of `a u² + b u + c` (module documentation), the smaller-when-`a > 0` first.
+/// The roots of `a u² + b u + c` (module documentation), as the pair `(−b ∓ √Δ)/(2a)` (a
+/// square factor of `Δ` taken out up to its sign, so in either order).
 pub(super) fn quadratic(
     a: &Expr,
     b: &Expr,
@@ -37,7 +39,7 @@ pub(super) fn quadratic(
         found.real.push(root(&Expr::zero())?);
         return Ok(found);
     }
-    let s = square_root(&discriminant)?;
+    let s = square_root_up_to_sign(&discriminant)?;
     let pair = [root(&-&s)?, root(&s)?];
     if sign == Some(Ordering::Less) {
         found.dropped = pair
@@ -120,6 +122,53 @@ pub(super) fn biquadratic(
         }
     }
     Ok(found)
+}
+
+/// `±√e` for a pair of roots `… ± √e`, whose sign does not matter: a square polynomial
+/// factor `g²` of `e`'s numerator or denominator comes out as `g` (`√(a² + 2ab + b²) = ±(a + b)`),
+/// the rest by [`square_root`].
+fn square_root_up_to_sign(e: &Expr) -> Result<Expr, AlgebraError> {
+    if e.as_num().is_some() || !is_rational_in_symbols(e) {
+        return square_root(e);
+    }
+    let (numerator, denominator) = e.cancelled_parts()?;
+    let (g_numerator, h_numerator) = square_factor(numerator)?;
+    let (g_denominator, h_denominator) = square_factor(denominator)?;
+    let outside = g_numerator.checked_div(&g_denominator)?;
+    Ok(&outside * &square_root(&h_numerator.checked_div(&h_denominator)?)?)
+}
+
+/// Whether `e` is built of numbers and symbols by sums, products and integer powers (no
+/// root, no function), so that its parts are polynomials.
+fn is_rational_in_symbols(e: &Expr) -> bool {
+    match e.view() {
+        View::Num(_) | View::Sym(_) => true,
+        View::Add(xs) | View::Mul(xs) => xs.iter().all(is_rational_in_symbols),
+        View::Pow(base, exponent) => {
+            exponent.as_num().is_some_and(|q| q.to_i64().is_some()) && is_rational_in_symbols(base)
+        }
+        View::Func(..) => false,
+    }
+}
+
+/// `(g, h)` with `p = g² h` for a polynomial `p`: for each symbol `s` in turn,
+/// `c = gcd(p, ∂p/∂s)` holds each repeated factor once, and `c²` is taken out while it
+/// divides `h` exactly.
+fn square_factor(p: Expr) -> Result<(Expr, Expr), AlgebraError> {
+    let mut g = Expr::one();
+    let mut h = p;
+    for s in h.symbols() {
+        let repeated = polynomial_gcd(&h, &h.diff(s)?)?;
+        if repeated.symbols().is_empty() {
+            continue;
+        }
+        let (rest, below) = h.checked_div(&repeated.powi(2))?.cancelled_parts()?;
+        if below.as_num().is_some() {
+            g = &g * &repeated;
+            h = rest.checked_div(&below)?;
+        }
+    }
+    Ok((g, h))
 }
 
 /// `√e`, exact for a square number, with the square factors of its numeric content taken

@@ -496,6 +496,20 @@ fn a_quartic_with_odd_powers_by_ferrari() {
     for (got, want) in roots.iter().zip(expected) {
         assert!((got - want).abs() < 1e-13, "{roots:?} vs {expected:?}");
     }
+    // (x + 1)⁴ + 3(x + 1)² + 2 multiplied out: Q = 0, a quadratic in y² with y = x + 1, whose
+    // roots y² = −1, −2 are dropped in words about y.
+    let shifted = e("(x + 1)^4 + 3 (x + 1)^2 + 2").expand().unwrap();
+    let solved = solve(&[shifted], &symbols(&["x"]), &top_value, &|_| false).unwrap();
+    assert!(solved.branches.is_empty());
+    assert_eq!(solved.dropped.len(), 4);
+    assert!(
+        solved
+            .dropped
+            .iter()
+            .all(|d| d.reason.contains("where y = x + 1")),
+        "{:?}",
+        solved.dropped
+    );
     let none = solve(
         &exprs(&["x^4 + x + 1"]),
         &symbols(&["x"]),

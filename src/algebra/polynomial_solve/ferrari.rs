@@ -53,13 +53,16 @@ pub(super) fn quartic(
     )?;
     let in_u = |found: Found| shifted(found, &shift);
     if capital_q.is_zero() || context.sign_of(&capital_q) == Some(Ordering::Equal) {
-        return in_u(biquadratic(
-            &Expr::one(),
-            &capital_p,
-            &capital_r,
-            u,
-            context,
-        )?);
+        // A quadratic in y²: its words name y, which is u only when there is no shift.
+        let y = if shift.is_zero() { u } else { Symbol::new("y") };
+        let mut found = biquadratic(&Expr::one(), &capital_p, &capital_r, y, context)?;
+        for dropped in &mut found.dropped {
+            dropped.unknown = u;
+            if y != u {
+                dropped.reason = format!("{}, where y = {} + {shift}", dropped.reason, u.name());
+            }
+        }
+        return in_u(found);
     }
     let m = positive_resolvent_root(&capital_p, &capital_q, &capital_r, u, context)?;
     let s = square_root(&(&int(2) * &m))?;

@@ -305,6 +305,36 @@ fn worked_solutions_of_the_gyroscopes_in_text_and_latex() {
     }
 }
 
+/// One quantity, one symbol: no two symbols of an example's steps share a LaTeX spelling.
+/// The gyroscope's and the torque-free body's ω_z must be the symbol the Eulerian angles'
+/// step derives (`omega_z`): a second one (`w_z`) would share `\omega_z`, and the page would
+/// print it `w_z` to keep the two apart.
+#[test]
+fn each_quantity_of_a_gyroscope_page_is_one_symbol() {
+    for name in EXAMPLES {
+        let (_, a) = analysed_example(name, "");
+        let mut symbols: Vec<kinetics::algebra::Symbol> = a
+            .plan
+            .iter()
+            .flat_map(|s| &s.relations)
+            .flat_map(|r| r.lhs.symbols().into_iter().chain(r.rhs.symbols()))
+            .collect();
+        symbols.sort();
+        symbols.dedup();
+        for (k, s) in symbols.iter().enumerate() {
+            for t in &symbols[k + 1..] {
+                assert_ne!(
+                    s.latex(),
+                    t.latex(),
+                    "{name}: {} and {} are one quantity in two symbols",
+                    s.name(),
+                    t.name()
+                );
+            }
+        }
+    }
+}
+
 /// `kinetics solve` of a scene given on standard input: (success, stdout, stderr).
 fn solve_stdin(scene: &str, format: &str) -> (bool, String, String) {
     use std::io::Write;

@@ -78,6 +78,35 @@ fn a_released_top_nutates_between_the_angles_it_prints() {
     );
 }
 
+/// The constants of the energy cubic on the prediction's line, in four significant figures
+/// and the units as kinetics prints them, each computed here from the givens: released with
+/// θ̇ = φ̇ = 0, `E = ½ I ω_z² + m g L cos θ`, `p_φ = I ω_z cos θ`, `ω_z = ψ̇`.
+#[test]
+fn the_prediction_prints_its_constants_in_four_figures_with_units() {
+    let run = kinetics_with_input(
+        &["simulate", "-", "--until", "0.1", "--every", "0.01"],
+        top(30.0, false, ""),
+    );
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let (m, r, l, g, theta, spin) = (0.5, 0.04, 0.06, 9.81, 30f64.to_radians(), 200.0);
+    let i = 0.5 * m * r * r;
+    let energy = 0.5 * i * spin * spin + m * g * l * theta.cos();
+    let momentum = i * spin * theta.cos();
+    let line = run
+        .stderr
+        .lines()
+        .find(|l| l.starts_with("nutation between theta = "))
+        .unwrap_or_else(|| panic!("no prediction in {}", run.stderr));
+    let four = kinetics::algebra::four_significant_figures;
+    for shown in [
+        format!("E = {} J,", four(energy)),
+        format!("p_phi = {} kg·m²/s,", four(momentum)),
+        format!("omega_z = {} rad/s)", four(spin)),
+    ] {
+        assert!(line.contains(&shown), "{shown:?} not in {line}");
+    }
+}
+
 #[test]
 fn a_top_in_steady_precession_keeps_theta_and_precesses_at_phidot() {
     // The spin that makes θ = 60° and φ̇ = 2 rad/s steady, from the chapter's condition

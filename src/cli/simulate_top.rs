@@ -71,14 +71,15 @@ pub fn run(
     if let Some(plot) = plot {
         plot.draw().map_err(CliError::Plot)?;
     }
+    // The angles in full, to set beside the samples; the constants in four figures.
     eprintln!(
         "nutation between theta = {:.10} and {:.10} deg (the roots of the energy cubic: \
-         E = {:e} J, p_phi = {:e} kg*m^2/s, omega_z = {:e} rad/s)",
+         E = {} J, p_phi = {} kg·m²/s, omega_z = {} rad/s)",
         limits.theta_min.to_degrees(),
         limits.theta_max.to_degrees(),
-        limits.energy,
-        limits.vertical_momentum,
-        limits.spin,
+        four_significant_figures(limits.energy),
+        four_significant_figures(limits.vertical_momentum),
+        four_significant_figures(limits.spin),
     );
     eprintln!(
         "{} samples; method: {}",

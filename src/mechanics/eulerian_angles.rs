@@ -15,6 +15,11 @@
 use super::derivation::{Derivation, Relation, Step};
 use crate::algebra::{AlgebraError, Expr, Func, Symbol, Vector};
 
+/// The name of ω's components in Oxyz: `omega_x`, `omega_y`, `omega_z` (ω_x, … on a page).
+/// The gyroscope's ω_z ([`super::gyroscope::axial_spin`]) and the ω_y of the body under no
+/// force are these symbols, so that a page showing them beside this step shows one quantity.
+pub const OMEGA: &str = "omega";
+
 /// The three angles; their rates are the dotted symbols (`phidot`, `thetaddot`, ...).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct EulerianAngles {
@@ -97,7 +102,7 @@ pub fn eulerian_kinematics(
             ),
             Step::new(
                 r"$\boldsymbol{\omega} = \boldsymbol{\Omega} + \dot\psi\,\mathbf{k}$",
-                Relation::components("omega", &omega),
+                Relation::components(OMEGA, &omega),
             ),
             Step::new(
                 r"rates of the components of $\boldsymbol{\omega}$ in Oxyz",

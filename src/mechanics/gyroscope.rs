@@ -16,7 +16,7 @@
 //! the textbook's, `ω_z` kept as one quantity until it is written out.
 
 use super::derivation::{Derivation, Relation, Step};
-use super::eulerian_angles::{eulerian_kinematics, EulerianAngles, EulerianKinematics};
+use super::eulerian_angles::{eulerian_kinematics, EulerianAngles, EulerianKinematics, OMEGA};
 use super::inertia::InertiaTensor;
 use super::rotating_frame::rate_of_angular_momentum;
 use crate::algebra::vector_products::mat_vec;
@@ -33,9 +33,11 @@ pub fn transverse_moment() -> Symbol {
     Symbol::new("I'")
 }
 
-/// `w_z` (ω_z), the component of ω along the axis of symmetry, `ψ̇ + φ̇ cos θ`.
+/// `omega_z` (ω_z), the component of ω along the axis of symmetry, `ψ̇ + φ̇ cos θ`: in the
+/// name [`eulerian_kinematics`] gives ω's components ([`OMEGA`]), so that a page showing
+/// both (a scene's worked solution) shows one quantity ω_z, not two symbols.
 pub fn axial_spin() -> Symbol {
-    Symbol::new("w_z")
+    Symbol::new(&format!("{OMEGA}_z"))
 }
 
 /// `[I] = diag(I', I', I)`: the axisymmetric body about a point of its axis, in Oxyz.
@@ -83,13 +85,13 @@ pub fn gyroscope_equations(
 ) -> Result<(GyroscopeEquations, Derivation), AlgebraError> {
     let (kinematics, motion) = eulerian_kinematics(angles)?;
     let inertia = axisymmetric_inertia();
-    let w_z = axial_spin();
+    let omega_z = axial_spin();
     let written_out = kinematics.omega[2].clone();
     // ω with its axial component held as ω_z; its rates as seen in Oxyz are the angles'.
     let omega = Vector::new(
         kinematics.omega[0].clone(),
         kinematics.omega[1].clone(),
-        Expr::sym(w_z),
+        Expr::sym(omega_z),
     );
     let angular_momentum = mat_vec(&inertia.matrix(), &omega);
     let rate = rate_of_angular_momentum(
@@ -109,17 +111,13 @@ pub fn gyroscope_equations(
     let moments = Vector::from_iterator(
         moments_in_axial_spin
             .iter()
-            .map(|m| m.subs(&|s| (s == w_z).then(|| written_out.clone())))
+            .map(|m| m.subs(&|s| (s == omega_z).then(|| written_out.clone())))
             .collect::<Result<Vec<_>, _>>()?,
     );
     let tensor = InertiaTensor::written_about(point);
-    // Ω as the angles give it; ω in the chapter's names `w_x`, `w_y`, `w_z`, so that
-    // `w_z` is one symbol from its definition to the equations.
-    let mut steps = vec![motion.steps[1].clone()];
-    steps.push(Step::new(
-        motion.steps[2].title.clone(),
-        Relation::components("w", &kinematics.omega),
-    ));
+    // Ω and ω as the angles give them: ω's components `omega_x`, …, `omega_z`, the last
+    // the symbol [`axial_spin`] from its definition to the equations.
+    let mut steps = motion.steps[1..3].to_vec();
     steps.push(Step::new(
         format!(
             r"axisymmetric body, $I_x = I_y = I'$, $I_z = I$: $\mathbf{{H}}_{point} = {tensor}\{{\boldsymbol{{\omega}}\}}$"
@@ -128,7 +126,11 @@ pub fn gyroscope_equations(
     ));
     steps.extend(rate.steps);
     let mut equations = Relation::components("SumM", &moments_in_axial_spin);
-    equations.push(Relation::new(Expr::sym(w_z), written_out.clone(), Axis::Z));
+    equations.push(Relation::new(
+        Expr::sym(omega_z),
+        written_out.clone(),
+        Axis::Z,
+    ));
     steps.push(Step::new(
         format!(
             r"$\Sigma\mathbf{{M}}_{point} = \dot{{\mathbf{{H}}}}_{point}$, $\omega_z$ the component of $\boldsymbol{{\omega}}$ along the axis"

@@ -34,7 +34,7 @@ pub fn steady_rates(angles: &EulerianAngles) -> [Symbol; 4] {
 /// use kinetics::parse_expression;
 ///
 /// let (moments, _) = steady_precession(&EulerianAngles::chapter(), "O")?;
-/// let hand = parse_expression("by hand", "(I w_z - I' phidot cos(theta)) phidot sin(theta)")?;
+/// let hand = parse_expression("by hand", "(I omega_z - I' phidot cos(theta)) phidot sin(theta)")?;
 /// assert_eq!(moments[0].expand()?, hand.expand()?);
 /// assert!(moments[1].is_zero() && moments[2].is_zero());
 /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -103,10 +103,10 @@ pub fn steady_precession_at_right_angle(
     let right_angle = &Expr::pi() * &Expr::rational(1, 2);
     let at_right_angle =
         |e: &Expr| e.subs(&|s| (s == angles.nutation).then(|| right_angle.clone()));
-    let w_z = axial_spin();
+    let omega_z = axial_spin();
     let axial = at_right_angle(&kinematics.omega[2])?;
     let moment =
-        at_right_angle(&moments[0].subs(&|s| (s == w_z).then(|| axial.clone()))?)?.expand()?;
+        at_right_angle(&moments[0].subs(&|s| (s == omega_z).then(|| axial.clone()))?)?.expand()?;
     let theta = Expr::sym(angles.nutation);
     let steps = vec![
         steady
@@ -122,7 +122,7 @@ pub fn steady_precession_at_right_angle(
                     Expr::func(Func::Cos, right_angle.clone()),
                     Axis::Z,
                 ),
-                Relation::new(Expr::sym(w_z), axial, Axis::Z),
+                Relation::new(Expr::sym(omega_z), axial, Axis::Z),
                 Relation::new(Expr::symbol("SumM_x"), moment.clone(), Axis::X),
             ],
         ),

@@ -13,7 +13,7 @@
 //! half-angle γ − θ, ψ̇ and φ̇ of opposite signs).
 
 use super::derivation::{Derivation, Relation, Step};
-use super::eulerian_angles::EulerianAngles;
+use super::eulerian_angles::{EulerianAngles, OMEGA};
 use super::gyroscope::{axial_spin, gyroscope_equations};
 use crate::algebra::linear_solve::{solve_linear, SolveError};
 use crate::algebra::{AlgebraError, Axis, Domains, Expr, Func, Symbol};
@@ -67,7 +67,7 @@ pub struct Precession {
     pub sense: PrecessionSense,
 }
 
-/// The motion of the body under no force, in ω_z (the symbol `w_z`) and θ.
+/// The motion of the body under no force, in ω_z (the symbol `omega_z`) and θ.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TorqueFreeMotion {
     /// `H = I ω_z / cos θ`, the magnitude of H_G along Z.
@@ -90,7 +90,7 @@ pub struct TorqueFreeMotion {
 ///
 /// let (free, _) = torque_free_axisymmetric(&EulerianAngles::chapter())?;
 /// let hand = |t: &str| parse_expression("by hand", t).unwrap();
-/// let difference = (&free.spin_rate - &hand("(I' - I) w_z / I'")).expand()?;
+/// let difference = (&free.spin_rate - &hand("(I' - I) omega_z / I'")).expand()?;
 /// assert!(difference.is_zero());
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
@@ -117,9 +117,9 @@ pub fn torque_free_axisymmetric(
         value(magnitude).unwrap_or_else(Expr::zero),
         value(phi_dot).unwrap_or_else(Expr::zero),
     );
-    let w_z = Expr::sym(axial_spin());
+    let omega_z = Expr::sym(axial_spin());
     let spin_equation =
-        (&w_z - &gyro.axial_spin).subs(&|s| (s == phi_dot).then(|| precession_rate.clone()))?;
+        (&omega_z - &gyro.axial_spin).subs(&|s| (s == phi_dot).then(|| precession_rate.clone()))?;
     let spin_rate = solve(&[spin_equation], &[psi_dot])?
         .pop()
         .map_or_else(Expr::zero, |(_, v)| v)
@@ -131,7 +131,7 @@ pub fn torque_free_axisymmetric(
     let theta = Expr::sym(angles.nutation);
     let tan = |e: &Expr| Expr::func(Func::Tan, e.clone());
     let cotangent = &Expr::func(Func::Cos, theta.clone()) / &Expr::func(Func::Sin, theta.clone());
-    let multiple = (&(&omega_y / &w_z) * &cotangent).cancel()?;
+    let multiple = (&(&omega_y / &omega_z) * &cotangent).cancel()?;
     let tan_gamma = &multiple * &tan(&theta);
     let gamma = Expr::symbol("gamma");
     let ratio = (&spin_rate / &precession_rate).cancel()?.factor_terms()?;
@@ -149,13 +149,17 @@ pub fn torque_free_axisymmetric(
         ),
         Step::new(
             r"the component along $y$, $I'\dot\phi = H$, in $\boldsymbol{\omega} = \omega_y\,\mathbf{j} + \omega_z\,\mathbf{k}$",
-            vec![Relation::new(Expr::symbol("w_y"), omega_y, Axis::Y)],
+            vec![Relation::new(
+                Expr::symbol(&format!("{OMEGA}_y")),
+                omega_y,
+                Axis::Y,
+            )],
         ),
         Step::new(
             r"the spin; $\gamma$, the angle of $\boldsymbol{\omega}$ from the axis; body cone: axis $z$, half-angle $\gamma$; space cone: axis $Z$, half-angle $\theta - \gamma$ in direct precession ($I' > I$: $\gamma < \theta$, $\dot\psi$ and $\dot\phi$ of one sign), $\gamma - \theta$ in retrograde precession ($I' < I$)",
             vec![
                 Relation::new(Expr::sym(phi_dot), precession_rate.clone(), Axis::Y),
-                Relation::new(w_z.clone(), gyro.axial_spin.clone(), Axis::Z),
+                Relation::new(omega_z.clone(), gyro.axial_spin.clone(), Axis::Z),
                 Relation::new(Expr::sym(psi_dot), spin_rate.clone(), Axis::Z),
                 Relation::new(tan(&gamma), tan_gamma.clone(), Axis::Z),
                 Relation::new(&Expr::sym(psi_dot) / &Expr::sym(phi_dot), ratio, Axis::Z),

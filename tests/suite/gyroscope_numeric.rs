@@ -116,7 +116,7 @@ impl State {
             "phiddot" => phiddot,
             "thetaddot" => thetaddot,
             "psiddot" => psiddot,
-            "w_z" => psidot + phidot * theta.cos(),
+            "omega_z" => psidot + phidot * theta.cos(),
             "I" => self.axial,
             "I'" => self.transverse,
             _ => return None,
@@ -216,17 +216,17 @@ proptest! {
     #[test]
     fn torque_free_motion_keeps_h_along_the_vertical(
         theta in 0.05f64..1.5,
-        w_z in -20.0f64..20.0,
+        omega_z in -20.0f64..20.0,
         (transverse_milli, fraction) in (100i64..3000, 0.01f64..1.0),
     ) {
-        prop_assume!(w_z.abs() > 0.1);
+        prop_assume!(omega_z.abs() > 0.1);
         // Moments in thousandths, so that the sense is decided from exact numbers too.
         let axial_milli = ((2 * transverse_milli) as f64 * fraction).round().max(1.0) as i64;
         let (axial, transverse) = (axial_milli as f64 / 1e3, transverse_milli as f64 / 1e3);
         let (free, _) = torque_free_axisymmetric(&EulerianAngles::chapter()).unwrap();
         let value = |s: Symbol| match s.name() {
             "theta" => Some(theta),
-            "w_z" => Some(w_z),
+            "omega_z" => Some(omega_z),
             "I" => Some(axial),
             "I'" => Some(transverse),
             _ => None,
@@ -236,7 +236,7 @@ proptest! {
         let h = free.angular_momentum.eval(&value).unwrap();
         // ω in Oxyz from the rates alone (θ̇ = 0), and H = [I]ω.
         let omega = [0.0, phidot * theta.sin(), psidot + phidot * theta.cos()];
-        prop_assert!((omega[2] - w_z).abs() <= 1e-14 * w_z.abs());
+        prop_assert!((omega[2] - omega_z).abs() <= 1e-14 * omega_z.abs());
         let momentum = [0.0, transverse * omega[1], axial * omega[2]];
         let vertical = [0.0, theta.sin(), theta.cos()];
         let norm = momentum[1].hypot(momentum[2]);

@@ -305,6 +305,78 @@ fn worked_solutions_of_the_gyroscopes_in_text_and_latex() {
     }
 }
 
+/// One quantity, one symbol: no two symbols of an example's steps share a LaTeX spelling.
+/// The gyroscope's and the torque-free body's ω_z must be the symbol the Eulerian angles'
+/// step derives (`omega_z`): a second one (`w_z`) would share `\omega_z`, and the page would
+/// print it `w_z` to keep the two apart.
+#[test]
+fn each_quantity_of_a_gyroscope_page_is_one_symbol() {
+    for name in EXAMPLES {
+        let (_, a) = analysed_example(name, "");
+        let mut symbols: Vec<kinetics::algebra::Symbol> = a
+            .plan
+            .iter()
+            .flat_map(|s| &s.relations)
+            .flat_map(|r| r.lhs.symbols().into_iter().chain(r.rhs.symbols()))
+            .collect();
+        symbols.sort();
+        symbols.dedup();
+        for (k, s) in symbols.iter().enumerate() {
+            for t in &symbols[k + 1..] {
+                assert_ne!(
+                    s.latex(),
+                    t.latex(),
+                    "{name}: {} and {} are one quantity in two symbols",
+                    s.name(),
+                    t.name()
+                );
+            }
+        }
+    }
+}
+
+/// The `Answers` block of a text solution.
+fn answers(solution: &str) -> Vec<&str> {
+    solution
+        .lines()
+        .skip_while(|l| *l != "Answers")
+        .take_while(|l| !l.is_empty())
+        .collect()
+}
+
+/// `tests/bad_scenes/top_pivot_without_reaction.scene`, the example's top without the force
+/// at its pivot, is refused with a help that names the statements adding the reaction;
+/// written into the scene as quoted, they give the example's slow and fast precession
+/// (which `the_top_precesses_slowly_or_fast_at_the_roots_of_its_quadratic` checks by hand).
+#[test]
+fn a_top_without_its_pivots_reaction_is_told_the_statements_that_add_it() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let read = |path: &str| std::fs::read_to_string(format!("{root}/{path}")).unwrap();
+    let bad = read("tests/bad_scenes/top_pivot_without_reaction.scene");
+    let (ok, _, stderr) = solve_stdin(&bad, "text");
+    assert!(!ok, "{stderr}");
+    let help = stderr
+        .lines()
+        .find_map(|l| l.trim_start().strip_prefix("= help: "))
+        .unwrap_or_else(|| panic!("no help in {stderr}"));
+    assert!(
+        help.starts_with("a fixed point needs its reaction as a force at O"),
+        "{help}"
+    );
+    let statements: Vec<&str> = help.split('\'').skip(1).step_by(2).collect();
+    assert_eq!(statements.len(), 2, "{help}");
+    let mended = format!("{bad}\n{}\n", statements.join("\n"));
+    let (ok, solution, stderr) = solve_stdin(&mended, "text");
+    assert!(ok, "{stderr}");
+    let (ok, example, stderr) = solve_stdin(
+        &read("examples/scenes/top_slow_and_fast_precession.scene"),
+        "text",
+    );
+    assert!(ok, "{stderr}");
+    assert_eq!(answers(&solution), answers(&example));
+    assert_eq!(answers(&solution).len(), 3, "{solution}");
+}
+
 /// `kinetics solve` of a scene given on standard input: (success, stdout, stderr).
 fn solve_stdin(scene: &str, format: &str) -> (bool, String, String) {
     use std::io::Write;

@@ -29,9 +29,14 @@ fn products_read_one_way() {
 
 /// The worked solution in LaTeX of a sphere spinning at `omega` (ASCII) with `w_x` given.
 fn sphere_spinning_at(omega: &str) -> String {
+    sphere_spinning_in("latex", omega)
+}
+
+/// The worked solution in `format` of a sphere spinning at `omega` with `w_x` given.
+fn sphere_spinning_in(format: &str, omega: &str) -> String {
     let dir = std::env::temp_dir().join(format!("kinetics-spelling-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("a temporary folder");
-    let scene = dir.join(format!("sphere-{}.scene", omega.len()));
+    let scene = dir.join(format!("sphere-{format}-{}.scene", omega.len()));
     std::fs::write(
         &scene,
         format!(
@@ -41,7 +46,7 @@ fn sphere_spinning_at(omega: &str) -> String {
     )
     .expect("written");
     let run = Command::new(env!("CARGO_BIN_EXE_kinetics"))
-        .args(["solve", "--format", "latex"])
+        .args(["solve", "--format", format])
         .arg(&scene)
         .output()
         .expect("kinetics runs");
@@ -70,4 +75,19 @@ fn a_given_w_and_a_derived_omega_print_apart_unless_they_are_one_quantity() {
         same.contains(r"T &= \frac{1}{5} m r^2 \omega_x^2"),
         "{same}"
     );
+}
+
+/// The HTML page spells a symbol as the LaTeX page does: the given `w_x` beside the derived
+/// `omega_x = 2 w_x` is w_x in MathML too, not a second ω_x.
+#[test]
+fn the_html_page_keeps_the_given_w_apart_as_latex_does() {
+    // The base and subscript of `<msub>` (or of `<msubsup>`, under a power).
+    let w_x = "<mrow><mi>w</mi></mrow><mrow><mi>x</mi></mrow>";
+    let omega_x = "<mrow><mi>ω</mi></mrow><mrow><mi>x</mi></mrow>";
+    let apart = sphere_spinning_in("html", "2*w_x*i");
+    // ω_x once, as the component's name; w_x in the givens, the component and T.
+    assert_eq!(apart.matches(omega_x).count(), 1, "{apart}");
+    assert!(apart.matches(w_x).count() >= 4, "{apart}");
+    let same = sphere_spinning_in("html", "w_x*i");
+    assert!(!same.contains(w_x), "{same}");
 }

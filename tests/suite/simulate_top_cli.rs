@@ -78,6 +78,35 @@ fn a_released_top_nutates_between_the_angles_it_prints() {
     );
 }
 
+/// The constants of the energy cubic on the prediction's line, in four significant figures
+/// and the units as kinetics prints them, each computed here from the givens: released with
+/// θ̇ = φ̇ = 0, `E = ½ I ω_z² + m g L cos θ`, `p_φ = I ω_z cos θ`, `ω_z = ψ̇`.
+#[test]
+fn the_prediction_prints_its_constants_in_four_figures_with_units() {
+    let run = kinetics_with_input(
+        &["simulate", "-", "--until", "0.1", "--every", "0.01"],
+        top(30.0, false, ""),
+    );
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let (m, r, l, g, theta, spin) = (0.5, 0.04, 0.06, 9.81, 30f64.to_radians(), 200.0);
+    let i = 0.5 * m * r * r;
+    let energy = 0.5 * i * spin * spin + m * g * l * theta.cos();
+    let momentum = i * spin * theta.cos();
+    let line = run
+        .stderr
+        .lines()
+        .find(|l| l.starts_with("nutation between theta = "))
+        .unwrap_or_else(|| panic!("no prediction in {}", run.stderr));
+    let four = kinetics::algebra::four_significant_figures;
+    for shown in [
+        format!("E = {} J,", four(energy)),
+        format!("p_phi = {} kg·m²/s,", four(momentum)),
+        format!("omega_z = {} rad/s)", four(spin)),
+    ] {
+        assert!(line.contains(&shown), "{shown:?} not in {line}");
+    }
+}
+
 #[test]
 fn a_top_in_steady_precession_keeps_theta_and_precesses_at_phidot() {
     // The spin that makes θ = 60° and φ̇ = 2 rad/s steady, from the chapter's condition
@@ -123,6 +152,103 @@ fn the_plot_shows_the_axis_from_above_beside_theta() {
     std::fs::remove_file(&path).unwrap();
     assert!(svg.contains("the axis seen from above"), "{svg}");
     assert!(svg.contains("nutation"));
+    // The legend covers no data: each name and each sample of a line (a coloured stroke of
+    // two points) lies outside the box of every line of data (a coloured stroke of more).
+    let (data, samples): (Vec<Line>, Vec<Line>) = coloured_polylines(&svg)
+        .into_iter()
+        .partition(|p| p.len() > 2);
+    assert_eq!((data.len(), samples.len()), (2, 2), "{svg}");
+    let boxes: Vec<[f64; 4]> = data.iter().map(|p| bounding_box(p)).collect();
+    let names = ["tip of the axis", "θ"].map(|name| text_anchor(&svg, name));
+    for point in samples.iter().flatten().chain(&names) {
+        for b in &boxes {
+            let inside = (b[0]..=b[1]).contains(&point.0) && (b[2]..=b[3]).contains(&point.1);
+            assert!(!inside, "the legend at {point:?} covers the data in {b:?}");
+        }
+    }
+    // The tip's path is drawn undistorted: as many pixels per unit across as up, the path's
+    // extent in pixels against its extent from the samples, X = sin θ sin φ, Y = −sin θ cos φ.
+    let tip: Vec<(f64, f64)> = rows(&run.stdout)
+        .iter()
+        .map(|r| (r[1].sin() * r[2].sin(), -r[1].sin() * r[2].cos()))
+        .collect();
+    let (pixels, units) = (bounding_box(&data[0]), bounding_box(&tip));
+    let across = (pixels[1] - pixels[0]) / (units[1] - units[0]);
+    let up = (pixels[3] - pixels[2]) / (units[3] - units[2]);
+    assert!(
+        (across / up - 1.0).abs() < 0.01,
+        "{across} pixels per unit across, {up} up"
+    );
+}
+
+/// A line of an SVG, its points in pixels.
+#[cfg(feature = "plot")]
+type Line = Vec<(f64, f64)>;
+
+#[cfg(feature = "plot")]
+/// The points of each `<polyline>` drawn in a colour (not the black of the axes).
+fn coloured_polylines(svg: &str) -> Vec<Line> {
+    svg.split("<polyline")
+        .skip(1)
+        .map(|p| p.split("/>").next().unwrap())
+        .filter(|p| !p.contains(r##"stroke="#000000""##))
+        .map(|p| {
+            let points = p
+                .split(r#"points=""#)
+                .nth(1)
+                .unwrap()
+                .split('"')
+                .next()
+                .unwrap();
+            points
+                .split_whitespace()
+                .map(|xy| {
+                    let (x, y) = xy.split_once(',').unwrap();
+                    (x.parse().unwrap(), y.parse().unwrap())
+                })
+                .collect()
+        })
+        .collect()
+}
+
+#[cfg(feature = "plot")]
+/// `[x_min, x_max, y_min, y_max]` of the points.
+fn bounding_box(points: &[(f64, f64)]) -> [f64; 4] {
+    points.iter().fold(
+        [
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ],
+        |b, &(x, y)| [b[0].min(x), b[1].max(x), b[2].min(y), b[3].max(y)],
+    )
+}
+
+#[cfg(feature = "plot")]
+/// Where the `<text>` whose content is exactly `name` is anchored.
+fn text_anchor(svg: &str, name: &str) -> (f64, f64) {
+    let element = svg
+        .split("<text")
+        .skip(1)
+        .find(|t| {
+            t.split_once('>')
+                .map(|(_, rest)| rest.trim_start())
+                .is_some_and(|c| c.starts_with(&format!("{name}\n")))
+        })
+        .unwrap_or_else(|| panic!("no text {name:?} in {svg}"));
+    let attribute = |a: &str| -> f64 {
+        element
+            .split(&format!(" {a}=\""))
+            .nth(1)
+            .unwrap()
+            .split('"')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap()
+    };
+    (attribute("x"), attribute("y"))
 }
 
 #[test]

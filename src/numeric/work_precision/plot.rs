@@ -1,9 +1,11 @@
 //! Line charts as SVG (plotters): time series of a simulation, the path of a top's axis seen
 //! from above, and work-precision diagrams. Logarithmic quantities are plotted as their
-//! base-10 logarithms on linear axes.
+//! base-10 logarithms on linear axes. A chart's legend stands under its axes, outside the
+//! plotting area, where it covers no data.
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
 
 /// One named line of points `(x, y)`.
@@ -12,8 +14,8 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
 }
 
-/// One chart: its title, axis labels and lines. With `equal_axes` both axes span the same
-/// range (a path in a plane drawn undistorted in a square panel).
+/// One chart: its title, axis labels and lines. With `equal_axes` both axes have one scale,
+/// as many pixels per unit across as up (a path in a plane drawn undistorted).
 pub struct Chart<'a> {
     pub title: &'a str,
     pub x_label: &'a str,
@@ -52,6 +54,12 @@ pub fn side_by_side(path: &Path, size: (u32, u32), charts: &[Chart]) -> Result<(
     root.present().map_err(|e| draw(&e))
 }
 
+/// The space around a chart, inside its panel.
+const MARGIN: i32 = 12;
+/// The bottom strip of the axes' labels (the x axis's numbers and name) and the left one.
+const X_LABEL_AREA: u32 = 40;
+const Y_LABEL_AREA: u32 = 60;
+
 fn draw_chart(panel: &DrawingArea<SVGBackend, Shift>, chart: &Chart) -> Result<(), String> {
     let Chart {
         title,
@@ -81,23 +89,39 @@ fn draw_chart(panel: &DrawingArea<SVGBackend, Shift>, chart: &Chart) -> Result<(
     if !(x0.is_finite() && y0.is_finite()) {
         return Err("nothing to plot: no finite points".into());
     }
+    let draw = |e: &dyn std::fmt::Display| e.to_string();
+    let area = panel
+        .margin(MARGIN, MARGIN, MARGIN, MARGIN)
+        .titled(title, ("sans-serif", 22))
+        .map_err(|e| draw(&e))?;
+    let legend = Legend::new(&area, series)?;
+    let (width, height) = area.dim_in_pixel();
+    let (axes, below) = area.split_vertically(height.saturating_sub(legend.height()));
+    // The plotting area in pixels: the axes' area less its label strips.
+    let plot = (
+        f64::from(width.saturating_sub(Y_LABEL_AREA).max(1)),
+        f64::from(
+            (height.saturating_sub(legend.height()))
+                .saturating_sub(X_LABEL_AREA)
+                .max(1),
+        ),
+    );
     let pad = |lo: f64, hi: f64| {
         let d = if hi > lo { (hi - lo) * 0.05 } else { 1.0 };
         (lo - d, hi + d)
     };
+    let ((mut x0, mut x1), (mut y0, mut y1)) = (pad(x0, x1), pad(y0, y1));
     if equal_axes {
-        // Both ranges widened about their middles to the larger span.
-        let half = 0.5 * (x1 - x0).max(y1 - y0);
+        // One scale on both axes, the larger one needs: each range widened about its middle
+        // to its pixels at that scale, so the path is drawn undistorted.
+        let scale = ((x1 - x0) / plot.0).max((y1 - y0) / plot.1);
         let (xm, ym) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
-        (x0, x1, y0, y1) = (xm - half, xm + half, ym - half, ym + half);
+        let (xh, yh) = (0.5 * scale * plot.0, 0.5 * scale * plot.1);
+        (x0, x1, y0, y1) = (xm - xh, xm + xh, ym - yh, ym + yh);
     }
-    let ((x0, x1), (y0, y1)) = (pad(x0, x1), pad(y0, y1));
-    let draw = |e: &dyn std::fmt::Display| e.to_string();
-    let mut chart = ChartBuilder::on(panel)
-        .caption(title, ("sans-serif", 22))
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(60)
+    let mut chart = ChartBuilder::on(&axes)
+        .x_label_area_size(X_LABEL_AREA)
+        .y_label_area_size(Y_LABEL_AREA)
         .build_cartesian_2d(x0..x1, y0..y1)
         .map_err(|e| draw(&e))?;
     chart
@@ -107,7 +131,7 @@ fn draw_chart(panel: &DrawingArea<SVGBackend, Shift>, chart: &Chart) -> Result<(
         .draw()
         .map_err(|e| draw(&e))?;
     for (k, s) in series.iter().enumerate() {
-        let color = Palette99::pick(k).to_rgba();
+        let color = colour(k);
         let points: Vec<(f64, f64)> = s
             .points
             .iter()
@@ -116,22 +140,101 @@ fn draw_chart(panel: &DrawingArea<SVGBackend, Shift>, chart: &Chart) -> Result<(
             .collect();
         chart
             .draw_series(LineSeries::new(points.clone(), color.stroke_width(2)))
-            .map_err(|e| draw(&e))?
-            .label(s.name.clone())
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
-            });
+            .map_err(|e| draw(&e))?;
         if points.len() <= 200 {
             chart
                 .draw_series(points.iter().map(|&p| Circle::new(p, 2, color.filled())))
                 .map_err(|e| draw(&e))?;
         }
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()
-        .map_err(|e| draw(&e))?;
-    Ok(())
+    legend.draw(&below, series)
+}
+
+/// The colour of the `k`-th series, in its line and in the legend.
+fn colour(k: usize) -> RGBAColor {
+    Palette99::pick(k).to_rgba()
+}
+
+/// The legend, under the chart's axes and outside its plotting area, so that it covers no
+/// data however the lines run: an entry per series (a sample of its line, then its name),
+/// in rows centred in the chart's width, a row filled before the next begins.
+struct Legend {
+    /// Each row's entries: the series' index and the entry's width in pixels.
+    rows: Vec<Vec<(usize, i32)>>,
+}
+
+/// A legend's sample of a line, the gap after it, the gap between entries and a row's
+/// height, in pixels; the size of its names.
+const SAMPLE: i32 = 18;
+const AFTER_SAMPLE: i32 = 6;
+const BETWEEN_ENTRIES: i32 = 24;
+const ROW: i32 = 20;
+const LEGEND_FONT: u32 = 14;
+
+fn legend_font() -> TextStyle<'static> {
+    TextStyle::from(("sans-serif", LEGEND_FONT).into_font())
+}
+
+impl Legend {
+    fn new(area: &DrawingArea<SVGBackend, Shift>, series: &[Series]) -> Result<Legend, String> {
+        let width = area.dim_in_pixel().0 as i32;
+        let font = legend_font();
+        let mut rows: Vec<Vec<(usize, i32)>> = Vec::new();
+        let mut used = 0;
+        for (k, s) in series.iter().enumerate() {
+            let (name, _) = area
+                .estimate_text_size(&s.name, &font)
+                .map_err(|e| e.to_string())?;
+            let entry = SAMPLE + AFTER_SAMPLE + name as i32;
+            match rows.last_mut() {
+                Some(row) if used + BETWEEN_ENTRIES + entry <= width => {
+                    row.push((k, entry));
+                    used += BETWEEN_ENTRIES + entry;
+                }
+                _ => {
+                    rows.push(vec![(k, entry)]);
+                    used = entry;
+                }
+            }
+        }
+        Ok(Legend { rows })
+    }
+
+    /// The height of the strip the legend takes under the axes.
+    fn height(&self) -> u32 {
+        (ROW * self.rows.len() as i32) as u32
+    }
+
+    fn draw(
+        &self,
+        strip: &DrawingArea<SVGBackend, Shift>,
+        series: &[Series],
+    ) -> Result<(), String> {
+        let draw = |e: &dyn std::fmt::Display| e.to_string();
+        let width = strip.dim_in_pixel().0 as i32;
+        let font = legend_font().pos(Pos::new(HPos::Left, VPos::Center));
+        for (r, row) in self.rows.iter().enumerate() {
+            let entries: i32 = row.iter().map(|&(_, w)| w).sum();
+            let mut x = (width - entries - BETWEEN_ENTRIES * (row.len() as i32 - 1)) / 2;
+            let y = ROW * r as i32 + ROW / 2;
+            for &(k, entry) in row {
+                let color = colour(k);
+                strip
+                    .draw(&PathElement::new(
+                        vec![(x, y), (x + SAMPLE, y)],
+                        color.stroke_width(2),
+                    ))
+                    .map_err(|e| draw(&e))?;
+                strip
+                    .draw(&Text::new(
+                        series[k].name.clone(),
+                        (x + SAMPLE + AFTER_SAMPLE, y),
+                        font.clone(),
+                    ))
+                    .map_err(|e| draw(&e))?;
+                x += entry + BETWEEN_ENTRIES;
+            }
+        }
+        Ok(())
+    }
 }

@@ -5,13 +5,16 @@
 //! parentheses `<mo>(</mo> … <mo>)</mo>`, which stretch to a fraction they enclose, as
 //! `\left( … \right)` does, and keep the size of the text otherwise (a stretched glyph
 //! around `m_1 + m_2`, taller than the text by its subscripts, would stand apart). A symbol's
-//! MathML is read from its LaTeX spelling ([`spelling`]), so the two never name it apart.
+//! MathML is read from its LaTeX spelling on the page being printed ([`spelling`]; the plain
+//! `w_x` where [`crate::print::on_one_page`] keeps it apart from `omega_x`), so the two never
+//! name it apart.
 //!
 //! The output is the content of a `<math>` element; wrapping it is the caller's.
 
 mod spelling;
 
 use super::layout::{Integer, Layout, Node, NodeId, Number, Product, Span};
+use super::spelling::latex_of;
 use super::{integer, Marks};
 use crate::algebra::{Func, Symbol};
 
@@ -70,7 +73,7 @@ pub fn render(out: &mut String, layout: &Layout, negative: bool, root: NodeId) {
 
 /// Appends the MathML of a symbol.
 pub fn symbol(out: &mut String, s: Symbol) {
-    spelling::write(out, s.latex(), None);
+    spelling::write(out, latex_of(s), None);
 }
 
 /// Appends the MathML of a name spelt in LaTeX as symbols are (`\mathbf{H}_G`,
@@ -125,7 +128,7 @@ fn power(out: &mut String, layout: &Layout, base: NodeId, exponent: NodeId) {
             function_argument(out, layout, *arg);
             out.push_str("</mrow>");
         }
-        Node::Symbol(s) => spelling::write(out, s.latex(), Some(&raised)),
+        Node::Symbol(s) => spelling::write(out, latex_of(*s), Some(&raised)),
         Node::Power(..) => {
             out.push_str("<msup>");
             parenthesised(out, layout, base);
@@ -219,7 +222,7 @@ fn factors(out: &mut String, layout: &Layout, mut separate: bool, span: Span) {
         spaced = match layout.node(f) {
             Node::Function(..) => true,
             Node::Power(base, _) => matches!(layout.node(*base), Node::Function(..)),
-            Node::Symbol(s) => spelling::is_several_letters(s.latex()),
+            Node::Symbol(s) => spelling::is_several_letters(latex_of(*s)),
             _ => false,
         };
     }

@@ -4,7 +4,7 @@
 //! refused at its find.
 
 use super::super::kinematic_constraints;
-use super::super::model::{Quantity, Request, Span};
+use super::super::model::{Quantity, Request, Scene, Span};
 use super::super::stated_kinematics::at_reducing_angle;
 use super::scene_solve::solve_scene;
 use super::{zero_vector, Analyser, Value};
@@ -20,6 +20,9 @@ use std::collections::HashMap;
 
 impl Analyser<'_> {
     fn solve_error(&self, at: Span, e: SolveError) -> Diagnostic {
+        if matches!(e, SolveError::Inconsistent { .. }) && pivot_without_reaction(self.scene) {
+            return self.scene.error_at(at, e.to_string(), PIVOT_REACTION);
+        }
         kinematic_constraints::solve_error(self.scene, at, e)
     }
 
@@ -304,6 +307,24 @@ fn has_nested_fraction(e: &Expr) -> bool {
         }
     }
     inside(e, false)
+}
+
+/// What to write when a top's pivot has no reaction: the statements of
+/// `examples/scenes/top_slow_and_fast_precession.scene`.
+const PIVOT_REACTION: &str = "a fixed point needs its reaction as a force at O: declare \
+     'unknown R_x, R_y, R_z : N' and write 'force R = R_x*i + R_y*j + R_z*k at (0, 0, 0)'";
+
+/// A scene with `euler angles` about a fixed point O and no force at O: a top or gyroscope
+/// whose pivot's reaction was left out. Its ΣF = m ā then has the loads alone (the weight:
+/// the mass centre would fall freely, not turn about O), so the equations contradict each
+/// other.
+fn pivot_without_reaction(scene: &Scene) -> bool {
+    scene.euler_angles.is_some()
+        && scene.fixed_point
+        && !scene
+            .forces
+            .iter()
+            .any(|f| f.point.iter().all(Expr::is_zero))
 }
 
 #[cfg(test)]

@@ -15,6 +15,7 @@ use super::unit_latex::quantity;
 use crate::algebra::{Axis, Expr};
 use crate::mechanics::derivation::Relation;
 use crate::print::{self, markup, width::RELATION_EM, Notation};
+use crate::scene::analysis::Abbreviations;
 use crate::scene::model::{Quantity, Request};
 use crate::scene::units::{Dimension, Dimensions};
 use crate::scene::{Analysis, Scene, Value};
@@ -61,7 +62,7 @@ fn results<'a>(scene: &Scene, analysis: &'a Analysis, dims: &Dimensions) -> Vec<
     analysis
         .results
         .iter()
-        .flat_map(|(request, v)| computed(scene, request, v, dims))
+        .flat_map(|(request, v)| computed(scene, request, v, dims, &analysis.abbreviations))
         .collect()
 }
 
@@ -103,11 +104,14 @@ pub(super) fn scalar<'a>(
 }
 
 /// A request's result: one, or a balance's rows ([`super::balance_rows`]).
+/// A scalar is shown with the analysis's names for long radicands (`names`), its value
+/// computed from the whole expression.
 fn computed<'a>(
     scene: &Scene,
     request: &'a Request,
     v: &'a Value,
     dims: &Dimensions,
+    names: &Abbreviations,
 ) -> Vec<Result<'a>> {
     // One of several solutions: `phidot (solution 1)`, `{\dot{\phi}}^{(1)}`.
     let (name, name_latex) = match request.solution {
@@ -122,7 +126,16 @@ fn computed<'a>(
     };
     let unit = result_unit(request, dims);
     let result = match v {
-        Value::Scalar(e) => scalar(scene, name, name_latex, e.clone(), unit),
+        Value::Scalar(e) => {
+            let mut result = scalar(scene, name, name_latex, e.clone(), unit);
+            let shown = names.apply(e);
+            if shown != *e {
+                result.text = print::text(&shown);
+                result.latex = print::latex(&shown);
+                result.form = Some(Cow::Owned(Value::Scalar(shown)));
+            }
+            result
+        }
         Value::Vector(vec) => Result {
             name,
             name_latex,

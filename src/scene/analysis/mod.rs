@@ -26,6 +26,7 @@
 //! | `precession` | body about G, the torque-free motion, γ and the sense with its I and I′ | the same |
 //! | an unknown | the equations of motion with `Ḣ_O` (or impulse and momentum); then the solution | the same with `Ḣ_G` |
 
+mod abbreviations;
 mod balance;
 mod points;
 mod presented;
@@ -54,6 +55,7 @@ use crate::mechanics::rotating_frame::{
 use crate::mechanics::torque_free_axisymmetric::Precession;
 use crate::mechanics::two_plane_balance::Correction;
 use crate::parse::Diagnostic;
+pub use abbreviations::Abbreviations;
 use std::collections::HashMap;
 
 /// A derived quantity: scalar or vector.
@@ -76,6 +78,9 @@ pub enum Value {
 pub struct Analysis {
     pub plan: Vec<Step>,
     pub results: Vec<(Request, Value)>,
+    /// Names of the long radicands the plan is written with; a page shows the results
+    /// with them too.
+    pub abbreviations: Abbreviations,
 }
 
 /// Lazily computed pieces; `plan` records the steps of each derivation as it is done.
@@ -148,13 +153,16 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
         }
     }
     let domains = scene.domains();
-    Ok(Analysis {
+    let mut analysis = Analysis {
         plan: a.plan.iter().map(|s| s.simplified(&domains)).collect(),
         results: results
             .into_iter()
             .map(|(request, value)| (request, value.presented(&domains)))
             .collect(),
-    })
+        abbreviations: Abbreviations::default(),
+    };
+    Abbreviations::name_in(&mut analysis, &|s| scene.dimension(s).is_some());
+    Ok(analysis)
 }
 
 /// The body's mass, mass centre (from O) and centroidal inertia, for callers that need the

@@ -24,6 +24,7 @@ mod check_verdict;
 mod claim_parsing;
 mod cli_bad_input;
 mod cli_write_failure;
+mod cubic_scene;
 mod derivations_numeric;
 mod derive_formats;
 mod derive_snapshots;

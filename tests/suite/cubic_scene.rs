@@ -1,0 +1,155 @@
+//! A scene whose equations leave a cubic in one unknown (issue 19: exact roots whenever one
+//! polynomial of degree ≤ 4 remains). The top of `top_slow_and_fast_precession` with a couple
+//! −c_d φ̇³ i about the line of nodes added (a test of the solver, not a textbook problem):
+//! the moment equation about x becomes
+//! `4 c_d φ̇³ − 3 m r² sin θ cos θ φ̇² + 2 m r² ψ̇ sin θ φ̇ − 4 m g r sin θ = 0` (by hand: the
+//! top's m g r sin θ = φ̇ sin θ (I ω_z − I′ φ̇ cos θ) with I = m r²/2, I′ = 5 m r²/4, less the
+//! couple). Its one real root, found here by Newton's method from the slow precession of the
+//! top without the couple, must be the scene's φ̇; Cardano's form of it is written with names
+//! for its long radicands, and its page compiles without a line running off it.
+
+use crate::common::pdflatex::pdflatex;
+use kinetics::scene::{Analysis, Scene, Value};
+use kinetics::solution::{render, Format};
+
+const SCENE: &str = "\
+title A top with a couple about the line of nodes that grows as the cube of the precession
+given m = 0.5 kg
+given r = 40 mm
+given g = 9.81 m/s^2
+given theta = 30 deg
+given psidot = 1800 rpm
+given c_d = 0.00001 N*m*s^3
+unknown phidot
+unknown R_x, R_y, R_z : N
+
+euler angles steady
+fixed point
+body disk(r) mass m at (0, 0, r) along z
+force W = -m*g*K at (0, 0, r)
+force R = R_x*i + R_y*j + R_z*k at (0, 0, 0)
+couple -c_d*phidot^3*i
+
+find phidot
+find R_y
+";
+
+fn analysed() -> (Scene, Analysis) {
+    let scene =
+        kinetics::parse_scene("cubic.scene", SCENE).unwrap_or_else(|d| panic!("{}", d.render()));
+    let analysis = kinetics::analyse(&scene).unwrap_or_else(|d| panic!("{}", d.render()));
+    (scene, analysis)
+}
+
+fn scalar(scene: &Scene, analysis: &Analysis, name: &str) -> f64 {
+    let (_, value) = analysis
+        .results
+        .iter()
+        .find(|(r, _)| r.name == name)
+        .unwrap_or_else(|| panic!("{name} requested"));
+    match value {
+        Value::Scalar(e) => e.eval(&|s| scene.value(s)).expect("a number"),
+        other => panic!("{name} is not a scalar: {other:?}"),
+    }
+}
+
+/// The cubic's real root by Newton's method, and R_y = m g sin θ + m r φ̇² sin θ cos θ (ΣF_y
+/// = m ā_y for G at the distance r on the axis), both from the givens in SI.
+fn by_hand() -> (f64, f64) {
+    let (m, r, g, c) = (0.5, 0.04, 9.81, 1e-5);
+    let theta = std::f64::consts::PI / 6.0;
+    let psidot = 1800.0 * 2.0 * std::f64::consts::PI / 60.0;
+    let (s, co) = (theta.sin(), theta.cos());
+    let p = |x: f64| {
+        4.0 * c * x.powi(3) - 3.0 * m * r * r * s * co * x * x + 2.0 * m * r * r * psidot * s * x
+            - 4.0 * m * g * r * s
+    };
+    let dp =
+        |x: f64| 12.0 * c * x * x - 6.0 * m * r * r * s * co * x + 2.0 * m * r * r * psidot * s;
+    let mut x = 2.0 * g / (r * psidot); // the slow precession of the top alone
+    for _ in 0..50 {
+        x -= p(x) / dp(x);
+    }
+    let reaction = m * g * s + m * r * x * x * s * co;
+    (x, reaction)
+}
+
+#[test]
+fn the_one_real_root_of_the_cubic_is_the_precession() {
+    let (scene, analysis) = analysed();
+    let (phidot, reaction) = by_hand();
+    let got = scalar(&scene, &analysis, "phidot");
+    assert!((got - phidot).abs() < 1e-12 * phidot, "{got} vs {phidot}");
+    let got = scalar(&scene, &analysis, "R_y");
+    assert!(
+        (got - reaction).abs() < 1e-12 * reaction,
+        "{got} vs {reaction}"
+    );
+    let ruled_out = analysis
+        .plan
+        .iter()
+        .filter(|s| s.title.starts_with("a root ruled out: complex"))
+        .count();
+    assert_eq!(ruled_out, 2, "the complex pair of Cardano's formula");
+}
+
+/// The long radicands are named before the first step that uses them, each defined with the
+/// names before it only, and the result reads in the names.
+#[test]
+fn long_radicands_are_named_before_they_are_used() {
+    let (_, analysis) = analysed();
+    let defining = analysis
+        .plan
+        .iter()
+        .position(|s| s.title.starts_with("names for the long radicands"))
+        .expect("a step of names");
+    let names: Vec<String> = analysis.plan[defining]
+        .relations
+        .iter()
+        .map(|r| r.lhs.to_string())
+        .collect();
+    assert!(names.len() >= 2, "{names:?}");
+    let mentions = |text: &str| names.iter().any(|n| text.contains(n.as_str()));
+    for step in &analysis.plan[..defining] {
+        assert!(step.relations.iter().all(|r| !mentions(&r.rhs.to_string())));
+    }
+    for (k, r) in analysis.plan[defining].relations.iter().enumerate() {
+        let later = &names[k..];
+        let rhs = r.rhs.to_string();
+        assert!(
+            later.iter().all(|n| !rhs.contains(n.as_str())),
+            "{} = {rhs}",
+            names[k]
+        );
+    }
+    let (scene, _) = analysed();
+    let text = render(&scene, &analysis, Format::Text, false);
+    let result = text
+        .lines()
+        .skip_while(|l| *l != "Results")
+        .find(|l| l.trim_start().starts_with("phidot"))
+        .expect("a result line");
+    assert!(mentions(result) && result.len() < 100, "{result}");
+}
+
+#[test]
+fn the_page_of_a_cubic_compiles_with_no_line_off_it() {
+    let (scene, analysis) = analysed();
+    let dir = std::env::temp_dir().join(format!("kinetics-cubic-scene-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let tex = dir.join("cubic.tex");
+    std::fs::write(&tex, render(&scene, &analysis, Format::Latex, true)).unwrap();
+    let compiled = pdflatex(&dir, &tex);
+    assert!(
+        compiled.first_error().is_none(),
+        "{:?}",
+        compiled.first_error()
+    );
+    let overfull: Vec<&str> = compiled
+        .log
+        .lines()
+        .filter(|l| l.starts_with("Overfull \\hbox"))
+        .collect();
+    assert!(overfull.is_empty(), "{overfull:?}");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -56,10 +56,35 @@ impl SolvedConstraints {
 
 /// The located diagnostic of a failed solve, with what to do about it.
 pub fn solve_error(scene: &Scene, at: Span, e: SolveError) -> Diagnostic {
+    let without_value: Vec<&str> = scene
+        .givens
+        .iter()
+        .filter(|g| g.value.is_none())
+        .map(|g| g.symbol.name())
+        .collect();
     let help = match &e {
-        SolveError::UnderDetermined(_) => "give more conditions, or fewer unknowns",
-        SolveError::Inconsistent { .. } => "remove a condition or an unknown that conflicts",
-        _ => "unknowns must appear linearly",
+        SolveError::UnderDetermined(_) => "give more conditions, or fewer unknowns".to_string(),
+        SolveError::Inconsistent { .. } => {
+            "remove a condition or an unknown that conflicts".to_string()
+        }
+        SolveError::RootsNotExact { .. } if !without_value.is_empty() => format!(
+            "give {} a value, so that the sign deciding how many roots are real is known",
+            without_value.join(", ")
+        ),
+        SolveError::RootsNotExact { .. } => {
+            "the givens' values leave that sign too close to zero to tell: change a value slightly"
+                .to_string()
+        }
+        SolveError::DegreeTooHigh { .. } => {
+            "a polynomial above degree four has no formula in radicals: give one of the unknowns a value"
+                .to_string()
+        }
+        SolveError::NotPolynomial { .. } | SolveError::NoSinglePolynomial { .. } => {
+            "only one unknown may enter nonlinearly, in whole powers: give the others values".to_string()
+        }
+        SolveError::Nonlinear { .. } | SolveError::Algebra(_) => {
+            "unknowns must appear linearly".to_string()
+        }
     };
     scene.error_at(at, e.to_string(), help)
 }

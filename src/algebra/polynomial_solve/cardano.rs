@@ -44,12 +44,18 @@ pub(super) fn cubic(
         }
     };
     let undecided = |what: &str, value: &Expr| {
+        // A value too long to read in a message is left out.
+        let value = value.to_string();
+        let what = match value.len() {
+            0..=120 => format!("{what} = {value}"),
+            _ => what.to_string(),
+        };
         SolveError::RootsNotExact {
-        unknown: u,
-        reason: format!(
-            "the roots of the cubic depend on the sign of {what} = {value} (for its reduced form t³ + p t + q), which the givens do not tell"
-        ),
-    }
+            unknown: u,
+            reason: format!(
+                "the roots of the cubic depend on the sign of {what} (for its reduced form t³ + p t + q), which the givens do not tell"
+            ),
+        }
     };
     let from_t = |t: Expr| (&t - shift).expand();
     let mut found = Found::default();

@@ -76,7 +76,7 @@ pub(super) fn quartic(
         let mut factor = quadratic(&Expr::one(), &linear, &constant, u, context)?;
         for dropped in &mut factor.dropped {
             dropped.reason = format!(
-                "{}, for the factor y² + ({linear}) y + {constant} of the reduced quartic (Ferrari's method)",
+                "{}, for a quadratic factor y² ± s y + … of the reduced quartic (Ferrari's method)",
                 dropped.reason
             );
             dropped.condition.words = format!(

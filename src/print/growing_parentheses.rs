@@ -26,6 +26,6 @@ pub(crate) fn grows(layout: &Layout, id: NodeId) -> bool {
                     .any(|&(_, f)| grows(layout, f))
         }
         Node::Power(base, _) => grows(layout, *base),
-        Node::SquareRoot(inner) | Node::Function(_, inner) => grows(layout, *inner),
+        Node::Root(_, inner) | Node::Function(_, inner) => grows(layout, *inner),
     }
 }

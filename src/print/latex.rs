@@ -49,8 +49,12 @@ fn compound(out: &mut String, layout: &Layout, compound: &Node) {
                 superscript(out, layout, *exponent);
             }
         },
-        Node::SquareRoot(inner) => {
-            out.push_str(r"\sqrt{");
+        Node::Root(index, inner) => {
+            out.push_str(r"\sqrt");
+            if *index != 2 {
+                out.push_str(&format!("[{index}]"));
+            }
+            out.push('{');
             node(out, layout, *inner);
             out.push('}');
         }

@@ -30,24 +30,36 @@ fn compound(out: &mut String, layout: &Layout, compound: &Node) {
         Node::Sum(terms) => super::sum(out, layout, *terms, node),
         Node::Product(p) => product(out, layout, p),
         Node::Power(base, exponent) => {
-            match layout.node(*base) {
-                Node::Power(..) => parenthesised(out, layout, *base),
-                _ => factor(out, layout, *base),
-            }
+            power_base(out, layout, *base);
             out.push('^');
             match layout.node(*exponent) {
                 Node::Number(n) if layout.parts(*n).1.is_one() => number(out, layout, *n),
                 _ => parenthesised(out, layout, *exponent),
             }
         }
-        Node::SquareRoot(inner) => {
+        Node::Root(2, inner) => {
             out.push_str("sqrt");
             parenthesised(out, layout, *inner);
+        }
+        // No function name for it in the input syntax: the power, as it is read back.
+        Node::Root(index, inner) => {
+            power_base(out, layout, *inner);
+            out.push_str(&format!("^(1/{index})"));
         }
         Node::Function(f, arg) => {
             out.push_str(f.name());
             parenthesised(out, layout, *arg);
         }
+    }
+}
+
+/// The base of a power written `base^exponent`: in parentheses when it is itself written
+/// as a power (`(x^2)^(1/3)`, `(x^(1/3))^2`).
+fn power_base(out: &mut String, layout: &Layout, base: NodeId) {
+    match layout.node(base) {
+        Node::Power(..) => parenthesised(out, layout, base),
+        Node::Root(index, _) if *index != 2 => parenthesised(out, layout, base),
+        _ => factor(out, layout, base),
     }
 }
 

@@ -92,7 +92,7 @@ pub(crate) fn node(layout: &Layout, id: NodeId) -> f64 {
                 _ => factor(layout, *base) + exponent,
             }
         }
-        Node::SquareRoot(inner) => RADICAL_EM + node(layout, *inner),
+        Node::Root(_, inner) => RADICAL_EM + node(layout, *inner),
         Node::Function(Func::Abs, arg) => BARS_EM + node(layout, *arg),
         Node::Function(f, arg) => function(*f) + argument(layout, *arg),
     }

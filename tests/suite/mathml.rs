@@ -8,9 +8,9 @@ use kinetics::print::{self, Notation};
 use proptest::prelude::*;
 
 /// The elements the printer may write: MathML Core's, which Chromium lays out natively.
-const ELEMENTS: [&str; 12] = [
-    "mi", "mn", "mo", "mrow", "mfrac", "msup", "msub", "msubsup", "msqrt", "mover", "mspace",
-    "mtext",
+const ELEMENTS: [&str; 13] = [
+    "mi", "mn", "mo", "mrow", "mfrac", "msup", "msub", "msubsup", "msqrt", "mroot", "mover",
+    "mspace", "mtext",
 ];
 
 fn mathml(text: &str) -> String {
@@ -156,6 +156,10 @@ fn functions_roots_and_absolute_values() {
         )
     );
     assert_eq!(mathml("sqrt(x)"), "<msqrt><mi>x</mi></msqrt>");
+    assert_eq!(
+        mathml("(a + b)^(1/3)"),
+        "<mroot><mrow><mi>a</mi><mo>+</mo><mi>b</mi></mrow><mn>3</mn></mroot>"
+    );
     assert_eq!(
         mathml("abs(a - b)"),
         "<mrow><mo>|</mo><mrow><mi>a</mi><mo>\u{2212}</mo><mi>b</mi></mrow><mo>|</mo></mrow>"

@@ -121,9 +121,10 @@ pub enum Node {
     /// Terms with their signs (`true` = subtracted); at least one, one only when subtracted.
     Sum(Span),
     Product(Product),
-    /// A base to a positive exponent other than 1/2.
+    /// A base to a positive exponent other than 1/2 and 1/3.
     Power(NodeId, NodeId),
-    SquareRoot(NodeId),
+    /// The `index`-th root (2: `√x`, 3: `∛x`), a base to the exponent 1/index.
+    Root(u8, NodeId),
     Function(Func, NodeId),
 }
 

@@ -55,7 +55,7 @@ impl Layout {
                     id = base;
                     continue;
                 }
-                Node::SquareRoot(inner) => {
+                Node::Root(_, inner) => {
                     latest = GROUP_PLACE;
                     id = inner;
                     continue;

@@ -130,9 +130,9 @@ impl Layout {
     /// `base^exponent` for a positive exponent; a sum as the base is collected into groups
     /// when `collect` holds (not in a denominator, rule 5).
     fn present_power(&mut self, base: &Expr, exponent: &Q, axis: Axis, collect: bool) -> NodeId {
-        if *exponent == Q::Small(1, 2) {
+        if let Q::Small(1, index @ (2 | 3)) = *exponent {
             let inner = self.present_signed_inline_collected(base, axis, collect);
-            return self.push(Node::SquareRoot(inner));
+            return self.push(Node::Root(index as u8, inner));
         }
         let base = match base.view() {
             View::Add(_) => self.present_signed_inline_collected(base, axis, collect),

@@ -1,6 +1,6 @@
 //! MathML Core, the maths a browser lays out natively, for the same layout LaTeX prints:
 //! `\frac{a}{b}` is `<mfrac>`, a power `<msup>` (`<msubsup>` on a subscripted symbol, as
-//! `\omega_x^2` is set), `\sqrt{x}` `<msqrt>`, `\sin\beta` `<mi>sin</mi><mo>&#x2061;</mo>`
+//! `\omega_x^2` is set), `\sqrt{x}` `<msqrt>`, `\sqrt[3]{x}` `<mroot>`, `\sin\beta` `<mi>sin</mi><mo>&#x2061;</mo>`
 //! (function application) and `β`, factors joined by invisible times (`&#x2062;`), and
 //! parentheses `<mo>(</mo> … <mo>)</mo>`, which stretch to a fraction they enclose, as
 //! `\left( … \right)` does, and keep the size of the text otherwise (a stretched glyph
@@ -93,10 +93,23 @@ fn node(out: &mut String, layout: &Layout, id: NodeId) {
         }
         Node::Product(p) => product(out, layout, p),
         Node::Power(base, exponent) => power(out, layout, *base, *exponent),
-        Node::SquareRoot(inner) => {
+        Node::Root(2, inner) => {
             out.push_str("<msqrt>");
             node(out, layout, *inner);
             out.push_str("</msqrt>");
+        }
+        // Two children: the radicand one element (a sum is its own <mrow>), then the index.
+        Node::Root(index, inner) => {
+            out.push_str("<mroot>");
+            match layout.node(*inner) {
+                Node::Sum(_) | Node::Symbol(_) | Node::Number(_) => node(out, layout, *inner),
+                _ => {
+                    out.push_str("<mrow>");
+                    node(out, layout, *inner);
+                    out.push_str("</mrow>");
+                }
+            }
+            out.push_str(&format!("<mn>{index}</mn></mroot>"));
         }
         Node::Function(Func::Abs, arg) => {
             out.push_str("<mrow><mo>|</mo>");

@@ -1,6 +1,7 @@
 """The ground truth for kinetics' exact roots of a cubic or a quartic in one unknown.
 
-Writes `tests/data/polynomial_roots.txt`, read by `tests/suite/polynomial_roots_truth.rs`:
+Writes `tests/data/polynomial_roots.txt`, read by `tests/suite/polynomial_roots_truth.rs`
+(and timed by `benches/roots.rs` and `polynomial_roots_timing.py`):
 polynomials of degree 3 and 4 in x, from a fixed seed, each with its real roots computed by
 mpmath at 50 digits. The script is not run by CI; run it after changing it and check the
 file in:

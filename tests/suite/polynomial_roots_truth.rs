@@ -2,7 +2,8 @@
 //! computed elsewhere: `tests/data/polynomial_roots.txt`, written by
 //! `benches/compare/polynomial_roots.py` (mpmath's roots at 50 digits; the file's header
 //! gives the line format). Each case is solved by `solve_system` with the values of its
-//! other symbols as the sign oracle and no unknown that must be positive. Then:
+//! other symbols as the sign oracle and no unknown that must be positive (the reading and the
+//! solve are `benches/support/polynomial_roots.rs`, shared with `benches/roots.rs`). Then:
 //!
 //! - there are as many branches as distinct real roots, each branch's value evaluated in f64
 //!   at the values is one of them, `|got − root| ≤ 10⁻⁹ max(1, |root|)`, one to one;
@@ -17,13 +18,14 @@
 //! cases of each kind pass.
 
 use crate::common::counting_allocator::peak_during;
-use kinetics::algebra::polynomial_solve::{solve_system, Solutions, SolveContext, SolveError};
-use kinetics::algebra::{Expr, Symbol, View};
-use kinetics::parse::parse_expression;
-use std::cmp::Ordering;
+use kinetics::algebra::polynomial_solve::Solutions;
+use kinetics::algebra::View;
 use std::collections::BTreeMap;
 
-const CORPUS: &str = include_str!("../data/polynomial_roots.txt");
+#[path = "../../benches/support/polynomial_roots.rs"]
+mod polynomial_roots;
+
+use polynomial_roots::{corpus, Case};
 
 /// Relative (absolute below 1) agreement of a root with the truth.
 const TOLERANCE: f64 = 1e-9;
@@ -31,57 +33,7 @@ const TOLERANCE: f64 = 1e-9;
 /// The most memory one solve may hold at its peak.
 const MAX_PEAK_BYTES: isize = 64 << 20;
 
-/// One line of the corpus.
-struct Case {
-    line: usize,
-    kind: String,
-    text: String,
-    polynomial: Expr,
-    unknown: Symbol,
-    values: Vec<(Symbol, f64)>,
-    roots: Vec<f64>,
-}
-
 impl Case {
-    fn value(&self, s: Symbol) -> Option<f64> {
-        self.values.iter().find(|(t, _)| *t == s).map(|(_, v)| *v)
-    }
-
-    /// `e` in f64 at the values, and `x` for the unknown when given.
-    fn eval(&self, e: &Expr, x: Option<f64>) -> Option<f64> {
-        let value = |s: Symbol| {
-            if s == self.unknown {
-                x
-            } else {
-                self.value(s)
-            }
-        };
-        e.eval(&value).ok().filter(|v: &f64| v.is_finite())
-    }
-
-    /// The sign at the values: zero below 1e-12, unknown below 1e-9 (as polynomial_solve.rs).
-    fn sign(&self, e: &Expr) -> Option<Ordering> {
-        let v = self.eval(e, None)?;
-        match v.abs() {
-            a if a < 1e-12 => Some(Ordering::Equal),
-            a if a < 1e-9 => None,
-            _ => v.partial_cmp(&0.0),
-        }
-    }
-
-    fn solve(&self) -> Result<Solutions, SolveError> {
-        let sign = |e: &Expr| self.sign(e);
-        let context = SolveContext {
-            sign: &sign,
-            positive: &|_| false,
-        };
-        solve_system(
-            std::slice::from_ref(&self.polynomial),
-            &[self.unknown],
-            &context,
-        )
-    }
-
     /// The index of the true root `v` agrees with, if any.
     fn truth_matching(&self, v: f64) -> Option<usize> {
         self.roots
@@ -155,52 +107,6 @@ impl Case {
         }
         Ok(())
     }
-}
-
-fn corpus() -> Vec<Case> {
-    CORPUS
-        .lines()
-        .enumerate()
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
-        .map(|(n, l)| {
-            let line = n + 1;
-            let fields: Vec<&str> = l.split(" | ").collect();
-            let [kind, text, unknown, values, roots] = fields.as_slice() else {
-                panic!("polynomial_roots.txt:{line}: five fields expected: {l}");
-            };
-            let number = |s: &str| -> f64 {
-                s.trim().parse().unwrap_or_else(|e| {
-                    panic!("polynomial_roots.txt:{line}: {s:?} is not a number: {e}")
-                })
-            };
-            let values = match *values {
-                "-" => Vec::new(),
-                list => list
-                    .split(", ")
-                    .map(|pair| {
-                        let (name, value) = pair.split_once('=').unwrap_or_else(|| {
-                            panic!("polynomial_roots.txt:{line}: {pair:?} is not name=value")
-                        });
-                        (Symbol::new(name), number(value))
-                    })
-                    .collect(),
-            };
-            let roots = match *roots {
-                "none" => Vec::new(),
-                list => list.split(", ").map(number).collect(),
-            };
-            Case {
-                line,
-                kind: kind.to_string(),
-                text: text.to_string(),
-                polynomial: parse_expression(&format!("polynomial_roots.txt:{line}"), text)
-                    .unwrap_or_else(|d| panic!("{}", d.render())),
-                unknown: Symbol::new(unknown),
-                values,
-                roots,
-            }
-        })
-        .collect()
 }
 
 /// Runs `check` on every case's solution; fails listing each case that fails and the

@@ -142,12 +142,24 @@ impl Func {
 }
 
 /// `acos x`: the angle `kπ/12` (`0 ≤ k ≤ 12`) when `x` is exactly its cosine, else `acos x`
-/// kept as it is.
+/// kept as it is. Only the `k` nearest `acos x` in floating point is tried exactly (a
+/// constant `x`; one with symbols is no such cosine).
 fn inverse_cosine(x: Expr) -> Expr {
-    (0..=12)
-        .map(|k| Expr::rational(k, 12) * Expr::pi())
-        .find(|angle| Func::Cos.apply(angle.clone()) == x)
-        .unwrap_or_else(|| Expr::func_node(Func::Acos, x))
+    let nearest = x
+        .eval(&|_| None)
+        .ok()
+        .filter(|v: &f64| v.abs() <= 1.0)
+        .map(|v| (v.acos() * 12.0 / std::f64::consts::PI).round() as i64);
+    match nearest {
+        Some(k) => {
+            let angle = Expr::rational(k, 12) * Expr::pi();
+            match Func::Cos.apply(angle.clone()) == x {
+                true => angle,
+                false => Expr::func_node(Func::Acos, x),
+            }
+        }
+        None => Expr::func_node(Func::Acos, x),
+    }
 }
 
 #[cfg(test)]

@@ -17,6 +17,7 @@ mod ferrari;
 mod quadratic;
 mod rational_roots;
 mod roots;
+mod square_free;
 mod surd;
 
 use super::error::AlgebraError;
@@ -289,8 +290,14 @@ impl Parametric<'_> {
         let mut order = Vec::new();
         for i in 0..branches.len() {
             for j in i + 1..branches.len() {
-                let difference = exact(&(&branches[j].0 - &branches[i].0))?;
-                match self.context.sign_of(&difference) {
+                // The roots' difference as it is, and in lowest terms only when its sign is
+                // not told so (the exact form can show a zero that rounding hides).
+                let difference = &branches[j].0 - &branches[i].0;
+                let sign = match self.context.sign_of(&difference) {
+                    Some(o) if o != Ordering::Equal => Some(o),
+                    _ => self.context.sign_of(&exact(&difference)?),
+                };
+                match sign {
                     Some(o) if o != Ordering::Equal => order.push(((i, j), o)),
                     _ => return Ok(branches.into_iter().map(|(_, b)| b).collect()),
                 }

@@ -11,6 +11,7 @@ use super::cardano::cubic;
 use super::ferrari::quartic;
 use super::quadratic::{biquadratic, quadratic};
 use super::rational_roots::rational_roots;
+use super::square_free::{square_free, square_free_numeric};
 use super::{DroppedRoot, SolveContext, SolveError};
 use crate::algebra::expr::Expr;
 use crate::algebra::polynomial_gcd;
@@ -177,16 +178,15 @@ pub(super) fn distinct_real_roots(
     u: Symbol,
     context: &SolveContext,
 ) -> Result<Found, SolveError> {
-    let coefficients = square_free(coefficients, u)?;
     let mut found = Found::default();
     let numbers: Option<Vec<Q>> = coefficients.iter().map(|a| a.as_num().cloned()).collect();
     let a = match numbers {
         Some(numbers) => {
             let (rational, rest) = rational_roots(&numbers);
             found.real.extend(rational.into_iter().map(Expr::num));
-            rest.into_iter().map(Expr::num).collect()
+            square_free_numeric(&rest).into_iter().map(Expr::num).collect()
         }
-        None => coefficients,
+        None => square_free(coefficients, u)?,
     };
     let rest = match a.as_slice() {
         [] | [_] => Found::default(),
@@ -213,41 +213,4 @@ pub(super) fn distinct_real_roots(
     };
     found.extend(rest);
     Ok(found)
-}
-
-/// The coefficients of `p/gcd(p, p′)`, which has each root of `p` once (a multiple root
-/// would make a discriminant zero, whose sign a value in floating point cannot tell).
-fn square_free(coefficients: &[Expr], u: Symbol) -> Result<Vec<Expr>, SolveError> {
-    if coefficients.len() < 3 {
-        return Ok(coefficients.to_vec());
-    }
-    let x = Expr::sym(u);
-    // Denominators free of u (symbolic coefficients) multiplied out: the same roots.
-    let (p, _) = Expr::add_all(
-        coefficients
-            .iter()
-            .enumerate()
-            .map(|(k, a)| a * &x.powi(k as i64)),
-    )
-    .cancelled_parts()?;
-    let derivative = p.diff(u)?;
-    let common = polynomial_gcd(&p, &derivative)?;
-    if !common.contains(u) {
-        return Ok(coefficients.to_vec());
-    }
-    let quotient = p.checked_div(&common)?.cancel()?.expand()?;
-    let mut out: Vec<Expr> = Vec::new();
-    for group in quotient.collect(&[u])? {
-        let power = if group.monomial.is_one() {
-            0
-        } else {
-            let (_, exponent) = group.monomial.base_and_exponent();
-            exponent.as_num().and_then(Q::to_i64).unwrap_or(0) as usize
-        };
-        if out.len() <= power {
-            out.resize(power + 1, Expr::zero());
-        }
-        out[power] = group.coefficient;
-    }
-    Ok(out)
 }

@@ -1,8 +1,8 @@
 //! The rational roots of a polynomial with rational coefficients: with the coefficients made
 //! integers `a₀ … a_d` (`a₀ ≠ 0`), a root `p/q` in lowest terms has `p | a₀` and `q | a_d`
-//! (the rational root theorem). Each candidate `±p/q` is tried exactly (Horner's rule) and
-//! a root's factor `u − r` divided out as often as it divides (synthetic division), so a
-//! multiple root is reported once.
+//! (the rational root theorem). Each candidate `±p/q` whose value in floating point is not
+//! far from zero is tried exactly (Horner's rule), and a root's factor `u − r` divided out as
+//! often as it divides (synthetic division), so a multiple root is reported once.
 //!
 //! The search runs only while `|a₀|` and `|a_d|` are at most [`MAX_SEARCHED`] (their
 //! divisors found by trial division up to the square root); past it (or past [`MAX_CANDIDATES`] candidates) no rational root is
@@ -23,9 +23,13 @@ const MAX_CANDIDATES: usize = 50_000;
 pub(super) fn rational_roots(coefficients: &[Q]) -> (Vec<Q>, Vec<Q>) {
     let mut rest = coefficients.to_vec();
     let mut roots = Vec::new();
+    let approximate: Vec<f64> = coefficients.iter().map(Q::to_f64).collect();
     for r in candidates(coefficients) {
         if rest.len() < 2 {
             break;
+        }
+        if !near_root(&approximate, r.to_f64()) {
+            continue;
         }
         let mut found = false;
         while rest.len() >= 2 && value_at(&rest, &r).is_zero() {
@@ -37,6 +41,15 @@ pub(super) fn rational_roots(coefficients: &[Q]) -> (Vec<Q>, Vec<Q>) {
         }
     }
     (roots, rest)
+}
+
+/// Whether `Σ aₖ xᵏ` in floating point is small enough, against the size of its terms, for
+/// `x` to be a root: a candidate that is not is passed over without exact arithmetic (a root
+/// leaves only rounding, some 1e-16 of the terms).
+fn near_root(a: &[f64], x: f64) -> bool {
+    let value = a.iter().rev().fold(0.0, |acc, c| acc * x + c);
+    let size = a.iter().rev().fold(0.0, |acc, c| acc * x.abs() + c.abs());
+    !(value.abs() > 1e-9 * size)
 }
 
 /// `Σ aₖ rᵏ` by Horner's rule.

@@ -90,7 +90,7 @@ pub(super) fn quartic(
 }
 
 /// A positive root of the resolvent `8m³ + 8P m² + (2P² − 8R) m − Q² = 0` (the shortest
-/// written, when several are known to be positive).
+/// written, by its count of nodes, when several are known to be positive).
 fn positive_resolvent_root(
     capital_p: &Expr,
     capital_q: &Expr,
@@ -118,7 +118,7 @@ fn positive_resolvent_root(
     roots
         .into_iter()
         .filter(|m| context.sign_of(m) == Some(Ordering::Greater))
-        .min_by_key(|m| m.to_string().len())
+        .min_by_key(Expr::node_count)
         .ok_or_else(|| SolveError::RootsNotExact {
             unknown: u,
             reason:

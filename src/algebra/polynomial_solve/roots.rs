@@ -184,7 +184,10 @@ pub(super) fn distinct_real_roots(
         Some(numbers) => {
             let (rational, rest) = rational_roots(&numbers);
             found.real.extend(rational.into_iter().map(Expr::num));
-            square_free_numeric(&rest).into_iter().map(Expr::num).collect()
+            square_free_numeric(&rest)
+                .into_iter()
+                .map(Expr::num)
+                .collect()
         }
         None => square_free(coefficients, u)?,
     };

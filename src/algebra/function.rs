@@ -5,7 +5,8 @@
 //! Construction applies the parity rules `sin(-x) = -sin x`, `cos(-x) = cos x`,
 //! `tan(-x) = -tan x`, `|-x| = |x|`, `||x|| = |x|`, the values at zero and the exact values
 //! at the multiples of 15° (`sin(π/6) = 1/2`, `cos(13π/6) = cos(π/6) = √3/2`; see
-//! `exact_angle.rs`), and their inverse: `acos x = kπ/12` when `x = cos(kπ/12)` exactly
+//! `exact_angle.rs`), another multiple of π brought into `[0, π]` (`cos(10π/9) = cos(8π/9)`),
+//! and the inverse of the exact values: `acos x = kπ/12` when `x = cos(kπ/12)` exactly
 //! (`acos(1/2) = π/3`), `cos(acos x) = x`. `tan` at an odd multiple of π/2 is undefined, and
 //! `acos` of a number outside `[−1, 1]`: [`Func::checked_apply`] refuses them,
 //! [`Func::apply`] leaves them as they are (`tan(π/2)`).
@@ -88,7 +89,11 @@ impl Func {
                 Some(ExactValue::Pole) => {
                     return Expr::func_node(Func::Tan, Expr::pi() / Expr::int(2))
                 }
-                None => {}
+                None => {
+                    if let Some(reduced) = reduced_angle(self, q) {
+                        return reduced;
+                    }
+                }
             }
         }
         if let Some(q) = arg.as_num() {
@@ -139,6 +144,28 @@ impl Func {
             Func::Acos => x.acos(),
         }
     }
+}
+
+/// `sin`, `cos` or `tan` of `qπ` with the angle brought into `[0, π]` (`[0, π)` for `tan`)
+/// when it is outside: `cos(10π/9) = cos(8π/9)`, `sin(10π/9) = −sin(8π/9)`,
+/// `tan(10π/9) = tan(π/9)`; None when it is inside (or `q` is not a small fraction).
+fn reduced_angle(f: Func, q: &Q) -> Option<Expr> {
+    let Q::Small(n, d) = *q else {
+        return None;
+    };
+    let period = if f == Func::Tan { d } else { 2 * d };
+    let within = n.rem_euclid(period);
+    let (angle, negated) = match f {
+        Func::Tan => (within, false),
+        Func::Sin | Func::Cos if within > d => (2 * d - within, f == Func::Sin),
+        Func::Sin | Func::Cos => (within, false),
+        Func::Abs | Func::Acos => return None,
+    };
+    if angle == n {
+        return None;
+    }
+    let value = f.apply(Expr::rational(angle, d) * Expr::pi());
+    Some(if negated { -value } else { value })
 }
 
 /// `acos x`: the angle `kπ/12` (`0 ≤ k ≤ 12`) when `x` is exactly its cosine, else `acos x`
@@ -201,5 +228,27 @@ mod tests {
         assert!((value - (1.0f64 / 3.0).acos()).abs() < 1e-15);
         assert!(Func::Acos.checked_apply(Expr::rational(3, 2)).is_err());
         assert!(Func::Acos.derivative_at(&Expr::one()).is_err());
+    }
+
+    /// An angle that is a multiple of π outside [0, π] is brought into it.
+    #[test]
+    fn angles_brought_into_the_first_half_turn() {
+        let at = |f: Func, n: i64, d: i64| f.apply(Expr::rational(n, d) * Expr::pi());
+        assert_eq!(at(Func::Cos, 10, 9), at(Func::Cos, 8, 9));
+        assert_eq!(at(Func::Cos, -4, 9), at(Func::Cos, 4, 9));
+        assert_eq!(at(Func::Sin, 10, 9), -at(Func::Sin, 8, 9));
+        assert_eq!(at(Func::Sin, 20, 9), at(Func::Sin, 2, 9));
+        assert_eq!(at(Func::Tan, 10, 9), at(Func::Tan, 1, 9));
+        assert!(matches!(
+            at(Func::Cos, 8, 9).view(),
+            View::Func(Func::Cos, _)
+        ));
+        for (n, d) in [(10, 9), (-4, 9), (20, 9), (23, 7)] {
+            for f in [Func::Sin, Func::Cos, Func::Tan] {
+                let x = n as f64 / d as f64 * std::f64::consts::PI;
+                let value: f64 = at(f, n, d).eval(&|_| None).unwrap();
+                assert!((value - f.eval(x)).abs() < 1e-14, "{f:?} {n}/{d}");
+            }
+        }
     }
 }

@@ -49,7 +49,7 @@ pub(super) fn rational_roots(coefficients: &[Q]) -> (Vec<Q>, Vec<Q>) {
 fn near_root(a: &[f64], x: f64) -> bool {
     let value = a.iter().rev().fold(0.0, |acc, c| acc * x + c);
     let size = a.iter().rev().fold(0.0, |acc, c| acc * x.abs() + c.abs());
-    !(value.abs() > 1e-9 * size)
+    value.abs().partial_cmp(&(1e-9 * size)) != Some(std::cmp::Ordering::Greater)
 }
 
 /// `Σ aₖ rᵏ` by Horner's rule.

@@ -57,12 +57,17 @@ pub(super) fn intermediate(
         if step.relations.iter().any(|r| r.lhs.as_symbol().is_none()) {
             return Vec::new();
         }
+        // A name for a long radicand is no quantity; a value is computed from the whole
+        // expression the names stand for.
+        let named = &analysis.abbreviations;
         step.relations
             .iter()
+            .filter(|r| !r.lhs.as_symbol().is_some_and(|s| named.names(s)))
             .filter_map(|r| {
                 let name = print::render(&r.lhs, Notation::Text, r.axis);
-                let value = super::evaluation::value(scene, &r.rhs)?;
-                let unit = unit_of(&r.lhs, &r.rhs);
+                let rhs = named.whole(&r.rhs);
+                let value = super::evaluation::value(scene, &rhs)?;
+                let unit = unit_of(&r.lhs, &rhs);
                 // The kinetic energy is work: joules, as in the results.
                 let unit = unit.map(|u| {
                     if stem(&name) == "T" && u == "N·m" {

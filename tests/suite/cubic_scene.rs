@@ -9,8 +9,9 @@
 //! for its long radicands, and its page compiles without a line running off it.
 
 use crate::common::pdflatex::pdflatex;
+use kinetics::algebra::four_significant_figures;
 use kinetics::scene::{Analysis, Scene, Value};
-use kinetics::solution::{render, Format};
+use kinetics::solution::{render, render_numbers, Format};
 
 const SCENE: &str = "\
 title A top with a couple about the line of nodes that grows as the cube of the precession
@@ -101,7 +102,7 @@ fn long_radicands_are_named_before_they_are_used() {
     let defining = analysis
         .plan
         .iter()
-        .position(|s| s.title.starts_with("names for the long radicands"))
+        .position(|s| s.title.starts_with("names for the long parts"))
         .expect("a step of names");
     let names: Vec<String> = analysis.plan[defining]
         .relations
@@ -152,4 +153,28 @@ fn the_page_of_a_cubic_compiles_with_no_line_off_it() {
         .collect();
     assert!(overfull.is_empty(), "{overfull:?}");
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The engineer's page (`--numbers`) computes each step's values from the whole expressions
+/// the names stand for: φ̇ and R_y are there with the values found by hand, and no name C_k
+/// is listed as a quantity.
+#[test]
+fn the_numbers_page_evaluates_through_the_names() {
+    let (scene, analysis) = analysed();
+    let page = render_numbers(&scene, &analysis, Format::Text).expect("a numbers page");
+    let (phidot, reaction) = by_hand();
+    let line = |name: &str| {
+        page.lines()
+            .find(|l| l.trim_start().starts_with(&format!("{name} =")))
+            .unwrap_or_else(|| panic!("{name} on the page:\n{page}"))
+            .to_string()
+    };
+    for (name, value) in [("phidot", phidot), ("R_y", reaction)] {
+        let shown = four_significant_figures(value);
+        assert!(line(name).contains(&shown), "{} vs {shown}", line(name));
+    }
+    assert!(
+        !page.lines().any(|l| l.trim_start().starts_with("C_")),
+        "{page}"
+    );
 }

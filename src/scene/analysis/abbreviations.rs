@@ -55,6 +55,23 @@ impl Abbreviations {
         self.apply_before(e, self.names.len())
     }
 
+    /// `e` with each name replaced by its whole expression: the form a value is computed
+    /// from.
+    pub fn whole(&self, e: &Expr) -> Expr {
+        let named = |s: Symbol| {
+            self.names
+                .iter()
+                .find(|(name, _)| *name == s)
+                .map(|(_, whole)| whole.clone())
+        };
+        e.subs(&named).unwrap_or_else(|_| e.clone())
+    }
+
+    /// Whether `s` is one of the names.
+    pub fn names(&self, s: Symbol) -> bool {
+        self.names.iter().any(|(name, _)| *name == s)
+    }
+
     /// `e` with the first `count` named radicands written as their names.
     fn apply_before(&self, e: &Expr, count: usize) -> Expr {
         if let Some((name, _)) = self.names[..count].iter().find(|(_, r)| r == e) {
@@ -82,17 +99,11 @@ impl Abbreviations {
             .iter()
             .enumerate()
             .map(|(k, (name, radicand))| {
-                let written = match radicand.view() {
-                    View::Add(terms) => {
-                        Expr::add_all(terms.iter().map(|t| self.apply_before(t, k)))
-                    }
-                    _ => self.apply_before(radicand, k),
-                };
-                Relation::new(Expr::sym(*name), written, Axis::X)
+                Relation::new(Expr::sym(*name), self.apply_before(radicand, k), Axis::X)
             })
             .collect();
         Some(Step::new(
-            "names for the long radicands in the roots below",
+            "names for the long parts (radicands, arccos arguments) of the roots below",
             relations,
         ))
     }

@@ -67,9 +67,9 @@ impl Func {
             View::Func(Func::Tan, a) if *a == Expr::pi() / Expr::int(2) => {
                 Err(AlgebraError::Undefined(format!("tan({a})")))
             }
-            View::Func(Func::Acos, a) if a.as_num().is_some_and(|x| x.abs() > Q::ONE) => Err(
-                AlgebraError::Undefined(format!("acos({a}), whose argument is not in [-1, 1]")),
-            ),
+            View::Func(Func::Acos, a) if outside_unit_interval(a) => Err(AlgebraError::Undefined(
+                format!("acos({a}), whose argument is not in [-1, 1]"),
+            )),
             _ => Ok(value),
         }
     }
@@ -144,6 +144,15 @@ impl Func {
             Func::Abs => x.abs(),
             Func::Acos => x.acos(),
         }
+    }
+}
+
+/// Whether a constant (a number, `π`, `√2`, …) lies outside `[−1, 1]`: a rational exactly,
+/// another when its value in floating point is beyond ±1 by more than rounding.
+fn outside_unit_interval(x: &Expr) -> bool {
+    match x.as_num() {
+        Some(q) => q.abs() > Q::ONE,
+        None => x.eval(&|_| None).is_ok_and(|v: f64| v.abs() > 1.0 + 1e-12),
     }
 }
 
@@ -228,6 +237,10 @@ mod tests {
         let value: f64 = third.eval(&|_| None).unwrap();
         assert!((value - (1.0f64 / 3.0).acos()).abs() < 1e-15);
         assert!(Func::Acos.checked_apply(Expr::rational(3, 2)).is_err());
+        assert!(Func::Acos.checked_apply(Expr::pi()).is_err());
+        let root2 = Expr::int(2).checked_pow(&Expr::rational(1, 2)).unwrap();
+        assert!(Func::Acos.checked_apply(root2.clone()).is_err());
+        assert!(Func::Acos.checked_apply(root2 / Expr::int(2)).is_ok());
         assert!(Func::Acos.derivative_at(&Expr::one()).is_err());
     }
 

@@ -178,3 +178,69 @@ fn the_numbers_page_evaluates_through_the_names() {
         "{page}"
     );
 }
+
+/// The top's moment equation about x with the couple −c φ̇ⁿ i, `m g r sin θ − c φ̇ⁿ =
+/// φ̇ sin θ (I ω_z − I′ φ̇ cos θ)`, solved by Newton's method from `start` (SI values of the
+/// scene above).
+fn root_by_newton(c: f64, n: i32, start: f64) -> f64 {
+    let (m, r, g) = (0.5, 0.04, 9.81);
+    let theta = std::f64::consts::PI / 6.0;
+    let psidot = 1800.0 * 2.0 * std::f64::consts::PI / 60.0;
+    let (s, co) = (theta.sin(), theta.cos());
+    let f = |x: f64| {
+        m * g * r * s - c * x.powi(n) + 0.75 * m * r * r * s * co * x * x
+            - 0.5 * m * r * r * psidot * s * x
+    };
+    let df = |x: f64| {
+        -c * f64::from(n) * x.powi(n - 1) + 1.5 * m * r * r * s * co * x
+            - 0.5 * m * r * r * psidot * s
+    };
+    let mut x = start;
+    for _ in 0..100 {
+        x -= f(x) / df(x);
+    }
+    x
+}
+
+fn solutions(scene_text: &str) -> Vec<f64> {
+    let scene = kinetics::parse_scene("variant.scene", scene_text)
+        .unwrap_or_else(|d| panic!("{}", d.render()));
+    let analysis = kinetics::analyse(&scene).unwrap_or_else(|d| panic!("{}", d.render()));
+    analysis
+        .results
+        .iter()
+        .filter(|(r, _)| r.name == "phidot")
+        .map(|(_, v)| match v {
+            Value::Scalar(e) => e.eval(&|s| scene.value(s)).expect("a number"),
+            other => panic!("{other:?}"),
+        })
+        .collect()
+}
+
+/// A couple in φ̇⁴ leaves a quartic, by Ferrari's method, in a scene whose mass is called m
+/// (found by review: the resolvent's own unknown was the letter m, and every root was
+/// dropped); its two real roots are Newton's from −17 and 2.6 rad/s.
+#[test]
+fn a_quartic_in_a_scene_with_a_mass_m() {
+    let text = SCENE
+        .replace("N*m*s^3", "N*m*s^4")
+        .replace("phidot^3", "phidot^4");
+    let got = solutions(&text);
+    let want = [root_by_newton(1e-5, 4, -17.0), root_by_newton(1e-5, 4, 2.6)];
+    assert_eq!(got.len(), 2, "{got:?}");
+    for (g, w) in got.iter().zip(want) {
+        assert!((g - w).abs() < 1e-9 * w.abs(), "{got:?} vs {want:?}");
+    }
+}
+
+/// A strong couple (c_d = 10⁶ N·m·s³) makes q²/4 + p³/27 some 1e-15 in SI units: no zero,
+/// and decided in double-double with its rounding bound (found by review: an absolute
+/// threshold of 1e-12 in f64 refused it).
+#[test]
+fn a_discriminant_small_in_si_units_is_still_decided() {
+    let text = SCENE.replace("given c_d = 0.00001 N*m*s^3", "given c_d = 1000000 N*m*s^3");
+    let got = solutions(&text);
+    let want = root_by_newton(1e6, 3, 0.005);
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert!((got[0] - want).abs() < 1e-9 * want, "{got:?} vs {want}");
+}

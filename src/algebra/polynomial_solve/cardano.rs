@@ -74,10 +74,16 @@ pub(super) fn cubic(
         Some(Ordering::Greater) => {
             let alpha_sign = sign(q).map(Ordering::reverse);
             let p_sign = sign(p);
-            let c1 = cube_root_of_sum(&reduced, true, alpha_sign, p_sign)
-                .ok_or_else(|| undecided("−q/2 + √(q²/4 + p³/27)", q))??;
-            let c2 = cube_root_of_sum(&reduced, false, alpha_sign, p_sign)
-                .ok_or_else(|| undecided("−q/2 − √(q²/4 + p³/27)", q))??;
+            // The sign of a radicand −q/2 ± √Δ follows from those of q and p.
+            let cube_root = |plus: bool| {
+                cube_root_of_sum(&reduced, plus, alpha_sign, p_sign).ok_or_else(|| match alpha_sign
+                {
+                    None => undecided("q", q),
+                    Some(_) => undecided("p", p),
+                })
+            };
+            let c1 = cube_root(true)??;
+            let c2 = cube_root(false)??;
             found.real.push(from_t(&c1 + &c2)?);
             let mean = &Expr::rational(-1, 2) * &(&c1 + &c2);
             let imaginary = &(&Expr::rational(1, 2) * &(&c1 - &c2))
@@ -156,10 +162,13 @@ fn cube_root_of_sum(
     } else {
         Ordering::Less
     };
-    let sign = match alpha_sign? {
-        s if s == Ordering::Equal || s == toward => toward,
-        _ if plus => p_sign?,
-        _ => p_sign?.reverse(),
+    // For p > 0, Δ > α²: v₊ > 0 and v₋ < 0 whatever α is.
+    let sign = match (alpha_sign, p_sign) {
+        (_, Some(Ordering::Greater)) => toward,
+        (Some(s), _) if s == Ordering::Equal || s == toward => toward,
+        (Some(_), Some(p)) if plus => p,
+        (Some(_), Some(p)) => p.reverse(),
+        _ => return None,
     };
     Some((|| {
         let alpha = &Expr::rational(-1, 2) * &reduced.q;

@@ -59,7 +59,8 @@ pub(super) fn quartic(
         for dropped in &mut found.dropped {
             dropped.unknown = u;
             if y != u {
-                dropped.reason = format!("{}, where y = {} + {shift}", dropped.reason, u.name());
+                let y_is = &Expr::sym(u) + &shift;
+                dropped.reason = format!("{}, where y = {y_is}", dropped.reason);
             }
         }
         return in_u(found);
@@ -73,6 +74,15 @@ pub(super) fn quartic(
         let side = int(side);
         let linear = &side * &s;
         let constant = exact(&(&half_p_plus_m - &(&side * &q_over_2s)))?;
+        // A factor whose discriminant's sign the values leave open could hold a real pair
+        // or a complex one; the quadratic formula would keep both.
+        let discriminant = exact(&(&linear.powi(2) - &(&int(4) * &constant)))?;
+        if !discriminant.is_zero() && context.sign_of(&discriminant).is_none() {
+            return Err(SolveError::RootsNotExact {
+                unknown: u,
+                reason: "the sign of the discriminant of a quadratic factor of the reduced quartic (Ferrari's method) is not told by the givens' values".into(),
+            });
+        }
         let mut factor = quadratic(&Expr::one(), &linear, &constant, u, context)?;
         for dropped in &mut factor.dropped {
             dropped.reason = format!(
@@ -112,7 +122,8 @@ fn positive_resolvent_root(
         },
         other => other,
     };
-    let roots = distinct_real_roots(&resolvent, Symbol::new("m"), context)
+    // Its unknown by a name no input can hold (a letter m would be a scene's mass).
+    let roots = distinct_real_roots(&resolvent, Symbol::new("Ferrari's m"), context)
         .map_err(within_resolvent)?
         .real;
     roots

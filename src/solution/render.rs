@@ -562,6 +562,7 @@ fn json(scene: &Scene, analysis: &Analysis, results: &[Result]) -> serde_json::V
             "table": s.table.as_ref().map(parts_table::json),
             "relations": relations_json(&s.relations),
         })).collect::<Vec<_>>(),
+        "abbreviations": relations_json(&analysis.abbreviations.relations()),
         "results": results.iter().map(|r| serde_json::json!({
             "name": r.name,
             "text": r.text,

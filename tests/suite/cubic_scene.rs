@@ -244,3 +244,35 @@ fn a_discriminant_small_in_si_units_is_still_decided() {
     assert_eq!(got.len(), 1, "{got:?}");
     assert!((got[0] - want).abs() < 1e-9 * want, "{got:?} vs {want}");
 }
+
+/// The JSON solution carries the names' definitions beside the steps, so that a consumer
+/// reading a result written with C_k finds each name defined.
+#[test]
+fn json_defines_the_names_its_results_use() {
+    let (scene, analysis) = analysed();
+    let json: serde_json::Value =
+        serde_json::from_str(&render(&scene, &analysis, Format::Json, false)).unwrap();
+    let defined: Vec<String> = json["abbreviations"]
+        .as_array()
+        .expect("abbreviations")
+        .iter()
+        .map(|f| {
+            f["text"]
+                .as_str()
+                .unwrap()
+                .split(" = ")
+                .next()
+                .unwrap()
+                .to_string()
+        })
+        .collect();
+    assert!(defined.len() >= 2, "{defined:?}");
+    let phidot = json["results"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["name"] == "phidot")
+        .expect("phidot");
+    let text = phidot["text"].as_str().unwrap();
+    assert!(defined.iter().any(|n| text.contains(n.as_str())), "{text}");
+}

@@ -89,19 +89,23 @@ impl Abbreviations {
         }
     }
 
-    /// The step defining the names (each with the names before it), or none.
-    fn definitions(&self) -> Option<Step> {
-        if self.names.is_empty() {
-            return None;
-        }
-        let relations = self
-            .names
+    /// Each name `C_k = …`, its expression written with the names before it.
+    pub fn relations(&self) -> Vec<Relation> {
+        self.names
             .iter()
             .enumerate()
             .map(|(k, (name, radicand))| {
                 Relation::new(Expr::sym(*name), self.apply_before(radicand, k), Axis::X)
             })
-            .collect();
+            .collect()
+    }
+
+    /// The step defining the names, or none.
+    fn definitions(&self) -> Option<Step> {
+        if self.names.is_empty() {
+            return None;
+        }
+        let relations = self.relations();
         Some(Step::new(
             "names for the long parts (radicands, arccos arguments) of the roots below",
             relations,

@@ -18,6 +18,8 @@ const LONG: usize = 60;
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Abbreviations {
     names: Vec<(Symbol, Expr)>,
+    /// Each form met of a named radicand, with its name's index in `names`.
+    forms: Vec<(Expr, usize)>,
 }
 
 impl Abbreviations {
@@ -31,9 +33,16 @@ impl Abbreviations {
         for e in exprs {
             long_radicands(e, &mut long);
         }
-        let mut names = Vec::with_capacity(long.len());
+        let mut names: Vec<(Symbol, Expr)> = Vec::with_capacity(long.len());
+        let mut forms = Vec::with_capacity(long.len());
         let mut k = 0;
         for radicand in long {
+            // The same quantity written another way (each step is simplified on its own)
+            // takes the name it already has.
+            if let Some(at) = names.iter().position(|(_, r)| same_value(r, &radicand)) {
+                forms.push((radicand, at));
+                continue;
+            }
             let name = loop {
                 k += 1;
                 let s = Symbol::new(&format!("C_{k}"));
@@ -41,9 +50,10 @@ impl Abbreviations {
                     break s;
                 }
             };
+            forms.push((radicand.clone(), names.len()));
             names.push((name, radicand));
         }
-        Abbreviations { names }
+        Abbreviations { names, forms }
     }
 
     pub fn is_empty(&self) -> bool {
@@ -74,8 +84,8 @@ impl Abbreviations {
 
     /// `e` with the first `count` named radicands written as their names.
     fn apply_before(&self, e: &Expr, count: usize) -> Expr {
-        if let Some((name, _)) = self.names[..count].iter().find(|(_, r)| r == e) {
-            return Expr::sym(*name);
+        if let Some((_, at)) = self.forms.iter().find(|(r, at)| *at < count && r == e) {
+            return Expr::sym(self.names[*at].0);
         }
         let inner = |x: &Expr| self.apply_before(x, count);
         match e.view() {
@@ -140,6 +150,11 @@ impl Abbreviations {
             .insert(first.unwrap_or(analysis.plan.len()), definitions);
         analysis.abbreviations = names;
     }
+}
+
+/// Whether two expressions are equal as values: their difference is zero in lowest terms.
+fn same_value(a: &Expr, b: &Expr) -> bool {
+    (a - b).cancel().is_ok_and(|d| d.is_zero())
 }
 
 /// Appends the long radicands and arccos arguments of `e` not yet in `out`, innermost first.

@@ -6,7 +6,9 @@
 //! top's m g r sin θ = φ̇ sin θ (I ω_z − I′ φ̇ cos θ) with I = m r²/2, I′ = 5 m r²/4, less the
 //! couple). Its one real root, found here by Newton's method from the slow precession of the
 //! top without the couple, must be the scene's φ̇; Cardano's form of it is written with names
-//! for its long radicands, and its page compiles without a line running off it.
+//! for its long radicands, and its page compiles without a line running off it. Variants:
+//! the couple turned round (three real roots, the trigonometric form), in φ̇⁴ (a quartic, by
+//! Ferrari's method), and a thousand million times stronger (a discriminant of 1e-15).
 
 use crate::common::pdflatex::pdflatex;
 use kinetics::algebra::four_significant_figures;
@@ -275,4 +277,32 @@ fn json_defines_the_names_its_results_use() {
         .expect("phidot");
     let text = phidot["text"].as_str().unwrap();
     assert!(defined.iter().any(|n| text.contains(n.as_str())), "{text}");
+}
+
+/// The couple turned round (+c_d φ̇³ i) leaves a cubic with three real roots, by the
+/// trigonometric form: each is Newton's (from −77, 2.6 and 48 rad/s), and the one arccos
+/// argument they share has one name in all three results.
+#[test]
+fn three_real_roots_share_one_name_for_their_arccos_argument() {
+    let text = SCENE.replace("couple -c_d*phidot^3*i", "couple c_d*phidot^3*i");
+    let got = solutions(&text);
+    let want = [
+        root_by_newton(-1e-5, 3, -77.0),
+        root_by_newton(-1e-5, 3, 2.6),
+        root_by_newton(-1e-5, 3, 48.0),
+    ];
+    assert_eq!(got.len(), 3, "{got:?}");
+    for (g, w) in got.iter().zip(want) {
+        assert!((g - w).abs() < 1e-9 * w.abs(), "{got:?} vs {want:?}");
+    }
+    let scene = kinetics::parse_scene("variant.scene", &text).unwrap();
+    let analysis = kinetics::analyse(&scene).unwrap();
+    let page = render(&scene, &analysis, Format::Text, false);
+    let mut arguments: Vec<&str> = page
+        .lines()
+        .skip_while(|l| *l != "Results")
+        .filter_map(|l| l.split("acos(").nth(1)?.split(')').next())
+        .collect();
+    arguments.dedup();
+    assert_eq!(arguments.len(), 1, "{arguments:?}");
 }

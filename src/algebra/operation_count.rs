@@ -9,7 +9,9 @@
 //!   (a factor only where it is not 1); its sign is the term's minus;
 //! - a power `b^e` (a root included) one operation, unless its exponent is −1, which is
 //!   a denominator; `b^(−e)` in a denominator is `b^e`;
-//! - a function one operation; a number or a symbol none, a non-integer number one division.
+//! - a function one operation; a number or a symbol none, a non-integer number one division;
+//! - a sum in a denominator one more for a leading minus and for each term with a fraction,
+//!   which a reader carries across the bar (SymPy counts them as the rest).
 //!
 //! So `a + b` counts 1, `-6 F Δt b/(m (b² + c²))` counts 9 (a minus, three multiplications
 //! above, one below, the division, two powers and an addition), and `sin(x)^2 + cos(x)^2` 5.
@@ -87,5 +89,25 @@ fn factor_cost(factor: &Expr) -> (bool, usize) {
     } else {
         1 + written_exponent.operation_count()
     };
-    (negative, base.operation_count() + power)
+    let below = match negative {
+        true => carried_across_the_bar(base),
+        false => 0,
+    };
+    (negative, base.operation_count() + power + below)
+}
+
+/// What a sum below the fraction bar makes a reader carry across it, one more operation
+/// each: a leading minus, and a fraction within a term (`1/(−L² − ¼r²)` is read as
+/// `−4/(4L² + r²)`).
+fn carried_across_the_bar(denominator: &Expr) -> usize {
+    let View::Add(terms) = denominator.view() else {
+        return 0;
+    };
+    // A sum prints a positive term first when it has one (`b − a`).
+    let leading_minus = usize::from(terms.iter().all(|t| t.coefficient().is_negative()));
+    let fractions = terms
+        .iter()
+        .filter(|t| !t.coefficient().denom().is_one())
+        .count();
+    leading_minus + fractions
 }

@@ -33,3 +33,15 @@ fn a_minus_costs_once_however_it_is_written() {
     assert_eq!(count("-a*b"), 1 + count("a*b"));
     assert_eq!(Expr::symbol("x").operation_count(), 0);
 }
+
+/// Below the fraction bar a leading minus and a fraction in a term each cost one more: a
+/// reader carries them across the bar. By SymPy's count `a ω_x/(−L² − ¼r²)` (7) would beat
+/// `−4 a ω_x/(4L² + r²)` (8); here it counts 9.
+#[test]
+fn a_minus_or_a_fraction_below_the_bar_costs_one_more() {
+    assert_eq!(count("a*w_x/(-L^2 - 1/4*r^2)"), 9);
+    assert_eq!(count("-4*a*w_x/(4*L^2 + r^2)"), 8);
+    assert_eq!(count("1/(a - b)"), 2);
+    // A minus on each term: one negation, and one more carried across the bar.
+    assert_eq!(count("1/(-a - b)"), count("1/(a + b)") + 2);
+}

@@ -26,6 +26,12 @@ fn the_issues_inputs_give_what_a_person_would_write() {
     assert_eq!(simplified("sqrt(a^2)"), "a");
 }
 
+/// A denominator is written without a leading minus or a fraction inside it.
+#[test]
+fn no_minus_or_fraction_below_the_bar() {
+    assert_eq!(simplified("a*w_x/(-L^2 - r^2/4)"), "-4*a*w_x/(4*L^2 + r^2)");
+}
+
 #[test]
 fn the_free_box_unknown_is_in_lowest_terms_with_its_factor_pulled_out() {
     assert_eq!(

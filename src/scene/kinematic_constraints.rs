@@ -55,11 +55,12 @@ impl SolvedConstraints {
 }
 
 /// The located diagnostic of a failed solve, with what to do about it.
-pub fn solve_error(scene: &Scene, at: Span, e: SolveError) -> Diagnostic {
+pub fn solve_error(scene: &Scene, at: Span, e: SolveError, equations: &[Expr]) -> Diagnostic {
+    // The givens without a value that the equations hold.
     let without_value: Vec<&str> = scene
         .givens
         .iter()
-        .filter(|g| g.value.is_none())
+        .filter(|g| g.value.is_none() && equations.iter().any(|e| e.contains(g.symbol)))
         .map(|g| g.symbol.name())
         .collect();
     let help = match &e {
@@ -159,10 +160,15 @@ pub fn solve_constraints(
                 | SolveError::Nonlinear { equation, .. } => sources.get(*equation).copied(),
                 _ => None,
             };
-            solve_error(scene, span.unwrap_or(at), e)
+            solve_error(scene, span.unwrap_or(at), e, &equations)
         })?;
         if !free.is_empty() {
-            return Err(solve_error(scene, at, SolveError::UnderDetermined(free)));
+            return Err(solve_error(
+                scene,
+                at,
+                SolveError::UnderDetermined(free),
+                &equations,
+            ));
         }
         let mut relations = shown;
         relations.extend(

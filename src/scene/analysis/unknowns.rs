@@ -19,11 +19,12 @@ use crate::parse::Diagnostic;
 use std::collections::HashMap;
 
 impl Analyser<'_> {
-    fn solve_error(&self, at: Span, e: SolveError) -> Diagnostic {
+    /// The solver's error at `at`, its help naming what `equations` need.
+    fn solve_error(&self, at: Span, e: SolveError, equations: &[Expr]) -> Diagnostic {
         if matches!(e, SolveError::Inconsistent { .. }) && pivot_without_reaction(self.scene) {
             return self.scene.error_at(at, e.to_string(), PIVOT_REACTION);
         }
-        kinematic_constraints::solve_error(self.scene, at, e)
+        kinematic_constraints::solve_error(self.scene, at, e, equations)
     }
 
     pub(super) fn unknown(&mut self, at: Span, s: Symbol) -> Result<Expr, Diagnostic> {
@@ -62,7 +63,7 @@ impl Analyser<'_> {
                 free,
                 polynomial,
             } = solve_scene(self.scene, &equations, &wanted)
-                .map_err(|e| self.solve_error(at, e))?;
+                .map_err(|e| self.solve_error(at, e, &equations))?;
             if let Some((u, p)) = polynomial {
                 let title = format!("the equations reduce to a polynomial in ${}$", u.latex());
                 let relations = vec![Relation::new(p, Expr::zero(), Axis::X)];
@@ -148,7 +149,7 @@ impl Analyser<'_> {
         self.unknowns
             .as_ref()
             .and_then(|solutions| solutions.get(self.solution)?.get(&s).cloned())
-            .ok_or_else(|| self.solve_error(at, SolveError::UnderDetermined(vec![s])))
+            .ok_or_else(|| self.solve_error(at, SolveError::UnderDetermined(vec![s]), &[]))
     }
 
     /// The request's value in each solution after the first (`raw` as derived, `first` its

@@ -33,14 +33,19 @@ impl Abbreviations {
         for e in exprs {
             long_radicands(e, &mut long);
         }
-        let mut names: Vec<(Symbol, Expr)> = Vec::with_capacity(long.len());
-        let mut forms = Vec::with_capacity(long.len());
+        let mut out = Abbreviations::default();
+        // Each name's radicand written with the names before it.
+        let mut written: Vec<Expr> = Vec::with_capacity(long.len());
         let mut k = 0;
         for radicand in long {
-            // The same quantity written another way (each step is simplified on its own)
-            // takes the name it already has.
-            if let Some(at) = names.iter().position(|(_, r)| same_value(r, &radicand)) {
-                forms.push((radicand, at));
+            // The same quantity met in another form (each step is simplified on its own,
+            // and its inner radicands may be other forms of named ones) keeps its name.
+            let named = out.apply(&radicand);
+            if let Some(at) = written
+                .iter()
+                .position(|w| *w == named || same_value(w, &named))
+            {
+                out.forms.push((radicand, at));
                 continue;
             }
             let name = loop {
@@ -50,10 +55,11 @@ impl Abbreviations {
                     break s;
                 }
             };
-            forms.push((radicand.clone(), names.len()));
-            names.push((name, radicand));
+            out.forms.push((radicand.clone(), out.names.len()));
+            out.names.push((name, radicand));
+            written.push(named);
         }
-        Abbreviations { names, forms }
+        out
     }
 
     pub fn is_empty(&self) -> bool {

@@ -5,8 +5,9 @@
 //! Text and Markdown headings are `#`/`##` lines, LaTeX headings `\section*`/`\subsection*`
 //! (never `%` comments), so a page of derivations reads like the chapter.
 
+use super::json::relations_json;
 use super::parts_table;
-use super::render::{latex_relations, relation, relations_json, LATEX_PREAMBLE};
+use super::render::{latex_relations, relation, LATEX_PREAMBLE};
 use super::Format;
 use crate::algebra::Axis;
 use crate::mechanics::catalogue::convention;

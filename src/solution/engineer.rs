@@ -168,11 +168,11 @@ pub(super) fn json(
     let number = |n: &Number| serde_json::json!({"name": n.name, "value": n.value, "unit": n.unit});
     serde_json::json!({
         "title": scene.title,
-        "givens": super::render::givens_json(scene),
+        "givens": super::json::givens_json(scene),
         "results": results.iter().map(|r| {
             let mut row = serde_json::json!({
                 "name": r.name,
-                "value": super::render::value_json(r),
+                "value": super::json::value_json(r),
                 "unit": r.unit,
             });
             if r.is_words() {

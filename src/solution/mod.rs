@@ -8,6 +8,7 @@ mod engineer;
 pub mod evaluation;
 mod html;
 mod inertia_results;
+mod json;
 mod mathml_value;
 pub mod numbers;
 pub mod parts_table;

@@ -62,7 +62,7 @@ pub(super) fn intermediate(
         let named = &analysis.abbreviations;
         step.relations
             .iter()
-            .filter(|r| !r.lhs.as_symbol().is_some_and(|s| named.names(s)))
+            .filter(|r| !r.lhs.as_symbol().is_some_and(|s| named.is_name(s)))
             .filter_map(|r| {
                 let name = print::render(&r.lhs, Notation::Text, r.axis);
                 let rhs = named.whole(&r.rhs);

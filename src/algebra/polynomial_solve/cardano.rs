@@ -33,9 +33,12 @@ pub(super) fn cubic(
     u: Symbol,
     context: &SolveContext,
 ) -> Result<Found, SolveError> {
-    let reduced = Reduced::of(coefficients)?;
-    let Reduced { shift, p, q, .. } = &reduced;
-    let discriminant = &reduced.discriminant;
+    let Reduced {
+        shift,
+        p,
+        q,
+        discriminant,
+    } = &Reduced::of(coefficients)?;
     let sign = |e: &Expr| {
         if e.is_zero() {
             Some(Ordering::Equal)
@@ -74,16 +77,20 @@ pub(super) fn cubic(
         Some(Ordering::Greater) => {
             let alpha_sign = sign(q).map(Ordering::reverse);
             let p_sign = sign(p);
-            // The sign of a radicand −q/2 ± √Δ follows from those of q and p.
-            let cube_root = |plus: bool| {
-                cube_root_of_sum(&reduced, plus, alpha_sign, p_sign).ok_or_else(|| match alpha_sign
-                {
-                    None => undecided("q", q),
-                    Some(_) => undecided("p", p),
-                })
+            // The radicands −q/2 ± √Δ, their signs from those of q and p.
+            let alpha = &Expr::rational(-1, 2) * q;
+            let s = square_root(discriminant)?;
+            let cube_root = |plus: bool| -> Result<Expr, SolveError> {
+                let sign =
+                    radicand_sign(plus, alpha_sign, p_sign).ok_or_else(|| match alpha_sign {
+                        None => undecided("q", q),
+                        Some(_) => undecided("p", p),
+                    })?;
+                let v = if plus { &alpha + &s } else { &alpha - &s };
+                Ok(real_cube_root(v, sign)?)
             };
-            let c1 = cube_root(true)??;
-            let c2 = cube_root(false)??;
+            let c1 = cube_root(true)?;
+            let c2 = cube_root(false)?;
             found.real.push(from_t(&c1 + &c2)?);
             let mean = &Expr::rational(-1, 2) * &(&c1 + &c2);
             let imaginary = &(&Expr::rational(1, 2) * &(&c1 - &c2))
@@ -147,43 +154,41 @@ impl Reduced {
     }
 }
 
-/// The real `∛(α ± √Δ)` (`α = −q/2`, `Δ > 0`): `v^(1/3)` for `v > 0`, `−(−v)^(1/3)` for
-/// `v < 0`, exact when `v` is a rational cube; None when the sign of `v` is not told. For
-/// `+`, `v > 0` when `α ≥ 0`, else `v` has the sign of `Δ − α² = p³/27`; for `−`, `v < 0`
-/// when `α ≤ 0`, else `v` has the sign of `α² − Δ`.
-fn cube_root_of_sum(
-    reduced: &Reduced,
+/// The sign of the radicand `v = α ± √Δ` (`α = −q/2`, `Δ > 0`), None when it is not told:
+/// for `+`, `v > 0` when `α ≥ 0`, else `v` has the sign of `Δ − α² = p³/27`; for `−`,
+/// `v < 0` when `α ≤ 0`, else `v` has the sign of `α² − Δ`. For `p > 0` both follow
+/// whatever `α` is.
+fn radicand_sign(
     plus: bool,
     alpha_sign: Option<Ordering>,
     p_sign: Option<Ordering>,
-) -> Option<Result<Expr, AlgebraError>> {
+) -> Option<Ordering> {
     let toward = if plus {
         Ordering::Greater
     } else {
         Ordering::Less
     };
-    // For p > 0, Δ > α²: v₊ > 0 and v₋ < 0 whatever α is.
-    let sign = match (alpha_sign, p_sign) {
-        (_, Some(Ordering::Greater)) => toward,
-        (Some(s), _) if s == Ordering::Equal || s == toward => toward,
-        (Some(_), Some(p)) if plus => p,
-        (Some(_), Some(p)) => p.reverse(),
-        _ => return None,
-    };
-    Some((|| {
-        let alpha = &Expr::rational(-1, 2) * &reduced.q;
-        let s = square_root(&reduced.discriminant)?;
-        let v = if plus { &alpha + &s } else { &alpha - &s };
-        if let Some(root) = v.as_num().and_then(|x| x.exact_root(3)) {
-            return Ok(Expr::num(root));
-        }
-        let third = Expr::rational(1, 3);
-        Ok(match sign {
-            Ordering::Equal => Expr::zero(),
-            Ordering::Greater => v.checked_pow(&third)?,
-            Ordering::Less => -(-v).checked_pow(&third)?,
-        })
-    })())
+    match (alpha_sign, p_sign) {
+        (_, Some(Ordering::Greater)) => Some(toward),
+        (Some(s), _) if s == Ordering::Equal || s == toward => Some(toward),
+        (Some(_), Some(p)) if plus => Some(p),
+        (Some(_), Some(p)) => Some(p.reverse()),
+        _ => None,
+    }
+}
+
+/// The real `∛v` of a radicand of sign `sign`: `v^(1/3)` for `v > 0`, `−(−v)^(1/3)` for
+/// `v < 0`, exact when `v` is a rational cube.
+fn real_cube_root(v: Expr, sign: Ordering) -> Result<Expr, AlgebraError> {
+    if let Some(root) = v.as_num().and_then(|x| x.exact_root(3)) {
+        return Ok(Expr::num(root));
+    }
+    let third = Expr::rational(1, 3);
+    Ok(match sign {
+        Ordering::Equal => Expr::zero(),
+        Ordering::Greater => v.checked_pow(&third)?,
+        Ordering::Less => -(-v).checked_pow(&third)?,
+    })
 }
 
 /// The three real roots of `t³ + p t + q` for `q²/4 + p³/27 < 0` (so `p < 0`), largest

@@ -62,10 +62,6 @@ impl Abbreviations {
         out
     }
 
-    pub fn is_empty(&self) -> bool {
-        self.names.is_empty()
-    }
-
     /// `e` with each named radicand written as its name.
     pub fn apply(&self, e: &Expr) -> Expr {
         self.apply_before(e, self.names.len())
@@ -84,7 +80,7 @@ impl Abbreviations {
     }
 
     /// Whether `s` is one of the names.
-    pub fn names(&self, s: Symbol) -> bool {
+    pub fn is_name(&self, s: Symbol) -> bool {
         self.names.iter().any(|(name, _)| *name == s)
     }
 

@@ -57,6 +57,10 @@ pub enum AlgebraError {
         "the expression is too large to simplify: more than {0} symbols, operations and ten-digit groups of numbers; simplify a part of it"
     )]
     TooLargeToSimplify(usize),
+    /// The command's work budget ([`crate::algebra::work`]) spent: not passed over by a
+    /// route, it ends the command.
+    #[error("this input needs more than {limit} operations, the work allowed for its length")]
+    OutOfWork { limit: u64 },
 }
 
 impl AlgebraError {

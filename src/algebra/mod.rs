@@ -46,6 +46,7 @@ mod traversal;
 mod trig_simplify;
 pub mod vector;
 pub mod vector_products;
+pub mod work;
 
 pub use axis::Axis;
 pub use cancel::polynomial_gcd;

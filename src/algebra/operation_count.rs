@@ -20,6 +20,7 @@
 
 use super::expr::{Expr, View};
 use super::rational::Q;
+use super::work;
 
 impl Expr {
     /// The operation count of the module documentation.
@@ -32,6 +33,7 @@ impl Expr {
 /// Whether a term is written with a leading minus, and the count of operations of the
 /// rest. A sum's terms share this: a minus turns the addition before it into a subtraction.
 fn term_sign_and_magnitude(e: &Expr) -> (bool, usize) {
+    work::count(1);
     match e.view() {
         View::Num(q) => (q.is_negative(), usize::from(!q.is_integer())),
         View::Sym(_) => (false, 0),

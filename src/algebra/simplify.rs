@@ -237,6 +237,7 @@ impl Shortest {
     /// Offers the outcome of a route and hands it back: a route refused for size or work
     /// is passed over (`None`); any other error is the answer.
     fn route(&mut self, outcome: Result<Expr, AlgebraError>) -> Result<Option<Expr>, AlgebraError> {
+        super::work::check()?;
         match outcome {
             Ok(candidate) => {
                 let count = candidate.operation_count();

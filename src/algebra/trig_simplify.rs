@@ -24,6 +24,8 @@ use super::expr::{Expr, View};
 use super::function::Func;
 use super::rational::Q;
 use super::square_rewrite::SquareRule;
+use super::work;
+use std::collections::HashSet;
 
 impl Expr {
     /// The expression with `sin²θ + cos²θ = 1` applied for each angle, and the double
@@ -54,6 +56,7 @@ enum Pass {
 
 /// The node with its operands simplified first, then the shortest of it and its forms.
 fn bottom_up(e: &Expr, pass: &Pass) -> Result<Expr, AlgebraError> {
+    work::check()?;
     let each = |xs: &[Expr]| -> Result<Vec<Expr>, AlgebraError> {
         xs.iter().map(|x| bottom_up(x, pass)).collect()
     };
@@ -82,7 +85,8 @@ fn bottom_up(e: &Expr, pass: &Pass) -> Result<Expr, AlgebraError> {
 /// `e` through the shortest form for each of its angles in turn.
 fn each_angle(e: Expr, pass: &Pass) -> Result<Expr, AlgebraError> {
     let mut best = e;
-    for angle in angles(&best) {
+    for angle in rewritable_angles(&best) {
+        work::check()?;
         best = forms_for_angle(&best, &angle, pass)?;
     }
     Ok(best)
@@ -118,22 +122,42 @@ fn forms_for_angle(e: &Expr, angle: &Expr, pass: &Pass) -> Result<Expr, AlgebraE
     Ok(shortest(candidates))
 }
 
-/// The angles θ of the `sin θ` and `cos θ` (to a positive integer power) among the factors
-/// of the terms of `e`, each once.
-fn angles(e: &Expr) -> Vec<Expr> {
+/// The angles θ whose `sin θ` and `cos θ` (to positive integer powers) reach the second
+/// degree together in some term of `e`, each once, in the order met: only those can be
+/// rewritten by `sin²θ + cos²θ = 1` or a double angle (a term of degree one in them has no
+/// square to replace and no product to double), so a sum of `sin θᵢ` of many angles is
+/// passed in one reading, not rewritten once per angle.
+fn rewritable_angles(e: &Expr) -> Vec<Expr> {
     let mut found: Vec<Expr> = Vec::new();
-    for factor in e.terms().iter().flat_map(Expr::factors) {
-        let (base, exponent) = factor.base_and_exponent();
-        let positive_integer = exponent
-            .as_num()
-            .is_some_and(|n| n.is_integer() && !n.is_negative());
-        if let View::Func(Func::Sin | Func::Cos, angle) = base.view() {
-            if positive_integer && !found.contains(angle) {
+    let mut seen: HashSet<&Expr> = HashSet::new();
+    for term in e.terms() {
+        let mut degrees: Vec<(&Expr, u64)> = Vec::new();
+        for (angle, degree) in term.factors().iter().filter_map(trigonometric_power) {
+            match degrees.iter_mut().find(|(a, _)| *a == angle) {
+                Some((_, total)) => *total += degree,
+                None => degrees.push((angle, degree)),
+            }
+        }
+        for (angle, _) in degrees.into_iter().filter(|(_, degree)| *degree >= 2) {
+            if seen.insert(angle) {
                 found.push(angle.clone());
             }
         }
     }
     found
+}
+
+/// The angle and degree of a factor `sin θ` or `cos θ` to a positive integer power.
+fn trigonometric_power(factor: &Expr) -> Option<(&Expr, u64)> {
+    let (base, exponent) = match factor.view() {
+        View::Pow(base, exponent) => (base, exponent.as_num()?),
+        _ => (factor, &Q::ONE),
+    };
+    let degree = exponent.to_i64()?;
+    match base.view() {
+        View::Func(Func::Sin | Func::Cos, angle) if degree > 0 => Some((angle, degree as u64)),
+        _ => None,
+    }
 }
 
 /// Whether `e` is a product or power with a factor that is a sum holding `sin` or `cos`.
@@ -142,7 +166,11 @@ fn is_product_of_trigonometric_sums(e: &Expr) -> bool {
         let (base, exponent) = f.base_and_exponent();
         matches!(base.view(), View::Add(_))
             && exponent.as_num().is_some_and(|n| !n.is_negative())
-            && !angles(base).is_empty()
+            && base
+                .terms()
+                .iter()
+                .flat_map(Expr::factors)
+                .any(|factor| trigonometric_power(factor).is_some())
     };
     matches!(e.view(), View::Mul(_) | View::Pow(..)) && e.factors().iter().any(sum_with_trig)
 }

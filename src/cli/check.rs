@@ -4,6 +4,7 @@
 //! Exit status: 0 when every claim holds, 1 when one differs, 3 when none differs and one is
 //! undecided, 2 when an input could not be read (the other claims are still checked).
 
+use super::budget::Input;
 use super::error::CliError;
 use super::input::read_file;
 use kinetics::check::context::Context;
@@ -69,7 +70,9 @@ fn context(args: &Args) -> Result<Context, CliError> {
     if let Some(path) = &args.scene {
         let (name, source) = read_file(path)?;
         let scene = parse_scene(&name, &source)?;
-        return Ok(Context::scene(&scene));
+        let first_request = scene.requests.first().map(|r| r.span.start..r.span.end);
+        return Input::scene(&name, &source, first_request)
+            .within(|| Ok::<_, CliError>(Context::scene(&scene)));
     }
     let general = if args.fixed_axis {
         Context::fixed_axis()
@@ -124,13 +127,16 @@ fn checked(args: &Args) -> Result<ExitCode, CliError> {
     let outcomes: Vec<Result<Report, Box<Diagnostic>>> = claims
         .par_iter()
         .map(|w| {
-            check(&context, &w.source_name, &w.text).map_err(|mut d| {
-                // A claim of a file was read alone: its line is the file's.
-                if w.from_file {
-                    d.line = w.line;
-                }
-                Box::new(d)
-            })
+            let claim = Input::expression(&w.source_name, &w.text);
+            claim
+                .within(|| check(&context, &w.source_name, &w.text).map_err(Box::new))
+                .map_err(|mut d| {
+                    // A claim of a file was read alone: its line is the file's.
+                    if w.from_file {
+                        d.line = w.line;
+                    }
+                    d
+                })
         })
         .collect();
     let count = |v: Verdict| {

@@ -1,6 +1,7 @@
 //! The command line: argument parsing (clap) and one module per command.
 
 mod bench;
+mod budget;
 mod check;
 mod derive;
 mod error;

@@ -2,6 +2,7 @@
 //! JSON: as written (the user's order and parentheses, only the notation changed), or with
 //! `--textbook` in the textbook's order and grouping that `derive` prints.
 
+use super::budget::Input;
 use super::error::CliError;
 use super::input;
 use kinetics::algebra::{vector, AlgebraError, Axis, Expr};
@@ -33,14 +34,18 @@ pub enum Format {
 
 pub fn run(args: Args) -> Result<String, CliError> {
     let (name, source) = input::read(&args.input)?;
-    let statement = parse_statement(&name, &source)?;
+    Input::expression(&name, &source).within(|| shown(&args, &name, &source))
+}
+
+fn shown(args: &Args, name: &str, source: &str) -> Result<String, CliError> {
+    let statement = parse_statement(name, source)?;
     // The textbook's form is formed in any case: what the algebra refuses is refused as written.
     let textbook =
-        render_statement(&statement, args.format).map_err(|err| at_input(&name, &source, err))?;
+        render_statement(&statement, args.format).map_err(|err| at_input(name, source, err))?;
     if args.textbook {
         return Ok(textbook);
     }
-    let written = statement_as_written(&name, &source)?;
+    let written = statement_as_written(name, source)?;
     Ok(match args.format {
         Format::Text => written.text,
         Format::Latex => written.latex,

@@ -2,6 +2,7 @@
 //! or equation (`Expr::simplify`, the chapter's symbols positive where they name masses,
 //! lengths, moments of inertia and times), its canonical form, or its expansion.
 
+use super::budget::Input;
 use super::error::CliError;
 use super::input;
 use super::show::{at_input, render_statement, Format};
@@ -27,7 +28,11 @@ pub struct Args {
 
 pub fn run(args: Args) -> Result<String, CliError> {
     let (name, source) = input::read(&args.input)?;
-    let statement = parse_statement(&name, &source)?;
+    Input::expression(&name, &source).within(|| transformed(&args, &name, &source))
+}
+
+fn transformed(args: &Args, name: &str, source: &str) -> Result<String, CliError> {
+    let statement = parse_statement(name, source)?;
     let domains = Domains::chapter_defaults();
     let transform = |e: &Expr| -> Result<Expr, AlgebraError> {
         if args.canonical {
@@ -38,7 +43,7 @@ pub fn run(args: Args) -> Result<String, CliError> {
             e.simplify(&domains)
         }
     };
-    let transform = |e: &Expr| transform(e).map_err(|err| at_input(&name, &source, err));
+    let transform = |e: &Expr| transform(e).map_err(|err| at_input(name, source, err));
     let statement = match statement {
         Statement::Expression(e) => Statement::Expression(transform(&e)?),
         Statement::Equation(eq) => Statement::Equation(Equation {
@@ -46,5 +51,5 @@ pub fn run(args: Args) -> Result<String, CliError> {
             rhs: transform(&eq.rhs)?,
         }),
     };
-    render_statement(&statement, args.format).map_err(|err| at_input(&name, &source, err))
+    render_statement(&statement, args.format).map_err(|err| at_input(name, source, err))
 }

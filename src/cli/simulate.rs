@@ -13,6 +13,7 @@
 //! kinetic energy that overflows, say); the header goes out with the first sample. An
 //! overflow found later stops the run with an error at the body, never an `inf` row.
 
+use super::budget::Input;
 use super::error::CliError;
 use super::sample_rows::SampleRows;
 use super::simulate_flags::{positive, sampling};
@@ -163,10 +164,13 @@ pub fn run(args: Args) -> Result<String, CliError> {
     }
     let (name, text) = super::input::read_file(&args.scene)?;
     let scene = parse_scene_to_simulate(&name, &text)?;
+    // The symbolic work before the run is bounded by the scene's budget; the run by its
+    // sampling and its integrator's step limits.
+    let input = Input::scene(&name, &text, None);
     if scene.euler_angles.is_some() {
-        return super::simulate_top::run(&args, &scene, name, &choice, &sampling);
+        return super::simulate_top::run(&args, &scene, &input, &choice, &sampling);
     }
-    let problem = simulation::problem(&scene)?;
+    let problem = input.within(|| Ok::<_, CliError>(simulation::problem(&scene)?))?;
     #[cfg(feature = "plot")]
     let mut plot = args
         .plot
@@ -199,7 +203,7 @@ pub fn run(args: Args) -> Result<String, CliError> {
     let (statistics, used) = super::progress::with_bar(|progress| {
         simulate_choice(&problem, &choice, &sampling, &mut sink, progress)
     })
-    .map_err(|source| located(&scene, name, source))?;
+    .map_err(|source| located(&scene, name.clone(), source))?;
     rows.finish()?;
     #[cfg(feature = "plot")]
     if let Some(plot) = plot {

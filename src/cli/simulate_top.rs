@@ -9,6 +9,7 @@
 //! vertical there is no band, and the turns are counted from the rates at the samples,
 //! which standard error says needs dense samples.
 
+use super::budget::Input;
 use super::error::CliError;
 use super::sample_rows::SampleRows;
 use super::simulate::{located, method_report, Args};
@@ -23,11 +24,12 @@ use kinetics::scene::{top_simulation, Scene};
 pub fn run(
     args: &Args,
     scene: &Scene,
-    name: String,
+    input: &Input,
     choice: &Choice,
     sampling: &Sampling<f64>,
 ) -> Result<String, CliError> {
-    let (top, start) = top_simulation::heavy_top(scene)?;
+    let name = input.name.to_string();
+    let (top, start) = input.within(|| Ok::<_, CliError>(top_simulation::heavy_top(scene)?))?;
     let problem = top
         .problem(&start)
         .map_err(|source| located(scene, name.clone(), source))?;

@@ -1,6 +1,7 @@
 //! `kinetics solve SCENE [--format text|latex|markdown|json|html] [--standalone] [--numbers]` and
 //! `kinetics plan SCENE`: a scene file (or `-` for standard input) analysed on demand.
 
+use super::budget::Input;
 use super::error::CliError;
 use kinetics::scene::{analyse, parse_scene, Analysis, Scene};
 use kinetics::solution::{render, render_numbers, Format};
@@ -52,16 +53,27 @@ pub struct PlanArgs {
     pub scene: String,
 }
 
-fn load(path: &str) -> Result<(Scene, Analysis), CliError> {
+/// Reads and parses the scene at `path`, then does `work` on it and its analysis within
+/// the scene's work budget.
+fn with_analysis<T>(
+    path: &str,
+    work: impl FnOnce(&Scene, &Analysis) -> Result<T, CliError>,
+) -> Result<T, CliError> {
     let (name, text) = super::input::read_file(path)?;
     let scene = parse_scene(&name, &text)?;
-    let analysis = analyse(&scene)?;
-    kinetics::solution::numbers::check_numeric_requests(&scene, &analysis)?;
-    Ok((scene, analysis))
+    let first_request = scene.requests.first().map(|r| r.span.start..r.span.end);
+    Input::scene(&name, &text, first_request).within(|| {
+        let analysis = analyse(&scene)?;
+        kinetics::solution::numbers::check_numeric_requests(&scene, &analysis)?;
+        work(&scene, &analysis)
+    })
 }
 
 pub fn run(args: Args) -> Result<String, CliError> {
-    let (scene, analysis) = load(&args.scene)?;
+    with_analysis(&args.scene, |scene, analysis| page(&args, scene, analysis))
+}
+
+fn page(args: &Args, scene: &Scene, analysis: &Analysis) -> Result<String, CliError> {
     let format = Format::from(args.format);
     if args.standalone && format != Format::Latex {
         return Err(CliError::Usage(
@@ -69,22 +81,23 @@ pub fn run(args: Args) -> Result<String, CliError> {
         ));
     }
     let page = if args.numbers {
-        render_numbers(&scene, &analysis, format).ok_or_else(|| {
+        render_numbers(scene, analysis, format).ok_or_else(|| {
             CliError::Usage("--numbers goes with --format text or --format json".into())
         })?
     } else {
-        render(&scene, &analysis, format, args.standalone)
+        render(scene, analysis, format, args.standalone)
     };
     Ok(page.trim_end().to_string())
 }
 
 pub fn plan(args: PlanArgs) -> Result<String, CliError> {
-    let (_, analysis) = load(&args.scene)?;
-    Ok(analysis
-        .plan
-        .iter()
-        .enumerate()
-        .map(|(k, s)| format!("{}. {}", k + 1, kinetics::print::markup::text(&s.title)))
-        .collect::<Vec<_>>()
-        .join("\n"))
+    with_analysis(&args.scene, |_, analysis| {
+        Ok(analysis
+            .plan
+            .iter()
+            .enumerate()
+            .map(|(k, s)| format!("{}. {}", k + 1, kinetics::print::markup::text(&s.title)))
+            .collect::<Vec<_>>()
+            .join("\n"))
+    })
 }

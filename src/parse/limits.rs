@@ -1,11 +1,19 @@
 //! Bounds on user input, checked before parsing so that no input can overflow the stack
 //! or take unbounded time.
+//!
+//! Nesting is counted as the parser will nest: every open parenthesis (a call's too), every
+//! power in a chain (`a^b^c` is `a^(b^c)`: `^` and `**` alike), and every prefix sign (`-x^-x`
+//! is `-(x^(-x))`) is one level, and the levels of the enclosing parentheses add up. A binary
+//! operator that binds more loosely than a power (`+ - * / × · = ,` and a juxtaposed operand,
+//! `x^2 y`) ends the chain of its level. Numbers are read whole, so the sign of an exponent
+//! (`1e-1`) is neither an operator nor a prefix sign. Every recursive walk of an expression is
+//! bounded by this count: a parsed expression is at most [`MAX_NESTING`] levels deep.
 
 use super::diagnostic::Diagnostic;
 
 /// Largest input accepted, in bytes.
 pub const MAX_INPUT_BYTES: usize = 1 << 20;
-/// Deepest nesting of parentheses and chained powers.
+/// Deepest nesting of parentheses, chained powers and prefix signs, added up.
 pub const MAX_NESTING: usize = 200;
 /// Longest run of prefix signs (`- - x`).
 pub const MAX_PREFIX_RUN: usize = 16;
@@ -27,95 +35,200 @@ pub fn check_input(source_name: &str, source: &str) -> Result<(), Diagnostic> {
         )
         .with_help("split the input into smaller expressions"));
     }
-    // Chained powers nest like parentheses: count them per parenthesis level.
-    let mut chains: Vec<usize> = vec![0];
-    let mut previous_is_operand = false;
+    let mut nesting = Nesting::default();
+    let mut previous = Token::Operator;
     let mut prefix_run = 0usize;
     let bytes = source.as_bytes();
     let mut i = 0;
     while i < bytes.len() {
-        // The cross product × and the product sign · (two bytes each in UTF-8) are binary
-        // operators, read here as the one-byte operator '/' (`**` is not matched after them).
-        let c = match bytes[i..] {
-            [0xC3, 0x97, ..] | [0xC2, 0xB7, ..] => {
-                i += 1;
-                b'/'
-            }
-            // The minus sign − (U+2212, three bytes), as typed from a word processor, is '-'.
-            [0xE2, 0x88, 0x92, ..] => {
-                i += 2;
-                b'-'
-            }
-            _ => bytes[i],
+        let (token, length) = token_at(bytes, i);
+        let refused = |message: String| {
+            let help =
+                "simplify the expression; no formula of this chapter needs that much nesting";
+            Err(Diagnostic::at(source_name, source, i, i + length, message).with_help(help))
         };
-        let depth = chains.len() - 1;
-        let too_deep = |what: &str| {
-            Diagnostic::at(
-                source_name,
-                source,
-                i,
-                i + 1,
-                format!("{what} nested more than {MAX_NESTING} levels deep"),
-            )
-            .with_help(
-                "simplify the expression; no formula of this chapter needs that much nesting",
-            )
-        };
-        match c {
-            b'(' => {
-                chains.push(0);
-                if chains.len() - 1 > MAX_NESTING {
-                    return Err(too_deep("parentheses"));
-                }
-                previous_is_operand = false;
+        let deeper = match token {
+            Token::Blank => {
+                i += length;
+                continue;
             }
-            b')' => {
-                if chains.len() > 1 {
-                    chains.pop();
+            Token::Open => {
+                // A '(' after an operand that is not a callee is a product: `2(a + b)`.
+                if previous == Token::Operand {
+                    nesting.end_chain();
                 }
-                previous_is_operand = true;
+                nesting.open()
             }
-            b'^' => {
-                if let Some(chain) = chains.last_mut() {
-                    *chain += 1;
-                    if depth + *chain > MAX_NESTING {
-                        return Err(too_deep("powers"));
-                    }
+            Token::Close => {
+                nesting.close();
+                None
+            }
+            Token::Power => nesting.chain("powers"),
+            Token::Sign if previous != Token::Operator => {
+                nesting.end_chain();
+                None
+            }
+            Token::Sign => {
+                prefix_run += 1;
+                if prefix_run > MAX_PREFIX_RUN {
+                    return refused(format!("more than {MAX_PREFIX_RUN} signs in a row"));
                 }
-                previous_is_operand = false;
+                nesting.chain("signs and powers")
             }
-            b'+' | b'-' | b'*' | b'/' | b'=' | b',' => {
-                if c == b'*' && bytes.get(i + 1) == Some(&b'*') {
-                    i += 1;
-                    if let Some(chain) = chains.last_mut() {
-                        *chain += 1;
-                    }
-                } else if previous_is_operand {
-                    if let Some(chain) = chains.last_mut() {
-                        *chain = 0;
-                    }
-                    prefix_run = 0;
-                } else if c == b'+' || c == b'-' {
-                    prefix_run += 1;
-                    if prefix_run > MAX_PREFIX_RUN {
-                        return Err(Diagnostic::at(
-                            source_name,
-                            source,
-                            i,
-                            i + 1,
-                            format!("more than {MAX_PREFIX_RUN} signs in a row"),
-                        ));
-                    }
+            Token::Operator => {
+                nesting.end_chain();
+                None
+            }
+            Token::Operand | Token::Callee => {
+                if previous == Token::Operand {
+                    nesting.end_chain();
                 }
-                previous_is_operand = false;
-            }
-            b' ' | b'\t' | b'\r' | b'\n' => {}
-            _ => {
-                previous_is_operand = true;
                 prefix_run = 0;
+                None
             }
+        };
+        if let Some(what) = deeper {
+            return refused(format!("{what} nested more than {MAX_NESTING} levels deep"));
         }
-        i += 1;
+        // A callee's '(' opens its arguments; it is not a product with what comes before.
+        previous = match token {
+            Token::Close => Token::Operand,
+            Token::Sign | Token::Power | Token::Open => Token::Operator,
+            other => other,
+        };
+        i += length;
     }
     Ok(())
+}
+
+/// What the nesting count sees of the input, one token at a time.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Token {
+    Blank,
+    Open,
+    Close,
+    /// `^` or `**`.
+    Power,
+    /// `+`, `-` or `−`: binary after an operand, else a prefix sign.
+    Sign,
+    /// A binary operator looser than a power: `* / × · = ,`.
+    Operator,
+    /// A number (read whole, its exponent's sign included), a symbol, the degree sign, or
+    /// any other character (which the grammar refuses).
+    Operand,
+    /// A name directly followed by `(`: its parenthesis holds arguments.
+    Callee,
+}
+
+/// The token that starts at byte `i` and its length in bytes.
+fn token_at(bytes: &[u8], i: usize) -> (Token, usize) {
+    let rest = &bytes[i..];
+    match rest {
+        [b' ' | b'\t' | b'\r' | b'\n', ..] => (Token::Blank, 1),
+        [b'(', ..] => (Token::Open, 1),
+        [b')', ..] => (Token::Close, 1),
+        [b'^', ..] => (Token::Power, 1),
+        [b'*', b'*', ..] => (Token::Power, 2),
+        [b'+' | b'-', ..] => (Token::Sign, 1),
+        // The minus sign − (U+2212), as typed from a word processor.
+        [0xE2, 0x88, 0x92, ..] => (Token::Sign, 3),
+        [b'*' | b'/' | b'=' | b',', ..] => (Token::Operator, 1),
+        // The cross product × and the product sign ·.
+        [0xC3, 0x97, ..] | [0xC2, 0xB7, ..] => (Token::Operator, 2),
+        [c, ..] if c.is_ascii_digit() || *c == b'.' => (Token::Operand, number_length(rest)),
+        [c, ..] if c.is_ascii_alphabetic() => {
+            let length = rest
+                .iter()
+                .position(|c| !(c.is_ascii_alphanumeric() || *c == b'_' || *c == b'\''))
+                .unwrap_or(rest.len());
+            match rest.get(length) {
+                Some(b'(') => (Token::Callee, length),
+                _ => (Token::Operand, length),
+            }
+        }
+        // Any other character, whole (a UTF-8 sequence is one character).
+        [c, ..] => (Token::Operand, utf8_length(*c)),
+        [] => (Token::Blank, 1),
+    }
+}
+
+/// The length of the number at the start of `text`, as the grammar reads one:
+/// `digits [. digits] [e [+-] digits]`.
+fn number_length(text: &[u8]) -> usize {
+    let digits = |from: usize| {
+        text[from..]
+            .iter()
+            .take_while(|c| c.is_ascii_digit())
+            .count()
+    };
+    let mut length = digits(0);
+    if text.get(length) == Some(&b'.') {
+        length += 1 + digits(length + 1);
+    }
+    if matches!(text.get(length), Some(b'e' | b'E')) {
+        let sign = usize::from(matches!(text.get(length + 1), Some(b'+' | b'-')));
+        let exponent = digits(length + 1 + sign);
+        if exponent > 0 {
+            length += 1 + sign + exponent;
+        }
+    }
+    length.max(1)
+}
+
+/// The bytes of the UTF-8 character that begins with `first` (1 for a stray byte).
+fn utf8_length(first: u8) -> usize {
+    match first {
+        0xF0.. => 4,
+        0xE0.. => 3,
+        0xC0.. => 2,
+        _ => 1,
+    }
+}
+
+/// The levels open at a point of the input: one per open parenthesis, and the chain of
+/// powers and prefix signs of each parenthesis level, added up.
+#[derive(Default)]
+struct Nesting {
+    /// The chain of each open level, the outermost (no parenthesis) first.
+    chains: Vec<usize>,
+    /// Open parentheses plus every chain: the depth the parser will reach.
+    total: usize,
+}
+
+impl Nesting {
+    fn current(&mut self) -> &mut usize {
+        if self.chains.is_empty() {
+            self.chains.push(0);
+        }
+        self.chains.last_mut().expect("a level is open")
+    }
+
+    /// One more power or sign in the current chain; `what` when that is too deep.
+    fn chain(&mut self, what: &'static str) -> Option<&'static str> {
+        *self.current() += 1;
+        self.total += 1;
+        (self.total > MAX_NESTING).then_some(what)
+    }
+
+    /// A binary operator looser than a power: the current chain ends.
+    fn end_chain(&mut self) {
+        let chain = std::mem::take(self.current());
+        self.total -= chain;
+    }
+
+    /// A '(': one level deeper, with a chain of its own.
+    fn open(&mut self) -> Option<&'static str> {
+        self.current();
+        self.chains.push(0);
+        self.total += 1;
+        (self.total > MAX_NESTING).then_some("parentheses")
+    }
+
+    /// A ')': the level and its chain end (an unmatched one is the grammar's to report).
+    fn close(&mut self) {
+        if self.chains.len() > 1 {
+            let chain = self.chains.pop().expect("a level is open");
+            self.total -= chain + 1;
+        }
+    }
 }

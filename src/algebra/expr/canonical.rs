@@ -23,7 +23,7 @@
 //! ```
 
 use super::{cmp_slices, Expr, Operands, Repr};
-use crate::algebra::{AlgebraError, Func, Symbol, Q};
+use crate::algebra::{work, AlgebraError, Func, Symbol, Q};
 use std::borrow::Borrow;
 use std::sync::Arc;
 
@@ -90,6 +90,7 @@ impl Expr {
         let mut kept = terms.len();
         if !terms.windows(2).all(|w| by_monomial(&w[0], &w[1]).is_lt()) {
             // Terms with equal monomials are combined below, so their order does not matter.
+            work::count(comparisons_to_sort(terms.len()));
             terms.sort_unstable_by(by_monomial);
             kept = combine_like_terms(terms);
         }
@@ -125,6 +126,7 @@ impl Expr {
         if coeff.is_zero() {
             return Expr::zero();
         }
+        work::count(comparisons_to_sort(flat.len()));
         flat.sort_by(|a, b| a.base().cmp(b.base()));
         let mut out: Vec<Expr> = Vec::with_capacity(flat.len() + 1);
         let mut merged = false;
@@ -246,6 +248,7 @@ impl Expr {
 
     /// A function node with no simplification; only for [`Func::apply`].
     pub(crate) fn func_node(f: Func, arg: Expr) -> Expr {
+        work::count(1);
         Expr(Repr::Func(f, Arc::new(arg)))
     }
 }
@@ -277,6 +280,12 @@ fn combine_like_terms(terms: &mut Operands) -> usize {
     kept
 }
 
+/// The comparisons a sort of `n` operands takes, `n log₂ n`, for the work budget.
+fn comparisons_to_sort(n: usize) -> u64 {
+    let n = n as u64;
+    n * u64::from(n.max(1).ilog2())
+}
+
 /// The operands of a sum or product node: `first` (a coefficient), then copies of `rest`.
 #[inline]
 fn operands<T: Borrow<Expr>>(first: Option<Expr>, rest: &[T]) -> Arc<[Expr]> {
@@ -291,6 +300,7 @@ fn node_operands(
     len: usize,
     mut at: impl FnMut(usize) -> Expr,
 ) -> Arc<[Expr]> {
+    work::count(len as u64 + 1);
     match (first, len) {
         (None, 2) => Arc::new([at(0), at(1)]),
         (None, 3) => Arc::new([at(0), at(1), at(2)]),
@@ -381,6 +391,7 @@ fn whole_part_of_numeric_power(b: &Q, p: i64, q: i64) -> Option<Expr> {
 
 /// The unevaluated node `base^exponent`.
 fn power_node(base: Expr, exponent: Expr) -> Expr {
+    work::count(1);
     Expr(Repr::Pow(Arc::new((base, exponent))))
 }
 

@@ -4,6 +4,7 @@
 //! [`MAX_TERM_OPERATIONS`] (a few tenths of a second); no result may hold more than
 //! [`MAX_EXPANDED_TERMS`] terms or a coefficient of more than [`MAX_DIGITS`] digits. Past
 //! either bound the operation is refused with an [`AlgebraError`], never left to run.
+//! Every operation is charged to the command's work budget ([`crate::algebra::work`]) too.
 
 use crate::algebra::digit_bound::MAX_DIGITS;
 use crate::algebra::error::{AlgebraError, MAX_EXPANDED_TERMS};
@@ -40,6 +41,7 @@ impl Budget {
 
     /// Charges `operations` term operations, or refuses when too few are left.
     pub fn spend(&mut self, operations: u64) -> Result<(), AlgebraError> {
+        crate::algebra::work::spend(operations)?;
         match self.left.checked_sub(operations) {
             Some(left) => {
                 self.left = left;

@@ -1,0 +1,158 @@
+//! The work budget of one command: a count of operations shared by every routine the
+//! command runs (building expressions, simplifying, expanding, polynomial arithmetic,
+//! printing), bounded by the size of the input, so that no input can run for long.
+//!
+//! The unit is one operand of a node built ([`count`] in the canonical constructors), one
+//! term operation of polynomial arithmetic, one node laid out by a printer: each costs tens
+//! of nanoseconds. An input of `b` bytes may spend
+//!
+//! ```text
+//! limit(b) = FLOOR + PER_BYTE · b
+//! ```
+//!
+//! operations: the floor is far above what any problem of the chapter needs (the largest
+//! example spends a few percent of it) and about half a second of work; `PER_BYTE` keeps
+//! a megabyte of input under about two seconds on one core.
+//!
+//! Counting never fails, so infallible routines count too; a fallible routine asks
+//! [`check`] at its steps and refuses with [`AlgebraError::OutOfWork`] once the budget is
+//! spent. That error is not "beyond bounds": it is not passed over by a route of
+//! `simplify` but ends the command, and [`Budget::run`] refuses a result reached after the
+//! budget was spent, so no form is ever silently left less simplified for lack of work.
+//!
+//! The count is per thread: a command that fans out (claims checked in parallel) gives each
+//! piece of input its own budget on the thread that does its work. Outside [`Budget::run`]
+//! nothing is bounded (the library's own callers and tests).
+
+use super::error::AlgebraError;
+use std::cell::Cell;
+
+/// Operations every input may spend, however short.
+pub const FLOOR: u64 = 40_000_000;
+/// Operations each byte of input adds to the floor.
+pub const PER_BYTE: u64 = 40;
+
+thread_local! {
+    /// Operations counted on this thread since the budget began.
+    static SPENT: Cell<u64> = const { Cell::new(0) };
+    /// The operations this thread may spend; `u64::MAX` outside a budget.
+    static LIMIT: Cell<u64> = const { Cell::new(u64::MAX) };
+}
+
+/// Counts `operations` against this thread's budget (never fails; see [`check`]).
+#[inline]
+pub fn count(operations: u64) {
+    SPENT.with(|spent| spent.set(spent.get().saturating_add(operations)));
+}
+
+/// Counts `operations` and refuses once the budget is spent.
+#[inline]
+pub fn spend(operations: u64) -> Result<(), AlgebraError> {
+    count(operations);
+    check()
+}
+
+/// Refuses once this thread's budget is spent.
+#[inline]
+pub fn check() -> Result<(), AlgebraError> {
+    let limit = LIMIT.with(Cell::get);
+    if SPENT.with(Cell::get) > limit {
+        return Err(AlgebraError::OutOfWork { limit });
+    }
+    Ok(())
+}
+
+/// The operations one input may spend.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Budget {
+    limit: u64,
+}
+
+impl Budget {
+    /// The budget of an input of `bytes` bytes: `FLOOR + PER_BYTE · bytes`.
+    pub fn for_input(bytes: usize) -> Budget {
+        Budget {
+            limit: FLOOR.saturating_add(PER_BYTE.saturating_mul(bytes as u64)),
+        }
+    }
+
+    /// A budget of exactly `limit` operations (tests, and callers with a bound of their own).
+    pub fn of(limit: u64) -> Budget {
+        Budget { limit }
+    }
+
+    /// The operations this budget allows.
+    pub fn limit(self) -> u64 {
+        self.limit
+    }
+
+    /// Runs `work` on this thread within the budget: its result and the operations it
+    /// spent, or [`AlgebraError::OutOfWork`] when it spent more than the budget, whatever
+    /// it returned. A budget already running on this thread is suspended meanwhile and
+    /// charged with what `work` spent.
+    pub fn run<T>(self, work: impl FnOnce() -> T) -> Result<(T, u64), AlgebraError> {
+        let outer_spent = SPENT.with(|s| s.replace(0));
+        let outer_limit = LIMIT.with(|l| l.replace(self.limit));
+        let outcome = work();
+        let spent = SPENT.with(Cell::get);
+        SPENT.with(|s| s.set(outer_spent.saturating_add(spent)));
+        LIMIT.with(|l| l.set(outer_limit));
+        if spent > self.limit {
+            return Err(AlgebraError::OutOfWork { limit: self.limit });
+        }
+        Ok((outcome, spent))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::Expr;
+
+    fn polynomial_work() -> Result<Expr, AlgebraError> {
+        let (a, b) = (Expr::symbol("a"), Expr::symbol("b"));
+        (&a + &b).powi(12).expand()
+    }
+
+    #[test]
+    fn building_expressions_is_counted() {
+        let (outcome, spent) = Budget::of(u64::MAX).run(polynomial_work).unwrap();
+        // (a + b)^12 has 13 terms, each built with its operands.
+        assert_eq!(outcome.unwrap().terms().len(), 13);
+        assert!(spent >= 13, "spent {spent}");
+    }
+
+    #[test]
+    fn a_spent_budget_refuses_the_result_and_the_steps() {
+        let (_, needed) = Budget::of(u64::MAX).run(polynomial_work).unwrap();
+        let outcome = Budget::of(needed / 2).run(polynomial_work);
+        assert_eq!(
+            outcome.unwrap_err(),
+            AlgebraError::OutOfWork { limit: needed / 2 }
+        );
+        // The same work within a budget just large enough.
+        assert!(Budget::of(needed).run(polynomial_work).is_ok());
+    }
+
+    #[test]
+    fn nested_budgets_charge_the_outer_one_and_restore_it() {
+        let outer = Budget::of(1_000_000).run(|| {
+            let (_, inner) = Budget::of(u64::MAX).run(polynomial_work).unwrap();
+            assert!(check().is_ok());
+            inner
+        });
+        let (inner, outer_spent) = outer.unwrap();
+        assert_eq!(inner, outer_spent);
+        // Outside every budget nothing is refused.
+        assert!(spend(u64::MAX).is_ok());
+    }
+
+    #[test]
+    fn the_budget_grows_with_the_input() {
+        assert_eq!(Budget::for_input(0).limit(), FLOOR);
+        assert_eq!(
+            Budget::for_input(1 << 20).limit(),
+            FLOOR + PER_BYTE * (1 << 20)
+        );
+    }
+}

@@ -1,0 +1,86 @@
+//! Every command's work on an input runs within the input's work budget
+//! ([`kinetics::algebra::work`]: a floor plus a number of operations per byte), so that any
+//! input ends in bounded time: answered, or refused at a place in it with the reason.
+//!
+//! With the environment variable `KINETICS_WORK_REPORT` set, each budgeted piece of work
+//! writes `work: SPENT of LIMIT operations` to standard error (a refusal as `LIMIT + 1`):
+//! the tests measure the work of hostile inputs by it, not by the wall clock.
+
+use kinetics::algebra::work::Budget;
+use kinetics::algebra::AlgebraError;
+use kinetics::parse::Diagnostic;
+use std::ops::Range;
+
+/// An input a command works on: its name in diagnostics, its text, and the place a refusal
+/// for work stands at (the whole expression, or a scene's first request).
+pub struct Input<'a> {
+    pub name: &'a str,
+    pub source: &'a str,
+    pub place: Range<usize>,
+}
+
+impl<'a> Input<'a> {
+    /// An expression or a claim: a refusal stands at all of it.
+    pub fn expression(name: &'a str, source: &'a str) -> Input<'a> {
+        Input {
+            name,
+            source,
+            place: 0..source.trim_end().len(),
+        }
+    }
+
+    /// A scene: a refusal stands at its first request (what pulls the work), else at its
+    /// first statement.
+    pub fn scene(name: &'a str, source: &'a str, first_request: Option<Range<usize>>) -> Input<'a> {
+        let place = first_request.unwrap_or_else(|| {
+            let mut start = 0;
+            for line in source.split_inclusive('\n') {
+                let statement = line.trim();
+                if !statement.is_empty() && !statement.starts_with('#') {
+                    let from = start + (line.len() - line.trim_start().len());
+                    return from..from + statement.len();
+                }
+                start += line.len();
+            }
+            0..0
+        });
+        Input {
+            name,
+            source,
+            place,
+        }
+    }
+
+    /// Runs `work` within the budget of this input's bytes. A result reached after the
+    /// budget was spent is refused too: no answer is ever the product of cut-short work.
+    pub fn within<T, E: From<Diagnostic>>(
+        &self,
+        work: impl FnOnce() -> Result<T, E>,
+    ) -> Result<T, E> {
+        let budget = Budget::for_input(self.source.len());
+        match budget.run(work) {
+            Ok((outcome, spent)) => {
+                report(spent, budget);
+                outcome
+            }
+            Err(out_of_work) => {
+                report(budget.limit().saturating_add(1), budget);
+                Err(self.refusal(out_of_work).into())
+            }
+        }
+    }
+
+    /// The refusal for a spent budget, located at [`Input::place`].
+    fn refusal(&self, out_of_work: AlgebraError) -> Diagnostic {
+        let Range { start, end } = self.place;
+        Diagnostic::at(self.name, self.source, start, end, out_of_work.to_string())
+            .with_help("simplify the input or split it into smaller parts")
+    }
+}
+
+/// Writes the work spent when `KINETICS_WORK_REPORT` is set (module documentation).
+fn report(spent: u64, budget: Budget) {
+    if std::env::var_os("KINETICS_WORK_REPORT").is_some() {
+        eprintln!("work: {spent} of {} operations", budget.limit());
+    }
+}

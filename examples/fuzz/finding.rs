@@ -173,6 +173,24 @@ pub fn raw_control(output: &str) -> Option<char> {
     })
 }
 
+/// A control character's name for a signature (which takes digits out): `ESC`, `U+202E`
+/// as `RLO`, ...
+pub fn control_name(c: char) -> &'static str {
+    match c {
+        '\u{0}' => "NUL",
+        '\u{7}' => "BEL",
+        '\u{8}' => "BS",
+        '\r' => "CR",
+        '\u{1b}' => "ESC",
+        '\u{7f}' => "DEL",
+        '\u{85}' => "NEL",
+        '\u{202e}' => "RLO",
+        '\u{feff}' => "BOM",
+        '\u{202a}'..='\u{2069}' => "a bidirectional control",
+        _ => "a control character",
+    }
+}
+
 /// The output formats whose markup a title or a name could inject.
 #[derive(Clone, Copy)]
 pub enum Markup {

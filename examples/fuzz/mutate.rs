@@ -28,7 +28,7 @@ fn once(r: &mut Random, text: &str, other: &str) -> String {
             Some(title) => lines[title] = hostile::title(r),
             None => lines.insert(0, hostile::title(r)),
         },
-        13 => lines[0] = format!("\u{feff}{}", lines[0]),
+        13 if r.one_in(4) => lines[0] = format!("\u{feff}{}", lines[0]),
         0 if lines.len() > 1 => {
             lines.remove(at);
         }

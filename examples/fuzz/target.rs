@@ -13,7 +13,7 @@
 //! and names (issue 29).
 
 use crate::finding::{
-    injected, longest_digit_run, non_finite_word, raw_control, Class, Finding, Markup,
+    control_name, injected, longest_digit_run, non_finite_word, raw_control, Class, Finding, Markup,
 };
 use kinetics::algebra::{vector, AlgebraError, Axis, Domains, Expr};
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice};
@@ -189,7 +189,7 @@ pub fn located(d: &Diagnostic, text: &str, scene: bool) -> Option<Finding> {
         return Some(Finding::new(
             Class::Control,
             "error message prints ",
-            &format!("{c:?}"),
+            control_name(c),
         ));
     }
     let line = text.lines().nth(d.line.wrapping_sub(1));
@@ -230,7 +230,7 @@ fn words(message: &str) -> String {
 /// raw control character.
 pub fn printed(output: &str, input: &str) -> Result<(), Finding> {
     if let Some(c) = raw_control(output) {
-        return Err(Finding::new(Class::Control, "prints ", &format!("{c:?}")));
+        return Err(Finding::new(Class::Control, "prints ", control_name(c)));
     }
     match non_finite_word(output, input) {
         Some(word) => Err(Finding::new(Class::NonFinite, "prints ", word)),

@@ -7,7 +7,7 @@ use crate::target::Target;
 use std::path::Path;
 
 /// The headers of a file in `tests/reproducers/` (see `tests/suite/reproducers.rs`).
-const HEADERS: [&str; 4] = ["# run: ", "# at: ", "# ok: ", "# refuse: "];
+const HEADERS: [&str; 5] = ["# run: ", "# at: ", "# ok: ", "# refuse: ", "# repeat: "];
 
 /// The texts of the target's seeds: an expression, a scene or a claim each.
 pub fn seeds(target: Target) -> Vec<String> {
@@ -27,18 +27,25 @@ pub fn seeds(target: Target) -> Vec<String> {
             if path.extension().is_none_or(|e| e != target.extension()) {
                 continue;
             }
-            let Ok(text) = std::fs::read_to_string(&path) else {
+            let Ok(bytes) = std::fs::read(&path) else {
                 continue;
             };
-            seeds.push(match target {
+            // A byte that is not UTF-8 reaches the targets as U+FFFD (they take text).
+            let text = String::from_utf8_lossy(&bytes);
+            let repeat = text
+                .lines()
+                .find_map(|l| l.strip_prefix("# repeat: "))
+                .and_then(|n| n.trim().parse::<usize>().ok());
+            let mut body = text.lines().filter(|l| !l.starts_with("# "));
+            seeds.push(match (target, repeat) {
+                // `# repeat: N`: the first line N times, then the second.
+                (Target::Expr, Some(n)) => {
+                    body.next().unwrap_or_default().repeat(n) + body.next().unwrap_or_default()
+                }
                 // The expression (or claim) is the first line that is not a header.
-                Target::Expr | Target::Check => text
-                    .lines()
-                    .find(|l| !l.starts_with("# "))
-                    .unwrap_or_default()
-                    .to_string(),
+                (Target::Expr | Target::Check, _) => body.next().unwrap_or_default().to_string(),
                 // Without the reproducer's headers, which say how the test runs it.
-                Target::Scene => text
+                (Target::Scene, _) => text
                     .lines()
                     .filter(|l| !HEADERS.iter().any(|h| l.starts_with(h)))
                     .map(|l| format!("{l}\n"))

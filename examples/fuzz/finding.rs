@@ -21,6 +21,15 @@ pub enum Class {
     Unlocated,
     /// An error quoting a number the user never wrote (a long expanded constant).
     Unquoted,
+    /// The worker ran out of its address space ([`crate::supervisor::MEMORY_LIMIT_KB`]): an
+    /// allocation failed.
+    Memory,
+    /// A control character (ESC, a bidirectional override, ...) printed raw, in an output
+    /// or an error message.
+    Control,
+    /// Markup of an output format from the input left raw: HTML in Markdown or HTML, a TeX
+    /// command that reads or writes files in LaTeX.
+    Injection,
 }
 
 impl Class {
@@ -32,6 +41,9 @@ impl Class {
             Class::NonFinite => "non-finite",
             Class::Unlocated => "unlocated",
             Class::Unquoted => "unquoted",
+            Class::Memory => "memory",
+            Class::Control => "control",
+            Class::Injection => "injection",
         }
     }
 
@@ -43,6 +55,9 @@ impl Class {
             Class::NonFinite,
             Class::Unlocated,
             Class::Unquoted,
+            Class::Memory,
+            Class::Control,
+            Class::Injection,
         ]
         .into_iter()
         .find(|c| c.name() == name)
@@ -144,4 +159,74 @@ pub fn longest_digit_run(text: &str) -> usize {
         .map(str::len)
         .max()
         .unwrap_or(0)
+}
+
+/// The first character of `output` that a terminal, a bidirectional renderer or pdflatex
+/// would take for a command: C0 controls but newline and tab, DEL, C1 controls, the
+/// bidirectional embeddings, overrides and isolates, a byte-order mark.
+pub fn raw_control(output: &str) -> Option<char> {
+    output.chars().find(|&c| {
+        (c.is_control() && c != '\n' && c != '\t')
+            || ('\u{202a}'..='\u{202e}').contains(&c)
+            || ('\u{2066}'..='\u{2069}').contains(&c)
+            || c == '\u{feff}'
+    })
+}
+
+/// A control character's name for a signature (which takes digits out): `ESC`, `U+202E`
+/// as `RLO`, ...
+pub fn control_name(c: char) -> &'static str {
+    match c {
+        '\u{0}' => "NUL",
+        '\u{7}' => "BEL",
+        '\u{8}' => "BS",
+        '\r' => "CR",
+        '\u{1b}' => "ESC",
+        '\u{7f}' => "DEL",
+        '\u{85}' => "NEL",
+        '\u{202e}' => "RLO",
+        '\u{feff}' => "BOM",
+        '\u{202a}'..='\u{2069}' => "a bidirectional control",
+        _ => "a control character",
+    }
+}
+
+/// The output formats whose markup a title or a name could inject.
+#[derive(Clone, Copy)]
+pub enum Markup {
+    Latex,
+    Markdown,
+    Html,
+}
+
+/// Markup in `output` that only the input can have put there: an HTML tag in Markdown
+/// (where `$…$` is not maths to every renderer), an active HTML element or a `javascript:`
+/// link in HTML, a TeX command that reads or writes a file in LaTeX.
+pub fn injected(output: &str, markup: Markup) -> Option<&'static str> {
+    const HTML: [&str; 5] = ["<script", "<img", "<iframe", "<object", "<embed"];
+    const TEX: [&str; 7] = [
+        "\\input",
+        "\\include",
+        "\\write",
+        "\\openin",
+        "\\openout",
+        "\\immediate",
+        "\\catcode",
+    ];
+    let lower = output.to_ascii_lowercase();
+    match markup {
+        Markup::Markdown => {
+            let tag = lower.as_bytes().windows(2).any(|w| {
+                w[0] == b'<' && (w[1].is_ascii_alphabetic() || w[1] == b'/' || w[1] == b'!')
+            });
+            let link = lower.contains("](javascript:");
+            (tag || link).then_some("raw HTML or a javascript: link in Markdown")
+        }
+        Markup::Html => HTML
+            .iter()
+            .copied()
+            .find(|t| lower.contains(t))
+            .or_else(|| (lower.contains("href=\"javascript:")).then_some("href=\"javascript:")),
+        Markup::Latex => TEX.iter().copied().find(|t| output.contains(t)),
+    }
 }

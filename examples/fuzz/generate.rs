@@ -13,8 +13,21 @@ const UNIT_VECTORS: [&str; 3] = ["i", "j", "k"];
 const FUNCTIONS: [&str; 6] = ["sin", "cos", "tan", "sqrt", "abs", "f"];
 const OPERATORS: [&str; 6] = ["+", "-", "*", "/", " ", "^"];
 
-/// An expression, or now and then an equation `lhs = rhs`.
+/// An expression, or now and then an equation `lhs = rhs` or one of issue 29's shapes
+/// ([`hostile::Shape`]), with a control character inside now and then.
 pub fn statement(r: &mut Random) -> String {
+    if r.one_in(8) {
+        return hostile::any_shape(r);
+    }
+    if r.one_in(16) {
+        let e = expression(r, 3, atom);
+        let at = (0..=e.len()).filter(|&i| e.is_char_boundary(i)).count();
+        let at = e
+            .char_indices()
+            .nth(r.below(at))
+            .map_or(e.len(), |(i, _)| i);
+        return format!("{}{}{}", &e[..at], hostile::control(r), &e[at..]);
+    }
     let depth = r.size(8);
     let e = expression(r, depth, atom);
     if r.one_in(6) {

@@ -1,7 +1,9 @@
 //! Mutations of an input's text, for expressions and scenes alike: on tokens (replace one by
 //! a hostile token, delete, duplicate, negate, wrap in a power, nest), on lines (delete,
-//! duplicate, splice one from another input) and on bytes (insert, truncate). A scene is
-//! mutated a line at a time, so most mutants still parse and reach the analysis.
+//! duplicate, splice one from another input, a hostile title: issue 29's injections and
+//! control characters) and on bytes (insert, truncate, a byte that is not UTF-8 or a
+//! byte-order mark). A scene is mutated a line at a time, so most mutants still parse and
+//! reach the analysis.
 
 use crate::hostile;
 use crate::random::Random;
@@ -21,7 +23,12 @@ fn once(r: &mut Random, text: &str, other: &str) -> String {
         lines.push(String::new());
     }
     let at = r.below(lines.len());
-    match r.below(12) {
+    match r.below(14) {
+        12 => match lines.iter().position(|l| l.starts_with("title")) {
+            Some(title) => lines[title] = hostile::title(r),
+            None => lines.insert(0, hostile::title(r)),
+        },
+        13 if r.one_in(4) => lines[0] = format!("\u{feff}{}", lines[0]),
         0 if lines.len() > 1 => {
             lines.remove(at);
         }
@@ -66,7 +73,8 @@ fn tokens(r: &mut Random, line: &str) -> String {
         return hostile::construct(r);
     }
     let at = r.below(t.len());
-    match r.below(7) {
+    match r.below(8) {
+        7 => t.insert(at, r.pick(&hostile::INJECTIONS).to_string()),
         0 => t[at] = hostile::token(r),
         1 => t.insert(at, hostile::token(r)),
         2 => {
@@ -84,10 +92,18 @@ fn tokens(r: &mut Random, line: &str) -> String {
     t.concat()
 }
 
+/// A byte inserted or replaced: printable, or now and then a control byte or one that is
+/// not UTF-8 (a lone continuation or lead byte, 0xFF). The targets take text, so such a
+/// byte reaches them as the replacement character U+FFFD, as `from_utf8_lossy` reads it;
+/// the command line's own refusal of it is covered by `tests/reproducers/`.
 fn bytes(r: &mut Random, line: &str) -> String {
     let mut b = line.as_bytes().to_vec();
     let at = r.below(b.len() + 1);
-    let printable = b' ' + r.below(95) as u8;
+    let printable = match r.below(8) {
+        0 => *r.pick(&[0x1b, 0x00, 0x07, 0x08, 0x0d, 0x7f]),
+        1 => *r.pick(&[0x80, 0xbf, 0xc3, 0xe2, 0xf0, 0xff]),
+        _ => b' ' + r.below(95) as u8,
+    };
     if r.one_in(2) || b.is_empty() || at == b.len() {
         b.insert(at, printable);
     } else {

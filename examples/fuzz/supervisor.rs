@@ -3,6 +3,16 @@
 //! crash, starts a new worker in its place with a fresh stream of inputs, and at the end
 //! prints the summary: inputs run, inputs per second, and each finding with its count, when
 //! it was first seen and the file that holds its input.
+//!
+//! Memory: each worker runs under `ulimit -v` [`MEMORY_LIMIT_KB`] (1 GiB of address space,
+//! RLIMIT_AS, set by `/bin/sh` before it `exec`s the worker): the issue's own acceptance test,
+//! and a guard for the machine (an input that asks for 3 GB fails its allocation instead of
+//! pushing everyone into swap). An allocation past the limit aborts the worker with Rust's
+//! "memory allocation of N bytes failed", kept as a `memory` finding. Polling VmHWM instead
+//! would miss a spike between two polls and let it reach the machine. The address space is
+//! more than the memory used: the worker's baseline (program, thread stacks, allocator
+//! arenas, kept few by `MALLOC_ARENA_MAX=2`) is some 100 MB of it, so a `memory` finding
+//! is confirmed on the binary with `ulimit -v 1048576` before it becomes a reproducer.
 
 use crate::finding::{Class, Finding};
 use crate::worker::HANG_EXIT;
@@ -32,6 +42,9 @@ enum Report {
         died: Option<String>,
     },
 }
+
+/// The address space of a worker, in KiB (`ulimit -v`): 1 GiB.
+pub const MEMORY_LIMIT_KB: u64 = 1 << 20;
 
 /// A finding's tally.
 struct Tally {
@@ -80,7 +93,11 @@ pub fn run(options: &Options, dir: &Path) -> i32 {
                 if let Some(why) = died {
                     let current = current_file(dir, job);
                     let input = std::fs::read_to_string(&current).unwrap_or_default();
-                    let finding = Finding::of_input(Class::Crash, &why, &input);
+                    let class = match why.contains("memory allocation of") {
+                        true => Class::Memory,
+                        false => Class::Crash,
+                    };
+                    let finding = Finding::of_input(class, &why, &input);
                     let path = finding.path(&findings, options.target.extension());
                     let _ = std::fs::copy(&current, &path);
                     note(finding, path.display().to_string());
@@ -140,7 +157,11 @@ pub fn current_file(dir: &Path, job: u64) -> PathBuf {
 /// Starts worker `job` in `generation` and a thread that passes on its reports.
 fn spawn(options: &Options, job: u64, generation: u64, end_ms: u64, tell: Sender<Report>) {
     let exe = std::env::current_exe().expect("the fuzzer's path");
-    let mut child = Command::new(exe)
+    let mut child = Command::new("/bin/sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {MEMORY_LIMIT_KB} && exec \"$0\" \"$@\""))
+        .arg(exe)
+        .env("MALLOC_ARENA_MAX", "2")
         .arg(options.target.name())
         .args(["--seed", &options.seed.to_string()])
         .args(["--out", &options.out.display().to_string()])

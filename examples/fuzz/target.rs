@@ -7,9 +7,14 @@
 //! `kinetics check`) is in [`crate::check`].
 //!
 //! Each run returns the first broken promise it sees (a panic aside: the worker catches it);
-//! a clean refusal is no finding.
+//! a clean refusal is no finding. Every output and error message is checked for `inf`/`NaN`
+//! and for raw control characters; `solve`'s worked solution is also rendered in LaTeX
+//! (standalone), Markdown and HTML and checked for markup injected from the scene's title
+//! and names (issue 29).
 
-use crate::finding::{longest_digit_run, non_finite_word, Class, Finding};
+use crate::finding::{
+    control_name, injected, longest_digit_run, non_finite_word, raw_control, Class, Finding, Markup,
+};
 use kinetics::algebra::{vector, AlgebraError, Axis, Domains, Expr};
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice};
 use kinetics::numeric::rigid_body::sample_sink::Sample;
@@ -125,10 +130,19 @@ fn solve(text: &str) -> Outcome {
     let scene = parse_scene("fuzz.scene", text).map_err(|d| located(&d, text, true))?;
     let analysis = analyse(&scene).map_err(|d| located(&d, text, true))?;
     check_numeric_requests(&scene, &analysis).map_err(|d| located(&d, text, true))?;
-    Ok(printed(
-        &render(&scene, &analysis, Format::Text, false),
-        text,
-    )?)
+    printed(&render(&scene, &analysis, Format::Text, false), text)?;
+    for (format, markup) in [
+        (Format::Latex, Markup::Latex),
+        (Format::Markdown, Markup::Markdown),
+        (Format::Html, Markup::Html),
+    ] {
+        let page = render(&scene, &analysis, format, true);
+        printed(&page, text)?;
+        if let Some(what) = injected(&page, markup) {
+            return Err(Some(Finding::new(Class::Injection, "solve page: ", what)));
+        }
+    }
+    Ok(())
 }
 
 fn simulate(text: &str) -> Outcome {
@@ -171,6 +185,13 @@ fn simulate(text: &str) -> Outcome {
 /// What is wrong with a refusal, if anything: a place outside the input or on a comment
 /// line of a scene, or a quoted number longer than any the input holds.
 pub fn located(d: &Diagnostic, text: &str, scene: bool) -> Option<Finding> {
+    if let Some(c) = raw_control(&d.render()) {
+        return Some(Finding::new(
+            Class::Control,
+            "error message prints ",
+            control_name(c),
+        ));
+    }
     let line = text.lines().nth(d.line.wrapping_sub(1));
     let said = format!("{} {}", d.message, d.help.as_deref().unwrap_or_default());
     // The end of the input is a place: where a missing line goes.
@@ -205,8 +226,12 @@ fn words(message: &str) -> String {
         .join(" ")
 }
 
-/// Checks printed output for an `inf` or `NaN` the input did not hold itself.
+/// Checks printed output for an `inf` or `NaN` the input did not hold itself, and for a
+/// raw control character.
 pub fn printed(output: &str, input: &str) -> Result<(), Finding> {
+    if let Some(c) = raw_control(output) {
+        return Err(Finding::new(Class::Control, "prints ", control_name(c)));
+    }
     match non_finite_word(output, input) {
         Some(word) => Err(Finding::new(Class::NonFinite, "prints ", word)),
         None => Ok(()),

@@ -1,7 +1,8 @@
 //! Every reproducer of issue 14 in `tests/reproducers/`, run one after another through the
 //! real binary: each must end within [`DEADLINE`] with exit code 1 or 2 (0 only where its
 //! file allows a correct result), no signal, no `inf`/`NaN` in either output, and an error
-//! that says where: `--> NAME:LINE:COLUMN`, on a line of the user's statements (not a
+//! that says where: `--> NAME:LINE:COLUMN`, no raw control character (ESC, U+202E) in either
+//! output, on a line of the user's statements (not a
 //! comment), quoting no number longer than the input's own.
 //!
 //! A reproducer is one file, its headers first, each `# key: value`:
@@ -16,6 +17,16 @@
 //! - `# refuse: TEXT` an error about the command line, not the input: no location, but
 //!   standard error names TEXT (placeholders replaced) and nothing is written to standard
 //!   output (no CSV header, no samples).
+//! - `# never: TEXT` standard output must not hold TEXT (markup injected from the input:
+//!   `<script` in Markdown).
+//! - `# repeat: N` (`.expr` only) the expression is the body's first line repeated N times,
+//!   then its second line if it has one (`a^2*b^3*` 131072 times, then `c`: a 1 MiB input in
+//!   a small file). It is given on standard input (`-`, named `<stdin>`): an argument is
+//!   limited to 128 KiB.
+//!
+//! A file need not be UTF-8 (a `.scene` of bytes that are not is given by its path); its
+//! headers and lines are read with such bytes replaced, after a byte-order mark if it starts
+//! with one.
 //!
 //! The fuzzer (`examples/fuzz`) takes the same files as its seed corpus.
 
@@ -36,6 +47,7 @@ struct Reproducer {
     at: Option<usize>,
     ok: Option<String>,
     refuse: Option<String>,
+    never: Option<String>,
     /// The expression (for `.expr`) or the scene's text (for `.scene`).
     text: String,
     /// The name diagnostics give the input: `input` or the scene's path.
@@ -44,6 +56,8 @@ struct Reproducer {
     input: String,
     /// A claim for `check`: the value of `--claim`, not after `--`.
     claim: bool,
+    /// The expression on standard input (the input is then `-`): a `# repeat:`.
+    stdin: Option<String>,
 }
 
 fn header<'a>(text: &'a str, key: &str) -> Option<&'a str> {
@@ -53,7 +67,10 @@ fn header<'a>(text: &'a str, key: &str) -> Option<&'a str> {
 }
 
 fn read(path: &Path, scratch: &Path) -> Reproducer {
-    let text = std::fs::read_to_string(path).expect("a reproducer is UTF-8 text");
+    let bytes = std::fs::read(path).expect("a reproducer is readable");
+    // A byte-order mark before the headers is the input's (a scene that starts with one).
+    let text = String::from_utf8_lossy(&bytes).into_owned();
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text).to_string();
     let substitute = |s: &str| {
         s.replace(
             "MISSING",
@@ -79,16 +96,28 @@ fn read(path: &Path, scratch: &Path) -> Reproducer {
         let name = if claim { "claim 1" } else { "input" };
         (name.to_string(), expression.clone(), expression)
     };
+    let repeat = header(&text, "repeat").map(|n| n.trim().parse().expect("# repeat: a count"));
+    let (name, input, body, stdin) = match repeat {
+        Some(n) => {
+            let mut body = text.lines().filter(|l| !l.starts_with("# "));
+            let expression = body.next().unwrap_or_default().repeat(n) + body.next().unwrap_or("");
+            let stdin = Some(expression.clone());
+            ("<stdin>".to_string(), "-".to_string(), expression, stdin)
+        }
+        None => (name, input, body, None),
+    };
     Reproducer {
         path: path.to_path_buf(),
         args: run.split_whitespace().map(substitute).collect(),
         at: header(&text, "at").map(|l| l.trim().parse().expect("# at: a line number")),
         ok: header(&text, "ok").map(str::to_string),
         refuse: header(&text, "refuse").map(substitute),
+        never: header(&text, "never").map(str::to_string),
         text: body,
         name,
         input,
         claim,
+        stdin,
     }
 }
 
@@ -139,11 +168,20 @@ fn run(r: &Reproducer) -> Result<Outcome, String> {
     }
     let mut child = command
         .arg(&r.input)
-        .stdin(Stdio::null())
+        .stdin(match r.stdin {
+            Some(_) => Stdio::piped(),
+            None => Stdio::null(),
+        })
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
         .map_err(|e| format!("the binary does not start: {e}"))?;
+    if let (Some(text), Some(mut stdin)) = (r.stdin.clone(), child.stdin.take()) {
+        // Written by a thread, so that a binary that never reads it cannot block the test.
+        std::thread::spawn(move || {
+            let _ = std::io::Write::write_all(&mut stdin, text.as_bytes());
+        });
+    }
     let stdout = drain(child.stdout.take().expect("piped"));
     let stderr = drain(child.stderr.take().expect("piped"));
     let start = Instant::now();
@@ -227,6 +265,16 @@ fn problems(r: &Reproducer) -> Vec<String> {
         if let Some(word) = non_finite(text) {
             found.push(format!("{stream} prints a non-finite number: {word}"));
         }
+        let control = |c: char| {
+            (c.is_control() && c != '\n' && c != '\t')
+                || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
+        };
+        if let Some(c) = text.chars().find(|&c| control(c)) {
+            found.push(format!("{stream} prints the control character {c:?} raw"));
+        }
+    }
+    if let Some(never) = r.never.as_ref().filter(|n| o.stdout.contains(n.as_str())) {
+        found.push(format!("stdout holds {never:?}"));
     }
     let answered = r.ok.as_ref().is_some_and(|ok| o.stdout.contains(ok));
     // A claim's verdicts `differs` and `undecided` are answers too.
@@ -260,7 +308,9 @@ fn problems(r: &Reproducer) -> Vec<String> {
                 found.push(format!("points at line {line}, not {}", r.at.unwrap_or(0)));
             }
             let pointed = r.text.lines().nth(line.wrapping_sub(1)).unwrap_or("#");
-            if r.name != "input" && pointed.trim_start().starts_with('#') {
+            if !matches!(r.name.as_str(), "input" | "<stdin>")
+                && pointed.trim_start().starts_with('#')
+            {
                 found.push(format!("points at line {line}, a comment: {first}"));
             }
         }

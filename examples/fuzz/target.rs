@@ -98,7 +98,8 @@ fn expression(text: &str, form: Form) -> Outcome {
     };
     if let Form::AsWritten = form {
         // `latex` writes the text as written too (`parse::as_written`).
-        let written = statement_as_written("input", text).map_err(|d| located(&d, text, false))?;
+        let (_, written) =
+            statement_as_written("input", text).map_err(|d| located(&d, text, false))?;
         printed(&written.latex, text)?;
         printed(&written.text, text)?;
     }

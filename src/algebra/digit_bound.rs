@@ -26,11 +26,17 @@ pub const MAX_DECIMAL_EXPONENT: u64 = 4096;
 const BITS_PER_DIGIT: f64 = std::f64::consts::LOG2_10;
 
 impl Q {
-    /// An upper bound on the bits of the larger part of `Π qᵢ`: the parts' lengths add.
+    /// An upper bound on the bits of the larger part of `Π qᵢ`: the parts' lengths add,
+    /// but for a part `1` (one bit), which multiplies nothing (a product of 40,000 symbols,
+    /// each with the coefficient 1, was refused as a number of 10,000 digits).
     pub fn product_bits<'a>(factors: impl IntoIterator<Item = &'a Q>) -> u64 {
+        let multiplying = |bits: u64| if bits == 1 { 0 } else { bits };
         let (num, den) = factors.into_iter().fold((0u64, 0u64), |(n, d), q| {
             let (qn, qd) = q.bit_lengths();
-            (n.saturating_add(qn), d.saturating_add(qd))
+            (
+                n.saturating_add(multiplying(qn)),
+                d.saturating_add(multiplying(qd)),
+            )
         });
         num.max(den)
     }

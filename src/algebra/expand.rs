@@ -66,7 +66,12 @@ impl Expr {
 /// terms of a sum and of a product of sums are gathered in one list and summed once.
 fn expand_into(e: &Expr, terms: &mut Operands) -> Result<(), AlgebraError> {
     match e.view() {
-        View::Add(xs) => xs.iter().try_for_each(|x| expand_into(x, terms)),
+        // Each term's expansion is bounded on its own; their sum, before like terms combine,
+        // by the count gathered so far (40 products of 65,536 terms each passed 1 GiB).
+        View::Add(xs) => xs.iter().try_for_each(|x| {
+            expand_into(x, terms)?;
+            check_uncombined(terms.len())
+        }),
         View::Mul(_) => expand_product(e, terms),
         _ if is_power_of_symbol(e) => {
             terms.push(e.clone());
@@ -244,11 +249,7 @@ fn power_of_sum(base: &Expr, n: &Q) -> Result<Expr, AlgebraError> {
 /// multiplied out (a term's count is the product of its whole powers' multinomial counts),
 /// and again as they are gathered, for sums nested deeper.
 fn whole_powers_multiplied_out(terms: Operands) -> Result<Operands, AlgebraError> {
-    let too_many = || AlgebraError::TooLarge {
-        what: "expanding the power".into(),
-        size: format!("more than {MAX_UNCOMBINED_TERMS} uncombined"),
-        limit: MAX_EXPANDED_TERMS,
-    };
+    let too_many = || too_many_uncombined("the power");
     let counted: f64 = terms.iter().map(multiplied_out_terms).sum();
     if counted > MAX_UNCOMBINED_TERMS as f64 {
         return Err(too_many());
@@ -356,6 +357,25 @@ pub(super) fn multinomial_terms(t: usize, n: u64) -> f64 {
     let k = (t as u64 - 1).min(n);
     let top = n + t as u64 - 1;
     (0..k).fold(1.0, |acc, i| acc * (top - i) as f64 / (i + 1) as f64)
+}
+
+/// Refuses a sum whose terms, gathered before like terms combine, pass
+/// [`MAX_UNCOMBINED_TERMS`].
+fn check_uncombined(gathered: usize) -> Result<(), AlgebraError> {
+    match gathered > MAX_UNCOMBINED_TERMS {
+        true => Err(too_many_uncombined("the sum")),
+        false => Ok(()),
+    }
+}
+
+/// The refusal of an expansion of `what` that gathers more than [`MAX_UNCOMBINED_TERMS`]
+/// terms before like terms combine.
+fn too_many_uncombined(what: &str) -> AlgebraError {
+    AlgebraError::TooLarge {
+        what: format!("expanding {what}"),
+        size: format!("more than {MAX_UNCOMBINED_TERMS} uncombined"),
+        limit: MAX_EXPANDED_TERMS,
+    }
 }
 
 fn check_size(what: &str, size: f64) -> Result<(), AlgebraError> {

@@ -33,7 +33,9 @@ impl Expr {
 /// Whether a term is written with a leading minus, and the count of operations of the
 /// rest. A sum's terms share this: a minus turns the addition before it into a subtraction.
 fn term_sign_and_magnitude(e: &Expr) -> (bool, usize) {
-    work::count(1);
+    if work::count_and_spent(1) {
+        return (false, 0);
+    }
     match e.view() {
         View::Num(q) => (q.is_negative(), usize::from(!q.is_integer())),
         View::Sym(_) => (false, 0),

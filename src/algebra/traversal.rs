@@ -3,6 +3,7 @@
 
 use super::expr::{Expr, View};
 use super::symbol::Symbol;
+use super::work;
 
 impl Expr {
     /// Number of nodes in the tree (a measure of size, for limits).
@@ -40,7 +41,9 @@ impl Expr {
             }
         }
         let mut budget = limit;
-        count(self, &mut budget)
+        let within = count(self, &mut budget);
+        work::count((limit - budget) as u64);
+        within
     }
 
     /// Whether `s` occurs anywhere in the expression.

@@ -14,9 +14,9 @@
 //! example spends a few percent of it) and about half a second of work; `PER_BYTE` keeps
 //! a megabyte of input under about two seconds on one core.
 //!
-//! Counting never fails, so infallible routines count too; a fallible routine asks
-//! [`check`] at its steps and refuses with [`AlgebraError::OutOfWork`] once the budget is
-//! spent. That error is not "beyond bounds": it is not passed over by a route of
+//! Counting never fails, so infallible routines count too (and a long walk stops early
+//! once the budget is spent, [`count_and_spent`]); a fallible routine asks [`check`] at its
+//! steps and refuses with [`AlgebraError::OutOfWork`] once the budget is spent. That error is not "beyond bounds": it is not passed over by a route of
 //! `simplify` but ends the command, and [`Budget::run`] refuses a result reached after the
 //! budget was spent, so no form is ever silently left less simplified for lack of work.
 //!
@@ -28,9 +28,9 @@ use super::error::AlgebraError;
 use std::cell::Cell;
 
 /// Operations every input may spend, however short.
-pub const FLOOR: u64 = 40_000_000;
+pub const FLOOR: u64 = 20_000_000;
 /// Operations each byte of input adds to the floor.
-pub const PER_BYTE: u64 = 40;
+pub const PER_BYTE: u64 = 20;
 
 thread_local! {
     /// Operations counted on this thread since the budget began.
@@ -50,6 +50,15 @@ pub fn count(operations: u64) {
 pub fn spend(operations: u64) -> Result<(), AlgebraError> {
     count(operations);
     check()
+}
+
+/// Counts `operations` and tells whether the budget is now spent: an infallible walk may
+/// stop there with any value, since [`Budget::run`] refuses every result reached after it
+/// (a count over a shared subexpression, met once per use, could otherwise run for ever).
+#[inline]
+pub fn count_and_spent(operations: u64) -> bool {
+    count(operations);
+    check().is_err()
 }
 
 /// Refuses once this thread's budget is spent.

@@ -7,7 +7,7 @@ use super::error::CliError;
 use super::input;
 use kinetics::algebra::{vector, AlgebraError, Axis, Expr};
 use kinetics::parse::as_written::statement_as_written;
-use kinetics::parse::{parse_statement, Diagnostic, Statement};
+use kinetics::parse::{Diagnostic, Statement};
 use kinetics::print::{self, Notation};
 
 #[derive(clap::Args)]
@@ -38,14 +38,13 @@ pub fn run(args: Args) -> Result<String, CliError> {
 }
 
 fn shown(args: &Args, name: &str, source: &str) -> Result<String, CliError> {
-    let statement = parse_statement(name, source)?;
+    let (statement, written) = statement_as_written(name, source)?;
     // The textbook's form is formed in any case: what the algebra refuses is refused as written.
     let textbook =
         render_statement(&statement, args.format).map_err(|err| at_input(name, source, err))?;
     if args.textbook {
         return Ok(textbook);
     }
-    let written = statement_as_written(name, source)?;
     Ok(match args.format {
         Format::Text => written.text,
         Format::Latex => written.latex,

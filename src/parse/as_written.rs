@@ -12,7 +12,7 @@
 //! quotient stays on the line (`a^{1/2}`); `30 deg` is `30^\circ`.
 
 use super::diagnostic::Diagnostic;
-use super::expression::{statement_sides, to_ast};
+use super::expression::{lower_expression, statement_of, statement_sides, to_ast, Statement};
 use super::lower::{Ast, Node};
 use crate::algebra::{reads_as_several_letters, Func, Symbol};
 
@@ -23,12 +23,17 @@ pub struct Written {
     pub text: String,
 }
 
-/// The expression or equation `source` as written (parse errors located as
-/// [`parse_statement`](super::parse_statement)'s; the caller lowers it for the algebra's).
-pub fn statement_as_written(source_name: &str, source: &str) -> Result<Written, Diagnostic> {
+/// The expression or equation `source` for the algebra and as written, from one parse (a
+/// megabyte of input is read once): parse errors located as
+/// [`parse_statement`](super::parse_statement)'s, and the algebra's errors of its lowering.
+pub fn statement_as_written(
+    source_name: &str,
+    source: &str,
+) -> Result<(Statement, Written), Diagnostic> {
     let sides = statement_sides(source_name, source)?;
     let mut latex = Vec::new();
     let mut text = Vec::new();
+    let mut exprs = Vec::new();
     for side in sides {
         let node = to_ast(side.into_inner(), source_name, source);
         if let Some(error) = first_error(&node) {
@@ -39,11 +44,13 @@ pub fn statement_as_written(source_name: &str, source: &str) -> Result<Written, 
             Writer { source, notation }.node(&mut s, &node, Level::Sum);
             out.push(s);
         }
+        exprs.push(lower_expression(node, source_name, source)?);
     }
-    Ok(Written {
+    let written = Written {
         latex: latex.join(" = "),
         text: text.join(" = "),
-    })
+    };
+    Ok((statement_of(exprs, source_name, source)?, written))
 }
 
 #[derive(Clone, Copy, PartialEq, Eq)]

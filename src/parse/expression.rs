@@ -98,10 +98,19 @@ fn parse_expression_in(
 /// Parses an expression or an equation `lhs = rhs`.
 pub fn parse_statement(source_name: &str, source: &str) -> Result<Statement, Diagnostic> {
     let sides = statement_sides(source_name, source)?;
-    let mut exprs = sides
+    let exprs = sides
         .into_iter()
         .map(|p| build(p, source_name, source, None))
         .collect::<Result<Vec<_>, _>>()?;
+    statement_of(exprs, source_name, source)
+}
+
+/// The statement whose sides are `exprs`: an expression, or an equation.
+pub(super) fn statement_of(
+    mut exprs: Vec<Expr>,
+    source_name: &str,
+    source: &str,
+) -> Result<Statement, Diagnostic> {
     match exprs.len() {
         1 => Ok(Statement::Expression(exprs.remove(0))),
         2 => {
@@ -245,6 +254,15 @@ fn build(
     let mut lowering = Lowering::expression(source_name, source);
     lowering.units = units;
     lowering.lower(node)
+}
+
+/// The expression of a parse tree (no units), for the algebra.
+pub(super) fn lower_expression(
+    node: Node,
+    source_name: &str,
+    source: &str,
+) -> Result<Expr, Diagnostic> {
+    Lowering::expression(source_name, source).lower(node)
 }
 
 fn span_of(p: &Pair<Rule>) -> Span {

@@ -126,7 +126,8 @@ impl Expr {
         if coeff.is_zero() {
             return Expr::zero();
         }
-        work::count(comparisons_to_sort(flat.len()));
+        // The sort, and the comparisons of neighbours that merge like bases.
+        work::count(comparisons_to_sort(flat.len()) + flat.len() as u64);
         flat.sort_by(|a, b| a.base().cmp(b.base()));
         let mut out: Vec<Expr> = Vec::with_capacity(flat.len() + 1);
         let mut merged = false;

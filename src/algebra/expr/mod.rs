@@ -239,7 +239,13 @@ impl Ord for Expr {
                     cmp_operands(&a.0, &b.0).then_with(|| a.1.cmp(&b.1))
                 }
             }
-            (Repr::Func(f, a), Repr::Func(g, b)) => f.cmp(g).then_with(|| a.cmp(b)),
+            (Repr::Func(f, a), Repr::Func(g, b)) => {
+                if Arc::ptr_eq(a, b) {
+                    f.cmp(g)
+                } else {
+                    f.cmp(g).then_with(|| a.cmp(b))
+                }
+            }
             _ => self.rank().cmp(&other.rank()),
         }
     }

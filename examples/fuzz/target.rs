@@ -15,6 +15,7 @@
 use crate::finding::{
     control_name, injected, longest_digit_run, non_finite_word, raw_control, Class, Finding, Markup,
 };
+use kinetics::algebra::work::Budget;
 use kinetics::algebra::{vector, AlgebraError, Axis, Domains, Expr};
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice};
 use kinetics::numeric::rigid_body::sample_sink::Sample;
@@ -61,16 +62,21 @@ impl Target {
 }
 
 /// Runs `text` through the command `run`: what it broke, if anything.
+/// Within the input's work budget, as the binary runs every command: a run that spends it
+/// is refused cleanly (the binary's refusal, located at the input).
 pub fn check(run: &str, text: &str) -> Option<Finding> {
-    let outcome = match run {
+    let outcome = Budget::for_input(text.len()).run(|| match run {
         "simplify" => expression(text, Form::Shortest),
         "latex" => expression(text, Form::AsWritten),
         "simplify --expand" => expression(text, Form::Expanded),
         "solve" => solve(text),
         "simulate --until 1" => simulate(text),
         _ => crate::check::claim(run, text),
-    };
-    outcome.err().flatten()
+    });
+    match outcome {
+        Ok((outcome, _spent)) => outcome.err().flatten(),
+        Err(_out_of_work) => None,
+    }
 }
 
 /// `Err(None)`: refused cleanly; `Err(Some(finding))`: a promise broken.

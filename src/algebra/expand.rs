@@ -315,22 +315,42 @@ fn push_multinomial_terms(
     let Some((first, rest)) = powers.split_first() else {
         return;
     };
+    if n == 0 {
+        // Every remaining term to the power 0: the product so far, without walking them.
+        out.push(Expr::mul_all(
+            std::iter::once(Expr::num(scale)).chain(factors.iter().cloned()),
+        ));
+        return;
+    }
+    // A term's power 0 is the factor 1, left out: a leaf multiplies the at most `n` factors
+    // of positive powers, not one per term of the sum (the square of a sum of t terms took
+    // t³ steps).
+    let chosen = |k: usize, factors: &mut Vec<Expr>| {
+        if k > 0 {
+            factors.push(first[k].1.clone());
+        }
+    };
+    let unchosen = |k: usize, factors: &mut Vec<Expr>| {
+        if k > 0 {
+            factors.pop();
+        }
+    };
     if rest.is_empty() {
-        let (c, m) = &first[n];
-        factors.push(m.clone());
-        let term =
-            Expr::mul_all(std::iter::once(Expr::num(&scale * c)).chain(factors.iter().cloned()));
-        factors.pop();
+        chosen(n, factors);
+        let term = Expr::mul_all(
+            std::iter::once(Expr::num(&scale * &first[n].0)).chain(factors.iter().cloned()),
+        );
+        unchosen(n, factors);
         out.push(term);
         return;
     }
     let mut binomial = Q::ONE;
     for k in (0..=n).rev() {
-        let (c, m) = &first[k];
-        factors.push(m.clone());
+        let c = &first[k].0;
+        chosen(k, factors);
         let scale = &(&scale * &binomial) * c;
         push_multinomial_terms(rest, n - k, scale, factors, out);
-        factors.pop();
+        unchosen(k, factors);
         if k > 0 {
             let step = Q::new(k as i64, (n - k + 1) as i64).expect("n - k + 1 ≥ 1");
             binomial = &binomial * &step;

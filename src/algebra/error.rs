@@ -22,7 +22,7 @@ pub enum AlgebraError {
         limit: usize,
     },
     #[error(
-        "the expansion would be longer than {0} symbols and ten-digit groups of numbers; expand a part of it"
+        "the expansion would be longer than {0} symbols and ten-digit groups of numbers (a long name counts once per sixteen letters); expand a part of it"
     )]
     ExpansionTooLong(usize),
     #[error("no value for the symbol {0}")]

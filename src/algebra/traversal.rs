@@ -18,8 +18,9 @@ impl Expr {
 
     /// Whether the tree's size is at most `limit`, counted only up to `limit + 1`: a bound
     /// checked in time proportional to the bound, however large the tree. A node counts 1,
-    /// a number one more per 32 bits of its numerator and denominator (about ten digits),
-    /// so that the size follows the printed length.
+    /// a number one more per 32 bits of its numerator and denominator (about ten digits), a
+    /// symbol one more per 16 bytes of its name, so that the size follows the printed length
+    /// (an expansion of sums of names 1,500 letters long printed 270 MB within the nodes).
     pub fn has_at_most_size(&self, limit: usize) -> bool {
         fn count(e: &Expr, budget: &mut usize) -> bool {
             let cost = match e.view() {
@@ -27,6 +28,7 @@ impl Expr {
                     let (num, den) = q.bit_lengths();
                     1 + usize::try_from((num + den) / 32).unwrap_or(usize::MAX)
                 }
+                View::Sym(s) => 1 + s.name().len() / 16,
                 _ => 1,
             };
             if *budget < cost {

@@ -232,3 +232,66 @@ impl Nesting {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn refused(source: &str) -> Option<String> {
+        check_input("t", source).err().map(|d| d.message)
+    }
+
+    /// `count` links of `link` after `first`: `x` then `^x` 200 times is 200 levels.
+    fn chain(first: &str, link: &str, count: usize) -> String {
+        format!("{first}{}", link.repeat(count))
+    }
+
+    #[test]
+    fn every_way_of_writing_a_power_is_one_level() {
+        for link in ["^x", "**x", "^1e-1", "**1E+5", "^ x", "^(x)", "^sin(x)"] {
+            let message = refused(&chain("x", link, MAX_NESTING + 1));
+            assert!(
+                message.is_some_and(|m| m.contains("nested more than 200")),
+                "{link}"
+            );
+        }
+        // Without a parenthesis of their own, 200 links are 200 levels, the most accepted.
+        for link in ["^x", "**x", "^1e-1", "**1E+5", "^ x"] {
+            assert_eq!(refused(&chain("x", link, MAX_NESTING)), None, "{link}");
+        }
+    }
+
+    #[test]
+    fn a_signed_exponent_is_part_of_its_number() {
+        // 1e-1 is one number: the '-' neither ends the chain nor counts as a sign.
+        assert!(refused(&chain("1e-1", "^1e-1", MAX_NESTING + 1)).is_some());
+        assert_eq!(refused(&chain("1e-1", "^1e-1", MAX_NESTING)), None);
+    }
+
+    #[test]
+    fn prefix_signs_and_parentheses_add_to_the_powers() {
+        // -x^-x^-x…: a sign and a power per link.
+        assert_eq!(refused(&chain("-x", "^-x", MAX_NESTING / 2 - 1)), None);
+        assert!(refused(&chain("-x", "^-x", MAX_NESTING / 2 + 1)).is_some());
+        // x^(x^(x^…)): a parenthesis and a power per level.
+        let nested = |n: usize| format!("x{}{}", "^(x".repeat(n), ")".repeat(n));
+        assert_eq!(refused(&nested(MAX_NESTING / 2)), None);
+        assert!(refused(&nested(MAX_NESTING / 2 + 1)).is_some());
+    }
+
+    #[test]
+    fn looser_operators_end_a_chain() {
+        // Products, sums and juxtaposed factors of powers are long, not deep.
+        for link in [
+            " + x^2", "*x^2", " x^2", "/x^2", " - x^2", " (x)^2", ", x^2",
+        ] {
+            assert_eq!(
+                refused(&chain("x^2", link, 5 * MAX_NESTING)),
+                None,
+                "{link}"
+            );
+        }
+        // A callee's parenthesis is not a product: the chain goes on through it.
+        assert!(refused(&chain("x", "^f(x)", MAX_NESTING + 1)).is_some());
+    }
+}

@@ -2,7 +2,8 @@
 //! real binary: each must end within [`DEADLINE`] with exit code 1 or 2 (0 only where its
 //! file allows a correct result), no signal, no `inf`/`NaN` in either output, and an error
 //! that says where: `--> NAME:LINE:COLUMN`, on a line of the user's statements (not a
-//! comment), quoting no number longer than the input's own.
+//! comment), quoting no number longer than the input's own, and no character a reader cannot
+//! see (ESC, a right-to-left override: `kinetics::visible::is_hidden`) as itself.
 //!
 //! A reproducer is one file, its headers first, each `# key: value`:
 //! - `# run: ARGS` the command and its flags; the input is added last, after `--`: the
@@ -226,6 +227,9 @@ fn problems(r: &Reproducer) -> Vec<String> {
     for (stream, text) in [("stdout", &o.stdout), ("stderr", &o.stderr)] {
         if let Some(word) = non_finite(text) {
             found.push(format!("{stream} prints a non-finite number: {word}"));
+        }
+        if let Some(c) = text.chars().find(|c| kinetics::visible::is_hidden(*c)) {
+            found.push(format!("{stream} prints {c:?} as itself, not escaped"));
         }
     }
     let answered = r.ok.as_ref().is_some_and(|ok| o.stdout.contains(ok));

@@ -110,3 +110,120 @@ fn an_angle_in_scientific_notation_is_fenced_before_its_degree_sign() {
         "{html}"
     );
 }
+
+/// A title a hostile user might write: a tag, a right-to-left override, an ESC sequence,
+/// the bell, an ampersand, mathematics with `<` and words with `<` in it, and letters of
+/// scripts the page's fonts lack (Greek, accented Latin, Chinese, an emoji).
+const HOSTILE_TITLE: &str = "<script>alert(1)</script> \u{202e}drawkcab \u{1b}[2J\u{1b}[31m \
+     & $a<b$ $\\text{<img src=x>&amp;}$ θ é 中 😀 \u{7}";
+
+/// The sliding box of the examples under [`HOSTILE_TITLE`], written in `dir`.
+fn hostile_scene(dir: &std::path::Path) -> String {
+    let example = std::fs::read_to_string(crate::common::binary::scene("sliding_box"))
+        .expect("the example is there");
+    let body: Vec<&str> = example
+        .lines()
+        .filter(|l| !l.starts_with("title"))
+        .collect();
+    let scene = dir.join("hostile.scene");
+    std::fs::write(
+        &scene,
+        format!("title {HOSTILE_TITLE}\n{}\n", body.join("\n")),
+    )
+    .expect("the scene is written");
+    scene.to_str().expect("a UTF-8 path").to_string()
+}
+
+/// Whether `text` shows a character a reader cannot see as itself.
+fn hidden(text: &str) -> Option<char> {
+    text.chars().find(|c| kinetics::visible::is_hidden(*c))
+}
+
+/// The standalone LaTeX of a scene under a hostile title compiles with pdflatex: `<` and
+/// `>` are `\textless{}` and `\textgreater{}` (OT1 would set ¡ and ¿), the characters the
+/// fonts lack and the controls are their escapes in typewriter letters.
+#[test]
+fn a_hostile_title_compiles_in_latex() {
+    let dir = scratch("hostile-latex");
+    let path = hostile_scene(&dir);
+    let (code, latex, err) = kinetics(&["solve", "--format", "latex", "--standalone", &path]);
+    assert_eq!(code, 0, "{err}");
+    let title = latex
+        .lines()
+        .find(|l| l.starts_with(r"\section*"))
+        .unwrap_or_default();
+    for shown in [
+        r"\textless{}script\textgreater{}",
+        r"\texttt{\textbackslash u\{202e\}}",
+        r"\texttt{\textbackslash u\{1b\}}",
+        r"\texttt{\textbackslash u\{4e2d\}}",
+        r"$\theta$",
+        "é",
+    ] {
+        assert!(title.contains(shown), "{shown} in {title}");
+    }
+    assert_eq!(hidden(&latex), None, "{title}");
+    let error = latex_error(&dir, "hostile", &latex);
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(error.is_none(), "{}\n\n{title}", error.unwrap_or_default());
+}
+
+/// Markdown and HTML of the same scene hold no tag of the title (no raw `<script`, `<img`
+/// anywhere, `<` and `>` not at all in Markdown), no `&` of it as itself, and the text,
+/// Markdown and HTML pages show the controls and the override escaped.
+#[test]
+fn a_hostile_title_injects_nothing_in_markdown_html_or_text() {
+    let dir = scratch("hostile-pages");
+    let path = hostile_scene(&dir);
+    let page = |format: &str| {
+        let (code, out, err) = kinetics(&["solve", "--format", format, &path]);
+        assert_eq!(code, 0, "{format}: {err}");
+        out
+    };
+    let (markdown, html, text) = (page("markdown"), page("html"), page("text"));
+    let _ = std::fs::remove_dir_all(&dir);
+    let heading = markdown.lines().next().unwrap_or_default();
+    assert!(
+        !markdown.contains("<script") && !markdown.contains("<img"),
+        "{heading}"
+    );
+    assert!(!markdown.contains(['<', '>']), "{heading}");
+    assert!(
+        !heading.contains("& ") && !heading.contains("&amp;}"),
+        "{heading}"
+    );
+    assert!(heading.contains(r"$a \lt b$"), "{heading}");
+    assert!(
+        heading.contains(r"$\lt \text{img src=x}\gt \And \text{amp;}$"),
+        "{heading}"
+    );
+    assert!(
+        !html.contains("<script") && !html.contains("<img"),
+        "{html}"
+    );
+    for (format, page) in [("markdown", &markdown), ("html", &html), ("text", &text)] {
+        assert_eq!(hidden(page), None, "{format}");
+        assert!(
+            page.contains(r"u{202e}") && page.contains(r"u{1b}"),
+            "{format}"
+        );
+    }
+}
+
+/// Every character the LaTeX escaper sets as itself compiles in a title, and every other
+/// one is escaped: all of U+00A0 to U+017F, the common punctuation, other scripts, symbols
+/// and controls, in a section title and in text.
+#[test]
+fn every_character_of_a_title_compiles_in_latex() {
+    let dir = scratch("title-characters");
+    let characters: String = ('\u{a0}'..='\u{17f}')
+        .chain("–—‘’“”†‡•…‰€™←≤√∞ΣΩωאبक中あ한😀\u{0}\u{8}\u{7f}\u{85}\u{200b}\u{200f}\u{2028}\u{fffd}\u{301}".chars())
+        .collect();
+    let words = kinetics::print::markup::latex_words(&characters);
+    let document = format!(
+        "\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\usepackage{{amssymb}}\n\\begin{{document}}\n\\section*{{{words}}}\n{words}\n\\end{{document}}\n"
+    );
+    let error = latex_error(&dir, "characters", &document);
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(error.is_none(), "{}\n\n{words}", error.unwrap_or_default());
+}

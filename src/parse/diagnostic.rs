@@ -85,7 +85,11 @@ impl Diagnostic {
         let number = self.line.to_string();
         let pad = " ".repeat(number.len());
         let caret_pad = caret_margin(&self.source_line, self.column.saturating_sub(1));
-        let width = self.span.len().clamp(1, 80);
+        let width = caret_width(
+            &self.source_line,
+            self.column.saturating_sub(1),
+            self.span.len(),
+        );
         let mut out = format!(
             "error: {}\n{pad}--> {}:{}:{}\n{pad} |\n{number} | {}\n{pad} | {caret_pad}{} here\n",
             visible::escaped(&self.message),
@@ -121,6 +125,26 @@ fn caret_margin(line: &str, before: usize) -> String {
     margin
 }
 
+/// How many carets stand under the `bytes` of `line` after its first `before` characters:
+/// one per character as shown (an escape as wide as it is), one per byte past the line's
+/// end; at least 1, at most 80.
+fn caret_width(line: &str, before: usize, bytes: usize) -> usize {
+    let mut width = 0;
+    let mut covered = 0;
+    for c in line.chars().skip(before) {
+        if covered >= bytes {
+            break;
+        }
+        covered += c.len_utf8();
+        width += if visible::is_hidden(c) {
+            visible::escape_len(c)
+        } else {
+            1
+        };
+    }
+    (width + bytes.saturating_sub(covered)).clamp(1, 80)
+}
+
 #[cfg(test)]
 mod tests {
     use super::Diagnostic;
@@ -150,6 +174,13 @@ mod tests {
         let caret = lines[4].split_once(" | ").map(|p| p.1).unwrap_or_default();
         assert_eq!(quoted, "a\\u{1b}[2J\tb $");
         assert_eq!(caret.find('^'), quoted.find('$'), "{shown}");
+    }
+
+    /// A caret stands under each character of the span, however many bytes it takes.
+    #[test]
+    fn one_caret_per_character() {
+        let d = Diagnostic::at("f", "a ωω\u{fffd} b", 2, 9, "here");
+        assert!(d.render().contains(" |   ^^^ here\n"), "{}", d.render());
     }
 
     /// A line of a CR LF file is quoted without its CR.

@@ -17,6 +17,10 @@
 //! - `# refuse: TEXT` an error about the command line, not the input: no location, but
 //!   standard error names TEXT (placeholders replaced) and nothing is written to standard
 //!   output (no CSV header, no samples).
+//! - `# bytes: escaped` (a `.scene`) the input is not the file itself but the lines after
+//!   its headers, each `\xHH` in them the byte HH: a scene that is not UTF-8, or one that
+//!   begins with a byte-order mark. It is written to a scratch file of the same name, which
+//!   the command reads; `# at:` counts that input's lines.
 //!
 //! The fuzzer (`examples/fuzz`) takes the same files as its seed corpus.
 
@@ -68,7 +72,21 @@ fn read(path: &Path, scratch: &Path) -> Reproducer {
     let run = header(&text, "run").unwrap_or_else(|| panic!("{}: no '# run:'", path.display()));
     let scene = path.extension().is_some_and(|e| e == "scene");
     let claim = path.extension().is_some_and(|e| e == "claim");
-    let (name, input, body) = if scene {
+    let bytes = header(&text, "bytes");
+    let (name, input, body) = if let (true, Some(escaped)) = (scene, bytes) {
+        assert_eq!(escaped, "escaped", "{}: '# bytes: escaped'", path.display());
+        let body: String = text
+            .lines()
+            .skip_while(|l| l.starts_with("# "))
+            .map(|l| format!("{l}\n"))
+            .collect();
+        let decoded = unescape_bytes(&body);
+        let written = scratch.join(path.file_name().expect("a file name"));
+        std::fs::write(&written, &decoded).expect("the input is written");
+        let shown = written.display().to_string();
+        let lossy = String::from_utf8_lossy(&decoded).into_owned();
+        (shown.clone(), shown, lossy)
+    } else if scene {
         let shown = path.display().to_string();
         (shown.clone(), shown, text.clone())
     } else {
@@ -91,6 +109,30 @@ fn read(path: &Path, scratch: &Path) -> Reproducer {
         input,
         claim,
     }
+}
+
+/// `text` as bytes, each `\xHH` (two hexadecimal digits) the byte HH.
+fn unescape_bytes(text: &str) -> Vec<u8> {
+    let mut bytes = Vec::with_capacity(text.len());
+    let mut rest = text.as_bytes();
+    while let Some((&first, tail)) = rest.split_first() {
+        let byte = tail
+            .strip_prefix(b"x")
+            .filter(|_| first == b'\\')
+            .and_then(|t| t.get(..2))
+            .and_then(|h| u8::from_str_radix(std::str::from_utf8(h).ok()?, 16).ok());
+        match byte {
+            Some(b) => {
+                bytes.push(b);
+                rest = &tail[3..];
+            }
+            None => {
+                bytes.push(first);
+                rest = tail;
+            }
+        }
+    }
+    bytes
 }
 
 /// The reproducers, sorted by name.

@@ -86,6 +86,7 @@ pub mod parse;
 pub mod print;
 pub mod scene;
 pub mod solution;
+pub mod visible;
 
 // The expression algebra.
 pub use algebra::{AlgebraError, Axis, Expr, Matrix, Symbol, Vector};

@@ -15,7 +15,7 @@ use super::verdict::{Component, Report, Verdict};
 use crate::algebra::{Axis, Domains, Expr};
 use crate::mechanics::derivation::presented;
 use crate::parse::parse_expression;
-use crate::print::{self, Notation};
+use crate::print::{self, markup, Notation};
 use serde_json::{json, Value as Json};
 
 impl Verdict {
@@ -165,7 +165,12 @@ fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
 /// (`2 T`, `\Sigma M_x`); the side of a claim of pure algebra as written, in typewriter type
 /// (read back, its cross products would be worked out).
 fn side_latex(report: &Report) -> String {
-    let written = || format!(r"\text{{\texttt{{{}}}}}", escape_text(&report.correct_side));
+    let written = || {
+        format!(
+            r"\text{{\texttt{{{}}}}}",
+            markup::latex_words(&report.correct_side)
+        )
+    };
     if !report.correct_is_derived {
         return written();
     }
@@ -181,12 +186,15 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
         .unwrap_or_default();
     let mut out = format!(
         "\\paragraph{{{} {}{reading}.}} \\texttt{{{}}}\n",
-        escape_text(label),
+        markup::latex_words(label),
         report.verdict.word(),
-        escape_text(&report.claim)
+        markup::latex_words(&report.claim)
     );
     if let Some(odd) = &report.odd_term {
-        out.push_str(&format!("{}.\n", escape_text(&odd_term_sentence(odd))));
+        out.push_str(&format!(
+            "{}.\n",
+            markup::latex_words(&odd_term_sentence(odd))
+        ));
         return out;
     }
     let name = side_latex(report);
@@ -216,7 +224,7 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
         }
         out.push_str("\n\\end{align*}\n");
         if let Some(why) = &c.undecided_because {
-            out.push_str(&format!("Undecided: {}.\n", escape_text(why)));
+            out.push_str(&format!("Undecided: {}.\n", markup::latex_words(why)));
         }
         if let Some(d) = &c.diagnosis {
             out.push_str(&diagnosis_latex(d, c, domains));
@@ -270,29 +278,11 @@ fn explanation_latex(explanation: &str) -> String {
         .map(
             |(k, piece)| match (k % 2, parse_expression("explanation", piece)) {
                 (1, Ok(e)) => format!("${}$", print::latex(&e)),
-                (1, Err(_)) => format!(r"\texttt{{{}}}", escape_text(piece)),
-                _ => escape_text(piece),
+                (1, Err(_)) => format!(r"\texttt{{{}}}", markup::latex_words(piece)),
+                _ => markup::latex_words(piece),
             },
         )
         .collect()
-}
-
-fn escape_text(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for ch in s.chars() {
-        match ch {
-            '_' | '&' | '%' | '$' | '#' | '{' | '}' => {
-                out.push('\\');
-                out.push(ch);
-            }
-            '^' => out.push_str(r"\^{}"),
-            '~' => out.push_str(r"\~{}"),
-            '\\' => out.push_str(r"\textbackslash{}"),
-            '×' => out.push_str(r"$\times$"),
-            _ => out.push(ch),
-        }
-    }
-    out
 }
 
 /// The form in text and in LaTeX, simplified once for both.

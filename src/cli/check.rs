@@ -60,7 +60,7 @@ pub fn run(args: Args) -> ExitCode {
     match checked(&args) {
         Ok(code) => code,
         Err(e) => {
-            let _ = writeln!(std::io::stderr(), "{}", e.to_string().trim_end());
+            super::tell(e.to_string().trim_end());
             ExitCode::from(INPUT_ERROR)
         }
     }
@@ -202,7 +202,7 @@ fn checked(args: &Args) -> Result<ExitCode, CliError> {
     }
     let _ = writeln!(std::io::stdout(), "{stdout}");
     if !stderr.is_empty() {
-        let _ = write!(std::io::stderr(), "{stderr}");
+        super::tell(&stderr);
     }
     Ok(if errors > 0 {
         ExitCode::from(INPUT_ERROR)

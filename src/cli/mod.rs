@@ -63,20 +63,39 @@ enum Command {
 
 /// Runs the command line: the command's output on standard output, or its failure's
 /// message on standard error and exit code 1 (see [`CliError`]).
+///
+/// No message shows a character a reader cannot see as itself: an ESC sequence or a
+/// right-to-left override in an argument, a path or an input is written as its escape
+/// (`\u{1b}`, [`kinetics::visible`]), so an error never drives the terminal. clap's own
+/// refusals of a command line are escaped too (and lose their colours); `--help` and
+/// `--version` are printed as clap prints them.
 pub fn run() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if !e.use_stderr() => e.exit(),
+        Err(e) => {
+            tell(&e.render().to_string());
+            return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+        }
+    };
     match execute(cli.command) {
         Ok(code) => code,
         Err(e) => {
-            let mut message = e.to_string();
-            if !message.ends_with('\n') {
-                message.push('\n');
-            }
-            // With standard error closed there is no one left to tell.
-            let _ = std::io::stderr().write_all(message.as_bytes());
+            tell(&e.to_string());
             ExitCode::FAILURE
         }
     }
+}
+
+/// Writes `message` on standard error as one or more whole lines, each character a reader
+/// cannot see as its escape.
+pub fn tell(message: &str) {
+    let mut message = kinetics::visible::escaped(message).into_owned();
+    if !message.ends_with('\n') {
+        message.push('\n');
+    }
+    // With standard error closed there is no one left to tell.
+    let _ = std::io::stderr().write_all(message.as_bytes());
 }
 
 /// Runs one command and writes its output, if any, as a line. `check` writes its own and

@@ -149,20 +149,26 @@ impl Writer<'_> {
         }
     }
 
-    /// A number as written; `1.5e-3` is `1.5 \times 10^{-3}` in LaTeX.
+    /// A number as written; `1.5e-3` is `1.5 \times 10^{-3}` in LaTeX, which ends in a
+    /// superscript of its own ([`Writer::has_own_superscript`]).
     fn number(&self, out: &mut String, node: &Node) {
-        let written = self
-            .source
-            .get(node.span.0..node.span.1)
-            .unwrap_or("")
-            .trim();
-        match written.split_once(['e', 'E']).filter(|_| self.latex()) {
+        let written = number_text(self.source, node);
+        match scientific(written).filter(|_| self.latex()) {
             Some((mantissa, exponent)) => {
-                let exponent = exponent.trim_start_matches('+');
                 out.push_str(&format!(r"{mantissa} \times 10^{{{exponent}}}"));
             }
             None => out.push_str(written),
         }
+    }
+
+    /// Whether `node` as written in this notation ends in a superscript of its own, so
+    /// that a power of it must be fenced: LaTeX rejects `10^{5}^2`, a double superscript.
+    /// Only a number in scientific notation does, in LaTeX (a power is parenthesised as
+    /// any operand binding more loosely than an atom).
+    fn has_own_superscript(&self, node: &Node) -> bool {
+        self.latex()
+            && matches!(node.ast, Ast::Number(_))
+            && scientific(number_text(self.source, node)).is_some()
     }
 
     fn symbol(&self, out: &mut String, name: &str) {
@@ -275,6 +281,12 @@ impl Writer<'_> {
                 out.push_str(f.page_name());
                 self.superscript(out, exponent);
                 self.function_argument(out, argument);
+            }
+            _ if self.has_own_superscript(base) => {
+                out.push('(');
+                self.bare(out, base);
+                out.push(')');
+                self.superscript(out, exponent);
             }
             _ => {
                 self.node(out, base, Level::Atom);
@@ -426,6 +438,23 @@ impl Writer<'_> {
         });
         self.node(out, n, Level::Power);
     }
+}
+
+/// The text of a number node as the user typed it: its span without the parentheses
+/// around it (`(1e5)` is the number `1e5`; a number's own text holds none).
+fn number_text<'s>(source: &'s str, node: &Node) -> &'s str {
+    source
+        .get(node.span.0..node.span.1)
+        .unwrap_or("")
+        .trim_matches(|c: char| c == '(' || c == ')' || c.is_whitespace())
+}
+
+/// A number in scientific notation as its mantissa and its exponent without a plus sign:
+/// `2.5E+10` is `("2.5", "10")`, `1e-5` `("1", "-5")`; none for a number without one.
+fn scientific(number: &str) -> Option<(&str, &str)> {
+    number
+        .split_once(['e', 'E'])
+        .map(|(mantissa, exponent)| (mantissa, exponent.trim_start_matches('+')))
 }
 
 /// Whether the LaTeX of `node` begins with a digit (after which juxtaposition would read

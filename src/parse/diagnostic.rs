@@ -11,6 +11,7 @@
 //! ```
 
 use super::long_numbers::shorten_long_numbers;
+use crate::visible;
 
 /// An error in user input with its location.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error, miette::Diagnostic)]
@@ -49,7 +50,10 @@ impl Diagnostic {
             .map_or(source.len(), |i| start + i);
         let line = source[..start].matches('\n').count() + 1;
         let column = source[line_start..start].chars().count() + 1;
-        let mut source_line: String = source[line_start..line_end].chars().take(200).collect();
+        // A file's lines may end in CR LF: the CR is the line's end, not a character of it.
+        let line_text = source[line_start..line_end].trim_end_matches('\r');
+        let line_end = line_start + line_text.len();
+        let mut source_line: String = line_text.chars().take(200).collect();
         if source_line.len() < line_end - line_start {
             source_line.push_str(" ...");
         }
@@ -72,23 +76,118 @@ impl Diagnostic {
     }
 
     /// The multi-line display: the one-line error, the location, the line and a caret.
+    /// Characters a reader cannot see ([`visible::is_hidden`]: ESC, a right-to-left
+    /// override) are shown as their escapes, `\u{1b}`, in the message, the name, the line
+    /// and the hint, so no input drives the terminal; the caret stands under the character
+    /// the column counts (a tab in the line is a tab in the caret's margin, an escape as
+    /// many spaces as it is wide).
     pub fn render(&self) -> String {
         let number = self.line.to_string();
         let pad = " ".repeat(number.len());
-        let caret_pad = " ".repeat(self.column.saturating_sub(1).min(200));
-        let width = self.span.len().clamp(1, 80);
+        let caret_pad = caret_margin(&self.source_line, self.column.saturating_sub(1));
+        let width = caret_width(
+            &self.source_line,
+            self.column.saturating_sub(1),
+            self.span.len(),
+        );
         let mut out = format!(
             "error: {}\n{pad}--> {}:{}:{}\n{pad} |\n{number} | {}\n{pad} | {caret_pad}{} here\n",
-            self.message,
-            self.source_name,
+            visible::escaped(&self.message),
+            visible::escaped(&self.source_name),
             self.line,
             self.column,
-            self.source_line,
+            visible::escaped(&self.source_line),
             "^".repeat(width)
         );
         if let Some(help) = &self.help {
-            out.push_str(&format!("{pad} = help: {help}\n"));
+            out.push_str(&format!("{pad} = help: {}\n", visible::escaped(help)));
         }
         out
+    }
+}
+
+/// The blanks before a caret under the character after the first `before` of `line` as
+/// [`Diagnostic::render`] shows it: a tab for a tab, a space for a character, as many as
+/// its escape is wide for a hidden one; spaces past the line's end (at most 200 in all).
+fn caret_margin(line: &str, before: usize) -> String {
+    let before = before.min(200);
+    let mut margin = String::with_capacity(before);
+    let mut chars = line.chars();
+    for _ in 0..before {
+        match chars.next() {
+            Some('\t') => margin.push('\t'),
+            Some(c) if visible::is_hidden(c) => {
+                margin.extend(std::iter::repeat_n(' ', visible::escape_len(c)));
+            }
+            _ => margin.push(' '),
+        }
+    }
+    margin
+}
+
+/// How many carets stand under the `bytes` of `line` after its first `before` characters:
+/// one per character as shown (an escape as wide as it is), one per byte past the line's
+/// end; at least 1, at most 80.
+fn caret_width(line: &str, before: usize, bytes: usize) -> usize {
+    let mut width = 0;
+    let mut covered = 0;
+    for c in line.chars().skip(before) {
+        if covered >= bytes {
+            break;
+        }
+        covered += c.len_utf8();
+        width += if visible::is_hidden(c) {
+            visible::escape_len(c)
+        } else {
+            1
+        };
+    }
+    (width + bytes.saturating_sub(covered)).clamp(1, 80)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Diagnostic;
+
+    /// An ESC sequence in the input reaches the terminal escaped, in the quoted line and in
+    /// the message, and the caret still stands under the character the column counts.
+    #[test]
+    fn hidden_characters_are_escaped_and_the_caret_stays_under_its_character() {
+        let source = "a\u{1b}[2J\tb $";
+        let at = source.find('$').unwrap_or(0);
+        let d = Diagnostic::at(
+            "in\u{202e}put",
+            source,
+            at,
+            at + 1,
+            "unexpected \u{1b}[2J $",
+        );
+        let shown = d.render();
+        assert!(
+            !shown.contains('\u{1b}') && !shown.contains('\u{202e}'),
+            "{shown}"
+        );
+        assert!(shown.contains(r"error: unexpected \u{1b}[2J $"), "{shown}");
+        assert!(shown.contains(r"--> in\u{202e}put:1:"), "{shown}");
+        let lines: Vec<&str> = shown.lines().collect();
+        let quoted = lines[3].split_once(" | ").map(|p| p.1).unwrap_or_default();
+        let caret = lines[4].split_once(" | ").map(|p| p.1).unwrap_or_default();
+        assert_eq!(quoted, "a\\u{1b}[2J\tb $");
+        assert_eq!(caret.find('^'), quoted.find('$'), "{shown}");
+    }
+
+    /// A caret stands under each character of the span, however many bytes it takes.
+    #[test]
+    fn one_caret_per_character() {
+        let d = Diagnostic::at("f", "a ωω\u{fffd} b", 2, 9, "here");
+        assert!(d.render().contains(" |   ^^^ here\n"), "{}", d.render());
+    }
+
+    /// A line of a CR LF file is quoted without its CR.
+    #[test]
+    fn a_carriage_return_ending_a_line_is_not_quoted() {
+        let d = Diagnostic::at("f", "given x\r\nfind ?\r\n", 14, 15, "what?");
+        assert_eq!(d.source_line, "find ?");
+        assert!(!d.render().contains(r"\u{d}"));
     }
 }

@@ -10,21 +10,50 @@ use crate::print::mathml::escaped;
 /// (`N*m`, `rad/s²`, `deg`; empty for none).
 pub fn value(number: &str, unit: &str) -> String {
     if is_degrees(unit) {
-        return decimal(number) + r#"<mo lspace="0" rspace="0">°</mo>"#;
+        // A number in scientific notation ends in a superscript of its own: fenced, so that
+        // the degree sign is not read as raising its power of ten (`(1.5 × 10⁵)°`).
+        let shown = match scientific(number) {
+            Some(_) => format!("<mrow><mo>(</mo>{}<mo>)</mo></mrow>", decimal(number)),
+            None => decimal(number),
+        };
+        return shown + r#"<mo lspace="0" rspace="0">°</mo>"#;
     }
     decimal(number) + &spaced_unit(unit)
 }
 
 /// A decimal, its minus a true minus sign (in a row of its own, so that after `=` it is
-/// the sign of the number, not an operator spaced as one).
+/// the sign of the number, not an operator spaced as one); scientific notation as the
+/// LaTeX writes it (`1.5e-7` is `1.5 × 10⁻⁷`, one row).
 pub fn decimal(number: &str) -> String {
-    match number.strip_prefix('-') {
-        Some(magnitude) => format!(
-            "<mrow><mo>\u{2212}</mo><mn>{}</mn></mrow>",
-            escaped(magnitude)
-        ),
-        None => format!("<mn>{}</mn>", escaped(number)),
+    let (minus, magnitude) = match number.strip_prefix('-') {
+        Some(magnitude) => ("<mo>\u{2212}</mo>", magnitude),
+        None => ("", number),
+    };
+    match scientific(magnitude) {
+        Some((mantissa, exponent)) => {
+            let raised = match exponent.strip_prefix('-') {
+                Some(e) => format!("<mrow><mo>\u{2212}</mo><mn>{e}</mn></mrow>"),
+                None => format!("<mn>{exponent}</mn>"),
+            };
+            format!(
+                "<mrow>{minus}<mn>{}</mn><mo>\u{d7}</mo><msup><mn>10</mn>{raised}</msup></mrow>",
+                escaped(mantissa)
+            )
+        }
+        None if minus.is_empty() => format!("<mn>{}</mn>", escaped(magnitude)),
+        None => format!("<mrow>{minus}<mn>{}</mn></mrow>", escaped(magnitude)),
     }
+}
+
+/// A magnitude in scientific notation as its mantissa and its exponent (digits, a minus
+/// kept, a plus dropped): `1.5e-7` is `("1.5", "-7")`; none for any other text.
+fn scientific(magnitude: &str) -> Option<(&str, &str)> {
+    let (mantissa, exponent) = magnitude.split_once(['e', 'E'])?;
+    let exponent = exponent.strip_prefix('+').unwrap_or(exponent);
+    let digits = exponent.strip_prefix('-').unwrap_or(exponent);
+    let is_number = |t: &str| !t.is_empty() && t.chars().all(|c| c.is_ascii_digit() || c == '.');
+    (is_number(mantissa) && !digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit()))
+        .then_some((mantissa, exponent))
 }
 
 /// A unit after the space that separates it from its number; nothing for no unit.
@@ -126,5 +155,27 @@ mod tests {
             value("30", "deg"),
             "<mn>30</mn><mo lspace=\"0\" rspace=\"0\">°</mo>"
         );
+    }
+
+    /// A number in scientific notation is its mantissa times a power of ten, as the LaTeX
+    /// writes it; before the degree sign it is fenced, so the sign raises nothing.
+    #[test]
+    fn scientific_notation_is_a_power_of_ten() {
+        let ten = |raised: &str| format!("<mo>×</mo><msup><mn>10</mn>{raised}</msup>");
+        assert_eq!(
+            value("-1.371e-6", ""),
+            format!(
+                "<mrow><mo>\u{2212}</mo><mn>1.371</mn>{}</mrow>",
+                ten("<mrow><mo>\u{2212}</mo><mn>6</mn></mrow>")
+            )
+        );
+        assert_eq!(
+            value("1.5e5", "deg"),
+            format!(
+                "<mrow><mo>(</mo><mrow><mn>1.5</mn>{}</mrow><mo>)</mo></mrow><mo lspace=\"0\" rspace=\"0\">°</mo>",
+                ten("<mn>5</mn>")
+            )
+        );
+        assert_eq!(value("e5", ""), "<mn>e5</mn>");
     }
 }

@@ -5,7 +5,7 @@
 
 use crate::algebra::{Axis, Expr};
 use crate::mechanics::Table;
-use crate::print::{self, Notation};
+use crate::print::{self, markup, Notation};
 
 /// The groups of at most this many columns each table shows.
 const COLUMNS_PER_GROUP: usize = 4;
@@ -84,7 +84,7 @@ pub fn latex(table: &Table) -> String {
             .rows
             .iter()
             .map(|row| {
-                std::iter::once(format!(r"\text{{{}}}", latex_words(&row.label)))
+                std::iter::once(format!(r"\text{{{}}}", markup::latex_words(&row.label)))
                     .chain(
                         row.cells[group.clone()]
                             .iter()
@@ -101,18 +101,6 @@ pub fn latex(table: &Table) -> String {
         ));
     }
     out
-}
-
-/// A label inside `\text{…}`: LaTeX's special characters escaped.
-fn latex_words(label: &str) -> String {
-    label
-        .chars()
-        .map(|c| match c {
-            '_' | '%' | '&' | '#' | '{' | '}' | '$' => format!("\\{c}"),
-            '\\' | '^' | '~' => String::new(),
-            c => c.to_string(),
-        })
-        .collect()
 }
 
 /// Markdown: a pipe table per group, cells as inline maths.

@@ -13,6 +13,7 @@
 /// assert_eq!(quantity("6", "N m"), r"6\,\mathrm{N\cdot m}");
 /// assert_eq!(quantity("0.3", "kg·m²"), r"0.3\,\mathrm{kg\cdot m^2}");
 /// assert_eq!(quantity("60", "deg"), r"60^\circ");
+/// assert_eq!(quantity("1.5e5", "deg"), r"(1.5\times 10^{5})^\circ");
 /// assert_eq!(quantity("9.81", "m/s^2"), r"9.81\,\mathrm{m/s^2}");
 /// assert_eq!(quantity("2", ""), "2");
 /// assert_eq!(quantity("-1.371e-6", "m"), r"-1.371\times 10^{-6}\,\mathrm{m}");
@@ -23,6 +24,9 @@ pub fn quantity(number: &str, unit: &str) -> String {
     let number = &powers_of_ten(number);
     match unit {
         "" => number.to_string(),
+        // A number in scientific notation ends in a superscript of its own: fenced, so
+        // the degree's is not a second one (`(1.5\times 10^{5})^\circ`).
+        _ if is_degrees(unit) && number.contains('^') => format!(r"({number})^\circ"),
         _ if is_degrees(unit) => format!(r"{number}^\circ"),
         _ => format!(r"{number}\,\mathrm{{{}}}", unit_letters(unit)),
     }

@@ -40,6 +40,8 @@ mod general_body_print;
 mod gyroscope_numeric;
 mod gyroscope_scenes;
 mod heavy_top;
+mod hostile_input;
+mod hostile_output;
 mod html_angles;
 mod html_headings;
 mod html_page;

@@ -1,9 +1,9 @@
 //! Every reproducer of issue 14 in `tests/reproducers/`, run one after another through the
 //! real binary: each must end within its work budget (and a hang guard) with exit code 1 or 2 (0 only where its
 //! file allows a correct result), no signal, no `inf`/`NaN` in either output, and an error
-//! that says where: `--> NAME:LINE:COLUMN`, no raw control character (ESC, U+202E) in either
-//! output, on a line of the user's statements (not a
-//! comment), quoting no number longer than the input's own.
+//! that says where: `--> NAME:LINE:COLUMN`, on a line of the user's statements (not a
+//! comment), quoting no number longer than the input's own, and no character a reader cannot
+//! see (ESC, a right-to-left override: `kinetics::visible::is_hidden`) as itself.
 //!
 //! A reproducer is one file, its headers first, each `# key: value`:
 //! - `# run: ARGS` the command and its flags; the input is added last, after `--`: the
@@ -23,10 +23,10 @@
 //!   then its second line if it has one (`a^2*b^3*` 131072 times, then `c`: a 1 MiB input in
 //!   a small file). It is given on standard input (`-`, named `<stdin>`): an argument is
 //!   limited to 128 KiB.
-//!
-//! A file need not be UTF-8 (a `.scene` of bytes that are not is given by its path); its
-//! headers and lines are read with such bytes replaced, after a byte-order mark if it starts
-//! with one.
+//! - `# bytes: escaped` (a `.scene`) the input is not the file itself but the lines after
+//!   its headers, each `\xHH` in them the byte HH: a scene that is not UTF-8, or one that
+//!   begins with a byte-order mark. It is written to a scratch file of the same name, which
+//!   the command reads; `# at:` counts that input's lines.
 //!
 //! The fuzzer (`examples/fuzz`) takes the same files as its seed corpus.
 
@@ -69,10 +69,8 @@ fn header<'a>(text: &'a str, key: &str) -> Option<&'a str> {
 }
 
 fn read(path: &Path, scratch: &Path) -> Reproducer {
-    let bytes = std::fs::read(path).expect("a reproducer is readable");
-    // A byte-order mark before the headers is the input's (a scene that starts with one).
-    let text = String::from_utf8_lossy(&bytes).into_owned();
-    let text = text.strip_prefix('\u{feff}').unwrap_or(&text).to_string();
+    // Bytes that are not UTF-8 and a byte-order mark are written `\xHH` (`# bytes: escaped`).
+    let text = std::fs::read_to_string(path).expect("a reproducer is UTF-8 text");
     let substitute = |s: &str| {
         s.replace(
             "MISSING",
@@ -86,7 +84,21 @@ fn read(path: &Path, scratch: &Path) -> Reproducer {
     let run = header(&text, "run").unwrap_or_else(|| panic!("{}: no '# run:'", path.display()));
     let scene = path.extension().is_some_and(|e| e == "scene");
     let claim = path.extension().is_some_and(|e| e == "claim");
-    let (name, input, body) = if scene {
+    let bytes = header(&text, "bytes");
+    let (name, input, body) = if let (true, Some(escaped)) = (scene, bytes) {
+        assert_eq!(escaped, "escaped", "{}: '# bytes: escaped'", path.display());
+        let body: String = text
+            .lines()
+            .skip_while(|l| l.starts_with("# "))
+            .map(|l| format!("{l}\n"))
+            .collect();
+        let decoded = unescape_bytes(&body);
+        let written = scratch.join(path.file_name().expect("a file name"));
+        std::fs::write(&written, &decoded).expect("the input is written");
+        let shown = written.display().to_string();
+        let lossy = String::from_utf8_lossy(&decoded).into_owned();
+        (shown.clone(), shown, lossy)
+    } else if scene {
         let shown = path.display().to_string();
         (shown.clone(), shown, text.clone())
     } else {
@@ -121,6 +133,30 @@ fn read(path: &Path, scratch: &Path) -> Reproducer {
         claim,
         stdin,
     }
+}
+
+/// `text` as bytes, each `\xHH` (two hexadecimal digits) the byte HH.
+fn unescape_bytes(text: &str) -> Vec<u8> {
+    let mut bytes = Vec::with_capacity(text.len());
+    let mut rest = text.as_bytes();
+    while let Some((&first, tail)) = rest.split_first() {
+        let byte = tail
+            .strip_prefix(b"x")
+            .filter(|_| first == b'\\')
+            .and_then(|t| t.get(..2))
+            .and_then(|h| u8::from_str_radix(std::str::from_utf8(h).ok()?, 16).ok());
+        match byte {
+            Some(b) => {
+                bytes.push(b);
+                rest = &tail[3..];
+            }
+            None => {
+                bytes.push(first);
+                rest = tail;
+            }
+        }
+    }
+    bytes
 }
 
 /// The reproducers, sorted by name.
@@ -284,12 +320,8 @@ fn problems(r: &Reproducer) -> Vec<String> {
         if let Some(word) = non_finite(text) {
             found.push(format!("{stream} prints a non-finite number: {word}"));
         }
-        let control = |c: char| {
-            (c.is_control() && c != '\n' && c != '\t')
-                || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
-        };
-        if let Some(c) = text.chars().find(|&c| control(c)) {
-            found.push(format!("{stream} prints the control character {c:?} raw"));
+        if let Some(c) = text.chars().find(|c| kinetics::visible::is_hidden(*c)) {
+            found.push(format!("{stream} prints {c:?} as itself, not escaped"));
         }
     }
     if let Some(never) = r.never.as_ref().filter(|n| o.stdout.contains(n.as_str())) {

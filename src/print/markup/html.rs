@@ -1,5 +1,5 @@
-//! A title in HTML: its words escaped (`& < > " '`), its mathematics as MathML Core in a
-//! `<math>` element: letters `<mi>` (upper-case Greek upright), numbers `<mn>`, operators
+//! A title in HTML: its words escaped (`& < > " '`, hidden characters as `\u{1b}`), its
+//! mathematics as MathML Core in a `<math>` element: letters `<mi>` (upper-case Greek upright), numbers `<mn>`, operators
 //! `<mo>`, `\,` an `<mspace>`, `\text` `<mtext>`, scripts `<msub>`/`<msup>`/`<msubsup>`,
 //! `\frac` `<mfrac>`, accents `<mover accent="true">` with `¯` `˙` `¨`. A bold face is
 //! `mathvariant="bold"` on letters already in Unicode's mathematical bold (𝐇, bold italic
@@ -7,19 +7,11 @@
 
 use super::commands::{is_upper_greek, Face};
 use super::parse::Node;
+use crate::print::mathml::escaped;
 
-/// Words in HTML.
+/// Words in HTML, through the one HTML escaper ([`escaped`]).
 pub fn words(out: &mut String, words: &str) {
-    for c in words.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            c => out.push(c),
-        }
-    }
+    out.push_str(&escaped(words));
 }
 
 /// The mathematics of a list of nodes as one `<math>` element.

@@ -1,7 +1,15 @@
-//! A title in LaTeX text mode: its words escaped (`_ % & # { } ^ ~ \`, and a Greek letter or
-//! a mathematical sign typed in the words set as `$\omega$`), its mathematics written back
-//! from the tree, so only the subset reaches the page, in one spelling: braces where an
-//! argument has more than one character, a space where a command would run into a letter.
+//! A title in LaTeX text mode: its words escaped (`_ % & # { } ^ ~ \ < > |`, and a Greek
+//! letter or a mathematical sign typed in the words set as `$\omega$`), its mathematics
+//! written back from the tree, so only the subset reaches the page, in one spelling: braces
+//! where an argument has more than one character, a space where a command would run into a
+//! letter. A character pdflatex cannot set with the standalone page's packages (article,
+//! amsmath, amssymb; OT1 fonts, UTF-8 input) is written as its escape `\u{4e2d}` in
+//! typewriter letters: a control character, a right-to-left override, a letter of a script
+//! the fonts lack (`中`, an emoji); the page always compiles.
+//!
+//! The same mathematics is written for a Markdown page ([`Notation::Markdown`]), where `<`,
+//! `>` and `&` are the commands `\lt`, `\gt` and `\And`, so no tag reaches a renderer that
+//! does not read `$…$` as mathematics.
 
 use super::commands::{is_spaced, latex_of, Accent};
 use super::parse::{is_sign, Node};
@@ -47,10 +55,31 @@ pub fn words(out: &mut String, words: &str) {
             '^' => out.push_str(r"\^{}"),
             '~' => out.push_str(r"\~{}"),
             '\\' => out.push_str(r"\textbackslash{}"),
+            // The OT1 fonts set `<` as `¡`, `>` as `¿` and `|` as an em dash.
+            '<' => out.push_str(r"\textless{}"),
+            '>' => out.push_str(r"\textgreater{}"),
+            '|' => out.push_str(r"\textbar{}"),
             c if Accent::ALL.iter().any(|a| a.combining() == c) => {}
-            c => out.push(c),
+            c if sets(c) => out.push(c),
+            // The escape `\u{1b}` of visible.rs, its backslash and braces in LaTeX.
+            c => out.push_str(&format!(
+                r"\texttt{{\textbackslash u\{{{:x}\}}}}",
+                u32::from(c)
+            )),
         }
     }
+}
+
+/// Whether pdflatex sets `c` in text with the standalone page's packages: printable ASCII
+/// and the tab, and the Latin letters and signs of U+00A0 to U+017F and the punctuation its
+/// UTF-8 input defines for the OT1 fonts (each compiled, `tests/suite/hostile_output.rs`),
+/// but those OT1 lacks (`« » Ð Þ ð þ Ą ą Đ đ Ę ę Ħ ħ Į į ĸ Ŀ ŀ ŉ Ŋ ŋ Ŧ ŧ Ų ų ſ`).
+pub fn sets(c: char) -> bool {
+    const LACKING: &str = "«»ÐÞðþĄąĐđĘęĦħĮįĸĿŀŉŊŋŦŧŲųſ";
+    const PUNCTUATION: &str = "–—‘’“”†‡•…‰€™";
+    matches!(c, ' '..='~' | '\t')
+        || (('\u{A0}'..='\u{17F}').contains(&c) && !LACKING.contains(c))
+        || PUNCTUATION.contains(c)
 }
 
 /// Opens mathematics in words, or reopens the run just closed (its `$` taken back).
@@ -62,9 +91,17 @@ fn open(out: &mut String, maths_token: &mut Option<usize>) {
     }
 }
 
+/// Where the mathematics is written: a LaTeX page, or a Markdown page (whose renderer may
+/// not read `$…$` as mathematics, so `<`, `>` and `&` never appear as themselves).
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Notation {
+    Latex,
+    Markdown,
+}
+
 /// The mathematics of a list of nodes (without the `$`): a relation or binary operator with
 /// one space each side (not a sign), other blanks as one space, none at either end.
-pub fn maths(out: &mut String, nodes: &[Node]) {
+pub fn maths(out: &mut String, nodes: &[Node], notation: Notation) {
     let start = out.len();
     let mut previous = None;
     for node in nodes {
@@ -79,10 +116,10 @@ pub fn maths(out: &mut String, nodes: &[Node]) {
                 if !out.ends_with(' ') {
                     out.push(' ');
                 }
-                one(out, node);
+                one(out, node, notation);
                 out.push(' ');
             }
-            node => one(out, node),
+            node => one(out, node, notation),
         }
         previous = Some(node);
     }
@@ -102,8 +139,11 @@ fn word(out: &mut String, token: &str) {
     out.push_str(token);
 }
 
-fn one(out: &mut String, node: &Node) {
+fn one(out: &mut String, node: &Node, notation: Notation) {
     match node {
+        Node::Operator(c @ ('<' | '>')) if notation == Notation::Markdown => {
+            word(out, if *c == '<' { r"\lt" } else { r"\gt" })
+        }
         Node::Letter(c) | Node::Operator(c) => match latex_of(*c) {
             Some(command) => word(out, &command),
             None => word(out, c.encode_utf8(&mut [0; 4])),
@@ -111,8 +151,8 @@ fn one(out: &mut String, node: &Node) {
         Node::Number(digits) => out.push_str(digits),
         Node::Blank => out.push(' '),
         Node::ThinSpace => out.push_str(r"\,"),
-        Node::Face(face, body) => command(out, face.name(), &[body]),
-        Node::Accent(accent, body) => command(out, accent.name(), &[body]),
+        Node::Face(face, body) => command(out, face.name(), &[body], notation),
+        Node::Accent(accent, body) => command(out, accent.name(), &[body], notation),
         Node::Fraction {
             small,
             numerator,
@@ -121,20 +161,44 @@ fn one(out: &mut String, node: &Node) {
             out,
             if *small { "tfrac" } else { "frac" },
             &[numerator, denominator],
+            notation,
         ),
+        Node::Text(text) if notation == Notation::Markdown => {
+            // `<`, `>` and `&` set in mathematics between the runs of words around them.
+            let mut run = String::new();
+            for c in text.chars().chain(std::iter::once('\0')) {
+                let sign = match c {
+                    '<' => r"\lt ",
+                    '>' => r"\gt ",
+                    '&' => r"\And ",
+                    '\0' => "",
+                    c => {
+                        run.push(c);
+                        continue;
+                    }
+                };
+                if !run.is_empty() {
+                    out.push_str(r"\text{");
+                    words(out, &run);
+                    out.push('}');
+                    run.clear();
+                }
+                out.push_str(sign);
+            }
+        }
         Node::Text(text) => {
             out.push_str(r"\text{");
             words(out, text);
             out.push('}');
         }
-        Node::Group(body) => braced(out, body),
+        Node::Group(body) => braced(out, body, notation),
         Node::Scripts { base, sub, sup } => {
-            one(out, base);
+            one(out, base, notation);
             for (mark, script) in [('_', sub), ('^', sup)] {
                 if let Some(script) = script {
                     out.push(mark);
                     let mut inner = String::new();
-                    maths(&mut inner, script);
+                    maths(&mut inner, script, notation);
                     if inner.chars().count() == 1 {
                         out.push_str(&inner);
                     } else {
@@ -149,16 +213,16 @@ fn one(out: &mut String, node: &Node) {
 }
 
 /// `\name{a}{b}`.
-fn command(out: &mut String, name: &str, arguments: &[&Vec<Node>]) {
+fn command(out: &mut String, name: &str, arguments: &[&Vec<Node>], notation: Notation) {
     out.push('\\');
     out.push_str(name);
     for argument in arguments {
-        braced(out, argument);
+        braced(out, argument, notation);
     }
 }
 
-fn braced(out: &mut String, nodes: &[Node]) {
+fn braced(out: &mut String, nodes: &[Node], notation: Notation) {
     out.push('{');
-    maths(out, nodes);
+    maths(out, nodes, notation);
     out.push('}');
 }

@@ -30,27 +30,35 @@ use parse::{Node, Segment};
 
 /// Unicode plain text: `(Ḣ_G)_Gxyz = [I]{ω̇}`.
 pub fn text(title: &str) -> String {
-    render(
-        title,
-        |out, words| out.push_str(words),
-        |out, nodes| out.push_str(&text::maths(nodes)),
-    )
+    render(title, text::words, |out, nodes| {
+        out.push_str(&text::maths(nodes))
+    })
 }
 
-/// LaTeX text mode: words escaped, each mathematics as `$…$` in the subset's one spelling.
+/// LaTeX text mode: words escaped, each mathematics as `$…$` in the subset's one spelling;
+/// a character pdflatex cannot set as its escape (`\u{202e}`), so the page compiles.
 pub fn latex(title: &str) -> String {
     render(title, latex::words, |out, nodes| {
         out.push('$');
-        latex::maths(out, nodes);
+        latex::maths(out, nodes, latex::Notation::Latex);
         out.push('$');
     })
 }
 
-/// Markdown: words escaped for Markdown, each mathematics as `$…$` (LaTeX).
+/// Plain words (no mathematics read in them) in LaTeX text mode, by the one escaper of
+/// LaTeX's text: what [`latex`] does to a title's words.
+pub fn latex_words(words: &str) -> String {
+    let mut out = String::with_capacity(words.len() + words.len() / 4);
+    latex::words(&mut out, words);
+    out
+}
+
+/// Markdown: words escaped for Markdown, each mathematics as `$…$` (LaTeX); no `<`, `>` or
+/// `&` as itself anywhere, so no tag reaches a renderer.
 pub fn markdown(title: &str) -> String {
     render(title, markdown::words, |out, nodes| {
         out.push('$');
-        latex::maths(out, nodes);
+        latex::maths(out, nodes, latex::Notation::Markdown);
         out.push('$');
     })
 }

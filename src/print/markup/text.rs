@@ -5,6 +5,13 @@
 
 use super::commands::{is_spaced, Accent};
 use super::parse::{is_sign, Node};
+use crate::visible;
+
+/// Words in plain text: as they are, but a character a reader cannot see (ESC, a
+/// right-to-left override) as its escape `\u{1b}` ([`visible::escaped`]).
+pub fn words(out: &mut String, words: &str) {
+    out.push_str(&visible::escaped(words));
+}
 
 /// The text of a list of nodes.
 pub fn maths(nodes: &[Node]) -> String {
@@ -56,7 +63,7 @@ fn one(out: &mut String, node: &Node) {
         Node::Number(digits) => out.push_str(digits),
         Node::Blank | Node::ThinSpace => space(out),
         Node::Face(_, body) | Node::Group(body) => out.push_str(&maths(body)),
-        Node::Text(words) => out.push_str(words),
+        Node::Text(text) => words(out, text),
         Node::Accent(accent, body) => accented(out, *accent, &maths(body)),
         Node::Fraction {
             numerator,

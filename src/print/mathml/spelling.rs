@@ -19,6 +19,8 @@
 //! once, and groups and command arguments nest at most [`MAX_DEPTH`] deep (deeper ones are
 //! left empty), so reading never recurses without bound.
 
+use crate::visible;
+
 /// How deep groups and command arguments may nest; deeper ones are left empty.
 const MAX_DEPTH: usize = 16;
 
@@ -398,7 +400,10 @@ fn operator(c: char) -> String {
     format!("<mo>{}</mo>", escaped(&c.to_string()))
 }
 
-/// Text escaped for XML.
+/// Text escaped for HTML and XML, the one escaper of both: `& < > " '` as references, so
+/// the text is safe in an element and in an attribute's value, and a character a reader
+/// cannot see (ESC, a right-to-left override: [`visible::is_hidden`]) as its escape
+/// `\u{1b}`.
 pub fn escaped(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
@@ -407,6 +412,8 @@ pub fn escaped(text: &str) -> String {
             '<' => out.push_str("&lt;"),
             '>' => out.push_str("&gt;"),
             '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            c if visible::is_hidden(c) => visible::push_escape(&mut out, c),
             c => out.push(c),
         }
     }

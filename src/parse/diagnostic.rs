@@ -28,9 +28,20 @@ pub struct Diagnostic {
     pub message: String,
     #[help]
     pub help: Option<String>,
-    /// The source line that holds the error, for the caret display.
+    /// The source line that holds the error, for the caret display: of a long line, the
+    /// part around the error, `... ` before it when its beginning is left out.
     pub source_line: String,
+    /// The characters of the line left out before [`Diagnostic::source_line`].
+    pub left_out: usize,
 }
+
+/// The most characters of a line quoted.
+const QUOTED: usize = 200;
+/// Of a line whose error stands past [`QUOTED`] characters less this, the quote begins this
+/// many characters before the error, so that the caret stays in view.
+const BEFORE_THE_ERROR: usize = 60;
+/// What stands for the part of a line left out.
+const LEFT_OUT: &str = "... ";
 
 impl Diagnostic {
     /// A diagnostic at byte offsets `start..end` of `source`. Long numbers in the message
@@ -52,9 +63,17 @@ impl Diagnostic {
         let column = source[line_start..start].chars().count() + 1;
         // A file's lines may end in CR LF: the CR is the line's end, not a character of it.
         let line_text = source[line_start..line_end].trim_end_matches('\r');
-        let line_end = line_start + line_text.len();
-        let mut source_line: String = line_text.chars().take(200).collect();
-        if source_line.len() < line_end - line_start {
+        let left_out = match column - 1 {
+            before if before > QUOTED - BEFORE_THE_ERROR => before - BEFORE_THE_ERROR,
+            _ => 0,
+        };
+        let mut source_line = String::new();
+        if left_out > 0 {
+            source_line.push_str(LEFT_OUT);
+        }
+        let mut quoted = line_text.chars().skip(left_out);
+        source_line.extend(quoted.by_ref().take(QUOTED));
+        if quoted.next().is_some() {
             source_line.push_str(" ...");
         }
         Diagnostic {
@@ -65,6 +84,7 @@ impl Diagnostic {
             message: shorten_long_numbers(&message.into(), source),
             help: None,
             source_line,
+            left_out,
         }
     }
 
@@ -84,12 +104,13 @@ impl Diagnostic {
     pub fn render(&self) -> String {
         let number = self.line.to_string();
         let pad = " ".repeat(number.len());
-        let caret_pad = caret_margin(&self.source_line, self.column.saturating_sub(1));
-        let width = caret_width(
-            &self.source_line,
-            self.column.saturating_sub(1),
-            self.span.len(),
-        );
+        // The characters of the quote before the error's.
+        let before = match self.left_out {
+            0 => self.column.saturating_sub(1),
+            left_out => self.column.saturating_sub(1) - left_out + LEFT_OUT.len(),
+        };
+        let caret_pad = caret_margin(&self.source_line, before);
+        let width = caret_width(&self.source_line, before, self.span.len());
         let mut out = format!(
             "error: {}\n{pad}--> {}:{}:{}\n{pad} |\n{number} | {}\n{pad} | {caret_pad}{} here\n",
             visible::escaped(&self.message),
@@ -148,6 +169,28 @@ fn caret_width(line: &str, before: usize, bytes: usize) -> usize {
 #[cfg(test)]
 mod tests {
     use super::Diagnostic;
+
+    /// The character the caret of a rendered diagnostic stands under.
+    fn under_the_caret(rendered: &str) -> Option<char> {
+        let lines: Vec<&str> = rendered.lines().collect();
+        let caret = lines.iter().position(|l| l.contains("^ here"))?;
+        let column = lines[caret].find('^')?;
+        lines[caret - 1][column..].chars().next()
+    }
+
+    /// An error far along a long line is quoted with the text around it, so its caret is
+    /// in view; near the start the line is quoted from its beginning.
+    #[test]
+    fn the_caret_of_an_error_far_along_a_line_stays_in_view() {
+        let source = format!("{}$ and more", "a+".repeat(5_000));
+        let at = source.find('$').unwrap_or(0);
+        let rendered = Diagnostic::at("input", &source, at, at + 1, "here").render();
+        assert_eq!(under_the_caret(&rendered), Some('$'), "{rendered}");
+        assert!(rendered.contains("\n1 | ... a+a+"), "{rendered}");
+        let near = Diagnostic::at("input", "x + $", 4, 5, "here").render();
+        assert_eq!(under_the_caret(&near), Some('$'), "{near}");
+        assert!(near.contains("1 | x + $"), "{near}");
+    }
 
     /// An ESC sequence in the input reaches the terminal escaped, in the quoted line and in
     /// the message, and the caret still stands under the character the column counts.

@@ -17,15 +17,21 @@ use std::borrow::Cow;
 /// Whether `c` is shown as its escape `\u{…}` wherever text reaches a reader: a control
 /// character other than the tab and the line feed (which lay text out; ESC, NUL, the bell,
 /// a carriage return or DEL would act on a terminal or vanish), or a character that
-/// reorders or breaks the displayed text: the bidirectional controls (U+061C, U+200E,
-/// U+200F, U+202A to U+202E, U+2066 to U+2069) and the line and paragraph separators
-/// (U+2028, U+2029).
+/// reorders, hides or breaks the displayed text: the bidirectional controls (U+061C, U+200E,
+/// U+200F, U+202A to U+202E, U+2066 to U+2069), the zero-width characters (U+200B to
+/// U+200D, and U+FEFF, a byte-order mark inside the text) and the line and paragraph
+/// separators (U+2028, U+2029).
 pub fn is_hidden(c: char) -> bool {
     (c.is_control() && c != '\t' && c != '\n')
         || matches!(
             c,
-            '\u{061C}' | '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}'
-                | '\u{2028}' | '\u{2029}'
+            '\u{061C}'
+                | '\u{200B}'..='\u{200F}'
+                | '\u{202A}'..='\u{202E}'
+                | '\u{2066}'..='\u{2069}'
+                | '\u{2028}'
+                | '\u{2029}'
+                | '\u{FEFF}'
         )
 }
 

@@ -161,16 +161,11 @@ pub fn longest_digit_run(text: &str) -> usize {
         .unwrap_or(0)
 }
 
-/// The first character of `output` that a terminal, a bidirectional renderer or pdflatex
-/// would take for a command: C0 controls but newline and tab, DEL, C1 controls, the
-/// bidirectional embeddings, overrides and isolates, a byte-order mark.
+/// The first character of `output` that should have been shown as its escape: one a
+/// terminal, a bidirectional renderer or pdflatex would take for a command
+/// ([`kinetics::visible::is_hidden`], the library's one rule).
 pub fn raw_control(output: &str) -> Option<char> {
-    output.chars().find(|&c| {
-        (c.is_control() && c != '\n' && c != '\t')
-            || ('\u{202a}'..='\u{202e}').contains(&c)
-            || ('\u{2066}'..='\u{2069}').contains(&c)
-            || c == '\u{feff}'
-    })
+    output.chars().find(|&c| kinetics::visible::is_hidden(c))
 }
 
 /// A control character's name for a signature (which takes digits out): `ESC`, `U+202E`

@@ -15,6 +15,7 @@ use super::error::{AlgebraError, MAX_EXPANDED_NODES, MAX_EXPANDED_TERMS};
 use super::expr::{Expr, Operands, View};
 use super::merge;
 use super::rational::Q;
+use super::work;
 use smallvec::SmallVec;
 use std::borrow::Cow;
 
@@ -38,6 +39,7 @@ impl Expr {
 
     /// The expansion, its size in nodes not yet checked.
     fn expanded(&self) -> Result<Expr, AlgebraError> {
+        work::check()?;
         if is_expanded(self) {
             return Ok(self.clone());
         }
@@ -228,8 +230,9 @@ fn power_of_sum(base: &Expr, n: &Q) -> Result<Expr, AlgebraError> {
     let per_factor = coefficient_bits + u64::from(usize::BITS - t.leading_zeros());
     let coefficient_bound = per_factor.saturating_mul(n as u64);
     Q::check_bits("a coefficient of the expanded power", coefficient_bound)?;
-    // Its size as `has_at_most_size` counts it, at most: each term a number of up to
-    // `coefficient_bound` bits (one node per 32) and a monomial.
+    // Its size as `has_at_most_size` counts it, before the work: each term a number of up
+    // to `coefficient_bound` bits (one node per 32) and a monomial (long names, which count
+    // more, are checked once it is formed).
     let size = multinomial_terms(t, n as u64) * (2.0 + coefficient_bound as f64 / 32.0);
     if size > MAX_EXPANDED_NODES as f64 {
         return Err(AlgebraError::ExpansionTooLong(MAX_EXPANDED_NODES));

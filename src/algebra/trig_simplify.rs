@@ -122,29 +122,47 @@ fn forms_for_angle(e: &Expr, angle: &Expr, pass: &Pass) -> Result<Expr, AlgebraE
     Ok(shortest(candidates))
 }
 
-/// The angles θ whose `sin θ` and `cos θ` (to positive integer powers) reach the second
-/// degree together in some term of `e`, each once, in the order met: only those can be
-/// rewritten by `sin²θ + cos²θ = 1` or a double angle (a term of degree one in them has no
-/// square to replace and no product to double), so a sum of `sin θᵢ` of many angles is
-/// passed in one reading, not rewritten once per angle.
+/// The angles θ of the `sin θ` and `cos θ` (to positive integer powers) among the factors
+/// of the terms of `e`, each once, in the order met, that a rewrite can change: those whose
+/// sine and cosine reach the second degree together in some term (a term of degree one in
+/// them has no square to replace and no product to double), and the doubles 2θ of those
+/// (a double angle rewrite of θ makes `sin²2θ` of `4 sin²θ cos²θ`). So a sum of `sin θᵢ` of
+/// many angles is passed in one reading, not rewritten once per angle.
 fn rewritable_angles(e: &Expr) -> Vec<Expr> {
-    let mut found: Vec<Expr> = Vec::new();
+    let mut met: Vec<&Expr> = Vec::new();
     let mut seen: HashSet<&Expr> = HashSet::new();
+    let mut rewritable: HashSet<Expr> = HashSet::new();
     for term in e.terms() {
         let mut degrees: Vec<(&Expr, u64)> = Vec::new();
         for (angle, degree) in term.factors().iter().filter_map(trigonometric_power) {
+            if seen.insert(angle) {
+                met.push(angle);
+            }
             match degrees.iter_mut().find(|(a, _)| *a == angle) {
-                Some((_, total)) => *total += degree,
+                Some((_, total)) => *total = total.saturating_add(degree),
                 None => degrees.push((angle, degree)),
             }
         }
-        for (angle, _) in degrees.into_iter().filter(|(_, degree)| *degree >= 2) {
-            if seen.insert(angle) {
-                found.push(angle.clone());
-            }
-        }
+        let squared = degrees.into_iter().filter(|(_, degree)| *degree >= 2);
+        rewritable.extend(squared.map(|(angle, _)| angle.clone()));
     }
-    found
+    // The doubles of rewritable angles, and their doubles in turn.
+    let half = Expr::rational(1, 2);
+    loop {
+        let doubles: Vec<Expr> = met
+            .iter()
+            .filter(|a| !rewritable.contains(**a) && rewritable.contains(&(&half * **a)))
+            .map(|a| (*a).clone())
+            .collect();
+        if doubles.is_empty() {
+            break;
+        }
+        rewritable.extend(doubles);
+    }
+    met.into_iter()
+        .filter(|a| rewritable.contains(*a))
+        .cloned()
+        .collect()
 }
 
 /// The angle and degree of a factor `sin θ` or `cos θ` to a positive integer power.

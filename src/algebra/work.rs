@@ -21,7 +21,7 @@
 //! budget was spent, so no form is ever silently left less simplified for lack of work.
 //!
 //! The count is per thread: a command that fans out (claims checked in parallel) gives each
-//! piece of input its own budget on the thread that does its work. Outside [`Budget::run`]
+//! piece of input its share of the budget on the thread that does its work. Outside [`Budget::run`]
 //! nothing is bounded (the library's own callers and tests).
 
 use super::error::AlgebraError;
@@ -85,6 +85,15 @@ impl Budget {
         }
     }
 
+    /// The share of this budget for `part` bytes of an input of `whole` bytes, in proportion
+    /// (the claims of one file: together they spend at most the file's budget).
+    pub fn share(self, part: usize, whole: usize) -> Budget {
+        let share = self.limit as u128 * part as u128 / whole.max(1) as u128;
+        Budget {
+            limit: u64::try_from(share).unwrap_or(u64::MAX),
+        }
+    }
+
     /// A budget of exactly `limit` operations (tests, and callers with a bound of their own).
     pub fn of(limit: u64) -> Budget {
         Budget { limit }
@@ -100,16 +109,33 @@ impl Budget {
     /// it returned. A budget already running on this thread is suspended meanwhile and
     /// charged with what `work` spent.
     pub fn run<T>(self, work: impl FnOnce() -> T) -> Result<(T, u64), AlgebraError> {
-        let outer_spent = SPENT.with(|s| s.replace(0));
-        let outer_limit = LIMIT.with(|l| l.replace(self.limit));
+        let outer = Suspended {
+            spent: SPENT.with(|s| s.replace(0)),
+            limit: LIMIT.with(|l| l.replace(self.limit)),
+        };
         let outcome = work();
         let spent = SPENT.with(Cell::get);
-        SPENT.with(|s| s.set(outer_spent.saturating_add(spent)));
-        LIMIT.with(|l| l.set(outer_limit));
+        drop(outer);
         if spent > self.limit {
             return Err(AlgebraError::OutOfWork { limit: self.limit });
         }
         Ok((outcome, spent))
+    }
+}
+
+/// The budget a [`Budget::run`] suspends, restored when the run ends, however it ends (a
+/// panic caught further up leaves this thread's budget as it was): charged with the run's
+/// work.
+struct Suspended {
+    spent: u64,
+    limit: u64,
+}
+
+impl Drop for Suspended {
+    fn drop(&mut self) {
+        let inner = SPENT.with(Cell::get);
+        SPENT.with(|s| s.set(self.spent.saturating_add(inner)));
+        LIMIT.with(|l| l.set(self.limit));
     }
 }
 

@@ -213,6 +213,11 @@ impl Context {
         let impulses = scene.impulses.iter().filter_map(|i| i.name);
         quantities.extend(impulses.map(|s| (s.name().to_string(), Quantity::NamedImpulse(s))));
         for (name, quantity) in quantities {
+            // Once the command's work budget is spent, every derivation left would be
+            // refused for it: the context is refused whole (`work::Budget::run`).
+            if crate::algebra::work::check().is_err() {
+                break;
+            }
             let meaning = match derive_in(scene, &name, quantity) {
                 Ok(Value::Scalar(e)) => Meaning::Derived(e),
                 Ok(Value::Vector(v)) => {

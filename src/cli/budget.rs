@@ -17,6 +17,9 @@ pub struct Input<'a> {
     pub name: &'a str,
     pub source: &'a str,
     pub place: Range<usize>,
+    /// The operations the work on it may spend: its bytes' budget, or a share of a larger
+    /// input's.
+    pub budget: Budget,
 }
 
 impl<'a> Input<'a> {
@@ -26,38 +29,44 @@ impl<'a> Input<'a> {
             name,
             source,
             place: 0..source.trim_end().len(),
+            budget: Budget::for_input(source.len()),
         }
     }
 
-    /// A scene: a refusal stands at its first request (what pulls the work), else at its
-    /// first statement.
-    pub fn scene(name: &'a str, source: &'a str, first_request: Option<Range<usize>>) -> Input<'a> {
-        let place = first_request.unwrap_or_else(|| {
-            let mut start = 0;
-            for line in source.split_inclusive('\n') {
-                let statement = line.trim();
-                if !statement.is_empty() && !statement.starts_with('#') {
-                    let from = start + (line.len() - line.trim_start().len());
-                    return from..from + statement.len();
-                }
-                start += line.len();
+    /// A scene: a refusal stands at its first `find` (what pulls the work), else at its
+    /// first statement. Found in the text, since the scene is parsed within the budget.
+    pub fn scene(name: &'a str, source: &'a str) -> Input<'a> {
+        let mut first_statement = None;
+        let mut start = 0;
+        for line in source.split_inclusive('\n') {
+            let statement = line.trim();
+            let from = start + (line.len() - line.trim_start().len());
+            let place = from..from + statement.len();
+            start += line.len();
+            if statement.is_empty() || statement.starts_with('#') {
+                continue;
             }
-            0..0
-        });
+            if statement.starts_with("find ") {
+                first_statement = Some(place);
+                break;
+            }
+            first_statement.get_or_insert(place);
+        }
         Input {
             name,
             source,
-            place,
+            place: first_statement.unwrap_or(0..0),
+            budget: Budget::for_input(source.len()),
         }
     }
 
-    /// Runs `work` within the budget of this input's bytes. A result reached after the
+    /// Runs `work` within this input's budget. A result reached after the
     /// budget was spent is refused too: no answer is ever the product of cut-short work.
     pub fn within<T, E: From<Diagnostic>>(
         &self,
         work: impl FnOnce() -> Result<T, E>,
     ) -> Result<T, E> {
-        let budget = Budget::for_input(self.source.len());
+        let budget = self.budget;
         match budget.run(work) {
             Ok((outcome, spent)) => {
                 report(spent, budget);

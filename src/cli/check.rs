@@ -7,6 +7,7 @@
 use super::budget::Input;
 use super::error::CliError;
 use super::input::read_file;
+use kinetics::algebra::work::Budget;
 use kinetics::check::context::Context;
 use kinetics::check::report;
 use kinetics::check::verdict::{check, Report, Verdict};
@@ -69,10 +70,8 @@ pub fn run(args: Args) -> ExitCode {
 fn context(args: &Args) -> Result<Context, CliError> {
     if let Some(path) = &args.scene {
         let (name, source) = read_file(path)?;
-        let scene = parse_scene(&name, &source)?;
-        let first_request = scene.requests.first().map(|r| r.span.start..r.span.end);
-        return Input::scene(&name, &source, first_request)
-            .within(|| Ok::<_, CliError>(Context::scene(&scene)));
+        return Input::scene(&name, &source)
+            .within(|| Ok::<_, CliError>(Context::scene(&parse_scene(&name, &source)?)));
     }
     let general = if args.fixed_axis {
         Context::fixed_axis()
@@ -98,8 +97,6 @@ fn claims(args: &Args) -> Result<Vec<Written>, CliError> {
         .collect();
     if let Some(path) = &args.claims {
         let (name, source) = read_file(path)?;
-        // A byte-order mark some editors write is not part of the first claim.
-        let source = source.strip_prefix('\u{feff}').unwrap_or(&source);
         for (k, line) in source.lines().enumerate() {
             let text = line.split('#').next().unwrap_or_default();
             if !text.trim().is_empty() {
@@ -124,10 +121,16 @@ fn claims(args: &Args) -> Result<Vec<Written>, CliError> {
 fn checked(args: &Args) -> Result<ExitCode, CliError> {
     let context = context(args)?;
     let claims = claims(args)?;
+    // The claims share one budget, that of all their text, in proportion to their lengths.
+    let whole: usize = claims.iter().map(|w| w.text.len()).sum();
+    let budget = Budget::for_input(whole);
     let outcomes: Vec<Result<Report, Box<Diagnostic>>> = claims
         .par_iter()
         .map(|w| {
-            let claim = Input::expression(&w.source_name, &w.text);
+            let claim = Input {
+                budget: budget.share(w.text.len(), whole),
+                ..Input::expression(&w.source_name, &w.text)
+            };
             claim
                 .within(|| check(&context, &w.source_name, &w.text).map_err(Box::new))
                 .map_err(|mut d| {

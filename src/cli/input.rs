@@ -9,8 +9,8 @@ use std::io::Read;
 /// first invalid byte ([`utf8_text`]). Standard input beyond the size limit is not read.
 pub fn read(argument: &str) -> Result<(String, String), CliError> {
     if argument != "-" {
-        let text = argument.strip_prefix(BYTE_ORDER_MARK).unwrap_or(argument);
-        return Ok(("input".into(), text.to_string()));
+        // An argument's byte-order mark is dropped by its value parser, `expression_argument`.
+        return Ok(("input".into(), argument.to_string()));
     }
     let name = "<stdin>";
     let mut bytes = Vec::new();
@@ -61,7 +61,7 @@ const BYTE_ORDER_MARK: char = '\u{feff}';
 /// as U+FFFD and a caret under it.
 pub fn utf8_text(name: &str, mut bytes: Vec<u8>) -> Result<String, CliError> {
     let mark = BYTE_ORDER_MARK.len_utf8();
-    let marked = bytes.starts_with("\u{feff}".as_bytes());
+    let marked = bytes.starts_with(BYTE_ORDER_MARK.encode_utf8(&mut [0; 4]).as_bytes());
     if marked {
         bytes.drain(..mark);
     }

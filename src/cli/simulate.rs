@@ -18,11 +18,13 @@ use super::error::CliError;
 use super::sample_rows::SampleRows;
 use super::simulate_flags::{positive, sampling};
 use kinetics::numeric::integrators::splitting::SplittingOrder;
+use kinetics::numeric::rigid_body::eulerian_angles::EulerianAngles;
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice, MethodUsed};
+use kinetics::numeric::rigid_body::heavy_top::HeavyTop;
 use kinetics::numeric::rigid_body::sample_sink::Sample;
-use kinetics::numeric::rigid_body::simulate::{Method, SimulationStatistics};
+use kinetics::numeric::rigid_body::simulate::{Method, Problem, SimulationStatistics};
 use kinetics::numeric::NumericError;
-use kinetics::scene::{parse_scene_to_simulate, simulation, Scene};
+use kinetics::scene::{parse_scene_to_simulate, simulation, top_simulation, Scene};
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum MethodName {
@@ -163,14 +165,22 @@ pub fn run(args: Args) -> Result<String, CliError> {
         super::plot::writable_path(path, args.force).map_err(CliError::Plot)?;
     }
     let (name, text) = super::input::read_file(&args.scene)?;
-    let scene = parse_scene_to_simulate(&name, &text)?;
     // The symbolic work before the run is bounded by the scene's budget; the run by its
     // sampling and its integrator's step limits.
-    let input = Input::scene(&name, &text, None);
-    if scene.euler_angles.is_some() {
-        return super::simulate_top::run(&args, &scene, &input, &choice, &sampling);
-    }
-    let problem = input.within(|| Ok::<_, CliError>(simulation::problem(&scene)?))?;
+    let (scene, setup) = Input::scene(&name, &text).within(|| {
+        let scene = parse_scene_to_simulate(&name, &text)?;
+        let setup = match scene.euler_angles {
+            Some(_) => Setup::Top(top_simulation::heavy_top(&scene)?),
+            None => Setup::Body(simulation::problem(&scene)?),
+        };
+        Ok::<_, CliError>((scene, setup))
+    })?;
+    let problem = match setup {
+        Setup::Top((top, start)) => {
+            return super::simulate_top::run(&args, &scene, name, top, start, &choice, &sampling)
+        }
+        Setup::Body(problem) => problem,
+    };
     #[cfg(feature = "plot")]
     let mut plot = args
         .plot
@@ -215,6 +225,13 @@ pub fn run(args: Args) -> Result<String, CliError> {
         method_report(&statistics, used)
     );
     Ok(String::new())
+}
+
+/// What a scene is simulated as, derived within its work budget: a heavy top with its
+/// starting angles (`euler angles`), or a body under its loads.
+enum Setup {
+    Top((HeavyTop, EulerianAngles)),
+    Body(Problem<f64>),
 }
 
 /// A failed run's error at the scene's statement it comes from, else about the file.

@@ -9,27 +9,27 @@
 //! vertical there is no band, and the turns are counted from the rates at the samples,
 //! which standard error says needs dense samples.
 
-use super::budget::Input;
 use super::error::CliError;
 use super::sample_rows::SampleRows;
 use super::simulate::{located, method_report, Args};
 use kinetics::algebra::four_significant_figures;
-use kinetics::numeric::rigid_body::eulerian_angles::AnglesAlongMotion;
+use kinetics::numeric::rigid_body::eulerian_angles::{AnglesAlongMotion, EulerianAngles};
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice};
+use kinetics::numeric::rigid_body::heavy_top::HeavyTop;
 use kinetics::numeric::rigid_body::nutation_limits::{nutation_limits, NutationLimits};
 use kinetics::numeric::rigid_body::sample_sink::Sample;
 use kinetics::numeric::rigid_body::simulate::Sampling;
-use kinetics::scene::{top_simulation, Scene};
+use kinetics::scene::Scene;
 
 pub fn run(
     args: &Args,
     scene: &Scene,
-    input: &Input,
+    name: String,
+    top: HeavyTop,
+    start: EulerianAngles,
     choice: &Choice,
     sampling: &Sampling<f64>,
 ) -> Result<String, CliError> {
-    let name = input.name.to_string();
-    let (top, start) = input.within(|| Ok::<_, CliError>(top_simulation::heavy_top(scene)?))?;
     let problem = top
         .problem(&start)
         .map_err(|source| located(scene, name.clone(), source))?;

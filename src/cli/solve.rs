@@ -60,9 +60,8 @@ fn with_analysis<T>(
     work: impl FnOnce(&Scene, &Analysis) -> Result<T, CliError>,
 ) -> Result<T, CliError> {
     let (name, text) = super::input::read_file(path)?;
-    let scene = parse_scene(&name, &text)?;
-    let first_request = scene.requests.first().map(|r| r.span.start..r.span.end);
-    Input::scene(&name, &text, first_request).within(|| {
+    Input::scene(&name, &text).within(|| {
+        let scene = parse_scene(&name, &text)?;
         let analysis = analyse(&scene)?;
         kinetics::solution::numbers::check_numeric_requests(&scene, &analysis)?;
         work(&scene, &analysis)

@@ -420,13 +420,22 @@ impl Writer<'_> {
     }
 
     /// A factor juxtaposed after `previous` (none: the first, where a minus needs no
-    /// parentheses); the degree after a factor is a superscript circle, `30^\circ`.
+    /// parentheses); the degree after a factor is a superscript circle, `30^\circ`
+    /// (`{}^\circ` after a superscript).
     fn factor(&self, out: &mut String, previous: Option<&Node>, n: &Node) {
         let Some(previous) = previous else {
             return self.node(out, n, Level::Negation);
         };
         if matches!(&n.ast, Ast::Symbol(name) if name == super::DEGREE) {
-            out.push_str(r"^\circ");
+            // After a factor that ends in a superscript of its own (`x^2`, `1e5`), the circle
+            // stands on an empty group: a second superscript is an error to pdflatex.
+            let superscripted = self.latex()
+                && (matches!(previous.ast, Ast::Power(..)) || self.has_own_superscript(previous));
+            out.push_str(if superscripted {
+                r"{}^\circ"
+            } else {
+                r"^\circ"
+            });
             return;
         }
         out.push_str(if starts_with_digit(n) {

@@ -3,20 +3,25 @@
 //! they are sorted by insertion, which compares each neighbouring pair once when nothing is
 //! out of place.
 
+use crate::algebra::work;
 use std::cmp::Ordering;
 
 /// Sorts a short slice that is often in order already (the factors of a term, the groups
 /// of a sum) as `sort_by` would, stably: by insertion, comparing each neighbouring pair once
-/// when nothing is out of place. Long slices go to the standard sort.
+/// when nothing is out of place. Long slices go to the standard sort. The comparisons are
+/// counted against the command's work budget.
 #[inline]
 pub(super) fn sort_nearly_sorted<T: Copy>(
     items: &mut [T],
     mut order: impl FnMut(&T, &T) -> Ordering,
 ) {
     if items.len() > 16 {
+        let n = items.len() as u64;
+        work::count(n * u64::from(n.ilog2()));
         items.sort_by(order);
         return;
     }
+    work::count(items.len() as u64);
     for i in 1..items.len() {
         if order(&items[i - 1], &items[i]) != Ordering::Greater {
             continue;

@@ -7,7 +7,7 @@
 use super::nearly_sorted::sort_nearly_sorted;
 use super::place::{compare_in_place, cyclic_pair_order, expr_place};
 use super::{Layout, Node, NodeId, Number, Product};
-use crate::algebra::{Axis, Expr, View, Q};
+use crate::algebra::{work, Axis, Expr, View, Q};
 
 impl Layout {
     /// The presented form of `e` as a signed node: `(negative, node)`.
@@ -18,6 +18,7 @@ impl Layout {
     /// The presented form of `e`, a sum's terms collected into groups (rule 1) when
     /// `collect` holds, each standing alone otherwise (rule 5).
     fn present_collected(&mut self, e: &Expr, axis: Axis, collect: bool) -> (bool, NodeId) {
+        work::count(1);
         match e.view() {
             View::Add(_) => self.present_sum(e, axis, collect),
             _ => self.present_term(e, axis),

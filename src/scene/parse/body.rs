@@ -128,6 +128,9 @@ impl Reader<'_> {
         if parts.is_empty() {
             return Ok(());
         }
+        // Every body adds up all the masses so far: counted, so that thousands of bodies are
+        // refused for work, not left to take the square of their number in time.
+        crate::algebra::work::count(parts.len() as u64 + 1);
         let masses = parts.iter().map(|p| p.mass.clone()).chain([mass.clone()]);
         let total = Expr::add_all(masses.clone()).expand().map_err(|e| {
             self.error(at, e.to_string())

@@ -92,7 +92,17 @@ enum Form {
 }
 
 fn expression(text: &str, form: Form) -> Outcome {
-    let statement = parse_statement("input", text).map_err(|d| located(&d, text, false))?;
+    let unreadable = |d: Diagnostic| located(&d, text, false);
+    let statement = match form {
+        // `latex` reads its input once, for the algebra and as written (`parse::as_written`).
+        Form::AsWritten => {
+            let (statement, written) = statement_as_written("input", text).map_err(unreadable)?;
+            printed(&written.latex, text)?;
+            printed(&written.text, text)?;
+            statement
+        }
+        _ => parse_statement("input", text).map_err(unreadable)?,
+    };
     let sides = match statement {
         Statement::Expression(e) => vec![e],
         Statement::Equation(eq) => vec![eq.lhs, eq.rhs],
@@ -102,13 +112,6 @@ fn expression(text: &str, form: Form) -> Outcome {
         let whole = Diagnostic::at("input", text, 0, text.trim_end().len(), err.to_string());
         located(&whole, text, false)
     };
-    if let Form::AsWritten = form {
-        // `latex` writes the text as written too (`parse::as_written`).
-        let (_, written) =
-            statement_as_written("input", text).map_err(|d| located(&d, text, false))?;
-        printed(&written.latex, text)?;
-        printed(&written.text, text)?;
-    }
     for side in sides {
         let side = match form {
             Form::AsWritten => side,

@@ -11,8 +11,8 @@
 //! ```
 //!
 //! operations: the floor is far above what any problem of the chapter needs (the largest
-//! example spends a few percent of it) and about half a second of work; `PER_BYTE` keeps
-//! a megabyte of input under about two seconds on one core.
+//! example spends 8·10⁵) and at most about half a second of work; `PER_BYTE` keeps a
+//! megabyte of input, read and printed, under about two seconds on one core.
 //!
 //! Counting never fails, so infallible routines count too (and a long walk stops early
 //! once the budget is spent, [`count_and_spent`]); a fallible routine asks [`check`] at its
@@ -28,9 +28,9 @@ use super::error::AlgebraError;
 use std::cell::Cell;
 
 /// Operations every input may spend, however short.
-pub const FLOOR: u64 = 20_000_000;
+pub const FLOOR: u64 = 10_000_000;
 /// Operations each byte of input adds to the floor.
-pub const PER_BYTE: u64 = 20;
+pub const PER_BYTE: u64 = 10;
 
 thread_local! {
     /// Operations counted on this thread since the budget began.

@@ -248,6 +248,11 @@ fn unbalanced_gcd(a: &BigInt, b: &BigInt) -> BigInt {
     if short.is_zero() || short.is_one() {
         return if short.is_zero() { long } else { short };
     }
+    // The division's words and the binary gcd's square of the shorter length, counted
+    // against the work budget: numbers of thousands of digits make each gcd costly.
+    let words = |n: &BigInt| n.bits() / 64 + 1;
+    let (long_words, short_words) = (words(&long), words(&short));
+    super::work::count(long_words * short_words + short_words * short_words);
     (long % &short).gcd(&short)
 }
 

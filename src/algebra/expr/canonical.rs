@@ -264,9 +264,14 @@ fn combine_like_terms(terms: &mut Operands) -> usize {
         while j < terms.len() && cmp_slices(terms[j].monomial(), terms[i].monomial()).is_eq() {
             j += 1;
         }
-        if j == i + 1 {
-            terms.swap(kept, i);
-            kept += 1;
+        // Once the work budget is spent, like terms are left apart: their coefficients may be
+        // numbers of thousands of digits, each sum a costly gcd, and the result is refused
+        // whole by the budget's run anyway (`work::Budget::run`).
+        if j == i + 1 || work::count_and_spent(0) {
+            for k in i..j {
+                terms.swap(kept, k);
+                kept += 1;
+            }
         } else {
             let coeff = terms[i..j]
                 .iter()

@@ -10,14 +10,16 @@
 //! limit(b) = FLOOR + PER_BYTE · b
 //! ```
 //!
-//! operations: the floor is far above what any problem of the chapter needs (the largest
-//! example spends 8·10⁵) and at most about half a second of work; `PER_BYTE` keeps a
-//! megabyte of input, read and printed, under about two seconds on one core.
+//! operations: the floor is six times what the largest example spends (8.5·10⁵) and at
+//! most about half a second of work, the heaviest kind measured being a short power
+//! expanded into tens of thousands of terms and printed in three notations; `PER_BYTE`
+//! keeps a megabyte of input, read and printed, under about two seconds on one core.
 //!
 //! Counting never fails, so infallible routines count too (and a long walk stops early
 //! once the budget is spent, [`count_and_spent`]); a fallible routine asks [`check`] at its
-//! steps and refuses with [`AlgebraError::OutOfWork`] once the budget is spent. That error is not "beyond bounds": it is not passed over by a route of
-//! `simplify` but ends the command, and [`Budget::run`] refuses a result reached after the
+//! steps and refuses with [`AlgebraError::OutOfWork`] once the budget is spent. That error
+//! is not "beyond bounds": it is not passed over by a route of `simplify` but ends the
+//! command, and [`Budget::run`] refuses a result reached after the
 //! budget was spent, so no form is ever silently left less simplified for lack of work.
 //!
 //! The count is per thread: a command that fans out (claims checked in parallel) gives each
@@ -28,7 +30,7 @@ use super::error::AlgebraError;
 use std::cell::Cell;
 
 /// Operations every input may spend, however short.
-pub const FLOOR: u64 = 10_000_000;
+pub const FLOOR: u64 = 5_000_000;
 /// Operations each byte of input adds to the floor.
 pub const PER_BYTE: u64 = 10;
 

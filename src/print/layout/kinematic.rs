@@ -6,7 +6,7 @@
 //! first, accelerations before velocities, translational before rotational, pure powers
 //! before mixed products, then by axis x, y, z and mixed pairs in cyclic order xy, yz, zx.
 
-use crate::algebra::{Expr, Role, Symbol, View};
+use crate::algebra::{work, Expr, Role, Symbol, View};
 use std::cmp::Ordering;
 
 /// The kinematic factors of a term, in canonical order.
@@ -40,13 +40,40 @@ pub(super) fn is_kinematic_factor(f: &Expr) -> bool {
 
 /// Whether a kinematic symbol occurs anywhere in `e`.
 pub(super) fn mentions_kinematic(e: &Expr) -> bool {
-    match e.view() {
-        View::Num(_) => false,
-        View::Sym(s) => s.role() == Role::Kinematic,
-        View::Add(xs) | View::Mul(xs) => xs.iter().any(mentions_kinematic),
-        View::Pow(b, x) => mentions_kinematic(b) || mentions_kinematic(x),
-        View::Func(_, a) => mentions_kinematic(a),
+    !kinematic_symbols(e, true).is_empty()
+}
+
+/// The kinematic symbols of `e` as met (repeats included), or with `first_only` at most the
+/// first. Every node walked counts against the work budget: a function's argument may be as
+/// long as the input, and each term of a sum asks about its own.
+fn kinematic_symbols(e: &Expr, first_only: bool) -> Vec<Symbol> {
+    fn walk(e: &Expr, first_only: bool, nodes: &mut u64, found: &mut Vec<Symbol>) {
+        if first_only && !found.is_empty() {
+            return;
+        }
+        *nodes += 1;
+        match e.view() {
+            View::Num(_) => {}
+            View::Sym(s) => {
+                if s.role() == Role::Kinematic {
+                    found.push(s);
+                }
+            }
+            View::Add(xs) | View::Mul(xs) => {
+                xs.iter().for_each(|x| walk(x, first_only, nodes, found));
+            }
+            View::Pow(b, x) => {
+                walk(b, first_only, nodes, found);
+                walk(x, first_only, nodes, found);
+            }
+            View::Func(_, a) => walk(a, first_only, nodes, found),
+        }
     }
+    let mut nodes = 0;
+    let mut found = Vec::new();
+    walk(e, first_only, &mut nodes, &mut found);
+    work::count(nodes);
+    found
 }
 
 /// Translational (v, a) before rotational (ω, α) before angles and others.
@@ -105,11 +132,12 @@ pub(super) fn term_shape(term: &Expr) -> TermShape {
                 visit(s);
                 matches!(s.role(), Role::Kinematic | Role::UnitVector)
             }
-            View::Func(_, arg) if mentions_kinematic(arg) => {
-                for s in f.base().symbols() {
-                    visit(s);
-                }
-                true
+            View::Func(_, arg) => {
+                let mut found = kinematic_symbols(arg, false);
+                found.sort();
+                found.dedup();
+                found.iter().for_each(|&s| visit(s));
+                !found.is_empty()
             }
             _ => false,
         };

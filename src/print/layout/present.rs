@@ -16,9 +16,12 @@ impl Layout {
     }
 
     /// The presented form of `e`, a sum's terms collected into groups (rule 1) when
-    /// `collect` holds, each standing alone otherwise (rule 5).
+    /// `collect` holds, each standing alone otherwise (rule 5). Once the work budget is
+    /// spent a zero stands for the rest: the command refuses the page (`Budget::run`).
     fn present_collected(&mut self, e: &Expr, axis: Axis, collect: bool) -> (bool, NodeId) {
-        work::count(1);
+        if work::count_and_spent(1) {
+            return self.present_product(&Q::ZERO, std::iter::empty(), axis);
+        }
         match e.view() {
             View::Add(_) => self.present_sum(e, axis, collect),
             _ => self.present_term(e, axis),

@@ -54,7 +54,7 @@ fn without_comment_lines_and_titles(source: &str) -> String {
 /// Refuses the first line (but a title) with more than one '(' that is never closed.
 fn check_unclosed_parentheses(source_name: &str, source: &str) -> Result<(), Diagnostic> {
     let mut start = 0;
-    for line in source.split(['\n', '\r']) {
+    for line in source.split('\n') {
         let unclosed = unclosed_before_comment(line);
         if unclosed.len() > 1 && !is_title(line) {
             let at = start + unclosed[0];

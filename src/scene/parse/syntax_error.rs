@@ -69,7 +69,8 @@ pub(super) fn syntax_error(
             };
             let found = match source[at..].chars().next() {
                 None => "end of file".to_string(),
-                Some('\n' | '\r') => "end of line".to_string(),
+                Some('\n') => "end of line".to_string(),
+                Some('\r') if source[at + 1..].starts_with('\n') => "end of line".to_string(),
                 Some(c) => format!("'{c}'"),
             };
             let expected = match expected {

@@ -214,7 +214,20 @@ pub fn injected(output: &str, markup: Markup) -> Option<&'static str> {
             let tag = lower.as_bytes().windows(2).any(|w| {
                 w[0] == b'<' && (w[1].is_ascii_alphabetic() || w[1] == b'/' || w[1] == b'!')
             });
-            let link = lower.contains("](javascript:");
+            // After an odd number of backslashes `](` is an escaped bracket, not the end of
+            // a link's text.
+            let escaped = |at: usize| {
+                lower[..at]
+                    .bytes()
+                    .rev()
+                    .take_while(|&b| b == b'\\')
+                    .count()
+                    % 2
+                    == 1
+            };
+            let link = lower
+                .match_indices("](javascript:")
+                .any(|(at, _)| !escaped(at));
             (tag || link).then_some("raw HTML or a javascript: link in Markdown")
         }
         Markup::Html => HTML

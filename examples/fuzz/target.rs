@@ -204,9 +204,12 @@ pub fn located(d: &Diagnostic, text: &str, scene: bool) -> Option<Finding> {
     }
     let line = text.lines().nth(d.line.wrapping_sub(1));
     let said = format!("{} {}", d.message, d.help.as_deref().unwrap_or_default());
-    // The end of the input is a place: where a missing line goes.
+    // The end of the input is a place: where a missing line goes. An empty span at the
+    // start stands for the input as a whole (too large to read).
     let at_end = d.span.offset() >= text.trim_end().len();
+    let whole_input = d.span.offset() == 0 && d.span.is_empty();
     let no_place = !at_end
+        && !whole_input
         && match line {
             None => true,
             Some(l) => scene && l.trim_start().starts_with('#'),

@@ -141,9 +141,17 @@ fn word(out: &mut String, token: &str) {
 
 fn one(out: &mut String, node: &Node, notation: Notation) {
     match node {
-        Node::Operator(c @ ('<' | '>')) if notation == Notation::Markdown => {
-            word(out, if *c == '<' { r"\lt" } else { r"\gt" })
-        }
+        // In Markdown no character of the maths may make a tag or a link where `$` is not
+        // read as maths: `<`, `>`, `[` and `]` are commands.
+        Node::Operator(c @ ('<' | '>' | '[' | ']')) if notation == Notation::Markdown => word(
+            out,
+            match c {
+                '<' => r"\lt",
+                '>' => r"\gt",
+                '[' => r"\lbrack",
+                _ => r"\rbrack",
+            },
+        ),
         Node::Letter(c) | Node::Operator(c) => match latex_of(*c) {
             Some(command) => word(out, &command),
             None => word(out, c.encode_utf8(&mut [0; 4])),

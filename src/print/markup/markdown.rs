@@ -2,8 +2,9 @@
 //! backslash; `< > &` as HTML's references, so that no tag or reference is ever formed and
 //! `<script>` reaches no renderer as a tag), so that `I_xy` or `[I]` never turns into
 //! emphasis or a link, a character a reader cannot see as its escape `\u{1b}`; and its
-//! mathematics as `$…$` in the LaTeX of [`super::latex`], where `<`, `>` and `&` are the
-//! commands `\lt`, `\gt` and `\And` (MathJax's and KaTeX's), never the characters.
+//! mathematics as `$…$` in the LaTeX of [`super::latex`], where `<`, `>`, `&`, `[` and `]`
+//! are the commands `\lt`, `\gt`, `\And`, `\lbrack` and `\rbrack` (MathJax's and KaTeX's),
+//! never the characters.
 
 use crate::visible;
 

@@ -54,7 +54,9 @@ impl Reader<'_> {
                         },
                     };
                     value = Some(n * unit.to_si);
-                    written = Some(p.as_str().trim().to_string());
+                    // As written, each run of blanks (tabs, a lone CR) one space.
+                    let words: Vec<&str> = p.as_str().split_whitespace().collect();
+                    written = Some(words.join(" "));
                     dimension = Some((unit.dimension, span(p)));
                 }
                 Rule::unit => {

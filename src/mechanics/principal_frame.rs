@@ -432,8 +432,7 @@ fn frame_step(frame: &PrincipalFrame, how: Decided, point: &str) -> Step {
         } else if name.starts_with('I') {
             numbers.push(format!("${name} = {}$", four_figures(&value)));
         } else {
-            let axis: Vec<String> = frame.axes[k].iter().map(four_figures).collect();
-            numbers.push(format!("${name} = ({})$", axis.join(", ")));
+            numbers.push(format!("${name} = {}$", numeric_axis(&frame.axes[k])));
         }
     }
     if !numbers.is_empty() {
@@ -461,6 +460,27 @@ fn vector_sum(v: &Vector) -> Expr {
     v.iter()
         .zip(vector::unit_vectors())
         .fold(Expr::zero(), |sum, (c, u)| sum + c * &u)
+}
+
+/// A numeric axis as the results show it, `0.8366\,\mathbf{i} - 0.496\,\mathbf{j}`: each
+/// component that is not zero in four figures, times its unit vector.
+fn numeric_axis(e: &Vector) -> String {
+    let mut out = String::new();
+    for (c, unit) in e.iter().zip(["i", "j", "k"]) {
+        let shown = four_figures(c);
+        let magnitude = shown.trim_start_matches('-');
+        if magnitude == "0" {
+            continue;
+        }
+        out.push_str(match (out.is_empty(), shown.starts_with('-')) {
+            (true, false) => "",
+            (true, true) => "-",
+            (false, false) => " + ",
+            (false, true) => " - ",
+        });
+        out.push_str(&format!(r"{magnitude}\,\mathbf{{{unit}}}"));
+    }
+    out
 }
 
 /// A number in four significant figures, as the results show it.

@@ -93,7 +93,9 @@ pub fn broken_vector(v: &Vector, notation: Notation, first_em: f64, width_em: f6
         let unit = Symbol::new(unit);
         let first = pieces.is_empty();
         let start = pieces.len();
-        presented(component, Axis::X, |layout, negative, root| {
+        let (flipped, component) = super::signed_component(component);
+        presented(&component, Axis::X, |layout, negative, root| {
+            let negative = negative != flipped;
             let mut text = String::new();
             super::vector_component(&mut text, layout, negative, root, first, unit, notation);
             let sign = Sign::of(first, negative);

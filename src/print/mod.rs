@@ -13,6 +13,7 @@
 //! assert_eq!(print::text(&h), "I_x*w_x - I_xy*w_y");
 //! ```
 
+pub mod grouped_vector;
 mod growing_parentheses;
 pub mod latex;
 pub mod layout;
@@ -27,9 +28,10 @@ pub use line_break::{
     aligned_room, broken, broken_vector, width_em, CONTINUATION_EM, PAGE_WIDTH_EM,
 };
 
-use crate::algebra::{Axis, Expr, Symbol, Vector};
+use crate::algebra::{Axis, Expr, Symbol, Vector, View};
 use layout::{Integer, Layout, Node, NodeId, Span};
 pub use spelling::on_one_page;
+use std::borrow::Cow;
 use std::cell::RefCell;
 use std::fmt::Write;
 
@@ -222,8 +224,10 @@ pub fn vector(v: &Vector, notation: Notation) -> String {
             continue;
         }
         let first = out.is_empty();
-        presented(component, Axis::X, |layout, negative, root| {
+        let (flipped, component) = signed_component(component);
+        presented(&component, Axis::X, |layout, negative, root| {
             let unit = Symbol::new(unit);
+            let negative = negative != flipped;
             vector_component(&mut out, layout, negative, root, first, unit, notation);
         });
     }
@@ -234,6 +238,16 @@ pub fn vector(v: &Vector, notation: Notation) -> String {
         });
     }
     out
+}
+
+/// A vector's component as it is written: a sum whose every term is negative with its
+/// minus before the parentheses, `− (4L² + r²) j` (`true` and the sum negated).
+fn signed_component(c: &Expr) -> (bool, Cow<'_, Expr>) {
+    let negative_terms = |ts: &[Expr]| ts.iter().all(|t| t.coefficient().is_negative());
+    match c.view() {
+        View::Add(terms) if negative_terms(terms) => (true, Cow::Owned(-c)),
+        _ => (false, Cow::Borrowed(c)),
+    }
 }
 
 /// The marks `notation` writes around and between terms.

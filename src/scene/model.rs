@@ -335,6 +335,9 @@ pub struct Scene {
     pub source_name: String,
     pub source: String,
     pub title: Option<String>,
+    /// What the problem says, its `statement` lines in order (words with `$…$` mathematics,
+    /// as a title), printed first on the worked solution.
+    pub statement: Vec<String>,
     pub givens: Vec<Given>,
     pub parts: Vec<Part>,
     /// Whether the origin O is a fixed point of the body.

@@ -6,13 +6,14 @@
 //! (never `%` comments), so a page of derivations reads like the chapter.
 
 use super::json::relations_json;
+use super::page::{rows, Block, Heading, Page, Section};
 use super::parts_table;
-use super::render::{latex_relations, relation, LATEX_PREAMBLE};
 use super::Format;
 use crate::algebra::Axis;
 use crate::mechanics::catalogue::convention;
 use crate::mechanics::{Derivation, Step};
-use crate::print::{markup, Notation};
+use crate::print::markup;
+use std::borrow::Cow;
 
 /// How `kinetics derive` shows its derivations.
 #[derive(Debug, Clone, Copy)]
@@ -28,125 +29,64 @@ pub struct Shown {
 
 /// Renders `derivations` as `shown` says.
 pub fn render_derivations(derivations: &[Derivation], shown: Shown) -> String {
-    let Shown {
-        format,
-        standalone,
-        axis,
-        ..
-    } = shown;
-    match format {
-        Format::Json => json(derivations, axis).to_string(),
-        Format::Html => html(derivations, shown),
-        _ => {
-            let mut out = String::new();
-            if standalone && format == Format::Latex {
-                out.push_str(LATEX_PREAMBLE);
-            }
-            for d in derivations {
-                section(&mut out, d, shown);
-            }
-            if standalone && format == Format::Latex {
-                out.push_str("\\end{document}\n");
-            }
-            out.trim_end().to_string()
-        }
+    let conventions: Vec<Option<String>> = derivations
+        .iter()
+        .map(|d| convention(&d.name, shown.axis))
+        .collect();
+    let page = page(derivations, &conventions, shown.all_steps);
+    match shown.format {
+        Format::Json => json(derivations, shown.axis).to_string(),
+        Format::Html => super::html::page(&page),
+        Format::Latex => super::latex::page(&page, shown.standalone)
+            .trim_end()
+            .to_string(),
+        Format::Markdown => super::markdown::page(&page).trim_end().to_string(),
+        Format::Text => super::text::page(&page).trim_end().to_string(),
     }
 }
 
-/// The steps shown: all of them, or the last (the result).
-fn steps(d: &Derivation, all_steps: bool) -> &[Step] {
-    if all_steps {
-        &d.steps
-    } else {
-        &d.steps[d.steps.len().saturating_sub(1)..]
+/// The page: a section per derivation, its convention, then its steps as subsections (or
+/// its result's relations alone).
+fn page<'a>(
+    derivations: &'a [Derivation],
+    conventions: &'a [Option<String>],
+    all_steps: bool,
+) -> Page<'a> {
+    let sections = derivations
+        .iter()
+        .zip(conventions)
+        .map(|(d, convention)| {
+            let mut section = Section::new(Heading::Derivation(&d.title), Vec::new());
+            if let Some(c) = convention {
+                section.blocks.push(Block::Words(Cow::Borrowed(c)));
+            }
+            if all_steps {
+                section.subsections = d
+                    .steps
+                    .iter()
+                    .map(|step| Section::new(Heading::DerivationStep(&step.title), blocks(step)))
+                    .collect();
+            } else if let Some(last) = d.steps.last() {
+                section.blocks.extend(blocks(last));
+            }
+            section
+        })
+        .collect();
+    Page {
+        title: None,
+        untitled: "Derivations",
+        sections,
     }
 }
 
-fn section(out: &mut String, d: &Derivation, shown: Shown) {
-    let format = shown.format;
-    heading(out, format, 1, &d.title);
-    if let Some(c) = convention(&d.name, shown.axis) {
-        paragraph(out, format, &c);
+/// A step's table of parts, if any, and its relations.
+fn blocks(step: &Step) -> Vec<Block<'_>> {
+    let mut blocks = Vec::new();
+    if let Some(table) = &step.table {
+        blocks.push(Block::Table(table));
     }
-    for step in steps(d, shown.all_steps) {
-        if shown.all_steps {
-            heading(out, format, 2, &step.title);
-        }
-        relations(out, format, step);
-    }
-    out.push('\n');
-}
-
-/// A heading of `level` 1 (a derivation) or 2 (a step), its mathematics typeset.
-fn heading(out: &mut String, format: Format, level: usize, title: &str) {
-    match format {
-        Format::Latex => {
-            let command = if level == 1 { "section" } else { "subsection" };
-            out.push_str(&format!("\\{command}*{{{}}}\n", markup::latex(title)));
-        }
-        Format::Markdown => {
-            out.push_str(&format!(
-                "{} {}\n\n",
-                "#".repeat(level + 1),
-                markup::markdown(title)
-            ));
-        }
-        _ => out.push_str(&format!("{} {}\n", "#".repeat(level), markup::text(title))),
-    }
-}
-
-fn paragraph(out: &mut String, format: Format, words: &str) {
-    match format {
-        Format::Latex => out.push_str(&format!("{}\n", markup::latex(words))),
-        Format::Markdown => out.push_str(&format!("{}\n\n", markup::markdown(words))),
-        _ => out.push_str(&format!("{}\n", markup::text(words))),
-    }
-}
-
-fn relations(out: &mut String, format: Format, step: &Step) {
-    match format {
-        Format::Latex => {
-            if let Some(table) = &step.table {
-                out.push_str(&parts_table::latex(table));
-            }
-            out.push_str(&latex_relations(&step.relations));
-        }
-        Format::Markdown => {
-            if let Some(table) = &step.table {
-                out.push_str(&parts_table::markdown(table));
-            }
-            out.push_str(&format!("$$\n{}$$\n\n", latex_relations(&step.relations)));
-        }
-        _ => {
-            if let Some(table) = &step.table {
-                out.push_str(&parts_table::text(table));
-            }
-            for r in &step.relations {
-                let (l, rhs) = relation(r, Notation::Text);
-                out.push_str(&format!("{l} = {rhs}\n"));
-            }
-        }
-    }
-}
-
-/// One HTML page: a section per derivation, its convention, its steps (headings `<h3>`).
-fn html(derivations: &[Derivation], shown: Shown) -> String {
-    let mut out = super::html::page_start("Derivations");
-    for d in derivations {
-        out.push_str(&format!("<section>\n<h2>{}</h2>\n", markup::html(&d.title)));
-        if let Some(c) = convention(&d.name, shown.axis) {
-            out.push_str(&format!("<p>{}</p>\n", markup::html(&c)));
-        }
-        for step in steps(d, shown.all_steps) {
-            if shown.all_steps {
-                out.push_str(&format!("<h3>{}</h3>\n", markup::html(&step.title)));
-            }
-            out.push_str(&super::html::step_body(step));
-        }
-        out.push_str("</section>\n");
-    }
-    out.push_str(super::html::PAGE_END);
-    out
+    blocks.push(Block::Relations(rows(&step.relations)));
+    blocks
 }
 
 fn json(derivations: &[Derivation], axis: Axis) -> serde_json::Value {

@@ -168,7 +168,7 @@ pub(super) fn json(
     let number = |n: &Number| serde_json::json!({"name": n.name, "value": n.value, "unit": n.unit});
     serde_json::json!({
         "title": scene.title,
-        "givens": super::json::givens_json(scene),
+        "givens": super::json::givens_json(&scene.givens),
         "results": results.iter().map(|r| {
             let mut row = serde_json::json!({
                 "name": r.name,

@@ -9,14 +9,15 @@
 //! (`print::broken`), scrolled sideways only where one term alone is wider than the page.
 
 use super::inertia_results;
-use super::mathml_value::{decimal, spaced_unit, value};
+use super::mathml_value::value;
 use super::numbers::format_value;
-use super::render::{form_lines, relations_room, results_room, Result};
+use super::page::{rows_room, Block, Heading, Page, Section};
+use super::render::{form_lines, results_room, Result};
+use super::vector_value;
 use crate::algebra::{Axis, Expr};
-use crate::mechanics::derivation::{Relation, Step, Table};
+use crate::mechanics::derivation::Table;
 use crate::print::{self, markup, mathml::escaped, Notation};
 use crate::scene::model::Given;
-use crate::scene::{Analysis, Scene};
 
 /// The page's style: a column of text, headings smaller a level down (derive's steps,
 /// `<h3>`, under their derivation's `<h2>`), the maths in a maths font, the left sides of the
@@ -40,7 +41,7 @@ table.parts th, table.parts td { border-bottom: 1px solid #bbb; padding: 0.2em 0
 ";
 
 /// The head of a page titled `title` (plain words), up to its `<body>`; [`PAGE_END`] closes it.
-pub(super) fn page_start(title: &str) -> String {
+fn page_start(title: &str) -> String {
     format!(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <title>{}</title>\n<style>\n{STYLE}</style>\n</head>\n<body>\n",
@@ -49,50 +50,87 @@ pub(super) fn page_start(title: &str) -> String {
 }
 
 /// The end of a page begun by [`page_start`].
-pub(super) const PAGE_END: &str = "</body>\n</html>\n";
+const PAGE_END: &str = "</body>\n</html>\n";
 
-/// A step's table of parts (if any) and its relations aligned at `=`.
-pub(super) fn step_body(step: &Step) -> String {
-    let mut out = String::new();
-    if let Some(table) = &step.table {
-        out.push_str(&parts(table));
+/// The page as one HTML document.
+pub(super) fn page(page: &Page) -> String {
+    let title = page.title.map_or(page.untitled.to_string(), markup::text);
+    let mut out = page_start(&title);
+    if let Some(t) = page.title {
+        out.push_str(&format!("<h1>{}</h1>\n", markup::html(t)));
     }
-    if step.relations.is_empty() {
-        return out;
+    for s in &page.sections {
+        section(&mut out, s);
     }
-    let (first_em, width_em) = relations_room(&step.relations);
-    let rows = step
-        .relations
-        .iter()
-        .map(|r| relation_rows(r, first_em, width_em));
-    out.push_str(&block(rows));
+    out.push_str(PAGE_END);
     out
 }
 
-/// The page of a worked solution (`results` in the order of `analysis.results`).
-pub fn page(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
-    let title = scene.title.as_deref().unwrap_or("Worked solution");
-    let mut out = page_start(&markup::text(title));
-    if let Some(t) = &scene.title {
-        out.push_str(&format!("<h1>{}</h1>\n", markup::html(t)));
+/// A section; a step's and a derivation's in a `<section>` of their own.
+fn section(out: &mut String, section: &Section) {
+    let enclosed = matches!(
+        section.heading,
+        Heading::Step { .. } | Heading::Derivation(_)
+    );
+    if enclosed {
+        out.push_str("<section>\n");
     }
-    let givens: Vec<String> = scene.givens.iter().map(given).collect();
-    out.push_str(&format!("<h2>Given</h2>\n<p>{}.</p>\n", givens.join(", ")));
-    for (k, step) in analysis.plan.iter().enumerate() {
-        out.push_str(&format!(
-            "<section>\n<h2><span class=\"step\">Step {}</span> {}</h2>\n",
-            k + 1,
-            markup::html(&step.title)
-        ));
-        out.push_str(&step_body(step));
+    match &section.heading {
+        Heading::Answers => return,
+        Heading::Statement => {}
+        Heading::Given => out.push_str("<h2>Given</h2>\n"),
+        Heading::Find => out.push_str("<h2>Find</h2>\n"),
+        Heading::Step { number, title } => out.push_str(&format!(
+            "<h2><span class=\"step\">Step {number}</span> {}</h2>\n",
+            markup::html(title)
+        )),
+        Heading::Results => out.push_str("<h2>Results</h2>\n"),
+        Heading::Derivation(title) => out.push_str(&format!("<h2>{}</h2>\n", markup::html(title))),
+        Heading::DerivationStep(title) => {
+            out.push_str(&format!("<h3>{}</h3>\n", markup::html(title)));
+        }
+    }
+    for b in &section.blocks {
+        out.push_str(&block(b));
+    }
+    for sub in &section.subsections {
+        self::section(out, sub);
+    }
+    if enclosed {
         out.push_str("</section>\n");
     }
-    out.push_str("<h2>Results</h2>\n");
-    let (first_em, width_em) = results_room(results);
-    let rows = results.iter().map(|r| result_rows(r, first_em, width_em));
-    out.push_str(&block(rows));
-    out.push_str(PAGE_END);
-    out
+}
+
+fn block(block: &Block) -> String {
+    match block {
+        Block::Words(words) => format!("<p>{}</p>\n", markup::html(words)),
+        Block::Givens(givens) => inline_list(givens.iter().map(given)),
+        Block::Find(names) => inline_list(names.iter().map(|n| {
+            let mut name = String::new();
+            print::mathml::latex_name(&mut name, &n.latex);
+            format!("<math>{name}</math>")
+        })),
+        Block::Table(table) => parts(table),
+        Block::Relations(rows) if rows.is_empty() => String::new(),
+        Block::Relations(rows) => {
+            let (first_em, width_em) = rows_room(rows);
+            self::block_of_rows(rows.iter().map(|row| {
+                let r = row.right();
+                let lines = print::broken(&r.rhs, r.axis, Notation::MathMl, first_em, width_em);
+                self::rows(&row.left(Notation::MathMl), &lines)
+            }))
+        }
+        Block::Results(results) => {
+            let (first_em, width_em) = results_room(results);
+            block_of_rows(results.iter().map(|r| result_rows(r, first_em, width_em)))
+        }
+        Block::Answers(_) => String::new(),
+    }
+}
+
+/// Items of inline maths as a sentence in a paragraph.
+fn inline_list(items: impl Iterator<Item = String>) -> String {
+    format!("<p>{}.</p>\n", items.collect::<Vec<_>>().join(", "))
 }
 
 /// A given as inline maths: `m = 0.3 kg`, or its name alone when it is symbolic.
@@ -109,7 +147,7 @@ fn given(g: &Given) -> String {
 
 /// Rows of a three-column table aligned at `=`, as one block of maths, its fractions set
 /// full size as in LaTeX's `align*` (a table's cells are otherwise in text style).
-fn block(rows: impl Iterator<Item = String>) -> String {
+fn block_of_rows(rows: impl Iterator<Item = String>) -> String {
     format!(
         "<math display=\"block\"><mtable displaystyle=\"true\" columnalign=\"right center left\">\n{}</mtable></math>\n",
         rows.collect::<String>()
@@ -135,12 +173,6 @@ fn rows(lhs: &str, lines: &[String]) -> String {
     out
 }
 
-fn relation_rows(r: &Relation, first_em: f64, width_em: f64) -> String {
-    let lhs = print::render(&r.lhs, Notation::MathMl, r.axis);
-    let lines = print::broken(&r.rhs, r.axis, Notation::MathMl, first_em, width_em);
-    rows(&lhs, &lines)
-}
-
 /// A result: its quantity's name, its form (broken as a relation is) and, when every given
 /// has a value, `= value unit` after its last line.
 fn result_rows(r: &Result, first_em: f64, width_em: f64) -> String {
@@ -164,24 +196,14 @@ fn result_rows(r: &Result, first_em: f64, width_em: f64) -> String {
     rows(&name, &lines)
 }
 
-/// A result's value and unit in MathML: `−135 m/s²`, or `(0, 0, 0.024) kg·m²/s`.
+/// A result's value and unit in MathML: `−135 m/s²`, a vector by its components
+/// (`vector_value.rs`).
 fn value_mathml(r: &Result) -> Option<String> {
-    let values = r.value.as_ref()?;
     let unit = r.unit.as_deref().unwrap_or("");
-    Some(match values.as_slice() {
+    Some(match r.value.as_deref()? {
         [x] => value(&format_value(*x), unit),
-        components => {
-            let numbers: Vec<String> = components
-                .iter()
-                .map(|x| decimal(&format_value(*x)))
-                .collect();
-            // The unit of a vector stands after its parenthesis, as in the LaTeX.
-            format!(
-                "<mrow><mo>(</mo>{}<mo>)</mo></mrow>{}",
-                numbers.join("<mo>,</mo>"),
-                spaced_unit(unit)
-            )
-        }
+        components @ [_, _, _] => vector_value::mathml(components, unit),
+        _ => return None,
     })
 }
 

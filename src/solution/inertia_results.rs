@@ -19,6 +19,7 @@ use super::mathml_value::{decimal, spaced_unit, value as mathml_value};
 use super::numbers::format_value;
 use super::render::Result;
 use super::unit_latex::quantity;
+use super::vector_value;
 use crate::algebra::{Axis, Expr, Matrix, Vector};
 use crate::print::PAGE_WIDTH_EM;
 use crate::print::{self, markup, Notation};
@@ -163,7 +164,7 @@ fn matrix_rows(
     format!("{open}{}{close}", rows.join(between))
 }
 
-/// The numbers of a row in text: `0.01 kg·m^2`, `(0.6, 0.8, 0)`, `[[…], […], […]] kg·m^2`.
+/// The numbers of a row in text: `0.01 kg·m^2`, `0.6 i + 0.8 j`, `[[…], […], […]] kg·m^2`.
 fn row_numbers_text(row: &Row) -> Option<String> {
     let numbers = row.numbers?;
     let body = match (&row.form, numbers.len()) {
@@ -172,7 +173,7 @@ fn row_numbers_text(row: &Row) -> Option<String> {
             let rows: Vec<String> = numbers.chunks(3).map(numbers_text).collect();
             format!("[[{}]]", rows.join("], ["))
         }
-        _ => format!("({})", numbers_text(numbers)),
+        _ => return Some(vector_value::text(numbers, row.unit)),
     };
     Some(match row.unit {
         "" => body,
@@ -216,8 +217,13 @@ pub(super) fn text(r: &Result, numbers_only: bool) -> Option<String> {
 }
 
 /// The result on one line (JSON's `text` and `latex`): a tensor's matrix, or a frame's rows
-/// joined, each numeric form by its four figures (`I_1 = 0.03413`, `e_1 = (0.8366, …)`).
-fn one_line_in(v: &Value, form: impl Fn(&Form) -> String, separator: &str) -> String {
+/// joined, each numeric form by its four figures (`I_1 = 0.03413`, `e_1 = 0.8366 i + …`).
+fn one_line_in(
+    v: &Value,
+    form: impl Fn(&Form) -> String,
+    vector_numbers: fn(&[f64], &str) -> String,
+    separator: &str,
+) -> String {
     match v {
         Value::Tensor(m) => form(&Form::Matrix(m)),
         Value::Principal(p) => {
@@ -228,7 +234,7 @@ fn one_line_in(v: &Value, form: impl Fn(&Form) -> String, separator: &str) -> St
                 unit: "",
             }) {
                 Show::Numbers if numbers.len() == 1 => format_value(numbers[0]),
-                Show::Numbers => format!("({})", numbers_text(&numbers)),
+                Show::Numbers => vector_numbers(&numbers, ""),
                 _ => String::new(),
             };
             let value = |e: &Expr| e.as_num().map_or(f64::NAN, crate::algebra::Q::to_f64);
@@ -260,7 +266,7 @@ fn one_line_in(v: &Value, form: impl Fn(&Form) -> String, separator: &str) -> St
 
 /// [`one_line_in`] as text.
 pub(super) fn one_line(v: &Value) -> String {
-    one_line_in(v, form_text, "; ")
+    one_line_in(v, form_text, vector_value::text, "; ")
 }
 
 /// The LaTeX of a form.
@@ -286,7 +292,7 @@ fn bmatrix(m: &Matrix, entry: impl Fn(&Expr) -> String) -> String {
 
 /// [`one_line_in`] in LaTeX.
 pub(super) fn one_line_latex(v: &Value) -> String {
-    one_line_in(v, form_latex, r",\quad ")
+    one_line_in(v, form_latex, vector_value::latex, r",\quad ")
 }
 
 /// The numbers of a row in LaTeX, with the unit.
@@ -299,7 +305,7 @@ fn row_numbers_latex(row: &Row) -> Option<String> {
             let rows: Vec<String> = cells.chunks(3).map(|c| c.join(" & ")).collect();
             format!(r"\begin{{bmatrix}} {} \end{{bmatrix}}", rows.join(r" \\ "))
         }
-        _ => format!(r"({})", numbers_text(numbers)),
+        _ => return Some(vector_value::latex(numbers, row.unit)),
     };
     Some(quantity(&body, row.unit))
 }
@@ -401,13 +407,7 @@ fn row_numbers_mathml(row: &Row) -> Option<String> {
                 .collect();
             mathml_matrix(cells) + &spaced_unit(row.unit)
         }
-        _ => {
-            let parts: Vec<String> = numbers.iter().map(|x| decimal(&format_value(*x))).collect();
-            format!(
-                "<mrow><mo>(</mo>{}<mo>)</mo></mrow>",
-                parts.join("<mo>,</mo>")
-            )
-        }
+        _ => vector_value::mathml(numbers, row.unit),
     })
 }
 

@@ -1,13 +1,15 @@
 //! The worked solution as JSON (`kinetics solve --format json`, `docs/solution.schema.json`):
-//! the givens, each step with its relations as text and LaTeX, the names of long radicands,
-//! and the results with their forms and values.
+//! the statement, the givens, the quantities asked for, each step with its relations as text
+//! and LaTeX, the names of long radicands, and the results with their forms and values.
 
 use super::inertia_results;
+use super::page::{Block, Heading, Page, Row};
 use super::parts_table;
 use super::render::{relation, Result};
 use crate::mechanics::derivation::Relation;
-use crate::print::{markup, Notation};
-use crate::scene::{Analysis, Scene};
+use crate::print::{self, markup, Notation};
+use crate::scene::model::Given;
+use crate::scene::Analysis;
 
 /// Relations as JSON objects `{"text": "lhs = rhs", "latex": "lhs = rhs"}`.
 pub fn relations_json(rs: &[Relation]) -> Vec<serde_json::Value> {
@@ -20,37 +22,84 @@ pub fn relations_json(rs: &[Relation]) -> Vec<serde_json::Value> {
         .collect()
 }
 
-/// The worked solution as JSON (`docs/solution.schema.json`).
-pub(super) fn solution(
-    scene: &Scene,
-    analysis: &Analysis,
-    results: &[Result],
-) -> serde_json::Value {
-    serde_json::json!({
-        "title": scene.title,
-        "plan": analysis.plan.iter().map(|s| markup::text(&s.title)).collect::<Vec<_>>(),
-        "givens": givens_json(scene),
-        "steps": analysis.plan.iter().map(|s| serde_json::json!({
-            "title": markup::text(&s.title),
-            "title_latex": markup::latex(&s.title),
-            "table": s.table.as_ref().map(parts_table::json),
-            "relations": relations_json(&s.relations),
-        })).collect::<Vec<_>>(),
+/// The worked solution's page as JSON (`docs/solution.schema.json`): the relations of each
+/// step as the page shows them (no tautology, zeros on one row).
+pub(super) fn solution(page: &Page, analysis: &Analysis) -> serde_json::Value {
+    let mut solution = serde_json::json!({
+        "title": page.title,
+        "statement": null,
+        "statement_latex": null,
         "abbreviations": relations_json(&analysis.abbreviations.relations()),
-        "results": results.iter().map(|r| serde_json::json!({
-            "name": r.name,
-            "text": r.text,
-            "latex": r.latex,
-            "value": value_json(r),
-            "unit": r.unit,
-        })).collect::<Vec<_>>(),
+    });
+    let mut steps = Vec::new();
+    for section in &page.sections {
+        for block in &section.blocks {
+            match (&section.heading, block) {
+                (Heading::Statement, Block::Words(words)) => {
+                    solution["statement"] = markup::text(words).into();
+                    solution["statement_latex"] = markup::latex(words).into();
+                }
+                (_, Block::Givens(givens)) => solution["givens"] = givens_json(givens).into(),
+                (_, Block::Find(names)) => {
+                    let names: Vec<&str> = names.iter().map(|n| n.text.as_str()).collect();
+                    solution["find"] = serde_json::json!(names);
+                }
+                (_, Block::Results(results)) => {
+                    solution["results"] = results.iter().map(result_json).collect();
+                }
+                _ => {}
+            }
+        }
+        if let Heading::Step { title, .. } = section.heading {
+            let (mut table, mut relations) = (None, Vec::new());
+            for block in &section.blocks {
+                match block {
+                    Block::Table(t) => table = Some(parts_table::json(t)),
+                    Block::Relations(rows) => relations = rows_json(rows),
+                    _ => {}
+                }
+            }
+            steps.push(serde_json::json!({
+                "title": markup::text(title),
+                "title_latex": markup::latex(title),
+                "table": table,
+                "relations": relations,
+            }));
+        }
+    }
+    solution["plan"] = steps.iter().map(|s| s["title"].clone()).collect();
+    solution["steps"] = steps.into();
+    solution
+}
+
+/// Rows of relations as JSON objects `{"text": "lhs = rhs", "latex": "lhs = rhs"}`.
+fn rows_json(rows: &[Row]) -> Vec<serde_json::Value> {
+    rows.iter()
+        .map(|row| {
+            let r = row.right();
+            let side = |notation| {
+                let right = print::render(&r.rhs, notation, r.axis);
+                format!("{} = {right}", row.left(notation))
+            };
+            serde_json::json!({"text": side(Notation::Text), "latex": side(Notation::Latex)})
+        })
+        .collect()
+}
+
+/// A result: its name, its form in text and LaTeX, its value and unit.
+fn result_json(r: &Result) -> serde_json::Value {
+    serde_json::json!({
+        "name": r.name,
+        "text": r.text,
+        "latex": r.latex,
+        "value": value_json(r),
+        "unit": r.unit,
     })
 }
 
 /// The givens as JSON: `[{name, written, si_value, unit}]`.
-pub(super) fn givens_json(scene: &Scene) -> Vec<serde_json::Value> {
-    scene
-        .givens
+pub(super) fn givens_json(givens: &[Given]) -> Vec<serde_json::Value> {
+    givens
         .iter()
         .map(|g| {
             serde_json::json!({

@@ -9,12 +9,18 @@ pub mod evaluation;
 mod html;
 mod inertia_results;
 mod json;
+mod latex;
+mod markdown;
 mod mathml_value;
 pub mod numbers;
+mod page;
 pub mod parts_table;
 mod precession_rows;
 pub mod render;
+mod solution_page;
+mod text;
 pub mod unit_latex;
+mod vector_value;
 
 pub use derivations::{render_derivations, Shown};
 pub use render::{render, render_numbers, Format};

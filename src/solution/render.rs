@@ -10,11 +10,13 @@
 
 use super::inertia_results;
 use super::numbers::{format_value, result_unit, scene_dimensions, value};
-use super::parts_table;
-use super::unit_latex::quantity;
+use super::solution_page::solution_page;
+use super::vector_value;
+use crate::algebra::Vector;
 use crate::algebra::{Axis, Expr};
 use crate::mechanics::derivation::Relation;
-use crate::print::{self, markup, width::RELATION_EM, Notation};
+use crate::print::grouped_vector::grouped;
+use crate::print::{self, Notation};
 use crate::scene::analysis::Abbreviations;
 use crate::scene::model::{Quantity, Request};
 use crate::scene::units::{Dimension, Dimensions};
@@ -139,8 +141,8 @@ fn computed<'a>(
         Value::Vector(vec) => Result {
             name,
             name_latex,
-            text: print::vector(vec, Notation::Text),
-            latex: print::vector(vec, Notation::Latex),
+            text: vector_form(vec, Notation::Text),
+            latex: vector_form(vec, Notation::Latex),
             value: vec.iter().map(|c| value(scene, c)).collect(),
             unit,
             form: Some(Cow::Borrowed(v)),
@@ -161,8 +163,31 @@ fn computed<'a>(
     vec![in_requested_unit(request, result)]
 }
 
+/// A vector result's form: its common factor in front where that reads shorter
+/// ([`grouped`]), else component by component.
+fn vector_form(v: &Vector, notation: Notation) -> String {
+    match grouped(v) {
+        Some(g) => g.render(notation),
+        None => print::vector(v, notation),
+    }
+}
+
+/// The width in ems of a result's form on one line (none for a form of rows).
+pub(super) fn form_em(r: &Result) -> f64 {
+    match r.form.as_deref() {
+        Some(Value::Scalar(e)) => print::width_em(e, Axis::X),
+        Some(Value::Vector(v)) => match grouped(v) {
+            Some(g) => g.width_em(),
+            None => print::line_break::vector_width_em(v),
+        },
+        Some(Value::Balance(_) | Value::Tensor(_) | Value::Principal(_) | Value::Precession(_))
+        | None => 0.0,
+    }
+}
+
 /// The lines of a result's form in `notation`, broken to fit (a balance: its rows, each a
-/// result of its own, have them).
+/// result of its own, have them). A grouped vector that does not fit on its line is
+/// written component by component, broken as a sum is.
 pub(super) fn form_lines(
     r: &Result,
     notation: Notation,
@@ -171,7 +196,10 @@ pub(super) fn form_lines(
 ) -> Vec<String> {
     match r.form.as_deref() {
         Some(Value::Scalar(e)) => print::broken(e, Axis::X, notation, first_em, width_em),
-        Some(Value::Vector(v)) => print::broken_vector(v, notation, first_em, width_em),
+        Some(Value::Vector(v)) => match grouped(v) {
+            Some(g) if first_em + g.width_em() <= width_em => vec![g.render(notation)],
+            _ => print::broken_vector(v, notation, first_em, width_em),
+        },
         // Their rows are rendered by inertia_results; a balance's rows are results of their own.
         Some(Value::Balance(_) | Value::Tensor(_) | Value::Principal(_) | Value::Precession(_)) => {
             Vec::new()
@@ -187,7 +215,7 @@ pub(super) fn form_lines(
 
 /// The name a result is shown under: the quantity as written (`H_G`, `m*vbar`), but an
 /// unknown in its symbol's one spelling (`M_1` for `M1`), as the steps print it.
-fn shown_name(request: &Request) -> &str {
+pub(super) fn shown_name(request: &Request) -> &str {
     match request.quantity {
         Quantity::Unknown(s) => s.name(),
         _ => &request.name,
@@ -230,17 +258,16 @@ pub(super) fn quantity_latex(quantity: Quantity) -> String {
     }
 }
 
+/// A result's value with its unit in text: `-129.8 N·m`, a vector by its components
+/// (`vector_value.rs`); none for a tensor's or a frame's numbers, which their rows show
+/// (`inertia_results.rs`).
 pub(super) fn value_text(r: &Result) -> Option<String> {
-    let v = r.value.as_ref()?;
-    let numbers: Vec<String> = v.iter().map(|x| format_value(*x)).collect();
-    let body = if numbers.len() == 1 {
-        numbers[0].clone()
-    } else {
-        format!("({})", numbers.join(", "))
-    };
-    Some(match r.unit.as_deref() {
-        Some(u) if !u.is_empty() => format!("{body} {u}"),
-        _ => body,
+    let unit = r.unit.as_deref().unwrap_or_default();
+    Some(match r.value.as_deref()? {
+        [x] if unit.is_empty() => format_value(*x),
+        [x] => format!("{} {unit}", format_value(*x)),
+        components @ [_, _, _] => vector_value::text(components, unit),
+        _ => return None,
     })
 }
 
@@ -285,12 +312,13 @@ pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bo
     print::on_one_page(page, identities, || {
         let dims = scene_dimensions(scene);
         let results = results(scene, analysis, &dims);
+        let page = solution_page(scene, analysis, &results);
         match format {
-            Format::Text => text(scene, analysis, &results),
-            Format::Latex => latex(scene, analysis, &results, standalone),
-            Format::Markdown => markdown(scene, analysis, &results),
-            Format::Json => super::json::solution(scene, analysis, &results).to_string(),
-            Format::Html => super::html::page(scene, analysis, &results),
+            Format::Text => super::text::page(&page),
+            Format::Latex => super::latex::page(&page, standalone),
+            Format::Markdown => super::markdown::page(&page),
+            Format::Json => super::json::solution(&page, analysis).to_string(),
+            Format::Html => super::html::page(&page),
         }
     })
 }
@@ -315,227 +343,12 @@ pub(super) fn given_line(g: &crate::scene::model::Given) -> String {
     }
 }
 
-fn text(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
-    let mut out = String::new();
-    if let Some(t) = &scene.title {
-        out.push_str(&format!("{}\n\n", markup::text(t)));
-    }
-    out.push_str("Given\n");
-    for g in &scene.givens {
-        out.push_str(&format!("  {}\n", given_line(g)));
-    }
-    // Every given has a value: the answers as numbers come before the symbolic steps.
-    let answers = super::engineer::answers_text(results);
-    if scene.givens.iter().all(|g| g.value.is_some()) && !answers.is_empty() {
-        out.push_str(&format!("\nAnswers\n{answers}"));
-    }
-    for (k, step) in analysis.plan.iter().enumerate() {
-        out.push_str(&format!(
-            "\nStep {}: {}\n",
-            k + 1,
-            markup::text(&step.title)
-        ));
-        if let Some(table) = &step.table {
-            out.push_str(&parts_table::text(table));
-        }
-        for r in &step.relations {
-            let (l, rhs) = relation(r, Notation::Text);
-            out.push_str(&format!("  {l} = {rhs}\n"));
-        }
-    }
-    out.push_str("\nResults\n");
-    for r in results {
-        if let Some(lines) = inertia_results::text(r, false) {
-            out.push_str(&lines);
-            continue;
-        }
-        match value_text(r) {
-            Some(v) if r.is_number() => out.push_str(&format!("  {} = {v}\n", r.name)),
-            Some(v) => out.push_str(&format!("  {} = {} = {v}\n", r.name, r.text)),
-            None => out.push_str(&format!("  {} = {}\n", r.name, r.text)),
-        }
-    }
-    out
-}
-
-/// Relations as one `align*` block, each right-hand side broken into lines that fit the page.
-pub fn latex_relations(relations: &[Relation]) -> String {
-    // A step whose numbers are in its title (a numeric solution) has no block.
-    if relations.is_empty() {
-        return String::new();
-    }
-    let lhs: Vec<String> = relations
-        .iter()
-        .map(|r| print::render(&r.lhs, Notation::Latex, r.axis))
-        .collect();
-    let (first_em, width_em) = relations_room(relations);
-    let rows: Vec<String> = relations
-        .iter()
-        .zip(&lhs)
-        .map(|(r, l)| {
-            let lines = print::broken(&r.rhs, r.axis, Notation::Latex, first_em, width_em);
-            aligned_row(l, &lines)
-        })
-        .collect();
-    align(&rows)
-}
-
-/// The room the right-hand sides of a block of relations have, from its widest left-hand
-/// side ([`print::aligned_room`]): the LaTeX's `align*` and the HTML's table alike.
-pub(super) fn relations_room(relations: &[Relation]) -> (f64, f64) {
-    let lhs_em = relations
-        .iter()
-        .map(|r| print::width_em(&r.lhs, r.axis))
-        .fold(0.0, f64::max);
-    print::aligned_room(lhs_em)
-}
-
-/// [`relations_room`] of the results, whose left-hand sides are the quantities' names.
+/// The room of the results' forms ([`print::aligned_room`]), whose left-hand sides are the
+/// quantities' names.
 pub(super) fn results_room(results: &[Result]) -> (f64, f64) {
     let lhs_em = results
         .iter()
         .map(|r| print::width::symbol_em(&r.name_latex))
         .fold(0.0, f64::max);
     print::aligned_room(lhs_em)
-}
-
-/// `lhs &= line_1 \\ &\quad line_2 …`: a right-hand side's later lines indented by a quad.
-fn aligned_row(lhs: &str, lines: &[String]) -> String {
-    format!("{lhs} &= {}", lines.join(" \\\\\n&\\quad "))
-}
-
-fn align(rows: &[String]) -> String {
-    format!(
-        "\\begin{{align*}}\n{}\n\\end{{align*}}\n",
-        rows.join(" \\\\\n")
-    )
-}
-
-/// Results as one `align*` block: each broken into lines that fit the page, its value and
-/// unit after the last line, or on a row of their own when the result took several lines or
-/// the value does not fit after it.
-fn latex_results(results: &[Result]) -> String {
-    let (first_em, width_em) = results_room(results);
-    let rows: Vec<String> = results
-        .iter()
-        .map(|r| {
-            if let Some(rows) = inertia_results::latex(r) {
-                return rows.join(" \\\\\n");
-            }
-            let name = &r.name_latex;
-            let value = latex_value(r);
-            if let Some((number, _)) = value.as_ref().filter(|_| r.is_number()) {
-                return aligned_row(name, std::slice::from_ref(number));
-            }
-            let value = value.map(|(v, width)| (format!("= {v}"), width + RELATION_EM));
-            let mut lines = form_lines(r, Notation::Latex, first_em, width_em);
-            if let Some((tail, tail_em)) = value {
-                let unbroken_em = match r.form.as_deref() {
-                    Some(Value::Scalar(e)) => print::width_em(e, Axis::X),
-                    Some(Value::Vector(v)) => print::line_break::vector_width_em(v),
-                    Some(
-                        Value::Balance(_)
-                        | Value::Tensor(_)
-                        | Value::Principal(_)
-                        | Value::Precession(_),
-                    )
-                    | None => 0.0,
-                };
-                if lines.len() > 1 || first_em + unbroken_em + tail_em > width_em {
-                    return format!("{} \\\\\n&{tail}", aligned_row(name, &lines));
-                }
-                if let Some(line) = lines.first_mut() {
-                    line.push(' ');
-                    line.push_str(&tail);
-                }
-            }
-            aligned_row(name, &lines)
-        })
-        .collect();
-    align(&rows)
-}
-
-/// A result's value and unit in LaTeX (`-135\,\mathrm{m/s^2}`) and its width in ems.
-fn latex_value(r: &Result) -> Option<(String, f64)> {
-    let v = value_text(r)?;
-    let unit = r.unit.as_deref().unwrap_or_default();
-    let number = v.trim_end_matches(unit).trim();
-    // A value's digits, commas and spaces are narrower than 0.55 em; its unit is upright,
-    // narrower than a symbol of the same letters.
-    let width = 0.55 * number.len() as f64 + print::width::symbol_em(unit);
-    Some((quantity(number, unit), width))
-}
-
-/// The preamble of a standalone LaTeX document: article class, amsmath and amssymb only;
-/// `\\sloppy`, so a paragraph of long givens or a long title breaks between words rather than
-/// run past the margin.
-pub(super) const LATEX_PREAMBLE: &str =
-    "\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\sloppy\n\\begin{document}\n";
-
-fn latex(scene: &Scene, analysis: &Analysis, results: &[Result], standalone: bool) -> String {
-    let mut out = String::new();
-    if standalone {
-        out.push_str(LATEX_PREAMBLE);
-    }
-    if let Some(t) = &scene.title {
-        out.push_str(&format!("\\section*{{{}}}\n", markup::latex(t)));
-    }
-    out.push_str("\\paragraph{Given}\n");
-    let givens: Vec<String> = scene.givens.iter().map(latex_given).collect();
-    out.push_str(&format!("{}.\n\n", givens.join(", ")));
-    for (k, step) in analysis.plan.iter().enumerate() {
-        out.push_str(&format!(
-            "\\paragraph{{Step {}}} {}\n",
-            k + 1,
-            markup::latex(&step.title)
-        ));
-        if let Some(table) = &step.table {
-            out.push_str(&parts_table::latex(table));
-        }
-        out.push_str(&latex_relations(&step.relations));
-    }
-    out.push_str("\\paragraph{Results}\n");
-    out.push_str(&latex_results(results));
-    if standalone {
-        out.push_str("\\end{document}\n");
-    }
-    out
-}
-
-/// A given as inline LaTeX maths, for the LaTeX and Markdown pages: `$m = 0.3\,\mathrm{kg}$`,
-/// `$\beta = 60^\circ$`, or its name alone when it is symbolic.
-fn latex_given(g: &crate::scene::model::Given) -> String {
-    let name = print::latex(&Expr::sym(g.symbol));
-    match &g.written {
-        Some(w) => {
-            let (number, unit) = w.split_once(' ').unwrap_or((w.as_str(), ""));
-            format!("${name} = {}$", quantity(number, unit))
-        }
-        None => format!("${name}$"),
-    }
-}
-
-fn markdown(scene: &Scene, analysis: &Analysis, results: &[Result]) -> String {
-    let mut out = String::new();
-    if let Some(t) = &scene.title {
-        out.push_str(&format!("# {}\n\n", markup::markdown(t)));
-    }
-    out.push_str("**Given:** ");
-    let givens: Vec<String> = scene.givens.iter().map(latex_given).collect();
-    out.push_str(&format!("{}\n\n", givens.join(", ")));
-    for (k, step) in analysis.plan.iter().enumerate() {
-        out.push_str(&format!(
-            "## Step {}: {}\n\n",
-            k + 1,
-            markup::markdown(&step.title)
-        ));
-        if let Some(table) = &step.table {
-            out.push_str(&parts_table::markdown(table));
-        }
-        if !step.relations.is_empty() {
-            out.push_str(&format!("$$\n{}$$\n\n", latex_relations(&step.relations)));
-        }
-    }
-    out.push_str(&format!("## Results\n\n$$\n{}$$\n", latex_results(results)));
-    out
 }

@@ -83,7 +83,7 @@ fn fixed_axis_along_x_is_the_hand_derivation() {
         "B_y = -I_xz*alpha/l - I_xy*w^2/l",
         "B_z = I_xy*alpha/l - I_xz*w^2/l",
     ] {
-        assert!(text.lines().any(|l| l == line), "{line} in\n{text}");
+        assert!(text.lines().any(|l| l.trim() == line), "{line} in\n{text}");
     }
     assert!(text.contains("rotation about x"), "{text}");
 }

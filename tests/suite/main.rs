@@ -59,6 +59,7 @@ mod nalgebra_ops;
 mod numeric_powers;
 mod operation_count;
 mod orientation_and_units;
+mod page_model;
 mod polynomial_gcd;
 mod polynomial_roots_truth;
 mod polynomial_solve;

@@ -2,7 +2,8 @@
 //! of its mathematics, and a line on which more than one '(' is never closed.
 //!
 //! Nesting is counted in the text the grammar reads as mathematics: a comment line or a
-//! title may hold any number of parentheses (the grammar skips them as text, without nesting).
+//! title or statement line may hold any number of parentheses (the grammar skips them as
+//! text, without nesting).
 //!
 //! The grammar learns that a '(' of a line's mathematics is never closed only at the end of
 //! the line: it reads the rest of the line as a group, fails, and reads the '(' again as an
@@ -13,14 +14,15 @@
 //!
 //! The count is the grammar's: a '(' that a ')' later on the line closes is a group, even
 //! if a comment's text closes it (a group reads that text too); a '#' outside every group
-//! begins a comment, and a title's text is not mathematics.
+//! begins a comment, and the text of a title or statement line is not mathematics.
 
 use crate::parse::Diagnostic;
 
-/// Refuses a scene's text before the grammar: too large or nested too deeply (comment lines
-/// and titles aside, [`crate::parse::limits`]), or a line with unclosed parentheses.
+/// Refuses a scene's text before the grammar: too large or nested too deeply (comment lines,
+/// titles and statement lines aside, [`crate::parse::limits`]), or a line with unclosed
+/// parentheses.
 pub(super) fn check_before_grammar(source_name: &str, source: &str) -> Result<(), Diagnostic> {
-    let mathematics = without_comment_lines_and_titles(source);
+    let mathematics = without_comment_lines_and_prose(source);
     crate::parse::limits::check_input(source_name, &mathematics).map_err(|d| {
         // The same place in the text as written, quoted as written.
         let start = d.span.offset();
@@ -31,13 +33,14 @@ pub(super) fn check_before_grammar(source_name: &str, source: &str) -> Result<()
     check_unclosed_parentheses(source_name, source)
 }
 
-/// `source` with each comment line and title blanked, byte for byte: the same offsets.
-fn without_comment_lines_and_titles(source: &str) -> String {
+/// `source` with each comment line, title and statement line blanked, byte for byte: the
+/// same offsets.
+fn without_comment_lines_and_prose(source: &str) -> String {
     source
         .split_inclusive('\n')
         .map(|line| {
             let text = line.trim_start_matches([' ', '\t']);
-            if text.starts_with('#') || is_title(line) {
+            if text.starts_with('#') || is_prose(line) {
                 line.chars()
                     .map(|c| match c {
                         '\n' | '\r' => c.to_string(),
@@ -51,12 +54,13 @@ fn without_comment_lines_and_titles(source: &str) -> String {
         .collect()
 }
 
-/// Refuses the first line (but a title) with more than one '(' that is never closed.
+/// Refuses the first line (but a title or statement line) with more than one '(' that is
+/// never closed.
 fn check_unclosed_parentheses(source_name: &str, source: &str) -> Result<(), Diagnostic> {
     let mut start = 0;
     for line in source.split('\n') {
         let unclosed = unclosed_before_comment(line);
-        if unclosed.len() > 1 && !is_title(line) {
+        if unclosed.len() > 1 && !is_prose(line) {
             let at = start + unclosed[0];
             return Err(Diagnostic::at(
                 source_name,
@@ -75,8 +79,10 @@ fn check_unclosed_parentheses(source_name: &str, source: &str) -> Result<(), Dia
     Ok(())
 }
 
-fn is_title(line: &str) -> bool {
-    line.trim_start_matches([' ', '\t']).starts_with("title")
+/// A title or a statement line: words, not mathematics.
+fn is_prose(line: &str) -> bool {
+    let line = line.trim_start_matches([' ', '\t']);
+    line.starts_with("title") || line.starts_with("statement")
 }
 
 /// Byte offsets of the '(' of `line` that no ')' closes, before a comment. None when a ')'

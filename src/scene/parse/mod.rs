@@ -99,6 +99,7 @@ pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene,
             source_name: source_name.to_string(),
             source: source.to_string(),
             title: None,
+            statement: vec![],
             givens: vec![],
             parts: vec![],
             fixed_point: false,
@@ -165,6 +166,10 @@ impl Reader<'_> {
         match rule {
             Rule::euler_angles => self.euler_angles(&inner, at)?,
             Rule::title => self.scene.title = inner.first().map(|t| t.as_str().trim().to_string()),
+            Rule::problem_statement => {
+                let words = inner.first().map_or("", |t| t.as_str().trim());
+                self.scene.statement.push(words.to_string());
+            }
             Rule::given => self.given(inner)?,
             Rule::body => self.body(inner, at)?,
             Rule::fixed_point => self.scene.fixed_point = true,

@@ -5,8 +5,12 @@
 use crate::parse::Diagnostic;
 
 /// Each statement with the form it is written in, for the hint of a syntax error.
-const STATEMENT_FORMS: [(&str, &str); 18] = [
+const STATEMENT_FORMS: [(&str, &str); 19] = [
     ("title", "title Sample Problem 18.4"),
+    (
+        "statement",
+        "statement A thin plate of mass $m$ hangs from two wires (one line or several)",
+    ),
     (
         "given",
         "given m = 0.3 kg  or  given L : m  or  given x = 0.2 m real",

@@ -1,0 +1,61 @@
+//! A [`Page`] in Markdown: headings `#` (the title), `##` (a step, the results, a
+//! derivation), `###` (a derivation's step); the givens and requests a bold lead-in and
+//! inline maths; the mathematics the LaTeX page's blocks between `$$` (`latex.rs`). As in
+//! LaTeX, the answers section (numbers first) is left to the text page.
+
+use super::latex;
+use super::page::{Block, Heading, Page, Section};
+use super::parts_table;
+use crate::print::markup;
+
+/// The page in Markdown.
+pub(super) fn page(page: &Page) -> String {
+    let mut out = String::new();
+    if let Some(title) = page.title {
+        out.push_str(&format!("# {}\n\n", markup::markdown(title)));
+    }
+    for s in &page.sections {
+        section(&mut out, s);
+    }
+    out
+}
+
+fn section(out: &mut String, section: &Section) {
+    match &section.heading {
+        Heading::Answers => return,
+        Heading::Statement => {}
+        Heading::Given => out.push_str("**Given:** "),
+        Heading::Find => out.push_str("**Find:** "),
+        Heading::Step { number, title } => {
+            out.push_str(&format!(
+                "## Step {number}: {}\n\n",
+                markup::markdown(title)
+            ));
+        }
+        Heading::Results => out.push_str("## Results\n\n"),
+        Heading::Derivation(title) => out.push_str(&format!("## {}\n\n", markup::markdown(title))),
+        Heading::DerivationStep(title) => {
+            out.push_str(&format!("### {}\n\n", markup::markdown(title)));
+        }
+    }
+    for block in &section.blocks {
+        out.push_str(&match block {
+            Block::Words(words) => format!("{}\n\n", markup::markdown(words)),
+            Block::Givens(givens) => inline_list(givens.iter().map(latex::given)),
+            Block::Find(names) => inline_list(names.iter().map(latex::name)),
+            Block::Table(table) => parts_table::markdown(table),
+            Block::Relations(rows) if rows.is_empty() => String::new(),
+            Block::Relations(rows) => format!("$$\n{}$$\n\n", latex::relations(rows)),
+            Block::Results(results) => format!("$$\n{}$$\n", latex::results(results)),
+            Block::Answers(_) => String::new(),
+        });
+    }
+    for sub in &section.subsections {
+        self::section(out, sub);
+    }
+}
+
+/// Items of inline maths on the line of their lead-in, then a blank line.
+fn inline_list(items: impl Iterator<Item = String>) -> String {
+    format!("{}\n\n", items.collect::<Vec<_>>().join(", "))
+}

@@ -1,0 +1,208 @@
+//! The document model of a page: a worked solution (`solve`) or a page of derivations
+//! (`derive`) is built once into a [`Page`] — a title, then sections, each a heading and its
+//! blocks — and each notation's writer walks it (`text.rs`, `latex.rs`, `markdown.rs`,
+//! `html.rs`, `json.rs`). What a page holds and in what order is decided where it is built
+//! (`solution_page.rs`, `derivations.rs`); how a block looks, once per writer.
+//!
+//! A block of relations leaves out what a reader need not read: a tautology (a quantity
+//! equal to itself, as given) is not shown, and consecutive quantities that are zero share
+//! one row, `I_xy = I_yz = I_xz = 0`.
+
+use super::render::Result;
+use crate::mechanics::derivation::{Relation, Table};
+use crate::print::{self, Notation};
+use crate::scene::model::Given;
+use std::borrow::Cow;
+
+/// A page: its title (words with `$…$` mathematics, as a scene's `title`) and sections.
+pub struct Page<'a> {
+    pub title: Option<&'a str>,
+    /// What the page is called where it has no title (an HTML page's `<title>`).
+    pub untitled: &'static str,
+    pub sections: Vec<Section<'a>>,
+}
+
+/// A heading, what stands under it, and the sections under that (a derivation's steps).
+pub struct Section<'a> {
+    pub heading: Heading<'a>,
+    pub blocks: Vec<Block<'a>>,
+    pub subsections: Vec<Section<'a>>,
+}
+
+impl<'a> Section<'a> {
+    /// A section without subsections.
+    pub fn new(heading: Heading<'a>, blocks: Vec<Block<'a>>) -> Section<'a> {
+        Section {
+            heading,
+            blocks,
+            subsections: Vec::new(),
+        }
+    }
+}
+
+/// What a section is, which each notation heads in its own way.
+pub enum Heading<'a> {
+    /// What the problem says (a scene's `statement` lines), under the title, unheaded.
+    Statement,
+    Given,
+    Find,
+    /// The results as numbers, before the steps. Only the text page shows it: the typeset
+    /// pages give each value beside its result's form.
+    Answers,
+    /// A step of the plan, numbered from 1, titled in the markup of titles.
+    Step {
+        number: usize,
+        title: &'a str,
+    },
+    Results,
+    /// A derivation of `kinetics derive` (its title), and one of its steps.
+    Derivation(&'a str),
+    DerivationStep(&'a str),
+}
+
+/// The content of a section.
+pub enum Block<'a> {
+    /// A paragraph in the markup of titles.
+    Words(Cow<'a, str>),
+    /// The givens, each its value as written or its name alone when symbolic.
+    Givens(&'a [Given]),
+    /// The quantities asked for, by name.
+    Find(Vec<Name>),
+    /// A composite body's table of parts.
+    Table(&'a Table),
+    /// Relations aligned at `=`, each right-hand side broken to fit the page.
+    Relations(Vec<Row<'a>>),
+    /// Results with their forms, values and units.
+    Results(&'a [Result<'a>]),
+    /// The results that have a number (or words), as their numbers alone.
+    Answers(&'a [Result<'a>]),
+}
+
+/// A quantity's name in text (`H_G`) and in LaTeX (`\mathbf{H}_G`).
+pub struct Name {
+    pub text: String,
+    pub latex: String,
+}
+
+/// One row of a block of relations: `lhs = rhs`, or quantities all zero.
+pub enum Row<'a> {
+    Relation(&'a Relation),
+    /// Relations `q = 0` of consecutive named quantities, one row `q₁ = q₂ = … = 0`.
+    Zeros(Vec<&'a Relation>),
+}
+
+impl Row<'_> {
+    /// The left of the row's last `=`: a relation's left-hand side, or the zero
+    /// quantities joined by `=`.
+    pub fn left(&self, notation: Notation) -> String {
+        match self {
+            Row::Relation(r) => print::render(&r.lhs, notation, r.axis),
+            Row::Zeros(zeros) => {
+                let equals = match notation {
+                    Notation::MathMl => "<mo>=</mo>",
+                    _ => " = ",
+                };
+                let sides: Vec<String> = zeros
+                    .iter()
+                    .map(|r| print::render(&r.lhs, notation, r.axis))
+                    .collect();
+                sides.join(equals)
+            }
+        }
+    }
+
+    /// The right of the row's last `=`, and the relation whose axis presents it.
+    pub fn right(&self) -> &Relation {
+        match self {
+            Row::Relation(r) => r,
+            Row::Zeros(zeros) => zeros[zeros.len() - 1],
+        }
+    }
+
+    /// The width in ems of [`Row::left`] typeset, for the room of the right-hand sides.
+    pub fn left_em(&self) -> f64 {
+        match self {
+            Row::Relation(r) => print::width_em(&r.lhs, r.axis),
+            Row::Zeros(zeros) => {
+                let sides: f64 = zeros.iter().map(|r| print::width_em(&r.lhs, r.axis)).sum();
+                sides + print::width::RELATION_EM * (zeros.len() - 1) as f64
+            }
+        }
+    }
+}
+
+/// The rows `relations` are shown as: tautologies left out, consecutive zeros of named
+/// quantities on one row.
+pub fn rows(relations: &[Relation]) -> Vec<Row<'_>> {
+    let mut rows: Vec<Row> = Vec::new();
+    for r in relations {
+        if r.lhs == r.rhs {
+            continue;
+        }
+        if r.rhs.is_zero() && r.lhs.as_symbol().is_some() {
+            if let Some(Row::Zeros(zeros)) = rows.last_mut() {
+                zeros.push(r);
+            } else {
+                rows.push(Row::Zeros(vec![r]));
+            }
+        } else {
+            rows.push(Row::Relation(r));
+        }
+    }
+    rows
+}
+
+/// The room of the right-hand sides of `rows`, from the widest left side
+/// ([`print::aligned_room`]): LaTeX's `align*` and HTML's table alike.
+pub fn rows_room(rows: &[Row]) -> (f64, f64) {
+    let left_em = rows.iter().map(Row::left_em).fold(0.0, f64::max);
+    print::aligned_room(left_em)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{rows, Row};
+    use crate::algebra::{Axis, Expr};
+    use crate::mechanics::derivation::Relation;
+    use crate::print::Notation;
+
+    fn relation(lhs: &str, rhs: Expr) -> Relation {
+        Relation::new(Expr::symbol(lhs), rhs, Axis::X)
+    }
+
+    #[test]
+    fn tautologies_left_out_and_consecutive_zeros_on_one_row() {
+        let relations = [
+            relation("vbar_x", Expr::symbol("vbar_x")),
+            relation("I_x", Expr::symbol("m")),
+            relation("I_xy", Expr::zero()),
+            relation("I_yz", Expr::zero()),
+            relation("I_xz", Expr::zero()),
+            relation("H_x", Expr::symbol("m")),
+            relation("H_z", Expr::zero()),
+        ];
+        let shown: Vec<String> = rows(&relations)
+            .iter()
+            .map(|row| {
+                let r = row.right();
+                format!("{} = {}", row.left(Notation::Text), r.rhs)
+            })
+            .collect();
+        assert_eq!(
+            shown,
+            ["I_x = m", "I_xy = I_yz = I_xz = 0", "H_x = m", "H_z = 0"]
+        );
+    }
+
+    #[test]
+    fn a_zero_equation_that_is_no_named_quantity_stays_a_row_of_its_own() {
+        let sum = &Expr::symbol("C_x") + &Expr::symbol("D_x");
+        let relations = [
+            relation("A_x", Expr::zero()),
+            Relation::new(sum, Expr::zero(), Axis::X),
+        ];
+        let rows = rows(&relations);
+        assert_eq!(rows.len(), 2);
+        assert!(matches!(rows[1], Row::Relation(_)));
+    }
+}

@@ -1,0 +1,98 @@
+//! A [`Page`] as plain Unicode text: the title, then each section under its heading (a blank
+//! line between sections), items indented by two spaces; a derivation's heading `#`, its
+//! steps' `##`. Paragraphs are wrapped at [`WRAP_COLUMNS`].
+
+use super::engineer::answers_text;
+use super::inertia_results;
+use super::page::{Block, Heading, Page, Section};
+use super::parts_table;
+use super::render::{given_line, value_text, Result};
+use crate::print::{self, markup, Notation};
+
+/// The column a paragraph is wrapped at.
+pub const WRAP_COLUMNS: usize = 88;
+
+/// The page as text.
+pub(super) fn page(page: &Page) -> String {
+    let mut parts = Vec::new();
+    if let Some(title) = page.title {
+        parts.push(format!("{}\n", markup::text(title)));
+    }
+    parts.extend(page.sections.iter().map(section));
+    parts.join("\n")
+}
+
+fn section(section: &Section) -> String {
+    let mut out = match &section.heading {
+        Heading::Statement => String::new(),
+        Heading::Given => "Given\n".into(),
+        Heading::Find => "Find\n".into(),
+        Heading::Answers => "Answers\n".into(),
+        Heading::Step { number, title } => format!("Step {number}: {}\n", markup::text(title)),
+        Heading::Results => "Results\n".into(),
+        Heading::Derivation(title) => format!("# {}\n", markup::text(title)),
+        Heading::DerivationStep(title) => format!("## {}\n", markup::text(title)),
+    };
+    for block in &section.blocks {
+        out.push_str(&match block {
+            Block::Words(words) => wrapped(&markup::text(words)),
+            Block::Givens(givens) => givens
+                .iter()
+                .map(|g| format!("  {}\n", given_line(g)))
+                .collect(),
+            Block::Find(names) => {
+                let names: Vec<&str> = names.iter().map(|n| n.text.as_str()).collect();
+                format!("  {}\n", names.join(", "))
+            }
+            Block::Table(table) => parts_table::text(table),
+            Block::Relations(rows) => rows
+                .iter()
+                .map(|row| {
+                    let r = row.right();
+                    let right = print::render(&r.rhs, Notation::Text, r.axis);
+                    format!("  {} = {right}\n", row.left(Notation::Text))
+                })
+                .collect(),
+            Block::Results(results) => results.iter().map(result).collect(),
+            Block::Answers(results) => answers_text(results),
+        });
+    }
+    for sub in &section.subsections {
+        out.push('\n');
+        out.push_str(&self::section(sub));
+    }
+    out
+}
+
+/// A result's row: its name, its form and, when it has one, its value with its unit.
+fn result(r: &Result) -> String {
+    if let Some(lines) = inertia_results::text(r, false) {
+        return lines;
+    }
+    match value_text(r) {
+        Some(v) if r.is_number() => format!("  {} = {v}\n", r.name),
+        Some(v) => format!("  {} = {} = {v}\n", r.name, r.text),
+        None => format!("  {} = {}\n", r.name, r.text),
+    }
+}
+
+/// `words` broken between words into lines of at most [`WRAP_COLUMNS`] characters (a
+/// longer word alone on its line).
+fn wrapped(words: &str) -> String {
+    let mut out = String::new();
+    let mut line = 0;
+    for word in words.split_whitespace() {
+        let width = word.chars().count();
+        if line > 0 && line + 1 + width > WRAP_COLUMNS {
+            out.push('\n');
+            line = 0;
+        } else if line > 0 {
+            out.push(' ');
+            line += 1;
+        }
+        out.push_str(word);
+        line += width;
+    }
+    out.push('\n');
+    out
+}

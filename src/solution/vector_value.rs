@@ -1,0 +1,149 @@
+//! A vector's value as the textbook writes it: each component that is not zero (in four
+//! significant figures) times its unit vector, the unit with each number, a minus between
+//! terms or before the first,
+//!
+//! ```text
+//! H_G = (3.565 kg·m²/s) i + (0.3095 kg·m²/s) j        ā = −(135 m/s²) i
+//! ```
+//!
+//! a zero vector `0` with its unit, and without a unit (a principal axis) the numbers alone,
+//! `e_1 = 0.8366 i + 0.496 j + 0.2326 k`. In text, LaTeX and MathML.
+
+use super::mathml_value::{decimal, value as mathml_quantity};
+use super::numbers::format_value;
+use super::unit_latex::quantity;
+use crate::print;
+
+/// A component shown: its magnitude's digits, its sign, the index of its unit vector.
+struct Term {
+    negative: bool,
+    magnitude: String,
+    axis: usize,
+}
+
+/// The components that do not show as zero.
+fn terms(components: &[f64]) -> Vec<Term> {
+    components
+        .iter()
+        .enumerate()
+        .filter_map(|(axis, &x)| {
+            let shown = format_value(x);
+            let negative = shown.starts_with('-');
+            let magnitude = shown.trim_start_matches('-').to_string();
+            (magnitude != "0").then_some(Term {
+                negative,
+                magnitude,
+                axis,
+            })
+        })
+        .collect()
+}
+
+/// The terms joined by their signs: `[before the first, plus, minus]`.
+fn joined(terms: &[Term], signs: [&str; 3], term: impl Fn(&Term) -> String) -> String {
+    let mut out = String::new();
+    for (k, t) in terms.iter().enumerate() {
+        out.push_str(match (k, t.negative) {
+            (0, false) => "",
+            (0, true) => signs[0],
+            (_, false) => signs[1],
+            (_, true) => signs[2],
+        });
+        out.push_str(&term(t));
+    }
+    out
+}
+
+const UNIT_VECTORS: [&str; 3] = ["i", "j", "k"];
+
+/// The value in text: `-(135 m/s²) i + (2 m/s²) k`.
+pub fn text(components: &[f64], unit: &str) -> String {
+    let unit = unit.trim();
+    let terms = terms(components);
+    if terms.is_empty() {
+        return format!("0 {unit}").trim_end().to_string();
+    }
+    joined(&terms, ["-", " + ", " - "], |t| {
+        let i = UNIT_VECTORS[t.axis];
+        match unit {
+            "" => format!("{} {i}", t.magnitude),
+            u => format!("({} {u}) {i}", t.magnitude),
+        }
+    })
+}
+
+/// The value in LaTeX: `-(135\,\mathrm{m/s^2})\,\mathbf{i}`.
+pub fn latex(components: &[f64], unit: &str) -> String {
+    let terms = terms(components);
+    if terms.is_empty() {
+        return quantity("0", unit);
+    }
+    joined(&terms, ["-", " + ", " - "], |t| {
+        let i = UNIT_VECTORS[t.axis];
+        match unit.trim() {
+            "" => format!(r"{}\,\mathbf{{{i}}}", quantity(&t.magnitude, "")),
+            u => format!(r"({})\,\mathbf{{{i}}}", quantity(&t.magnitude, u)),
+        }
+    })
+}
+
+/// The value in MathML.
+pub fn mathml(components: &[f64], unit: &str) -> String {
+    let terms = terms(components);
+    if terms.is_empty() {
+        return mathml_quantity("0", unit);
+    }
+    let row = joined(
+        &terms,
+        ["<mo>\u{2212}</mo>", "<mo>+</mo>", "<mo>\u{2212}</mo>"],
+        |t| {
+            let mut i = String::new();
+            print::mathml::latex_name(&mut i, &format!(r"\mathbf{{{}}}", UNIT_VECTORS[t.axis]));
+            match unit.trim() {
+                "" => format!("{}{i}", decimal(&t.magnitude)),
+                u => format!(
+                    "<mrow><mo>(</mo>{}<mo>)</mo></mrow>{i}",
+                    mathml_quantity(&t.magnitude, u)
+                ),
+            }
+        },
+    );
+    format!("<mrow>{row}</mrow>")
+}
+
+/// The width in ems of the LaTeX value, roughly: digits and signs at 0.55 em, each unit as
+/// a symbol of its letters, a unit vector and parentheses an em.
+pub fn latex_em(components: &[f64], unit: &str) -> f64 {
+    let terms = terms(components);
+    let unit_em = print::width::symbol_em(unit);
+    terms
+        .iter()
+        .map(|t| 0.55 * (t.magnitude.len() + 1) as f64 + unit_em + 1.0)
+        .sum::<f64>()
+        .max(0.55 + unit_em)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{latex, text};
+
+    #[test]
+    fn components_with_their_units() {
+        assert_eq!(text(&[-135.0, 0.0, 0.0], "m/s²"), "-(135 m/s²) i");
+        assert_eq!(
+            text(&[3.5651, -0.30951, 0.0], "kg·m²/s"),
+            "(3.565 kg·m²/s) i - (0.3095 kg·m²/s) j"
+        );
+        assert_eq!(text(&[0.0, 0.0, 0.0], "m/s"), "0 m/s");
+        assert_eq!(
+            text(&[0.8366, 0.496, -0.2326], ""),
+            "0.8366 i + 0.496 j - 0.2326 k"
+        );
+        // Only a component that shows as zero is left out: a tiny one stays.
+        assert_eq!(text(&[1.0, 1e-20, 0.0], "N"), "(1 N) i + (1.000e-20 N) j");
+        assert_eq!(
+            latex(&[-135.0, 0.0, 2.0], "m/s^2"),
+            r"-(135\,\mathrm{m/s^2})\,\mathbf{i} + (2\,\mathrm{m/s^2})\,\mathbf{k}"
+        );
+    }
+}

@@ -3,7 +3,7 @@
 //! about any transverse axis through that point. In the frame Oxyz of the Eulerian angles
 //! (x the line of nodes, z the axis, Ω = θ̇ i + φ̇ sin θ j + φ̇ cos θ k) the body's mass
 //! looks the same at every instant, so `[I_O] = diag(I', I', I)` is constant and
-//! `Ḣ_O = [I_O]{ω̇} + Ω × H_O` (Ω ≠ ω):
+//! `Ḣ_O = [I_O]{(ω̇)_Oxyz} + Ω × H_O` (Ω ≠ ω; the rates of ω's components in Oxyz):
 //!
 //! ```text
 //! H_O = I'θ̇ i + I'φ̇ sin θ j + I ω_z k,          ω_z = ψ̇ + φ̇ cos θ

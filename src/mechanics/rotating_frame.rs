@@ -8,7 +8,8 @@
 //! frame in which the body's mass distribution looks the same: the body-fixed frame
 //! (Ω = ω), or, for an axisymmetric body, a frame that does not spin with the body (Ω ≠ ω).
 //! The same holds about a fixed point O with `[I_O]` (§18.7):
-//! `Ḣ_O = (Ḣ_O)_Oxyz + Ω × H_O`, `(Ḣ_O)_Oxyz = [I_O]{ω̇}`; or, from the rate about G,
+//! `Ḣ_O = (Ḣ_O)_Oxyz + Ω × H_O`, `(Ḣ_O)_Oxyz = [I_O]{(ω̇)_Oxyz}` (the rates of ω's components
+//! in the frame, not α when Ω ≠ ω); or, from the rate about G,
 //! `Ḣ_O = Ḣ_G + r̄ × m ā` (O fixed, `r̄` the position of G from O).
 
 use super::derivation::{Derivation, Relation, Step};
@@ -63,7 +64,7 @@ pub fn rate_of_angular_momentum(
         steps: vec![
             Step::new(
                 format!(
-                    r"rate relative to the rotating frame, $(\dot{{\mathbf{{H}}}}_{point})_{{{point}xyz}} = {tensor}\{{\dot{{\boldsymbol{{\omega}}}}\}}$"
+                    r"rate relative to the rotating frame, $(\dot{{\mathbf{{H}}}}_{point})_{{{point}xyz}} = {tensor}\{{(\dot{{\boldsymbol{{\omega}}}})_{{{point}xyz}}\}}$"
                 ),
                 Relation::components("Hdot", &expand_each(&relative)?),
             ),

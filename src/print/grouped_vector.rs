@@ -56,17 +56,23 @@ impl GroupedVector {
     }
 
     /// `factor (inner)` in `notation`: `6*F*Dt/(m*a*b)*(a*i - b*j)` in text (which reads
-    /// back as the same vector), `\frac{6 F \Delta t}{m a b} \left(a \mathbf{i} - b
-    /// \mathbf{j}\right)` in LaTeX.
+    /// back as the same vector), `\frac{6 F \Delta t}{m a b}\,(a \mathbf{i} - b
+    /// \mathbf{j})` in LaTeX; brackets where the components hold parentheses, and they grow
+    /// around fractions.
     pub fn render(&self, notation: Notation) -> String {
         let factor = render(&self.factor, notation, Axis::X);
         let inner = vector(&self.inner, notation);
+        let (open, close) = match notation {
+            Notation::MathMl => ("(", ")"),
+            _ if inner.contains('(') => ("[", "]"),
+            _ => ("(", ")"),
+        };
         match notation {
             Notation::Text => format!("{factor}*({inner})"),
             Notation::Latex if inner.contains(r"\frac") => {
-                format!(r"{factor} \left({inner}\right)")
+                format!(r"{factor}\,\left{open}{inner}\right{close}")
             }
-            Notation::Latex => format!("{factor} ({inner})"),
+            Notation::Latex => format!(r"{factor}\,{open}{inner}{close}"),
             Notation::MathMl => format!(
                 "<mrow>{factor}<mo>\u{2062}</mo><mrow><mo>(</mo>{inner}<mo>)</mo></mrow></mrow>"
             ),

@@ -16,11 +16,12 @@ use crate::algebra::Expr;
 use crate::print::{self, markup, width::RELATION_EM, Notation};
 use crate::scene::model::Given;
 
-/// The preamble of a standalone LaTeX document: article class, amsmath and amssymb only;
-/// `\\sloppy`, so a paragraph of long givens or a long title breaks between words rather than
-/// run past the margin.
-pub(super) const LATEX_PREAMBLE: &str =
-    "\\documentclass{article}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\sloppy\n\\begin{document}\n";
+/// The preamble of a standalone LaTeX document: article class on A4 at 11 pt with 25 mm
+/// margins, amsmath and amssymb; a block of relations may break across pages
+/// (`\\allowdisplaybreaks`), so a page is not left half empty before a long one; `\\sloppy`,
+/// so a paragraph of long givens or a long title breaks between words rather than run past
+/// the margin.
+pub(super) const LATEX_PREAMBLE: &str = "\\documentclass[a4paper,11pt]{article}\n\\usepackage[margin=25mm]{geometry}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\allowdisplaybreaks\n\\sloppy\n\\begin{document}\n";
 
 /// The page in LaTeX; `standalone`, a whole document.
 pub(super) fn page(page: &Page, standalone: bool) -> String {
@@ -130,7 +131,7 @@ fn align(rows: &[String]) -> String {
 /// Results as one `align*` block: each broken into lines that fit the page, its value and
 /// unit after the last line, or on a row of their own when the result took several lines or
 /// the value does not fit after it.
-pub(super) fn results(results: &[Result]) -> String {
+pub(super) fn results(results: &[&Result]) -> String {
     let (first_em, width_em) = results_room(results);
     let rows: Vec<String> = results
         .iter()

@@ -73,7 +73,7 @@ pub enum Block<'a> {
     /// Relations aligned at `=`, each right-hand side broken to fit the page.
     Relations(Vec<Row<'a>>),
     /// Results with their forms, values and units.
-    Results(&'a [Result<'a>]),
+    Results(Vec<&'a Result<'a>>),
     /// The results that have a number (or words), as their numbers alone.
     Answers(&'a [Result<'a>]),
 }
@@ -131,25 +131,42 @@ impl Row<'_> {
     }
 }
 
-/// The rows `relations` are shown as: tautologies left out, consecutive zeros of named
-/// quantities on one row.
+/// The rows `relations` are shown as: tautologies left out (a quantity equal to itself, or
+/// to a symbol the page prints alike: `omega_x = w_x` where `w_x` is ω_x), consecutive zeros
+/// of one named quantity's components on one row (`I_xy = I_yz = I_xz = 0`, not
+/// `ω_z = Ω_x = 0`).
 pub fn rows(relations: &[Relation]) -> Vec<Row<'_>> {
     let mut rows: Vec<Row> = Vec::new();
     for r in relations {
-        if r.lhs == r.rhs {
+        if is_tautology(r) {
             continue;
         }
-        if r.rhs.is_zero() && r.lhs.as_symbol().is_some() {
-            if let Some(Row::Zeros(zeros)) = rows.last_mut() {
-                zeros.push(r);
-            } else {
-                rows.push(Row::Zeros(vec![r]));
-            }
-        } else {
+        let Some(name) = r.lhs.as_symbol().filter(|_| r.rhs.is_zero()) else {
             rows.push(Row::Relation(r));
+            continue;
+        };
+        // One quantity: the same name before its subscript (`I_xy`, `I_yz`).
+        let stem = |s: crate::algebra::Symbol| s.name().split('_').next().unwrap_or_default();
+        let same_quantity = |zeros: &Vec<&Relation>| {
+            zeros[0]
+                .lhs
+                .as_symbol()
+                .is_some_and(|s| stem(s) == stem(name))
+        };
+        match rows.last_mut() {
+            Some(Row::Zeros(zeros)) if same_quantity(zeros) => zeros.push(r),
+            _ => rows.push(Row::Zeros(vec![r])),
         }
     }
     rows
+}
+
+/// Whether a relation says nothing: its sides equal, or two symbols printed alike.
+fn is_tautology(r: &Relation) -> bool {
+    r.lhs == r.rhs
+        || (r.lhs.as_symbol().is_some()
+            && r.rhs.as_symbol().is_some()
+            && print::latex(&r.lhs) == print::latex(&r.rhs))
 }
 
 /// The room of the right-hand sides of `rows`, from the widest left side

@@ -317,7 +317,7 @@ pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bo
             Format::Text => super::text::page(&page),
             Format::Latex => super::latex::page(&page, standalone),
             Format::Markdown => super::markdown::page(&page),
-            Format::Json => super::json::solution(&page, analysis).to_string(),
+            Format::Json => super::json::solution(&page, analysis, &results).to_string(),
             Format::Html => super::html::page(&page),
         }
     })
@@ -345,7 +345,7 @@ pub(super) fn given_line(g: &crate::scene::model::Given) -> String {
 
 /// The room of the results' forms ([`print::aligned_room`]), whose left-hand sides are the
 /// quantities' names.
-pub(super) fn results_room(results: &[Result]) -> (f64, f64) {
+pub(super) fn results_room(results: &[&Result]) -> (f64, f64) {
     let lhs_em = results
         .iter()
         .map(|r| print::width::symbol_em(&r.name_latex))

@@ -1,10 +1,13 @@
 //! A scene's worked solution as a [`Page`]: what the problem says (its `statement` lines),
 //! the givens, the quantities asked for, the answers as numbers when every given has a value,
-//! each step of the plan (its table of parts, its relations), then the results.
+//! each step of the plan that has something to say (its table of parts, its relations), then
+//! the results (a last step that only states them is left to Results).
 
 use super::page::{rows, Block, Heading, Name, Page, Section};
 use super::render::{quantity_latex, shown_name, Result};
-use crate::scene::{Analysis, Scene};
+use crate::mechanics::derivation::Relation;
+use crate::mechanics::Step;
+use crate::scene::{Analysis, Scene, Value};
 use std::borrow::Cow;
 
 /// The page of `scene`'s solution (`results` in the order of `analysis.results`).
@@ -33,18 +36,33 @@ pub(super) fn solution_page<'a>(
             vec![Block::Answers(results)],
         ));
     }
-    for (k, step) in analysis.plan.iter().enumerate() {
+    // A last step that only states the unknowns solved for, each a result, is left to
+    // Results, which gives the same forms with their numbers.
+    let plan = match analysis.plan.split_last() {
+        Some((last, before)) if only_solves_for_results(scene, last, results) => before,
+        _ => &analysis.plan[..],
+    };
+    let mut number = 0;
+    for step in plan {
+        let rows = rows(&step.relations);
+        // A step whose every relation says nothing (the velocity as given) is left out; one
+        // with no relations says what it found in its title.
+        if rows.is_empty() && !step.relations.is_empty() && step.table.is_none() {
+            continue;
+        }
         let mut blocks = Vec::new();
         if let Some(table) = &step.table {
             blocks.push(Block::Table(table));
         }
-        blocks.push(Block::Relations(rows(&step.relations)));
+        blocks.push(Block::Relations(rows));
+        number += 1;
         let heading = Heading::Step {
-            number: k + 1,
+            number,
             title: &step.title,
         };
         sections.push(Section::new(heading, blocks));
     }
+    let results = results.iter().collect();
     sections.push(Section::new(
         Heading::Results,
         vec![Block::Results(results)],
@@ -54,6 +72,23 @@ pub(super) fn solution_page<'a>(
         untitled: "Worked solution",
         sections,
     }
+}
+
+/// Whether every relation of `step` gives one of the scene's unknowns (the step that solves
+/// for them) and is a result as Results shows it, `name = form`. A step that derives a
+/// quantity (`T = ½{ω}ᵀ[I]{ω}`) is no such step: its title says what it applies.
+fn only_solves_for_results(scene: &Scene, step: &Step, results: &[Result]) -> bool {
+    let solved_result = |relation: &Relation| {
+        let Some(unknown) = relation.lhs.as_symbol() else {
+            return false;
+        };
+        scene.unknowns.iter().any(|(s, _)| *s == unknown)
+            && results.iter().any(|r| {
+                matches!(r.form.as_deref(), Some(Value::Scalar(form)) if *form == relation.rhs)
+                    && unknown.name() == r.name
+            })
+    };
+    step.table.is_none() && !step.relations.is_empty() && step.relations.iter().all(solved_result)
 }
 
 /// The quantities the scene asks for, each once (a request with several solutions is one).

@@ -53,7 +53,7 @@ fn section(section: &Section) -> String {
                     format!("  {} = {right}\n", row.left(Notation::Text))
                 })
                 .collect(),
-            Block::Results(results) => results.iter().map(result).collect(),
+            Block::Results(results) => results.iter().map(|r| result(r)).collect(),
             Block::Answers(results) => answers_text(results),
         });
     }

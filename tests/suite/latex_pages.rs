@@ -1,14 +1,15 @@
 //! Pages that fit (issue 17): every example's `solve --format latex --standalone`, and
 //! `derive --general --steps --format latex` in the same preamble, compiled with pdflatex
-//! at 10 pt and again as `\documentclass[12pt,a4paper]{article}`: no `Overfull \hbox` wider
-//! than 1 pt in the log. `examples/scenes/long_relations.scene` has results longer than a
-//! page is wide, so that line breaking is exercised.
+//! at 11 pt on A4 and again at 12 pt: no `Overfull \hbox` wider than 1 pt in the log.
+//! `examples/scenes/long_relations.scene` has results longer than a page is wide, so that
+//! line breaking is exercised. And the page an instructor pastes (issue 30): each of the
+//! sample problems 18.1–18.5 on at most two pages.
 
 use std::path::Path;
 use std::process::Command;
 
 /// The class line of the standalone output, and the larger page it is also compiled on.
-const CLASS: &str = r"\documentclass{article}";
+const CLASS: &str = r"\documentclass[a4paper,11pt]{article}";
 const LARGE: &str = r"\documentclass[12pt,a4paper]{article}";
 
 fn kinetics(args: &[&str]) -> String {
@@ -24,18 +25,20 @@ fn kinetics(args: &[&str]) -> String {
     String::from_utf8(out.stdout).expect("UTF-8")
 }
 
+/// The first error of compiling `tex` (named `name`) in `dir`, if any, and the log.
+fn compiled(dir: &Path, name: &str, tex: &str) -> (Option<String>, String) {
+    let path = dir.join(format!("{name}.tex"));
+    std::fs::write(&path, tex).expect("the .tex is written");
+    let error = crate::common::pdflatex::pdflatex(dir, &path).first_error();
+    let log = std::fs::read_to_string(dir.join(format!("{name}.log"))).expect("a log");
+    (error.map(|e| format!("{name}: {e}")), log)
+}
+
 /// The overfull boxes wider than 1 pt in the log of compiling `tex` (named `name`) in `dir`,
 /// each with the line of material that overflows; a LaTeX error is a failure too.
 fn overfull_boxes(dir: &Path, name: &str, tex: &str) -> Vec<String> {
-    let path = dir.join(format!("{name}.tex"));
-    std::fs::write(&path, tex).expect("the .tex is written");
-    let compiled = crate::common::pdflatex::pdflatex(dir, &path);
-    let mut found: Vec<String> = compiled
-        .first_error()
-        .map(|error| format!("{name}: {error}"))
-        .into_iter()
-        .collect();
-    let log = std::fs::read_to_string(dir.join(format!("{name}.log"))).expect("a log");
+    let (error, log) = compiled(dir, name, tex);
+    let mut found: Vec<String> = error.into_iter().collect();
     let lines: Vec<&str> = log.lines().collect();
     for (i, line) in lines.iter().enumerate() {
         let Some(rest) = line.strip_prefix(r"Overfull \hbox (") else {
@@ -97,4 +100,37 @@ fn every_example_fits_the_page_at_10_and_12_pt() {
         "overfull lines:\n{}",
         failures.join("\n")
     );
+}
+
+#[test]
+fn each_sample_problem_takes_at_most_two_pages() {
+    let dir = std::env::temp_dir().join(format!("kinetics-sp-pages-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let mut long = Vec::new();
+    for name in [
+        "sp18_1_plate_impact",
+        "sp18_2_rolling_disk",
+        "sp18_3_rotating_rod",
+        "sp18_4_shaft_reactions",
+        "sp18_5_disk_reactions",
+    ] {
+        let scene = crate::common::binary::scene(name);
+        let tex = kinetics(&["solve", "--format", "latex", "--standalone", &scene]);
+        assert!(tex.starts_with(CLASS), "{name}: {CLASS}");
+        let (error, log) = compiled(&dir, name, &tex);
+        assert_eq!(error, None);
+        // pdflatex ends its log with `Output written on NAME.pdf (N pages, …`.
+        let pages: usize = log
+            .split("Output written on")
+            .nth(1)
+            .and_then(|rest| rest.split('(').nth(1))
+            .and_then(|rest| rest.split(' ').next())
+            .and_then(|n| n.parse().ok())
+            .unwrap_or_else(|| panic!("{name}: no page count in the log"));
+        if pages > 2 {
+            long.push(format!("{name}: {pages} pages"));
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(long.is_empty(), "{}", long.join("\n"));
 }

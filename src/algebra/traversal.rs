@@ -5,7 +5,41 @@ use super::expr::{Expr, View};
 use super::symbol::Symbol;
 use super::work;
 
+/// The base of a factor below the line: a power with a negative number for exponent.
+fn denominator_base(f: &Expr) -> Option<&Expr> {
+    match f.view() {
+        View::Pow(base, exponent) if exponent.as_num().is_some_and(|q| q.is_negative()) => {
+            Some(base)
+        }
+        _ => None,
+    }
+}
+
 impl Expr {
+    /// Whether a fraction stands inside a fraction or a product as printed: a sum that is a
+    /// factor (or a power's base) holds a term with a denominator that is not a number,
+    /// `-¼ m r (4L + r²/L) ω₁`, `1/(a + b/c)`. A sum on its own, `W + m r³ω²/(2L²)`, is none.
+    pub fn has_nested_fraction(&self) -> bool {
+        let denominator = |term: &Expr| {
+            term.factors()
+                .iter()
+                .any(|f| denominator_base(f).is_some_and(|base| base.as_num().is_none()))
+        };
+        let fraction_in_sum =
+            |e: &Expr| matches!(e.view(), View::Add(terms) if terms.iter().any(denominator));
+        match self.view() {
+            View::Num(_) | View::Sym(_) => false,
+            View::Add(xs) => xs.iter().any(Expr::has_nested_fraction),
+            View::Mul(xs) => xs
+                .iter()
+                .any(|x| fraction_in_sum(x.base()) || x.has_nested_fraction()),
+            View::Pow(b, e) => {
+                fraction_in_sum(b) || b.has_nested_fraction() || e.has_nested_fraction()
+            }
+            View::Func(_, a) => a.has_nested_fraction(),
+        }
+    }
+
     /// Number of nodes in the tree (a measure of size, for limits).
     pub fn node_count(&self) -> usize {
         match self.view() {

@@ -95,9 +95,18 @@ pub struct TableRow {
 }
 
 /// An expression as it is shown: [`Expr::simplify`], or the expression itself when it is
-/// beyond the bounds of simplification.
+/// beyond the bounds of simplification; over one denominator when the shortest form holds
+/// a fraction inside a fraction or a product (`-¼ m r (4L + r²/L) ω₁` is shown
+/// `-m r (4L² + r²) ω₁/(4L)`), as a textbook never nests them.
 pub fn presented(e: &Expr, domains: &Domains) -> Expr {
-    e.simplify(domains).unwrap_or_else(|_| e.clone())
+    let shortest = e.simplify(domains).unwrap_or_else(|_| e.clone());
+    if !shortest.has_nested_fraction() {
+        return shortest;
+    }
+    match shortest.together() {
+        Ok(together) if !together.has_nested_fraction() => together,
+        _ => shortest,
+    }
 }
 
 impl Step {
@@ -158,5 +167,32 @@ impl Derivation {
     /// The relations of the final step.
     pub fn result(&self) -> &[Relation] {
         self.steps.last().map_or(&[], |s| s.relations.as_slice())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::presented;
+    use crate::algebra::Domains;
+    use crate::parse::parse_expression;
+
+    fn expr(text: &str) -> crate::algebra::Expr {
+        parse_expression("", text).unwrap()
+    }
+
+    #[test]
+    fn a_fraction_inside_a_product_is_shown_over_one_denominator() {
+        let domains = Domains::chapter_defaults();
+        // H_y of Sample Problem 18.2, as the shortest form writes it.
+        let nested = expr("-1/4*m*r*(4*L + r^2/L)*w_1");
+        assert!(nested.has_nested_fraction());
+        let shown = presented(&nested, &domains);
+        assert!(!shown.has_nested_fraction(), "{shown}");
+        let difference = (&shown - &nested).cancel().unwrap();
+        assert!(difference.is_zero(), "{shown} is not {nested}");
+        // A sum of fractions on its own is no nested fraction: shown as the shortest form.
+        let flat = expr("W + m*r^3*w_1^2/(2*L^2)");
+        assert!(!flat.has_nested_fraction());
+        assert!(expr("1/(a + b/c)").has_nested_fraction());
     }
 }

@@ -144,18 +144,46 @@ fn axis_of_letter(c: u8) -> Option<usize> {
 pub fn common_factor(terms: &[CoefficientTerm]) -> Option<Expr> {
     let (first, others) = terms.split_first()?;
     let content = rational_content(terms);
-    let mut common = first
+    let above = first
         .factors()
         .filter_map(numeric_power)
-        .filter_map(|(base, exponent)| least_power(others, base, exponent))
-        .peekable();
-    if content.is_one() && common.peek().is_none() {
+        .filter(|(base, exponent)| !(exponent.is_negative() && is_symbol(base)))
+        .filter_map(|(base, exponent)| least_power(others, base, exponent));
+    let common: Vec<Expr> = above
+        .chain(common_denominator(terms))
+        .map(|(base, exponent)| power(base, exponent))
+        .collect();
+    if content.is_one() && common.is_empty() {
         return None;
     }
-    let common = common.map(|(base, exponent)| power(base, exponent));
     Some(Expr::mul_all(
         std::iter::once(Expr::num(content)).chain(common),
     ))
+}
+
+/// Each symbol below the line in any term, to its most negative power among the terms (a
+/// term without it counts 0): the terms' common denominator, so that none keeps a fraction
+/// inside the group (`4L + r²/L` is `(4L² + r²)/L`, never `-¼ m r (4L + r²/L) ω₁`).
+fn common_denominator<'e>(terms: &[CoefficientTerm<'e>]) -> Vec<(&'e Expr, &'e Q)> {
+    let mut below: Vec<(&Expr, &Q)> = Vec::new();
+    for (base, exponent) in terms
+        .iter()
+        .flat_map(|t| t.factors().filter_map(numeric_power))
+    {
+        if !exponent.is_negative() || !is_symbol(base) {
+            continue;
+        }
+        match below.iter_mut().find(|(b, _)| *b == base) {
+            Some((_, least)) if exponent < *least => *least = exponent,
+            Some(_) => {}
+            None => below.push((base, exponent)),
+        }
+    }
+    below
+}
+
+fn is_symbol(e: &Expr) -> bool {
+    matches!(e.view(), View::Sym(_))
 }
 
 /// `base` to the exponent of least magnitude among `exponent` and its exponents in `terms`,

@@ -10,7 +10,9 @@
 //!   powers first; ties keep the canonical order of the sum (monomials lexicographically).
 //! - The common factor is the rational content (gcd of the numerators over lcm of the
 //!   denominators, positive) times each base common to all terms to its least power (bases
-//!   with exponents of one sign only); it is formed only when it is not one.
+//!   with exponents of one sign only), a symbol below the line in any term to its most
+//!   negative power (the common denominator: no fraction is left inside the group); it is
+//!   formed only when it is not one.
 
 use super::kinematic::is_kinematic_factor;
 use crate::algebra::{Axis, Expr, Role, Symbol, View, Q};

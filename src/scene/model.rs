@@ -218,6 +218,9 @@ pub enum Quantity {
     PointAcceleration(Symbol),
     /// A named impulse with its unknown components solved (`impulse R = ... at`, `find R`).
     NamedImpulse(Symbol),
+    /// A named force (`force R = R_x*i + R_y*j at ...`, `find R`): its vector, the unknowns
+    /// among its components solved.
+    NamedForce(Symbol),
     /// `I_G`, `I_O`: the inertia tensor `[I]` about G, about O (the frame's axes).
     InertiaAboutG,
     InertiaAboutO,
@@ -277,6 +280,7 @@ impl Quantity {
             Quantity::PointVelocity(_) => "the velocity of a named point",
             Quantity::PointAcceleration(_) => "the acceleration of a named point",
             Quantity::NamedImpulse(_) => "a named impulse",
+            Quantity::NamedForce(_) => "a named force",
             Quantity::InertiaAboutG => "the inertia tensor about G",
             Quantity::InertiaAboutO => "the inertia tensor about O",
             Quantity::PrincipalAboutG => "the principal moments and axes about G",

@@ -17,6 +17,7 @@ impl Quantity {
             Quantity::AngularVelocity => Dimension::ANGULAR_VELOCITY,
             Quantity::MassCentreVelocity | Quantity::PointVelocity(_) => Dimension::VELOCITY,
             Quantity::LinearMomentum | Quantity::NamedImpulse(_) => momentum,
+            Quantity::NamedForce(_) => Dimension::FORCE,
             Quantity::MassCentreAcceleration | Quantity::PointAcceleration(_) => {
                 Dimension::ACCELERATION
             }

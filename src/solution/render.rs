@@ -247,7 +247,13 @@ pub(super) fn quantity_latex(quantity: Quantity) -> String {
         Quantity::RotationalKineticEnergy => r"T_{\text{rot}}".into(),
         Quantity::PointVelocity(p) => format!(r"\mathbf{{v}}_{{{}}}", p.latex()),
         Quantity::PointAcceleration(p) => format!(r"\mathbf{{a}}_{{{}}}", p.latex()),
-        Quantity::NamedImpulse(s) => print::latex(&Expr::sym(s)),
+        // A vector named by one letter in bold, as the textbook writes `\mathbf{R}`.
+        Quantity::NamedImpulse(s) | Quantity::NamedForce(s) => match s.latex() {
+            letter if letter.len() == 1 && letter.chars().all(|c| c.is_ascii_alphabetic()) => {
+                format!(r"\mathbf{{{letter}}}")
+            }
+            _ => print::latex(&Expr::sym(s)),
+        },
         Quantity::InertiaAboutG | Quantity::InertiaAboutO => {
             inertia_results::tensor_name(quantity).into()
         }

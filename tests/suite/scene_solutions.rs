@@ -102,8 +102,11 @@ fn sample_18_4_dynamic_reactions_match_the_notes() {
 fn sample_18_5_floor_force_and_pivot_reaction() {
     let (_, a) = load("sp18_5_disk_reactions");
     same(&scalar(&a, "N"), "W + m r^3 w1^2/(2 L^2)");
-    same(&scalar(&a, "R_x"), "-m r^2 w1^2/L");
-    same(&scalar(&a, "R_y"), "-m r^2 w1^2/L r/(2 L)");
+    // The pivot's reaction as one vector, the notes' R = -(m r² ω₁²/L)(i + (r/2L) j).
+    let [r_x, r_y, r_z] = vector(&a, "R");
+    same(&r_x, "-m r^2 w1^2/L");
+    same(&r_y, "-m r^2 w1^2/L r/(2 L)");
+    same(&r_z, "0");
 }
 
 #[test]

@@ -21,6 +21,7 @@
 //! | `T_trans`, `T_rot` | kinematics, motion of G, body about G, the split | the same |
 //! | `v_A`, `a_A` | kinematics, `ω × r_A`, `α × r_A + ω × (ω × r_A)` | kinematics, v̄ or ā, `v̄ + ω × (r_A − r̄)`, ... |
 //! | a named impulse | its components, the unknowns among them solved | the same |
+//! | a named force | its components, the unknowns among them solved | the same |
 //! | `I_G`, `principal_G` | body about G (then the principal frame) | the same |
 //! | `I_O`, `principal_O` | inertia about O (then the principal frame) | the same |
 //! | `precession` | body about G, the torque-free motion, γ and the sense with its I and I′ | the same |
@@ -252,6 +253,7 @@ impl<'a> Analyser<'a> {
             Quantity::PointVelocity(p) => Value::Vector(self.point_velocity(at, p)?),
             Quantity::PointAcceleration(p) => Value::Vector(self.point_acceleration(at, p)?),
             Quantity::NamedImpulse(s) => Value::Vector(self.named_impulse(at, s)?),
+            Quantity::NamedForce(s) => Value::Vector(self.named_force(at, s)?),
             Quantity::InertiaAboutG => Value::Tensor(self.body(at)?.inertia.matrix()),
             Quantity::InertiaAboutO => Value::Tensor(self.inertia_about_o(at)?.matrix()),
             Quantity::PrincipalAboutG => self.principal(r, false)?,

@@ -87,6 +87,22 @@ impl<'a> Analyser<'a> {
 
     /// A named impulse as the scene gives it; its unknown components are solved with the
     /// others when the result is put in the givens.
+    /// A named force's vector as written (its unknowns solved with the other results).
+    pub(super) fn named_force(&self, at: Span, name: Symbol) -> Result<Vector, Diagnostic> {
+        self.scene
+            .forces
+            .iter()
+            .find(|f| f.name == name.name())
+            .map(|f| f.value.clone())
+            .ok_or_else(|| {
+                self.fail(
+                    at,
+                    format!("no force is named {}", name.name()),
+                    "name it: 'force R = R_x*i + R_y*j at (x, y, z)'",
+                )
+            })
+    }
+
     pub(super) fn named_impulse(&self, at: Span, name: Symbol) -> Result<Vector, Diagnostic> {
         self.scene
             .impulses

@@ -111,13 +111,16 @@ impl Reader<'_> {
         }
     }
 
-    /// What a request names among the scene's points and impulses: `v_A`, `a_A` of a named
-    /// point A, or a named impulse.
+    /// What a request names among the scene's points, impulses and forces: `v_A`, `a_A` of
+    /// a named point A, a named impulse, or a named force.
     pub(super) fn named_request(&self, name: &str) -> Option<Quantity> {
         let scene = &self.scene;
         let symbol = Symbol::new(name);
         if scene.impulses.iter().any(|i| i.name == Some(symbol)) {
             return Some(Quantity::NamedImpulse(symbol));
+        }
+        if scene.forces.iter().any(|f| f.name == name) {
+            return Some(Quantity::NamedForce(symbol));
         }
         let (prefix, point) = POINT_REQUESTS
             .iter()

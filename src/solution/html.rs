@@ -115,8 +115,7 @@ fn block(block: &Block) -> String {
         Block::Relations(rows) => {
             let (first_em, width_em) = rows_room(rows);
             self::block_of_rows(rows.iter().map(|row| {
-                let r = row.right();
-                let lines = print::broken(&r.rhs, r.axis, Notation::MathMl, first_em, width_em);
+                let lines = row.right_lines(Notation::MathMl, first_em, width_em);
                 self::rows(&row.left(Notation::MathMl), &lines)
             }))
         }

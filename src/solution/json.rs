@@ -7,7 +7,7 @@ use super::page::{Block, Heading, Page, Row};
 use super::parts_table;
 use super::render::{relation, Result};
 use crate::mechanics::derivation::Relation;
-use crate::print::{self, markup, Notation};
+use crate::print::{markup, Notation};
 use crate::scene::model::Given;
 use crate::scene::Analysis;
 
@@ -23,7 +23,7 @@ pub fn relations_json(rs: &[Relation]) -> Vec<serde_json::Value> {
 }
 
 /// The worked solution's page as JSON (`docs/solution.schema.json`): the relations of each
-/// step as the page shows them (no tautology, zeros on one row), every result.
+/// step as the page shows them (no tautology, equal components on one row), every result.
 /// `results` are every result, also those the page leaves to its last step.
 pub(super) fn solution(page: &Page, analysis: &Analysis, results: &[Result]) -> serde_json::Value {
     let mut solution = serde_json::json!({
@@ -75,12 +75,10 @@ pub(super) fn solution(page: &Page, analysis: &Analysis, results: &[Result]) -> 
 fn rows_json(rows: &[Row]) -> Vec<serde_json::Value> {
     rows.iter()
         .map(|row| {
-            let r = row.right();
-            let side = |notation| {
-                let right = print::render(&r.rhs, notation, r.axis);
-                format!("{} = {right}", row.left(notation))
-            };
-            serde_json::json!({"text": side(Notation::Text), "latex": side(Notation::Latex)})
+            serde_json::json!({
+                "text": row.one_line(Notation::Text),
+                "latex": row.one_line(Notation::Latex),
+            })
         })
         .collect()
 }

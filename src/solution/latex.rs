@@ -108,8 +108,7 @@ pub(super) fn relations(rows: &[Row]) -> String {
     let rows: Vec<String> = rows
         .iter()
         .map(|row| {
-            let r = row.right();
-            let lines = print::broken(&r.rhs, r.axis, Notation::Latex, first_em, width_em);
+            let lines = row.right_lines(Notation::Latex, first_em, width_em);
             aligned_row(&row.left(Notation::Latex), &lines)
         })
         .collect();

@@ -5,8 +5,8 @@
 //! (`solution_page.rs`, `derivations.rs`); how a block looks, once per writer.
 //!
 //! A block of relations leaves out what a reader need not read: a tautology (a quantity
-//! equal to itself, as given) is not shown, and consecutive quantities that are zero share
-//! one row, `I_xy = I_yz = I_xz = 0`.
+//! equal to itself, as given) is not shown, and consecutive components of one quantity with
+//! one value share a row, `I_xy = I_yz = I_xz = 0`.
 
 use super::render::Result;
 use crate::mechanics::derivation::{Relation, Table};
@@ -84,78 +84,117 @@ pub struct Name {
     pub latex: String,
 }
 
-/// One row of a block of relations: `lhs = rhs`, or quantities all zero.
+/// One row of a block of relations: `lhs = rhs`, or components of one quantity equal to
+/// one value, `q₁ = q₂ = … = value`.
 pub enum Row<'a> {
     Relation(&'a Relation),
-    /// Relations `q = 0` of consecutive named quantities, one row `q₁ = q₂ = … = 0`.
-    Zeros(Vec<&'a Relation>),
+    /// Relations `qₖ = value` of consecutive components of one named quantity, each with
+    /// the same right-hand side (one or more).
+    Equal(Vec<&'a Relation>),
 }
 
 impl Row<'_> {
-    /// The left of the row's last `=`: a relation's left-hand side, or the zero
-    /// quantities joined by `=`.
+    /// The left of the row's first `=`: a relation's left-hand side, or the first of the
+    /// equal quantities (the row aligns there, as its column does).
     pub fn left(&self, notation: Notation) -> String {
-        match self {
-            Row::Relation(r) => print::render(&r.lhs, notation, r.axis),
-            Row::Zeros(zeros) => {
-                let equals = match notation {
-                    Notation::MathMl => "<mo>=</mo>",
-                    _ => " = ",
-                };
-                let sides: Vec<String> = zeros
-                    .iter()
-                    .map(|r| print::render(&r.lhs, notation, r.axis))
-                    .collect();
-                sides.join(equals)
-            }
-        }
-    }
-
-    /// The right of the row's last `=`, and the relation whose axis presents it.
-    pub fn right(&self) -> &Relation {
-        match self {
-            Row::Relation(r) => r,
-            Row::Zeros(zeros) => zeros[zeros.len() - 1],
-        }
+        let r = self.first();
+        print::render(&r.lhs, notation, r.axis)
     }
 
     /// The width in ems of [`Row::left`] typeset, for the room of the right-hand sides.
     pub fn left_em(&self) -> f64 {
+        let r = self.first();
+        print::width_em(&r.lhs, r.axis)
+    }
+
+    /// The right of the row's first `=` in `notation`, in lines that fit from `first_em`
+    /// within `width_em`: the right-hand side broken as a sum is, after the other equal
+    /// quantities (`I_yz = I_xz = 0`).
+    pub fn right_lines(&self, notation: Notation, first_em: f64, width_em: f64) -> Vec<String> {
+        let (others, last) = self.others_and_last();
+        let others_em: f64 = others
+            .iter()
+            .map(|r| print::width_em(&r.lhs, r.axis) + print::width::RELATION_EM)
+            .sum();
+        let mut lines = print::broken(
+            &last.rhs,
+            last.axis,
+            notation,
+            first_em + others_em,
+            width_em,
+        );
+        if let Some(first) = lines.first_mut() {
+            *first = format!("{}{first}", self.others_text(notation));
+        }
+        lines
+    }
+
+    /// The row on one line in `notation`, `lhs = rhs` (for JSON and the tests).
+    pub fn one_line(&self, notation: Notation) -> String {
+        let (_, last) = self.others_and_last();
+        let right = print::render(&last.rhs, notation, last.axis);
+        format!(
+            "{} = {}{right}",
+            self.left(notation),
+            self.others_text(notation)
+        )
+    }
+
+    /// The equal quantities after the first, each followed by `=`.
+    fn others_text(&self, notation: Notation) -> String {
+        let equals = match notation {
+            Notation::MathMl => "<mo>=</mo>",
+            _ => " = ",
+        };
+        let (others, _) = self.others_and_last();
+        others
+            .iter()
+            .map(|r| print::render(&r.lhs, notation, r.axis) + equals)
+            .collect()
+    }
+
+    fn first(&self) -> &Relation {
         match self {
-            Row::Relation(r) => print::width_em(&r.lhs, r.axis),
-            Row::Zeros(zeros) => {
-                let sides: f64 = zeros.iter().map(|r| print::width_em(&r.lhs, r.axis)).sum();
-                sides + print::width::RELATION_EM * (zeros.len() - 1) as f64
-            }
+            Row::Relation(r) => r,
+            Row::Equal(equal) => equal[0],
+        }
+    }
+
+    /// The relations after the first, and the last (whose right-hand side the row ends with).
+    fn others_and_last(&self) -> (&[&Relation], &Relation) {
+        match self {
+            Row::Relation(r) => (&[], r),
+            Row::Equal(equal) => (&equal[1..], equal[equal.len() - 1]),
         }
     }
 }
 
 /// The rows `relations` are shown as: tautologies left out (a quantity equal to itself, or
-/// to a symbol the page prints alike: `omega_x = w_x` where `w_x` is ω_x), consecutive zeros
-/// of one named quantity's components on one row (`I_xy = I_yz = I_xz = 0`, not
-/// `ω_z = Ω_x = 0`).
+/// to a symbol the page prints alike: `omega_x = w_x` where `w_x` is ω_x), consecutive
+/// components of one named quantity with the same value on one row (`I_xy = I_yz = I_xz =
+/// 0`, `r̄_y = r̄_z = ¼c`; not `ω_z = Ω_x = 0`).
 pub fn rows(relations: &[Relation]) -> Vec<Row<'_>> {
     let mut rows: Vec<Row> = Vec::new();
     for r in relations {
         if is_tautology(r) {
             continue;
         }
-        let Some(name) = r.lhs.as_symbol().filter(|_| r.rhs.is_zero()) else {
+        let Some(name) = r.lhs.as_symbol() else {
             rows.push(Row::Relation(r));
             continue;
         };
         // One quantity: the same name before its subscript (`I_xy`, `I_yz`).
         let stem = |s: crate::algebra::Symbol| s.name().split('_').next().unwrap_or_default();
-        let same_quantity = |zeros: &Vec<&Relation>| {
-            zeros[0]
-                .lhs
-                .as_symbol()
-                .is_some_and(|s| stem(s) == stem(name))
+        let joins = |equal: &Vec<&Relation>| {
+            equal[0].rhs == r.rhs
+                && equal[0]
+                    .lhs
+                    .as_symbol()
+                    .is_some_and(|s| stem(s) == stem(name))
         };
         match rows.last_mut() {
-            Some(Row::Zeros(zeros)) if same_quantity(zeros) => zeros.push(r),
-            _ => rows.push(Row::Zeros(vec![r])),
+            Some(Row::Equal(equal)) if joins(equal) => equal.push(r),
+            _ => rows.push(Row::Equal(vec![r])),
         }
     }
     rows
@@ -200,10 +239,7 @@ mod tests {
         ];
         let shown: Vec<String> = rows(&relations)
             .iter()
-            .map(|row| {
-                let r = row.right();
-                format!("{} = {}", row.left(Notation::Text), r.rhs)
-            })
+            .map(|row| row.one_line(Notation::Text))
             .collect();
         assert_eq!(
             shown,
@@ -221,5 +257,6 @@ mod tests {
         let rows = rows(&relations);
         assert_eq!(rows.len(), 2);
         assert!(matches!(rows[1], Row::Relation(_)));
+        assert!(matches!(&rows[0], Row::Equal(equal) if equal.len() == 1));
     }
 }

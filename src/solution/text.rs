@@ -7,7 +7,7 @@ use super::inertia_results;
 use super::page::{Block, Heading, Page, Section};
 use super::parts_table;
 use super::render::{given_line, value_text, Result};
-use crate::print::{self, markup, Notation};
+use crate::print::{markup, Notation};
 
 /// The column a paragraph is wrapped at.
 pub const WRAP_COLUMNS: usize = 88;
@@ -47,11 +47,7 @@ fn section(section: &Section) -> String {
             Block::Table(table) => parts_table::text(table),
             Block::Relations(rows) => rows
                 .iter()
-                .map(|row| {
-                    let r = row.right();
-                    let right = print::render(&r.rhs, Notation::Text, r.axis);
-                    format!("  {} = {right}\n", row.left(Notation::Text))
-                })
+                .map(|row| format!("  {}\n", row.one_line(Notation::Text)))
                 .collect(),
             Block::Results(results) => results.iter().map(|r| result(r)).collect(),
             Block::Answers(results) => answers_text(results),

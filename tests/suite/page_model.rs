@@ -1,6 +1,6 @@
 //! Issue 30: every notation is written from one page model. No example's page holds a
 //! tautology (`vbar_x = vbar_x`) or a vector written as a tuple (`(−135, 0, 0) m/s²`);
-//! quantities that are zero share one row; a scene's `statement` lines print before its
+//! components of one quantity with one value share a row; a scene's `statement` lines print before its
 //! givens, and its requests in a Find section, in every format.
 
 use super::common::binary::kinetics;
@@ -56,7 +56,7 @@ fn no_example_page_holds_a_tautology_or_a_tuple() {
 }
 
 #[test]
-fn zero_quantities_of_a_step_share_one_row() {
+fn equal_components_of_a_step_share_one_row() {
     let (scene, analysis) = analysed_example("sp18_1_plate_impact", "");
     let text = render(&scene, &analysis, Format::Text, false);
     // The plate's centroidal products of inertia are zero, derived one by one; their rows
@@ -64,7 +64,8 @@ fn zero_quantities_of_a_step_share_one_row() {
     assert!(text.contains("  I_xy = I_yz = I_xz = 0\n"), "{text}");
     assert!(!text.contains("  I_xy = 0\n"), "{text}");
     let latex = render(&scene, &analysis, Format::Latex, false);
-    assert!(latex.contains("I_{xy} = I_{yz} = I_{xz} &= 0"), "{latex}");
+    // Aligned at its first `=`, in the column of the rows around it.
+    assert!(latex.contains("I_{xy} &= I_{yz} = I_{xz} = 0"), "{latex}");
     // The velocity of the mass centre is given: only its zero component is left to say.
     assert!(!text.contains("vbar_x = vbar_x"), "{text}");
 }

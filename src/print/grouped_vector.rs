@@ -62,11 +62,11 @@ impl GroupedVector {
     pub fn render(&self, notation: Notation) -> String {
         let factor = render(&self.factor, notation, Axis::X);
         let inner = vector(&self.inner, notation);
-        let (open, close) = match notation {
-            Notation::MathMl => ("(", ")"),
-            _ if inner.contains('(') => ("[", "]"),
-            _ => ("(", ")"),
+        let nested = match notation {
+            Notation::MathMl => inner.contains("<mo>(</mo>") || inner.contains("<mo stretchy"),
+            _ => inner.contains('('),
         };
+        let (open, close) = if nested { ("[", "]") } else { ("(", ")") };
         match notation {
             Notation::Text => format!("{factor}*({inner})"),
             Notation::Latex if inner.contains(r"\frac") => {
@@ -74,7 +74,7 @@ impl GroupedVector {
             }
             Notation::Latex => format!(r"{factor}\,{open}{inner}{close}"),
             Notation::MathMl => format!(
-                "<mrow>{factor}<mo>\u{2062}</mo><mrow><mo>(</mo>{inner}<mo>)</mo></mrow></mrow>"
+                "<mrow>{factor}<mo>\u{2062}</mo><mrow><mo>{open}</mo>{inner}<mo>{close}</mo></mrow></mrow>"
             ),
         }
     }

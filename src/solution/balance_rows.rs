@@ -85,6 +85,7 @@ pub(super) fn in_words<'a>(
         value: None,
         unit: None,
         form: None,
+        grouped: None,
     }
 }
 
@@ -99,5 +100,6 @@ pub(super) fn number<'a>(name: String, name_latex: String, degrees: f64) -> Resu
         value: Some(vec![degrees]),
         unit: Some("deg".into()),
         form: None::<Cow<'a, Value>>,
+        grouped: None,
     }
 }

@@ -24,14 +24,12 @@ pub fn relations_json(rs: &[Relation]) -> Vec<serde_json::Value> {
 
 /// The worked solution's page as JSON (`docs/solution.schema.json`): the relations of each
 /// step as the page shows them (no tautology, equal components on one row), every result.
-/// `results` are every result, also those the page leaves to its last step.
-pub(super) fn solution(page: &Page, analysis: &Analysis, results: &[Result]) -> serde_json::Value {
+pub(super) fn solution(page: &Page, analysis: &Analysis) -> serde_json::Value {
     let mut solution = serde_json::json!({
         "title": page.title,
         "statement": null,
         "statement_latex": null,
         "abbreviations": relations_json(&analysis.abbreviations.relations()),
-        "results": results.iter().map(result_json).collect::<Vec<_>>(),
     });
     let mut steps = Vec::new();
     for section in &page.sections {
@@ -42,6 +40,9 @@ pub(super) fn solution(page: &Page, analysis: &Analysis, results: &[Result]) -> 
                     solution["statement_latex"] = markup::latex(words).into();
                 }
                 (_, Block::Givens(givens)) => solution["givens"] = givens_json(givens).into(),
+                (_, Block::Results(results)) => {
+                    solution["results"] = results.iter().map(result_json).collect();
+                }
                 (_, Block::Find(names)) => {
                     let names: Vec<&str> = names.iter().map(|n| n.text.as_str()).collect();
                     solution["find"] = serde_json::json!(names);

@@ -130,7 +130,7 @@ fn align(rows: &[String]) -> String {
 /// Results as one `align*` block: each broken into lines that fit the page, its value and
 /// unit after the last line, or on a row of their own when the result took several lines or
 /// the value does not fit after it.
-pub(super) fn results(results: &[&Result]) -> String {
+pub(super) fn results(results: &[Result]) -> String {
     let (first_em, width_em) = results_room(results);
     let rows: Vec<String> = results
         .iter()

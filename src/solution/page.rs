@@ -73,7 +73,7 @@ pub enum Block<'a> {
     /// Relations aligned at `=`, each right-hand side broken to fit the page.
     Relations(Vec<Row<'a>>),
     /// Results with their forms, values and units.
-    Results(Vec<&'a Result<'a>>),
+    Results(&'a [Result<'a>]),
     /// The results that have a number (or words), as their numbers alone.
     Answers(&'a [Result<'a>]),
 }

@@ -15,7 +15,7 @@ use super::vector_value;
 use crate::algebra::Vector;
 use crate::algebra::{Axis, Expr};
 use crate::mechanics::derivation::Relation;
-use crate::print::grouped_vector::grouped;
+use crate::print::grouped_vector::{grouped, GroupedVector};
 use crate::print::{self, Notation};
 use crate::scene::analysis::Abbreviations;
 use crate::scene::model::{Quantity, Request};
@@ -45,6 +45,9 @@ pub(super) struct Result<'a> {
     pub(super) unit: Option<String>,
     /// The symbolic form; none for a number found only from the values (an angle by atan2).
     pub(super) form: Option<Cow<'a, Value>>,
+    /// A vector form with its common factor in front, where that reads shorter: found once
+    /// (a `together` and a `factor_terms`), shown by every notation.
+    pub(super) grouped: Option<GroupedVector>,
 }
 
 impl Result<'_> {
@@ -102,6 +105,7 @@ pub(super) fn scalar<'a>(
         value: value(scene, &e).map(|x| vec![x]),
         unit,
         form: Some(Cow::Owned(Value::Scalar(e))),
+        grouped: None,
     }
 }
 
@@ -138,15 +142,19 @@ fn computed<'a>(
             }
             result
         }
-        Value::Vector(vec) => Result {
-            name,
-            name_latex,
-            text: vector_form(vec, Notation::Text),
-            latex: vector_form(vec, Notation::Latex),
-            value: vec.iter().map(|c| value(scene, c)).collect(),
-            unit,
-            form: Some(Cow::Borrowed(v)),
-        },
+        Value::Vector(vec) => {
+            let grouped = grouped(vec);
+            Result {
+                name,
+                name_latex,
+                text: vector_form(vec, grouped.as_ref(), Notation::Text),
+                latex: vector_form(vec, grouped.as_ref(), Notation::Latex),
+                value: vec.iter().map(|c| value(scene, c)).collect(),
+                unit,
+                form: Some(Cow::Borrowed(v)),
+                grouped,
+            }
+        }
         // Inertia is in kg·m², whether its form has symbols or is a number.
         Value::Tensor(_) | Value::Principal(_) => Result {
             name,
@@ -156,6 +164,7 @@ fn computed<'a>(
             value: inertia_results::values(v, |e| value(scene, e)),
             unit: Some(Dimension::INERTIA.si_unit()),
             form: Some(Cow::Borrowed(v)),
+            grouped: None,
         },
         Value::Balance(corrections) => return super::balance_rows::rows(scene, corrections),
         Value::Precession(p) => return super::precession_rows::rows(scene, p),
@@ -165,8 +174,8 @@ fn computed<'a>(
 
 /// A vector result's form: its common factor in front where that reads shorter
 /// ([`grouped`]), else component by component.
-fn vector_form(v: &Vector, notation: Notation) -> String {
-    match grouped(v) {
+fn vector_form(v: &Vector, grouped: Option<&GroupedVector>, notation: Notation) -> String {
+    match grouped {
         Some(g) => g.render(notation),
         None => print::vector(v, notation),
     }
@@ -176,7 +185,7 @@ fn vector_form(v: &Vector, notation: Notation) -> String {
 pub(super) fn form_em(r: &Result) -> f64 {
     match r.form.as_deref() {
         Some(Value::Scalar(e)) => print::width_em(e, Axis::X),
-        Some(Value::Vector(v)) => match grouped(v) {
+        Some(Value::Vector(v)) => match &r.grouped {
             Some(g) => g.width_em(),
             None => print::line_break::vector_width_em(v),
         },
@@ -196,7 +205,7 @@ pub(super) fn form_lines(
 ) -> Vec<String> {
     match r.form.as_deref() {
         Some(Value::Scalar(e)) => print::broken(e, Axis::X, notation, first_em, width_em),
-        Some(Value::Vector(v)) => match grouped(v) {
+        Some(Value::Vector(v)) => match &r.grouped {
             Some(g) if first_em + g.width_em() <= width_em => vec![g.render(notation)],
             _ => print::broken_vector(v, notation, first_em, width_em),
         },
@@ -323,7 +332,7 @@ pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bo
             Format::Text => super::text::page(&page),
             Format::Latex => super::latex::page(&page, standalone),
             Format::Markdown => super::markdown::page(&page),
-            Format::Json => super::json::solution(&page, analysis, &results).to_string(),
+            Format::Json => super::json::solution(&page, analysis).to_string(),
             Format::Html => super::html::page(&page),
         }
     })
@@ -351,7 +360,7 @@ pub(super) fn given_line(g: &crate::scene::model::Given) -> String {
 
 /// The room of the results' forms ([`print::aligned_room`]), whose left-hand sides are the
 /// quantities' names.
-pub(super) fn results_room(results: &[&Result]) -> (f64, f64) {
+pub(super) fn results_room(results: &[Result]) -> (f64, f64) {
     let lhs_em = results
         .iter()
         .map(|r| print::width::symbol_em(&r.name_latex))

@@ -62,7 +62,6 @@ pub(super) fn solution_page<'a>(
         };
         sections.push(Section::new(heading, blocks));
     }
-    let results = results.iter().collect();
     sections.push(Section::new(
         Heading::Results,
         vec![Block::Results(results)],

@@ -49,7 +49,7 @@ fn section(section: &Section) -> String {
                 .iter()
                 .map(|row| format!("  {}\n", row.one_line(Notation::Text)))
                 .collect(),
-            Block::Results(results) => results.iter().map(|r| result(r)).collect(),
+            Block::Results(results) => results.iter().map(result).collect(),
             Block::Answers(results) => answers_text(results),
         });
     }

@@ -20,6 +20,7 @@ pub mod layout;
 pub mod line_break;
 pub mod markup;
 pub mod mathml;
+pub mod matrix;
 mod spelling;
 pub mod text;
 pub mod width;

@@ -13,7 +13,8 @@
 //! right-hand side's SI unit.
 
 use super::numbers::{format_value, unit};
-use super::render::{given_line, value_text, Result};
+use super::render::given_line;
+use super::result::{Body, Form, Result};
 use crate::algebra::Expr;
 use crate::mechanics::derivation::Step;
 use crate::print::{self, markup, Notation};
@@ -104,19 +105,6 @@ fn number_text(n: &Number) -> String {
     }
 }
 
-/// The results that have values, as numbers with units: `  T_BC = 1857 N` a line.
-pub(super) fn answers_text(results: &[Result]) -> String {
-    results
-        .iter()
-        .filter(|r| r.value.is_some() || r.is_words())
-        .filter_map(|r| {
-            let shown = value_text(r).or_else(|| r.is_words().then(|| r.text.clone()));
-            super::inertia_results::text(r, true)
-                .or_else(|| Some(format!("  {} = {}\n", r.name, shown?)))
-        })
-        .collect()
-}
-
 /// The engineer's page as text: title, givens, results, intermediate values.
 pub(super) fn text(
     scene: &Scene,
@@ -133,14 +121,11 @@ pub(super) fn text(
         out.push_str(&format!("  {}\n", given_line(g)));
     }
     out.push_str("\nResults\n");
-    out.push_str(&answers_text(results));
-    for r in results
-        .iter()
-        .filter(|r| r.value.is_none() && !r.is_words())
-    {
+    out.push_str(&super::text::answers(results));
+    for r in results.iter().filter(|r| !r.has_value()) {
         out.push_str(&format!(
             "  {} has no value: a given it needs is symbolic\n",
-            r.name
+            r.name.text
         ));
     }
     let steps = intermediate(scene, analysis, dims);
@@ -171,12 +156,14 @@ pub(super) fn json(
         "givens": super::json::givens_json(&scene.givens),
         "results": results.iter().map(|r| {
             let mut row = serde_json::json!({
-                "name": r.name,
+                "name": r.name.text,
                 "value": super::json::value_json(r),
-                "unit": r.unit,
+                "unit": super::json::unit(r),
             });
-            if r.is_words() {
-                row["text"] = serde_json::json!(r.text);
+            if let Body::Line(line) = &r.body {
+                if let Some(Form::Words(words)) = &line.form {
+                    row["text"] = serde_json::json!(markup::text(words));
+                }
             }
             row
         }).collect::<Vec<_>>(),

@@ -8,12 +8,10 @@
 //! long right-hand side broken into continuation rows where the LaTeX breaks it
 //! (`print::broken`), scrolled sideways only where one term alone is wider than the page.
 
-use super::inertia_results;
 use super::mathml_value::value;
-use super::numbers::format_value;
 use super::page::{rows_room, Block, Heading, Page, Section};
-use super::render::{form_lines, results_room, Result};
-use super::vector_value;
+use super::render::results_room;
+use super::result::{Line, Result, Show};
 use crate::algebra::{Axis, Expr};
 use crate::mechanics::derivation::Table;
 use crate::print::{self, markup, mathml::escaped, Notation};
@@ -121,7 +119,8 @@ fn block(block: &Block) -> String {
         }
         Block::Results(results) => {
             let (first_em, width_em) = results_room(results);
-            block_of_rows(results.iter().map(|r| result_rows(r, first_em, width_em)))
+            let lines = results.iter().flat_map(Result::lines);
+            block_of_rows(lines.map(|l| result_rows(l, first_em, width_em)))
         }
         Block::Answers(_) => String::new(),
     }
@@ -172,38 +171,29 @@ fn rows(lhs: &str, lines: &[String]) -> String {
     out
 }
 
-/// A result: its quantity's name, its form (broken as a relation is) and, when every given
-/// has a value, `= value unit` after its last line.
-fn result_rows(r: &Result, first_em: f64, width_em: f64) -> String {
-    if let Some(table) = inertia_results::mathml(r, rows) {
-        return table;
-    }
+/// A result's line: its quantity's name, its form (broken as a relation is) and, when it
+/// has one, `= value unit` after its last line; words without a name, on their own.
+fn result_rows(l: &Line, first_em: f64, width_em: f64) -> String {
     let mut name = String::new();
-    print::mathml::latex_name(&mut name, &r.name_latex);
-    let mut lines = form_lines(r, Notation::MathMl, first_em, width_em);
-    let mut rhs = lines.pop().unwrap_or_default();
-    match value_mathml(r) {
-        // A form that is a plain number is its value: shown once, with its unit.
-        Some(v) if r.is_number() => rhs = v,
-        Some(v) => {
-            rhs.push_str("<mo>=</mo>");
-            rhs.push_str(&v);
+    print::mathml::latex_name(&mut name, &l.name.latex);
+    let value = l.shown_value().map(|v| v.render(Notation::MathMl));
+    let mut lines = match (&l.form, l.show) {
+        (Some(form), _) if l.name.latex.is_empty() => {
+            let words = form.render(Notation::MathMl);
+            return format!("<mtr><mtd></mtd><mtd></mtd><mtd class=\"rhs\">{words}</mtd></mtr>\n");
         }
-        None => {}
+        (Some(form), Show::Form | Show::Both) => form.lines(Notation::MathMl, first_em, width_em),
+        (_, _) => Vec::new(),
+    };
+    let mut rhs = lines.pop().unwrap_or_default();
+    if let Some(v) = value.filter(|_| l.show != Show::Form) {
+        if !rhs.is_empty() {
+            rhs.push_str("<mo>=</mo>");
+        }
+        rhs.push_str(&v);
     }
     lines.push(rhs);
     rows(&name, &lines)
-}
-
-/// A result's value and unit in MathML: `−135 m/s²`, a vector by its components
-/// (`vector_value.rs`).
-fn value_mathml(r: &Result) -> Option<String> {
-    let unit = r.unit.as_deref().unwrap_or("");
-    Some(match r.value.as_deref()? {
-        [x] => value(&format_value(*x), unit),
-        components @ [_, _, _] => vector_value::mathml(components, unit),
-        _ => return None,
-    })
 }
 
 /// A composite body's table of parts: a row per part, a column per quantity.

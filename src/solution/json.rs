@@ -2,10 +2,10 @@
 //! the statement, the givens, the quantities asked for, each step with its relations as text
 //! and LaTeX, the names of long radicands, and the results with their forms and values.
 
-use super::inertia_results;
 use super::page::{Block, Heading, Page, Row};
 use super::parts_table;
-use super::render::{relation, Result};
+use super::render::relation;
+use super::result::{Body, Form, Line, Result};
 use crate::mechanics::derivation::Relation;
 use crate::print::{markup, Notation};
 use crate::scene::model::Given;
@@ -87,11 +87,11 @@ fn rows_json(rows: &[Row]) -> Vec<serde_json::Value> {
 /// A result: its name, its form in text and LaTeX, its value and unit.
 fn result_json(r: &Result) -> serde_json::Value {
     serde_json::json!({
-        "name": r.name,
-        "text": r.text,
-        "latex": r.latex,
+        "name": r.name.text,
+        "text": r.one_line(Notation::Text),
+        "latex": r.one_line(Notation::Latex),
         "value": value_json(r),
-        "unit": r.unit,
+        "unit": unit(r),
     })
 }
 
@@ -113,12 +113,38 @@ pub(super) fn givens_json(givens: &[Given]) -> Vec<serde_json::Value> {
 /// A result's value as JSON: a number, `[x, y, z]`, a tensor's rows, a principal frame's
 /// `{moments, axes, remark}`, or null without one.
 pub(super) fn value_json(r: &Result) -> serde_json::Value {
-    if let Some(value) = inertia_results::json_value(r) {
-        return value;
+    let numbers = |l: &Line| match (&l.form, l.value.as_deref()) {
+        (_, None) => serde_json::Value::Null,
+        (_, Some([x])) => serde_json::json!(x),
+        (Some(Form::Matrix(_)), Some(v)) => serde_json::json!(v.chunks(3).collect::<Vec<_>>()),
+        (_, Some(v)) => serde_json::json!(v),
+    };
+    match &r.body {
+        Body::Line(l) => numbers(l),
+        Body::Frame {
+            moments,
+            axes,
+            remark,
+        } => {
+            let all = |lines: &[Line]| -> Option<Vec<serde_json::Value>> {
+                lines
+                    .iter()
+                    .map(|l| l.value.as_ref().map(|_| numbers(l)))
+                    .collect()
+            };
+            let remark = remark.as_ref().and_then(|l| match &l.form {
+                Some(Form::Words(w)) => Some(markup::text(w)),
+                _ => None,
+            });
+            serde_json::json!({"moments": all(moments), "axes": all(axes), "remark": remark})
+        }
     }
-    match r.value.as_deref() {
-        Some([x]) => serde_json::json!(x),
-        Some(v) => serde_json::json!(v),
-        None => serde_json::Value::Null,
+}
+
+/// A result's unit: its line's, a frame's moments'.
+pub(super) fn unit<'r>(r: &'r Result) -> Option<&'r str> {
+    match &r.body {
+        Body::Line(l) => l.unit.as_deref(),
+        Body::Frame { moments, .. } => moments.first()?.unit.as_deref(),
     }
 }

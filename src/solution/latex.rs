@@ -5,13 +5,11 @@
 //! its steps `\subsection*`. The answers section (numbers first) is text only: here each
 //! value stands beside its result.
 
-use super::inertia_results;
-use super::numbers::format_value;
 use super::page::{rows_room, Block, Heading, Name, Page, Row, Section};
 use super::parts_table;
-use super::render::{form_em, form_lines, results_room, Result};
+use super::render::results_room;
+use super::result::{Form, Line, Result, Show};
 use super::unit_latex::quantity;
-use super::vector_value;
 use crate::algebra::Expr;
 use crate::print::{self, markup, width::RELATION_EM, Notation};
 use crate::scene::model::Given;
@@ -127,55 +125,57 @@ fn align(rows: &[String]) -> String {
     )
 }
 
-/// Results as one `align*` block: each broken into lines that fit the page, its value and
-/// unit after the last line, or on a row of their own when the result took several lines or
-/// the value does not fit after it.
+/// Results as one `align*` block, a row per line of each ([`line`]).
 pub(super) fn results(results: &[Result]) -> String {
-    let (first_em, width_em) = results_room(results);
+    let room = results_room(results);
     let rows: Vec<String> = results
         .iter()
-        .map(|r| {
-            if let Some(rows) = inertia_results::latex(r) {
-                return rows.join(" \\\\\n");
-            }
-            let name = &r.name_latex;
-            let value = value(r);
-            if let Some((number, _)) = value.as_ref().filter(|_| r.is_number()) {
-                return aligned_row(name, std::slice::from_ref(number));
-            }
-            let value = value.map(|(v, width)| (format!("= {v}"), width + RELATION_EM));
-            let mut lines = form_lines(r, Notation::Latex, first_em, width_em);
-            if let Some((tail, tail_em)) = value {
-                if lines.len() > 1 || first_em + form_em(r) + tail_em > width_em {
-                    return format!("{} \\\\\n&{tail}", aligned_row(name, &lines));
-                }
-                if let Some(line) = lines.first_mut() {
-                    line.push(' ');
-                    line.push_str(&tail);
-                }
-            }
-            aligned_row(name, &lines)
-        })
+        .flat_map(Result::lines)
+        .map(|l| line(l, room))
         .collect();
     align(&rows)
 }
 
-/// A result's value and unit in LaTeX (`-135\,\mathrm{m/s^2}`, a vector by its components)
-/// and its width in ems.
-fn value(r: &Result) -> Option<(String, f64)> {
-    let unit = r.unit.as_deref().unwrap_or_default();
-    Some(match r.value.as_deref()? {
-        [x] => {
-            let number = format_value(*x);
-            // A value's digits and sign are narrower than 0.55 em; its unit is upright,
-            // narrower than a symbol of the same letters.
-            let width = 0.55 * number.len() as f64 + print::width::symbol_em(unit);
-            (quantity(&number, unit), width)
+/// A result's line: its form broken into lines that fit the page (`room`: where the first
+/// starts, the width), its value and unit after the last line, or on a row of their own
+/// when the form took several lines or the value does not fit after it; a matrix too wide
+/// for the page by its value alone; words without a name, on their own.
+fn line(l: &Line, (first_em, width_em): (f64, f64)) -> String {
+    // Braced: a `[` after the row break `\\` would be read as its argument.
+    let name = match l.name.latex.starts_with('[') {
+        true => format!("{{{}}}", l.name.latex),
+        false => l.name.latex.clone(),
+    };
+    let value = l
+        .shown_value()
+        .map(|v| (v.render(Notation::Latex), v.latex_em()));
+    let Some(form) = &l.form else {
+        return aligned_row(&name, &[value.map(|(v, _)| v).unwrap_or_default()]);
+    };
+    if name.is_empty() {
+        return format!("& {}", form.render(Notation::Latex));
+    }
+    let fits = first_em + form.width_em() <= width_em;
+    match (value, l.show) {
+        (Some((value, _)), Show::Value) => aligned_row(&name, &[value]),
+        (Some((value, _)), Show::Both) if matches!(form, Form::Matrix(_)) && !fits => {
+            aligned_row(&name, &[value])
         }
-        components @ [_, _, _] => (
-            vector_value::latex(components, unit),
-            vector_value::latex_em(components, unit),
-        ),
-        _ => return None,
-    })
+        (Some((value, value_em)), Show::Both) => {
+            let mut lines = form.lines(Notation::Latex, first_em, width_em);
+            let tail = format!("= {value}");
+            let on_its_row = matches!(form, Form::Matrix(_))
+                || lines.len() > 1
+                || first_em + form.width_em() + RELATION_EM + value_em > width_em;
+            if on_its_row {
+                return format!("{} \\\\\n&{tail}", aligned_row(&name, &lines));
+            }
+            if let Some(last) = lines.last_mut() {
+                last.push(' ');
+                last.push_str(&tail);
+            }
+            aligned_row(&name, &lines)
+        }
+        (_, _) => aligned_row(&name, &form.lines(Notation::Latex, first_em, width_em)),
+    }
 }

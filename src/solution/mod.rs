@@ -17,10 +17,11 @@ mod page;
 pub mod parts_table;
 mod precession_rows;
 pub mod render;
+mod result;
+mod shown_value;
 mod solution_page;
 mod text;
 pub mod unit_latex;
-mod vector_value;
 
 pub use derivations::{render_derivations, Shown};
 pub use render::{render, render_numbers, Format};

@@ -8,7 +8,7 @@
 //! equal to itself, as given) is not shown, and consecutive components of one quantity with
 //! one value share a row, `I_xy = I_yz = I_xz = 0`.
 
-use super::render::Result;
+use super::result::Result;
 use crate::mechanics::derivation::{Relation, Table};
 use crate::print::{self, Notation};
 use crate::scene::model::Given;
@@ -79,6 +79,7 @@ pub enum Block<'a> {
 }
 
 /// A quantity's name in text (`H_G`) and in LaTeX (`\mathbf{H}_G`).
+#[derive(Clone)]
 pub struct Name {
     pub text: String,
     pub latex: String,

@@ -4,40 +4,37 @@
 //! precession (I' > I)" or "retrograde precession (I' < I)" ("no precession (I' = I)": ω is
 //! along H_G).
 
-use super::balance_rows::{in_words, number};
 use super::numbers::value;
-use super::render::{scalar, Result};
+use super::page::Name;
+use super::result::{Line, Result};
 use crate::mechanics::torque_free_axisymmetric::{Precession, PrecessionSense};
 use crate::scene::Scene;
 use std::borrow::Cow;
 
 /// The rows `tan(gamma)`, `gamma` (when it has a value) and `precession`.
-pub(super) fn rows<'a>(scene: &Scene, precession: &Precession) -> Vec<Result<'a>> {
+pub(super) fn rows<'a>(scene: &Scene, precession: &'a Precession) -> Vec<Result<'a>> {
+    let named = |text: &str, latex: &str| Name {
+        text: text.into(),
+        latex: latex.into(),
+    };
     let tangent = &precession.tan_gamma;
-    let mut rows = vec![scalar(
-        scene,
-        Cow::Borrowed("tan(gamma)"),
-        r"\tan\gamma".into(),
-        tangent.clone(),
-        None,
-    )];
+    let tan_gamma = named("tan(gamma)", r"\tan\gamma");
+    let mut rows = vec![Line::scalar(scene, tan_gamma, Cow::Borrowed(tangent), None)];
     if let Some(t) = value(scene, tangent) {
-        rows.push(number(
-            "gamma".into(),
-            r"\gamma".into(),
+        rows.push(Line::number(
+            named("gamma", r"\gamma"),
             t.atan().to_degrees(),
+            "deg",
         ));
     }
-    let (words, relation) = match precession.sense {
-        PrecessionSense::Direct => ("direct precession", "(I' > I)"),
-        PrecessionSense::Retrograde => ("retrograde precession", "(I' < I)"),
-        PrecessionSense::EqualMoments => ("no precession", "(I' = I)"),
+    let words = match precession.sense {
+        PrecessionSense::Direct => "direct precession ($I' > I$)",
+        PrecessionSense::Retrograde => "retrograde precession ($I' < I$)",
+        PrecessionSense::EqualMoments => "no precession ($I' = I$)",
     };
-    rows.push(in_words(
-        "precession".into(),
-        r"\text{precession}".into(),
-        &format!("{words} {relation}"),
-        format!(r"\text{{{words}}}\ {relation}"),
+    rows.push(Line::words(
+        named("precession", r"\text{precession}"),
+        words,
     ));
-    rows
+    rows.into_iter().map(Result::line).collect()
 }

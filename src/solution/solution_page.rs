@@ -4,10 +4,10 @@
 //! the results (a last step that only states them is left to Results).
 
 use super::page::{rows, Block, Heading, Name, Page, Section};
-use super::render::{quantity_latex, shown_name, Result};
+use super::result::{quantity_latex, shown_name, Body, Form, Result};
 use crate::mechanics::derivation::Relation;
 use crate::mechanics::Step;
-use crate::scene::{Analysis, Scene, Value};
+use crate::scene::{Analysis, Scene};
 use std::borrow::Cow;
 
 /// The page of `scene`'s solution (`results` in the order of `analysis.results`).
@@ -29,7 +29,7 @@ pub(super) fn solution_page<'a>(
         Heading::Find,
         vec![Block::Find(requested(analysis))],
     ));
-    let numbers = results.iter().any(|r| r.value.is_some() || r.is_words());
+    let numbers = results.iter().any(Result::has_value);
     if numbers && scene.givens.iter().all(|g| g.value.is_some()) {
         sections.push(Section::new(
             Heading::Answers,
@@ -83,8 +83,9 @@ fn only_solves_for_results(scene: &Scene, step: &Step, results: &[Result]) -> bo
         };
         scene.unknowns.iter().any(|(s, _)| *s == unknown)
             && results.iter().any(|r| {
-                matches!(r.form.as_deref(), Some(Value::Scalar(form)) if *form == relation.rhs)
-                    && unknown.name() == r.name
+                matches!(&r.body, Body::Line(l)
+                    if matches!(&l.form, Some(Form::Expr(form)) if **form == relation.rhs))
+                    && unknown.name() == r.name.text
             })
     };
     step.table.is_none() && !step.relations.is_empty() && step.relations.iter().all(solved_result)

@@ -2,11 +2,10 @@
 //! line between sections), items indented by two spaces; a derivation's heading `#`, its
 //! steps' `##`. Paragraphs are wrapped at [`WRAP_COLUMNS`].
 
-use super::engineer::answers_text;
-use super::inertia_results;
 use super::page::{Block, Heading, Page, Section};
 use super::parts_table;
-use super::render::{given_line, value_text, Result};
+use super::render::given_line;
+use super::result::{Body, Line, Result, Show};
 use crate::print::{markup, Notation};
 
 /// The column a paragraph is wrapped at.
@@ -49,8 +48,8 @@ fn section(section: &Section) -> String {
                 .iter()
                 .map(|row| format!("  {}\n", row.one_line(Notation::Text)))
                 .collect(),
-            Block::Results(results) => results.iter().map(result).collect(),
-            Block::Answers(results) => answers_text(results),
+            Block::Results(results) => results.iter().map(|r| result(r, false)).collect(),
+            Block::Answers(results) => answers(results),
         });
     }
     for sub in &section.subsections {
@@ -60,16 +59,44 @@ fn section(section: &Section) -> String {
     out
 }
 
-/// A result's row: its name, its form and, when it has one, its value with its unit.
-fn result(r: &Result) -> String {
-    if let Some(lines) = inertia_results::text(r, false) {
-        return lines;
+/// A result's lines, `  name = form = value unit` each, a frame's under its name;
+/// `values_only` (the answers), a line that has a value shows it alone.
+fn result(r: &Result, values_only: bool) -> String {
+    let (mut out, indent) = match r.body {
+        Body::Line(_) => (String::new(), "  "),
+        Body::Frame { .. } => (format!("  {}:\n", r.name.text), "    "),
+    };
+    for l in r.lines() {
+        out.push_str(&format!("{indent}{}\n", line(l, values_only)));
     }
-    match value_text(r) {
-        Some(v) if r.is_number() => format!("  {} = {v}\n", r.name),
-        Some(v) => format!("  {} = {} = {v}\n", r.name, r.text),
-        None => format!("  {} = {}\n", r.name, r.text),
+    out
+}
+
+fn line(l: &Line, values_only: bool) -> String {
+    let form = l.form.as_ref().map(|f| f.render(Notation::Text));
+    let value = l.shown_value().map(|v| v.render(Notation::Text));
+    let name = &l.name.text;
+    let show = match l.show {
+        Show::Both if values_only => Show::Value,
+        show => show,
+    };
+    match (form, value) {
+        (Some(form), _) if name.is_empty() => form,
+        (Some(form), Some(value)) if show == Show::Both => format!("{name} = {form} = {value}"),
+        (Some(_), Some(value)) if show == Show::Value => format!("{name} = {value}"),
+        (Some(form), _) => format!("{name} = {form}"),
+        // Known only as a number.
+        (None, value) => format!("{name} = {}", value.unwrap_or_default()),
     }
+}
+
+/// The results that have values, as numbers with units: `  T_BC = 1857 N` a line.
+pub(super) fn answers(results: &[Result]) -> String {
+    results
+        .iter()
+        .filter(|r| r.has_value())
+        .map(|r| result(r, true))
+        .collect()
 }
 
 /// `words` broken between words into lines of at most [`WRAP_COLUMNS`] characters (a

@@ -21,6 +21,18 @@ pub fn maths(out: &mut String, nodes: &[Node]) {
     out.push_str("</math>");
 }
 
+/// Words inside a `<math>` element, as `<mtext>`.
+pub fn words_in_maths(out: &mut String, words: &str) {
+    out.push_str("<mtext>");
+    out.push_str(&escaped(words));
+    out.push_str("</mtext>");
+}
+
+/// The mathematics of a list of nodes inside a `<math>` element, as one `<mrow>`.
+pub fn maths_in_maths(out: &mut String, nodes: &[Node]) {
+    row(out, nodes, None);
+}
+
 fn list(out: &mut String, nodes: &[Node], face: Option<Face>) {
     for node in nodes {
         one(out, node, face);

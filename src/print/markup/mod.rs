@@ -68,6 +68,12 @@ pub fn html(title: &str) -> String {
     render(title, html::words, html::maths)
 }
 
+/// MathML inside a `<math>` element (a result said in words): words `<mtext>`, each
+/// mathematics an `<mrow>`.
+pub fn mathml(title: &str) -> String {
+    render(title, html::words_in_maths, html::maths_in_maths)
+}
+
 /// Whether the title is well formed: the first unknown command, unbalanced brace or `$`,
 /// missing argument or character outside the subset, at its byte offset.
 pub fn validate(title: &str) -> Result<(), MarkupError> {

@@ -77,9 +77,17 @@ pub fn symbol(out: &mut String, s: Symbol) {
 }
 
 /// Appends the MathML of a name spelt in LaTeX as symbols are (`\mathbf{H}_G`,
-/// `\bar{\mathbf{v}}`, `\boldsymbol{\omega}`; see [`spelling`] for the subset).
+/// `\bar{\mathbf{v}}`, `\boldsymbol{\omega}`; see [`spelling`] for the subset); a
+/// matrix's name in its brackets, `[I_G]`.
 pub fn latex_name(out: &mut String, latex: &str) {
-    spelling::write(out, latex, None);
+    match latex.strip_prefix('[').and_then(|n| n.strip_suffix(']')) {
+        Some(inner) => {
+            out.push_str("<mrow><mo>[</mo>");
+            spelling::write(out, inner, None);
+            out.push_str("<mo>]</mo></mrow>");
+        }
+        None => spelling::write(out, latex, None),
+    }
 }
 
 fn node(out: &mut String, layout: &Layout, id: NodeId) {

@@ -1,6 +1,7 @@
-//! A vector's value as the textbook writes it: each component that is not zero (in four
-//! significant figures) times its unit vector, the unit with each number, a minus between
-//! terms or before the first,
+//! A result's value as the page shows it, with its unit: a number `−129.8 N`, a tensor's
+//! matrix of numbers `[[…], […], […]] kg·m²`, and a vector as the textbook writes it, each
+//! component that is not zero (in four significant figures) times its unit vector, the unit
+//! with each number, a minus between terms or before the first,
 //!
 //! ```text
 //! H_G = (3.565 kg·m²/s) i + (0.3095 kg·m²/s) j        ā = −(135 m/s²) i
@@ -9,10 +10,59 @@
 //! a zero vector `0` with its unit, and without a unit (a principal axis) the numbers alone,
 //! `e_1 = 0.8366 i + 0.496 j + 0.2326 k`. In text, LaTeX and MathML.
 
-use super::mathml_value::{decimal, value as mathml_quantity};
+use super::mathml_value::{decimal, spaced_unit, value as mathml_quantity};
 use super::numbers::format_value;
 use super::unit_latex::quantity;
-use crate::print;
+use crate::print::{self, matrix::bracketed, Notation};
+
+/// A value and its unit (empty for none): one number, a vector's three components, or a
+/// tensor's nine entries row by row.
+#[derive(Clone, Copy)]
+pub(super) struct ShownValue<'a> {
+    pub numbers: &'a [f64],
+    pub unit: &'a str,
+}
+
+impl ShownValue<'_> {
+    /// The value in `notation`.
+    pub(super) fn render(&self, notation: Notation) -> String {
+        let ShownValue { numbers, unit } = *self;
+        match (numbers, notation) {
+            ([x], Notation::Text) if unit.is_empty() => format_value(*x),
+            ([x], Notation::Text) => format!("{} {unit}", format_value(*x)),
+            ([x], Notation::Latex) => quantity(&format_value(*x), unit),
+            ([x], Notation::MathMl) => mathml_quantity(&format_value(*x), unit),
+            ([_, _, _], Notation::Text) => text(numbers, unit),
+            ([_, _, _], Notation::Latex) => latex(numbers, unit),
+            ([_, _, _], Notation::MathMl) => mathml(numbers, unit),
+            (_, _) => {
+                let entry = |r: usize, c: usize| {
+                    let number = format_value(numbers[3 * r + c]);
+                    match notation {
+                        Notation::MathMl => decimal(&number),
+                        Notation::Text | Notation::Latex => number,
+                    }
+                };
+                let matrix = bracketed(entry, notation);
+                match notation {
+                    Notation::Text if unit.is_empty() => matrix,
+                    Notation::Text => format!("{matrix} {unit}"),
+                    Notation::Latex => quantity(&matrix, unit),
+                    Notation::MathMl => matrix + &spaced_unit(unit),
+                }
+            }
+        }
+    }
+
+    /// The width in ems of the value in LaTeX, roughly: digits and signs at 0.55 em, a unit
+    /// as a symbol of its letters (a vector's: [`latex_em`]).
+    pub(super) fn latex_em(&self) -> f64 {
+        match self.numbers {
+            [x] => 0.55 * format_value(*x).len() as f64 + print::width::symbol_em(self.unit),
+            components => latex_em(components, self.unit),
+        }
+    }
+}
 
 /// A component shown: its magnitude's digits, its sign, the index of its unit vector.
 struct Term {
@@ -56,8 +106,8 @@ fn joined(terms: &[Term], signs: [&str; 3], term: impl Fn(&Term) -> String) -> S
 
 const UNIT_VECTORS: [&str; 3] = ["i", "j", "k"];
 
-/// The value in text: `-(135 m/s²) i + (2 m/s²) k`.
-pub fn text(components: &[f64], unit: &str) -> String {
+/// A vector's value in text: `-(135 m/s²) i + (2 m/s²) k`.
+fn text(components: &[f64], unit: &str) -> String {
     let unit = unit.trim();
     let terms = terms(components);
     if terms.is_empty() {
@@ -72,8 +122,8 @@ pub fn text(components: &[f64], unit: &str) -> String {
     })
 }
 
-/// The value in LaTeX: `-(135\,\mathrm{m/s^2})\,\mathbf{i}`.
-pub fn latex(components: &[f64], unit: &str) -> String {
+/// A vector's value in LaTeX: `-(135\,\mathrm{m/s^2})\,\mathbf{i}`.
+fn latex(components: &[f64], unit: &str) -> String {
     let terms = terms(components);
     if terms.is_empty() {
         return quantity("0", unit);
@@ -87,8 +137,8 @@ pub fn latex(components: &[f64], unit: &str) -> String {
     })
 }
 
-/// The value in MathML.
-pub fn mathml(components: &[f64], unit: &str) -> String {
+/// A vector's value in MathML.
+fn mathml(components: &[f64], unit: &str) -> String {
     let terms = terms(components);
     if terms.is_empty() {
         return mathml_quantity("0", unit);
@@ -113,7 +163,7 @@ pub fn mathml(components: &[f64], unit: &str) -> String {
 
 /// The width in ems of the LaTeX value, roughly: digits and signs at 0.55 em, each unit as
 /// a symbol of its letters, a unit vector and parentheses an em.
-pub fn latex_em(components: &[f64], unit: &str) -> f64 {
+fn latex_em(components: &[f64], unit: &str) -> f64 {
     let terms = terms(components);
     let unit_em = print::width::symbol_em(unit);
     terms

@@ -17,7 +17,7 @@ pub struct Args {
     #[arg(long)]
     pub standalone: bool,
     /// The engineer's page: the givens, each result as a number with its unit and the
-    /// intermediate values, without the symbolic steps (text or json).
+    /// intermediate values, without the symbolic steps (in any format).
     #[arg(long)]
     pub numbers: bool,
 }
@@ -80,9 +80,7 @@ fn page(args: &Args, scene: &Scene, analysis: &Analysis) -> Result<String, CliEr
         ));
     }
     let page = if args.numbers {
-        render_numbers(scene, analysis, format).ok_or_else(|| {
-            CliError::Usage("--numbers goes with --format text or --format json".into())
-        })?
+        render_numbers(scene, analysis, format, args.standalone)
     } else {
         render(scene, analysis, format, args.standalone)
     };

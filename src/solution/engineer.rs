@@ -12,27 +12,65 @@
 //! naming ([`crate::scene::derived_dimension`]: `I_xy` kg·m², `v_Ax` m/s), else its
 //! right-hand side's SI unit.
 
-use super::numbers::{format_value, unit};
-use super::render::given_line;
-use super::result::{Body, Form, Result};
-use crate::algebra::Expr;
+use super::numbers::unit;
+use super::page::{Block, Heading, Page, Section};
+use super::result::Result;
+use super::shown_value::ShownValue;
+use crate::algebra::{Axis, Expr};
 use crate::mechanics::derivation::Step;
-use crate::print::{self, markup, Notation};
+use crate::print::{self, Notation};
 use crate::scene::derived_dimension;
 use crate::scene::units::Dimensions;
 use crate::scene::{Analysis, Scene};
 
 /// The numbers of one step of the plan.
 pub(super) struct StepValues {
+    /// The step's title, in the markup of titles.
     pub title: String,
     pub values: Vec<Number>,
 }
 
-/// A derived quantity's value and unit.
+/// A derived quantity's value and unit: `name = value unit`.
 pub(super) struct Number {
-    pub name: String,
+    /// The quantity (a relation's left-hand side) and the axis it is written about.
+    pub name: Expr,
+    pub axis: Axis,
     pub value: f64,
     pub unit: Option<String>,
+}
+
+/// The engineer's page: the title, the givens, the results by their numbers (the answers),
+/// then the intermediate values step by step.
+pub(super) fn numbers_page<'a>(
+    scene: &'a Scene,
+    results: &'a [Result<'a>],
+    steps: &'a [StepValues],
+) -> Page<'a> {
+    let mut sections = vec![
+        Section::new(Heading::Given, vec![Block::Givens(&scene.givens)]),
+        Section::new(Heading::Results, vec![Block::Answers(results)]),
+    ];
+    if !steps.is_empty() {
+        sections.push(Section::new(
+            Heading::Intermediate,
+            vec![Block::Values(steps)],
+        ));
+    }
+    Page {
+        title: scene.title.as_deref(),
+        untitled: "Numbers",
+        sections,
+    }
+}
+
+impl Number {
+    /// The value with its unit.
+    pub(super) fn shown_value(&self) -> ShownValue<'_> {
+        ShownValue {
+            numbers: std::slice::from_ref(&self.value),
+            unit: self.unit.as_deref().unwrap_or_default(),
+        }
+    }
 }
 
 /// The steps that have intermediate values, in the plan's order; a step of equations (a
@@ -65,19 +103,24 @@ pub(super) fn intermediate(
             .iter()
             .filter(|r| !r.lhs.as_symbol().is_some_and(|s| named.is_name(s)))
             .filter_map(|r| {
-                let name = print::render(&r.lhs, Notation::Text, r.axis);
+                let shown_name = print::render(&r.lhs, Notation::Text, r.axis);
                 let rhs = named.whole(&r.rhs);
                 let value = super::evaluation::value(scene, &rhs)?;
                 let unit = unit_of(&r.lhs, &rhs);
                 // The kinetic energy is work: joules, as in the results.
                 let unit = unit.map(|u| {
-                    if stem(&name) == "T" && u == "N·m" {
+                    if stem(&shown_name) == "T" && u == "N·m" {
                         "J".into()
                     } else {
                         u
                     }
                 });
-                Some(Number { name, value, unit })
+                Some(Number {
+                    name: r.lhs.clone(),
+                    axis: r.axis,
+                    value,
+                    unit,
+                })
             })
             .collect()
     };
@@ -85,7 +128,7 @@ pub(super) fn intermediate(
         .plan
         .iter()
         .map(|step| StepValues {
-            title: markup::text(&step.title),
+            title: step.title.clone(),
             values: values(step),
         })
         .filter(|s| !s.values.is_empty())
@@ -95,83 +138,6 @@ pub(super) fn intermediate(
 /// A derived name without its subscript: `I` of `I_xy`, `Hdot` of `Hdot_z`.
 fn stem(name: &str) -> &str {
     name.rsplit_once('_').map_or(name, |(stem, _)| stem)
-}
-
-/// `value unit`, or the value alone.
-fn number_text(n: &Number) -> String {
-    match n.unit.as_deref() {
-        Some(u) if !u.is_empty() => format!("{} {u}", format_value(n.value)),
-        _ => format_value(n.value),
-    }
-}
-
-/// The engineer's page as text: title, givens, results, intermediate values.
-pub(super) fn text(
-    scene: &Scene,
-    analysis: &Analysis,
-    results: &[Result],
-    dims: &Dimensions,
-) -> String {
-    let mut out = String::new();
-    if let Some(t) = &scene.title {
-        out.push_str(&format!("{}\n\n", markup::text(t)));
-    }
-    out.push_str("Given\n");
-    for g in &scene.givens {
-        out.push_str(&format!("  {}\n", given_line(g)));
-    }
-    out.push_str("\nResults\n");
-    out.push_str(&super::text::answers(results));
-    for r in results.iter().filter(|r| !r.has_value()) {
-        out.push_str(&format!(
-            "  {} has no value: a given it needs is symbolic\n",
-            r.name.text
-        ));
-    }
-    let steps = intermediate(scene, analysis, dims);
-    if !steps.is_empty() {
-        out.push_str("\nIntermediate values\n");
-    }
-    for step in steps {
-        out.push_str(&format!("  {}\n", step.title));
-        for n in &step.values {
-            out.push_str(&format!("    {} = {}\n", n.name, number_text(n)));
-        }
-    }
-    out
-}
-
-/// The engineer's page as JSON: `{title, givens, results: [{name, value, unit}],
-/// a result said in words with its `text` too,
-/// intermediate: [{step, values: [{name, value, unit}]}]}` (`docs/solution.schema.json`).
-pub(super) fn json(
-    scene: &Scene,
-    analysis: &Analysis,
-    results: &[Result],
-    dims: &Dimensions,
-) -> serde_json::Value {
-    let number = |n: &Number| serde_json::json!({"name": n.name, "value": n.value, "unit": n.unit});
-    serde_json::json!({
-        "title": scene.title,
-        "givens": super::json::givens_json(&scene.givens),
-        "results": results.iter().map(|r| {
-            let mut row = serde_json::json!({
-                "name": r.name.text,
-                "value": super::json::value_json(r),
-                "unit": super::json::unit(r),
-            });
-            if let Body::Line(line) = &r.body {
-                if let Some(Form::Words(words)) = &line.form {
-                    row["text"] = serde_json::json!(markup::text(words));
-                }
-            }
-            row
-        }).collect::<Vec<_>>(),
-        "intermediate": intermediate(scene, analysis, dims).iter().map(|s| serde_json::json!({
-            "step": s.title,
-            "values": s.values.iter().map(number).collect::<Vec<_>>(),
-        })).collect::<Vec<_>>(),
-    })
 }
 
 #[cfg(test)]

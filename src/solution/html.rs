@@ -83,6 +83,7 @@ fn section(out: &mut String, section: &Section) {
             markup::html(title)
         )),
         Heading::Results => out.push_str("<h2>Results</h2>\n"),
+        Heading::Intermediate => out.push_str("<h2>Intermediate values</h2>\n"),
         Heading::Derivation(title) => out.push_str(&format!("<h2>{}</h2>\n", markup::html(title))),
         Heading::DerivationStep(title) => {
             out.push_str(&format!("<h3>{}</h3>\n", markup::html(title)));
@@ -117,12 +118,22 @@ fn block(block: &Block) -> String {
                 self::rows(&row.left(Notation::MathMl), &lines)
             }))
         }
-        Block::Results(results) => {
-            let (first_em, width_em) = results_room(results);
-            let lines = results.iter().flat_map(Result::lines);
-            block_of_rows(lines.map(|l| result_rows(l, first_em, width_em)))
-        }
-        Block::Answers(_) => String::new(),
+        Block::Results(results) => self::results(results, false),
+        Block::Answers(results) => self::results(results, true),
+        Block::Values(steps) => steps
+            .iter()
+            .map(|step| {
+                let rows = step.values.iter().map(|n| {
+                    let name = print::render(&n.name, Notation::MathMl, n.axis);
+                    self::rows(&name, &[n.shown_value().render(Notation::MathMl)])
+                });
+                format!(
+                    "<h3>{}</h3>\n{}",
+                    markup::html(&step.title),
+                    block_of_rows(rows)
+                )
+            })
+            .collect(),
     }
 }
 
@@ -171,13 +182,25 @@ fn rows(lhs: &str, lines: &[String]) -> String {
     out
 }
 
+/// Results as one block of rows, a row per line of each ([`result_rows`]); `values_only`
+/// (the answers), a line that has a value shows it alone.
+fn results(results: &[Result], values_only: bool) -> String {
+    let (first_em, width_em) = results_room(results);
+    let lines = results.iter().flat_map(Result::lines);
+    block_of_rows(lines.map(|l| result_rows(l, first_em, width_em, values_only)))
+}
+
 /// A result's line: its quantity's name, its form (broken as a relation is) and, when it
 /// has one, `= value unit` after its last line; words without a name, on their own.
-fn result_rows(l: &Line, first_em: f64, width_em: f64) -> String {
+fn result_rows(l: &Line, first_em: f64, width_em: f64, values_only: bool) -> String {
     let mut name = String::new();
     print::mathml::latex_name(&mut name, &l.name.latex);
     let value = l.shown_value().map(|v| v.render(Notation::MathMl));
-    let mut lines = match (&l.form, l.show) {
+    let show = match l.show {
+        Show::Both if values_only => Show::Value,
+        show => show,
+    };
+    let mut lines = match (&l.form, show) {
         (Some(form), _) if l.name.latex.is_empty() => {
             let words = form.render(Notation::MathMl);
             return format!("<mtr><mtd></mtd><mtd></mtd><mtd class=\"rhs\">{words}</mtd></mtr>\n");
@@ -186,7 +209,7 @@ fn result_rows(l: &Line, first_em: f64, width_em: f64) -> String {
         (_, _) => Vec::new(),
     };
     let mut rhs = lines.pop().unwrap_or_default();
-    if let Some(v) = value.filter(|_| l.show != Show::Form) {
+    if let Some(v) = value.filter(|_| show != Show::Form) {
         if !rhs.is_empty() {
             rhs.push_str("<mo>=</mo>");
         }

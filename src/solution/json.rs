@@ -2,12 +2,13 @@
 //! the statement, the givens, the quantities asked for, each step with its relations as text
 //! and LaTeX, the names of long radicands, and the results with their forms and values.
 
+use super::engineer::StepValues;
 use super::page::{Block, Heading, Page, Row};
 use super::parts_table;
 use super::render::relation;
 use super::result::{Body, Form, Line, Result};
 use crate::mechanics::derivation::Relation;
-use crate::print::{markup, Notation};
+use crate::print::{self, markup, Notation};
 use crate::scene::model::Given;
 use crate::scene::Analysis;
 
@@ -72,6 +73,60 @@ pub(super) fn solution(page: &Page, analysis: &Analysis) -> serde_json::Value {
     solution
 }
 
+/// The engineer's page as JSON: `{title, givens, results: [{name, value, unit}],
+/// intermediate: [{step, values: [{name, value, unit}]}]}` (`docs/solution.schema.json`);
+/// a result said in words has its `text` too.
+pub(super) fn numbers(page: &Page) -> serde_json::Value {
+    let mut numbers = serde_json::json!({
+        "title": page.title,
+        "givens": [],
+        "results": [],
+        "intermediate": [],
+    });
+    let blocks = page.sections.iter().flat_map(|s| &s.blocks);
+    for block in blocks {
+        match block {
+            Block::Givens(givens) => numbers["givens"] = givens_json(givens).into(),
+            Block::Answers(results) => {
+                numbers["results"] = results.iter().map(answer_json).collect();
+            }
+            Block::Values(steps) => {
+                numbers["intermediate"] = steps.iter().map(step_values_json).collect();
+            }
+            _ => {}
+        }
+    }
+    numbers
+}
+
+/// A result by its number: its name, value and unit, and its words where it is said in words.
+fn answer_json(r: &Result) -> serde_json::Value {
+    let mut answer = serde_json::json!({
+        "name": r.name.text,
+        "value": value_json(r),
+        "unit": unit(r),
+    });
+    if let Body::Line(line) = &r.body {
+        if let Some(Form::Words(words)) = &line.form {
+            answer["text"] = serde_json::json!(markup::text(words));
+        }
+    }
+    answer
+}
+
+/// A step's values: `{step, values: [{name, value, unit}]}`.
+fn step_values_json(step: &StepValues) -> serde_json::Value {
+    let values: Vec<serde_json::Value> = step
+        .values
+        .iter()
+        .map(|n| {
+            let name = print::render(&n.name, Notation::Text, n.axis);
+            serde_json::json!({"name": name, "value": n.value, "unit": n.unit})
+        })
+        .collect();
+    serde_json::json!({"step": markup::text(&step.title), "values": values})
+}
+
 /// Rows of relations as JSON objects `{"text": "lhs = rhs", "latex": "lhs = rhs"}`.
 fn rows_json(rows: &[Row]) -> Vec<serde_json::Value> {
     rows.iter()
@@ -96,7 +151,7 @@ fn result_json(r: &Result) -> serde_json::Value {
 }
 
 /// The givens as JSON: `[{name, written, si_value, unit}]`.
-pub(super) fn givens_json(givens: &[Given]) -> Vec<serde_json::Value> {
+fn givens_json(givens: &[Given]) -> Vec<serde_json::Value> {
     givens
         .iter()
         .map(|g| {
@@ -112,7 +167,7 @@ pub(super) fn givens_json(givens: &[Given]) -> Vec<serde_json::Value> {
 
 /// A result's value as JSON: a number, `[x, y, z]`, a tensor's rows, a principal frame's
 /// `{moments, axes, remark}`, or null without one.
-pub(super) fn value_json(r: &Result) -> serde_json::Value {
+fn value_json(r: &Result) -> serde_json::Value {
     let numbers = |l: &Line| match (&l.form, l.value.as_deref()) {
         (_, None) => serde_json::Value::Null,
         (_, Some([x])) => serde_json::json!(x),
@@ -142,7 +197,7 @@ pub(super) fn value_json(r: &Result) -> serde_json::Value {
 }
 
 /// A result's unit: its line's, a frame's moments'.
-pub(super) fn unit<'r>(r: &'r Result) -> Option<&'r str> {
+fn unit<'r>(r: &'r Result) -> Option<&'r str> {
     match &r.body {
         Body::Line(l) => l.unit.as_deref(),
         Body::Frame { moments, .. } => moments.first()?.unit.as_deref(),

@@ -5,6 +5,7 @@
 //! its steps `\subsection*`. The answers section (numbers first) is text only: here each
 //! value stands beside its result.
 
+use super::engineer::StepValues;
 use super::page::{rows_room, Block, Heading, Name, Page, Row, Section};
 use super::parts_table;
 use super::render::results_room;
@@ -50,6 +51,8 @@ fn section(out: &mut String, section: &Section) {
             markup::latex(title)
         )),
         Heading::Results => out.push_str("\\paragraph{Results}\n"),
+        // The heading on its own line: each step title is a paragraph of its own.
+        Heading::Intermediate => out.push_str("\\paragraph{Intermediate values}\\mbox{}\n\n"),
         Heading::Derivation(title) => {
             out.push_str(&format!("\\section*{{{}}}\n", markup::latex(title)));
         }
@@ -64,8 +67,9 @@ fn section(out: &mut String, section: &Section) {
             Block::Find(names) => inline_list(names.iter().map(name)),
             Block::Table(table) => parts_table::latex(table),
             Block::Relations(rows) => relations(rows),
-            Block::Results(results) => self::results(results),
-            Block::Answers(_) => String::new(),
+            Block::Results(results) => self::results(results, false),
+            Block::Answers(results) => self::results(results, true),
+            Block::Values(steps) => values(steps),
         });
     }
     for sub in &section.subsections {
@@ -125,13 +129,41 @@ fn align(rows: &[String]) -> String {
     )
 }
 
-/// Results as one `align*` block, a row per line of each ([`line`]).
-pub(super) fn results(results: &[Result]) -> String {
+/// Results as one `align*` block, a row per line of each ([`line`]); `values_only` (the
+/// answers), a line that has a value shows it alone.
+pub(super) fn results(results: &[Result], values_only: bool) -> String {
     let room = results_room(results);
     let rows: Vec<String> = results
         .iter()
         .flat_map(Result::lines)
-        .map(|l| line(l, room))
+        .map(|l| line(l, room, values_only))
+        .collect();
+    align(&rows)
+}
+
+/// Each step's title, then its values ([`step_values`]).
+fn values(steps: &[StepValues]) -> String {
+    steps
+        .iter()
+        .map(|step| {
+            format!(
+                "\\noindent {}\n{}",
+                markup::latex(&step.title),
+                step_values(step)
+            )
+        })
+        .collect()
+}
+
+/// A step's values as one `align*` block, `I_{xy} &= -0.01\,\mathrm{kg\cdot m^2}` a row.
+pub(super) fn step_values(step: &StepValues) -> String {
+    let rows: Vec<String> = step
+        .values
+        .iter()
+        .map(|n| {
+            let name = print::render(&n.name, Notation::Latex, n.axis);
+            aligned_row(&name, &[n.shown_value().render(Notation::Latex)])
+        })
         .collect();
     align(&rows)
 }
@@ -140,7 +172,7 @@ pub(super) fn results(results: &[Result]) -> String {
 /// starts, the width), its value and unit after the last line, or on a row of their own
 /// when the form took several lines or the value does not fit after it; a matrix too wide
 /// for the page by its value alone; words without a name, on their own.
-fn line(l: &Line, (first_em, width_em): (f64, f64)) -> String {
+fn line(l: &Line, (first_em, width_em): (f64, f64), values_only: bool) -> String {
     // Braced: a `[` after the row break `\\` would be read as its argument.
     let name = match l.name.latex.starts_with('[') {
         true => format!("{{{}}}", l.name.latex),
@@ -156,7 +188,11 @@ fn line(l: &Line, (first_em, width_em): (f64, f64)) -> String {
         return format!("& {}", form.render(Notation::Latex));
     }
     let fits = first_em + form.width_em() <= width_em;
-    match (value, l.show) {
+    let show = match l.show {
+        Show::Both if values_only => Show::Value,
+        show => show,
+    };
+    match (value, show) {
         (Some((value, _)), Show::Value) => aligned_row(&name, &[value]),
         (Some((value, _)), Show::Both) if matches!(form, Form::Matrix(_)) && !fits => {
             aligned_row(&name, &[value])

@@ -33,6 +33,7 @@ fn section(out: &mut String, section: &Section) {
             ));
         }
         Heading::Results => out.push_str("## Results\n\n"),
+        Heading::Intermediate => out.push_str("## Intermediate values\n\n"),
         Heading::Derivation(title) => out.push_str(&format!("## {}\n\n", markup::markdown(title))),
         Heading::DerivationStep(title) => {
             out.push_str(&format!("### {}\n\n", markup::markdown(title)));
@@ -46,8 +47,15 @@ fn section(out: &mut String, section: &Section) {
             Block::Table(table) => parts_table::markdown(table),
             Block::Relations(rows) if rows.is_empty() => String::new(),
             Block::Relations(rows) => format!("$$\n{}$$\n\n", latex::relations(rows)),
-            Block::Results(results) => format!("$$\n{}$$\n", latex::results(results)),
-            Block::Answers(_) => String::new(),
+            Block::Results(results) => format!("$$\n{}$$\n", latex::results(results, false)),
+            Block::Answers(results) => format!("$$\n{}$$\n", latex::results(results, true)),
+            Block::Values(steps) => steps
+                .iter()
+                .map(|step| {
+                    let title = markup::markdown(&step.title);
+                    format!("{title}\n\n$$\n{}$$\n\n", latex::step_values(step))
+                })
+                .collect(),
         });
     }
     for sub in &section.subsections {

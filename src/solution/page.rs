@@ -8,6 +8,7 @@
 //! equal to itself, as given) is not shown, and consecutive components of one quantity with
 //! one value share a row, `I_xy = I_yz = I_xz = 0`.
 
+use super::engineer::StepValues;
 use super::result::Result;
 use crate::mechanics::derivation::{Relation, Table};
 use crate::print::{self, Notation};
@@ -55,6 +56,8 @@ pub enum Heading<'a> {
         title: &'a str,
     },
     Results,
+    /// The plan's intermediate values (the engineer's page).
+    Intermediate,
     /// A derivation of `kinetics derive` (its title), and one of its steps.
     Derivation(&'a str),
     DerivationStep(&'a str),
@@ -74,8 +77,10 @@ pub enum Block<'a> {
     Relations(Vec<Row<'a>>),
     /// Results with their forms, values and units.
     Results(&'a [Result<'a>]),
-    /// The results that have a number (or words), as their numbers alone.
+    /// The results by their numbers alone (or words); a result without a value says so.
     Answers(&'a [Result<'a>]),
+    /// The intermediate values of the plan's steps, each under its step's title.
+    Values(&'a [StepValues]),
 }
 
 /// A quantity's name in text (`H_G`) and in LaTeX (`\mathbf{H}_G`).

@@ -63,16 +63,7 @@ pub fn relation(r: &Relation, notation: Notation) -> (String, String) {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bool) -> String {
-    // One page: two symbols that would print alike (`w_x` and `omega_x`) are told apart,
-    // unless a relation `omega_x = w_x` states them one quantity.
-    let relations = || analysis.plan.iter().flat_map(|s| &s.relations);
-    let page = scene
-        .givens
-        .iter()
-        .map(|g| g.symbol)
-        .chain(relations().flat_map(|r| r.lhs.symbols().into_iter().chain(r.rhs.symbols())));
-    let identities = relations().filter_map(|r| Some((r.lhs.as_symbol()?, r.rhs.as_symbol()?)));
-    print::on_one_page(page, identities, || {
+    on_the_page(scene, analysis, || {
         let dims = scene_dimensions(scene);
         let results = results(scene, analysis, &dims);
         let page = solution_page(scene, analysis, &results);
@@ -86,17 +77,41 @@ pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bo
     })
 }
 
+/// `write` with the names of one page: two symbols that would print alike (`w_x` and
+/// `omega_x`) are told apart, unless a relation `omega_x = w_x` states them one quantity.
+fn on_the_page(scene: &Scene, analysis: &Analysis, write: impl FnOnce() -> String) -> String {
+    let relations = || analysis.plan.iter().flat_map(|s| &s.relations);
+    let page = scene
+        .givens
+        .iter()
+        .map(|g| g.symbol)
+        .chain(relations().flat_map(|r| r.lhs.symbols().into_iter().chain(r.rhs.symbols())));
+    let identities = relations().filter_map(|r| Some((r.lhs.as_symbol()?, r.rhs.as_symbol()?)));
+    print::on_one_page(page, identities, write)
+}
+
 /// The engineer's page ([`super::engineer`]): the givens, each result as a number with its
-/// unit and the plan's intermediate values, without the symbolic steps; in text or JSON
-/// (`None` for the other formats, whose pages are the worked solution).
-pub fn render_numbers(scene: &Scene, analysis: &Analysis, format: Format) -> Option<String> {
-    let dims = scene_dimensions(scene);
-    let results = results(scene, analysis, &dims);
-    match format {
-        Format::Text => Some(super::engineer::text(scene, analysis, &results, &dims)),
-        Format::Json => Some(super::engineer::json(scene, analysis, &results, &dims).to_string()),
-        Format::Latex | Format::Markdown | Format::Html => None,
-    }
+/// unit and the plan's intermediate values, without the symbolic steps; JSON its own
+/// document (`docs/solution.schema.json`), every other format the page in that notation.
+pub fn render_numbers(
+    scene: &Scene,
+    analysis: &Analysis,
+    format: Format,
+    standalone: bool,
+) -> String {
+    on_the_page(scene, analysis, || {
+        let dims = scene_dimensions(scene);
+        let results = results(scene, analysis, &dims);
+        let steps = super::engineer::intermediate(scene, analysis, &dims);
+        let page = super::engineer::numbers_page(scene, &results, &steps);
+        match format {
+            Format::Text => super::text::page(&page),
+            Format::Latex => super::latex::page(&page, standalone),
+            Format::Markdown => super::markdown::page(&page),
+            Format::Json => super::json::numbers(&page).to_string(),
+            Format::Html => super::html::page(&page),
+        }
+    })
 }
 
 pub(super) fn given_line(g: &crate::scene::model::Given) -> String {

@@ -2,11 +2,12 @@
 //! line between sections), items indented by two spaces; a derivation's heading `#`, its
 //! steps' `##`. Paragraphs are wrapped at [`WRAP_COLUMNS`].
 
+use super::engineer::StepValues;
 use super::page::{Block, Heading, Page, Section};
 use super::parts_table;
 use super::render::given_line;
 use super::result::{Body, Line, Result, Show};
-use crate::print::{markup, Notation};
+use crate::print::{self, markup, Notation};
 
 /// The column a paragraph is wrapped at.
 pub const WRAP_COLUMNS: usize = 88;
@@ -29,6 +30,7 @@ fn section(section: &Section) -> String {
         Heading::Answers => "Answers\n".into(),
         Heading::Step { number, title } => format!("Step {number}: {}\n", markup::text(title)),
         Heading::Results => "Results\n".into(),
+        Heading::Intermediate => "Intermediate values\n".into(),
         Heading::Derivation(title) => format!("# {}\n", markup::text(title)),
         Heading::DerivationStep(title) => format!("## {}\n", markup::text(title)),
     };
@@ -50,6 +52,7 @@ fn section(section: &Section) -> String {
                 .collect(),
             Block::Results(results) => results.iter().map(|r| result(r, false)).collect(),
             Block::Answers(results) => answers(results),
+            Block::Values(steps) => values(steps),
         });
     }
     for sub in &section.subsections {
@@ -90,13 +93,34 @@ fn line(l: &Line, values_only: bool) -> String {
     }
 }
 
-/// The results that have values, as numbers with units: `  T_BC = 1857 N` a line.
-pub(super) fn answers(results: &[Result]) -> String {
-    results
-        .iter()
-        .filter(|r| r.has_value())
-        .map(|r| result(r, true))
-        .collect()
+/// The results as numbers with units, `  T_BC = 1857 N` a line; then those without one.
+fn answers(results: &[Result]) -> String {
+    let (valued, symbolic): (Vec<&Result>, Vec<&Result>) =
+        results.iter().partition(|r| r.has_value());
+    let valued = valued.into_iter().map(|r| result(r, true));
+    let symbolic = symbolic.into_iter().map(|r| {
+        format!(
+            "  {} has no value: a given it needs is symbolic\n",
+            r.name.text
+        )
+    });
+    valued.chain(symbolic).collect()
+}
+
+/// Each step's title, then its values a line each: `    I_xy = -0.01 kg·m²`.
+fn values(steps: &[StepValues]) -> String {
+    let mut out = String::new();
+    for step in steps {
+        out.push_str(&format!("  {}\n", markup::text(&step.title)));
+        for n in &step.values {
+            let name = print::render(&n.name, Notation::Text, n.axis);
+            out.push_str(&format!(
+                "    {name} = {}\n",
+                n.shown_value().render(Notation::Text)
+            ));
+        }
+    }
+    out
 }
 
 /// `words` broken between words into lines of at most [`WRAP_COLUMNS`] characters (a

@@ -163,7 +163,7 @@ fn the_page_of_a_cubic_compiles_with_no_line_off_it() {
 #[test]
 fn the_numbers_page_evaluates_through_the_names() {
     let (scene, analysis) = analysed();
-    let page = render_numbers(&scene, &analysis, Format::Text).expect("a numbers page");
+    let page = render_numbers(&scene, &analysis, Format::Text, false);
     let (phidot, reaction) = by_hand();
     let line = |name: &str| {
         page.lines()

@@ -68,15 +68,39 @@ fn the_engineers_page_in_json() {
     assert_eq!(product["unit"], "kg·m²");
 }
 
+/// The engineer's page in every notation is the same page: each answer and each
+/// intermediate value the text page gives is in the LaTeX, Markdown and HTML pages too.
 #[test]
-fn numbers_go_with_text_or_json() {
+fn the_numbers_page_in_every_notation() {
     let rod = scene("sp18_3_rotating_rod");
-    let (code, _, err) = kinetics(&["solve", &rod, "--numbers", "--format", "latex"]);
-    assert_eq!(code, 1);
+    let text = solve(&["solve", &rod, "--numbers"]);
+    assert!(text.contains("  T_BC = 1857 N\n"), "{text}");
+    let latex = solve(&["solve", &rod, "--numbers", "--format", "latex"]);
+    let markdown = solve(&["solve", &rod, "--numbers", "--format", "markdown"]);
+    let html = solve(&["solve", &rod, "--numbers", "--format", "html"]);
+    assert!(latex.contains(r"T_{BC} &= 1857\,\mathrm{N}"), "{latex}");
     assert!(
-        err.contains("--numbers goes with --format text or --format json"),
-        "{err}"
+        latex.contains(r"\paragraph{Intermediate values}"),
+        "{latex}"
     );
+    assert!(markdown.contains("## Intermediate values"), "{markdown}");
+    assert!(html.contains("<h2>Intermediate values</h2>"), "{html}");
+    // Every number of the text page (its right-hand sides' digits) is on the other pages.
+    let numbers: Vec<&str> = text
+        .lines()
+        .filter_map(|l| l.split(" = ").nth(1)?.split(' ').next())
+        .filter(|n| n.parse::<f64>().is_ok())
+        .collect();
+    assert!(numbers.len() > 10, "{text}");
+    for n in numbers {
+        let magnitude = n.trim_start_matches('-');
+        assert!(latex.contains(magnitude), "{n} not in\n{latex}");
+        assert!(markdown.contains(magnitude), "{n} not in\n{markdown}");
+        assert!(
+            html.contains(&format!("<mn>{magnitude}</mn>")),
+            "{n} not in\n{html}"
+        );
+    }
 }
 
 #[test]

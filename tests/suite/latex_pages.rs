@@ -3,7 +3,8 @@
 //! at 11 pt on A4 and again at 12 pt: no `Overfull \hbox` wider than 1 pt in the log.
 //! `examples/scenes/long_relations.scene` has results longer than a page is wide, so that
 //! line breaking is exercised. And the page an instructor pastes (issue 30): each of the
-//! sample problems 18.1–18.5 on at most two pages.
+//! sample problems 18.1–18.5 on at most two pages. The engineer's pages (`--numbers`) of
+//! those with values compile and fit too.
 
 use std::path::Path;
 use std::process::Command;
@@ -75,6 +76,18 @@ fn every_example_fits_the_page_at_10_and_12_pt() {
         let path = scene.to_str().expect("a UTF-8 path");
         let tex = kinetics(&["solve", "--format", "latex", "--standalone", path]);
         documents.push((stem.to_string(), tex));
+        // The engineer's page too, where it has numbers to show.
+        if stem.starts_with("sp18_") || stem == "box_about_body_diagonal" {
+            let args = [
+                "solve",
+                "--numbers",
+                "--format",
+                "latex",
+                "--standalone",
+                path,
+            ];
+            documents.push((format!("{stem}_numbers"), kinetics(&args)));
+        }
     }
     documents.push((
         "derive_general".to_string(),

@@ -4,8 +4,6 @@
 //! 1/1000. So `given theta = 90 deg` is π/2, and `sin θ` there is 1.
 
 use super::model::Scene;
-use super::unit_text::unit_powers;
-use super::units::exact_factor;
 use crate::algebra::{Expr, Symbol, Q};
 
 impl Scene {
@@ -17,41 +15,14 @@ impl Scene {
             .iter()
             .find(|g| g.symbol == s)?
             .written
-            .as_deref()?;
-        let (number, unit) = split_number(written)?;
-        let (factor, pi_power) = unit_factor(unit)?;
+            .as_ref()?;
+        let number = match written.number.strip_prefix('-') {
+            Some(magnitude) => -&Q::parse_decimal(magnitude)?,
+            None => Q::parse_decimal(&written.number)?,
+        };
+        let (factor, pi_power) = written.unit.exact_factor()?;
         Some(Expr::num(&number * &factor) * Expr::pi().powi(pi_power))
     }
-}
-
-/// The number a quantity begins with (the longest prefix that reads as one) and its unit.
-fn split_number(written: &str) -> Option<(Q, &str)> {
-    let (negative, rest) = match written.strip_prefix('-') {
-        Some(rest) => (true, rest),
-        None => (false, written),
-    };
-    let (q, unit) = (1..=rest.len())
-        .rev()
-        .filter(|&end| rest.is_char_boundary(end))
-        .find_map(|end| Some((Q::parse_decimal(&rest[..end])?, rest[end..].trim())))?;
-    Some((if negative { -&q } else { q }, unit))
-}
-
-/// The exact factor to SI of a unit such as `deg`, `m/s^2` or `kg·m²` (empty: 1), as a
-/// rational and a power of π.
-fn unit_factor(unit: &str) -> Option<(Q, i64)> {
-    let (mut factor, mut pi_power) = (Q::ONE, 0i64);
-    if unit.is_empty() {
-        return Some((factor, pi_power));
-    }
-    for power in unit_powers(unit).ok()? {
-        let unit = exact_factor(power.name)?;
-        let exponent = i64::from(power.exponent);
-        let q = Q::new(unit.numerator, unit.denominator)?;
-        factor = &factor * &q.checked_pow(exponent)?;
-        pi_power += i64::from(unit.pi_power) * exponent;
-    }
-    Some((factor, pi_power))
 }
 
 #[cfg(test)]

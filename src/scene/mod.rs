@@ -4,6 +4,7 @@ pub mod analysis;
 mod exact_given;
 pub mod kinematic_constraints;
 pub mod model;
+pub mod named_unit;
 pub mod parse;
 mod quantity_dimension;
 pub mod simulation;

@@ -2,6 +2,7 @@
 //! loads, constraints, unknowns and requests. Positions are from the origin O of the
 //! reference frame; vectors are components in that frame.
 
+use super::named_unit::NamedUnit;
 use super::units::Dimension;
 use crate::algebra::{AlgebraError, Domain, Domains, Expr, Symbol, Vector, Q};
 use crate::mechanics::composite_body::composite_body;
@@ -105,6 +106,23 @@ impl EulerAnglesStatement {
     }
 }
 
+/// A given's value as written: its number (`0.3`, `1.5e5`, `-2`) and its unit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Written {
+    pub number: String,
+    pub unit: NamedUnit,
+}
+
+/// `20 kg`, `6 N·m`, `0.5` (no unit).
+impl std::fmt::Display for Written {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.unit.is_none() {
+            true => f.write_str(&self.number),
+            false => write!(f, "{} {}", self.number, self.unit),
+        }
+    }
+}
+
 /// A given quantity: symbolic, or with a value converted to SI.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Given {
@@ -113,7 +131,7 @@ pub struct Given {
     /// The value in SI units, if the scene gives one.
     pub value: Option<f64>,
     /// The value as written (`20 kg`), for the worked solution.
-    pub written: Option<String>,
+    pub written: Option<Written>,
     /// Positive for a given in kg, m, s, N or kg·m² not written `real` and not negative;
     /// real otherwise (`parse/given.rs`).
     pub domain: Domain,
@@ -316,8 +334,8 @@ pub struct Request {
     /// The name as written (`m*vbar`, `D_y`).
     pub name: String,
     pub span: Span,
-    /// `find D_y in N`: the answer must be a number, given in this unit (as written).
-    pub unit: Option<(String, super::units::Unit)>,
+    /// `find D_y in N`: the answer must be a number, given in this unit.
+    pub unit: Option<NamedUnit>,
     /// When the equations have several real solutions (a top's slow and fast precession) and
     /// this result differs between them: which solution (1, 2, …) this row is.
     pub solution: Option<usize>,
@@ -327,7 +345,7 @@ impl Request {
     /// The request as written: `T_BC in N`, `H_G`.
     pub fn as_written(&self) -> String {
         match &self.unit {
-            Some((unit, _)) => format!("{} in {unit}", self.name),
+            Some(unit) => format!("{} in {unit}", self.name),
             None => self.name.clone(),
         }
     }
@@ -408,7 +426,10 @@ impl Scene {
     pub fn cite(&self, given: &Given) -> String {
         let start = self.source.floor_char_boundary(given.span.start);
         let line = self.source[..start].matches('\n').count() + 1;
-        let written = given.written.as_deref().unwrap_or("no value");
+        let written = given
+            .written
+            .as_ref()
+            .map_or("no value".to_string(), ToString::to_string);
         format!("{} = {written} (given on line {line})", given.symbol.name())
     }
 

@@ -2,10 +2,10 @@
 //! `units.rs` multiplied by `*`, `·`, `.` or a space (`N·m`, `N*m`, `N m`), divided by `/`
 //! (the name right after it: `m/s^2`, `kg·m²/s`), each with a whole power written `^2`,
 //! `^-1` or as a superscript (`m²`, `s⁻¹`); `°` is the degree. One reading serves the
-//! unit's dimension and factor (the `given`, `unknown` and `find … in` statements) and
-//! the exact value of a given (`exact_given.rs`).
+//! unit's names ([`super::named_unit::NamedUnit`]), its dimension and factor (the `given`,
+//! `unknown` and `find … in` statements) and the exact value of a given.
 
-use super::units::{unit_named, Dimension, Unit, UNIT_NAMES};
+use super::units::{unit_named, UNIT_NAMES};
 
 /// One name of a unit with its power (negative after `/`) and its byte span in the text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -112,52 +112,13 @@ pub fn unit_powers(text: &str) -> Result<Vec<UnitPower<'_>>, UnitTextError> {
     Ok(powers)
 }
 
-/// The unit `text` names: its dimension and its factor to SI.
-pub fn unit_of_text(text: &str) -> Result<Unit, UnitTextError> {
-    let mut unit = Unit {
-        dimension: Dimension::NONE,
-        to_si: 1.0,
-    };
-    for power in unit_powers(text)? {
-        let named = unit_named(power.name).expect("unit_powers reads only the table's names");
-        let exponent = i8::try_from(power.exponent).expect("unit_powers bounds exponents");
-        let dimension = unit
-            .dimension
-            .checked_times(named.dimension.power(exponent));
-        unit.dimension = dimension.ok_or_else(|| UnitTextError {
-            span: power.span,
-            message: "the unit's exponents pass ±127".into(),
-            help: "write a unit of a physical quantity (m/s^2, kg·m²)".into(),
-        })?;
-        unit.to_si *= named.to_si.powi(power.exponent);
-    }
-    Ok(unit)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn units_are_read_as_people_write_them() {
-        let moment = unit_of_text("N·m").unwrap();
-        assert_eq!(moment.dimension, Dimension::MOMENT);
-        for text in ["N*m", "N m", "N.m", "N ⋅ m", "J"] {
-            assert_eq!(unit_of_text(text).unwrap(), moment, "{text}");
-        }
-        let inertia = unit_of_text("kg·m^2").unwrap();
-        assert_eq!(inertia.dimension, Dimension::INERTIA);
-        assert_eq!(unit_of_text("kg m²").unwrap(), inertia);
-        assert_eq!(
-            unit_of_text("m/s^2").unwrap().dimension,
-            Dimension::ACCELERATION
-        );
-        assert_eq!(
-            unit_of_text("m s⁻²").unwrap(),
-            unit_of_text("m/s^2").unwrap()
-        );
-        assert_eq!(unit_of_text("°").unwrap(), unit_of_text("deg").unwrap());
-        // `/` divides the name right after it: kg·m²/s is kg·m²·s⁻¹.
+    fn a_slash_divides_the_name_after_it() {
+        // kg·m²/s is kg·m²·s⁻¹.
         let powers = unit_powers("kg·m²/s").unwrap();
         let exponents: Vec<(&str, i32)> = powers.iter().map(|p| (p.name, p.exponent)).collect();
         assert_eq!(exponents, [("kg", 1), ("m", 2), ("s", -1)]);

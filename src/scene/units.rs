@@ -72,40 +72,10 @@ impl Dimension {
         ))
     }
 
-    /// The SI unit a result of this dimension is given in.
+    /// The SI unit a result of this dimension is given in, in text
+    /// ([`super::named_unit::NamedUnit::si`]).
     pub fn si_unit(self) -> String {
-        let named = [
-            (Dimension::NONE, ""),
-            (Dimension::MASS, "kg"),
-            (Dimension::LENGTH, "m"),
-            (Dimension::TIME, "s"),
-            (Dimension::FORCE, "N"),
-            (Dimension::MOMENT, "N·m"),
-            (Dimension::ANGULAR_VELOCITY, "rad/s"),
-            (Dimension::ANGULAR_ACCELERATION, "rad/s²"),
-            (Dimension::VELOCITY, "m/s"),
-            (Dimension::ACCELERATION, "m/s²"),
-            (Dimension::INERTIA, "kg·m²"),
-            (Dimension::new(1, 1, -1), "N·s"),
-            (Dimension::new(1, 2, -1), "kg·m²/s"),
-        ];
-        if let Some((_, name)) = named.iter().find(|(d, _)| *d == self) {
-            return name.to_string();
-        }
-        let part = |base: &str, e: i8| match e {
-            0 => None,
-            1 => Some(base.to_string()),
-            e => Some(format!("{base}^{e}")),
-        };
-        [
-            part("kg", self.mass),
-            part("m", self.length),
-            part("s", self.time),
-        ]
-        .into_iter()
-        .flatten()
-        .collect::<Vec<_>>()
-        .join("·")
+        super::named_unit::NamedUnit::si(self).to_string()
     }
 }
 

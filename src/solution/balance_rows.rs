@@ -8,6 +8,7 @@ use super::page::Name;
 use super::result::{Line, Result};
 use crate::algebra::{Expr, Symbol};
 use crate::mechanics::two_plane_balance::{Correction, CorrectionAngle};
+use crate::scene::named_unit::NamedUnit;
 use crate::scene::units::Dimension;
 use crate::scene::Scene;
 use std::borrow::Cow;
@@ -24,7 +25,7 @@ pub(super) fn rows<'a>(scene: &Scene, corrections: &'a [Correction; 2]) -> Vec<R
             format!("{{{k}}}")
         };
         let named = |text: String, latex: String| Name { text, latex };
-        let mass_unit = Some(Dimension::MASS.si_unit());
+        let mass_unit = Some(NamedUnit::si(Dimension::MASS));
         let mass = named(format!("m_{k}"), format!("m_{sub}"));
         rows.push(Line::scalar(
             scene,
@@ -37,7 +38,8 @@ pub(super) fn rows<'a>(scene: &Scene, corrections: &'a [Correction; 2]) -> Vec<R
             // Symbolically a correction, but none with the givens' values.
             _ if no_correction(scene, correction) => rows.push(Line::words(angle, "undefined")),
             CorrectionAngle::Exact(t) => {
-                let mut row = Line::scalar(scene, angle, Cow::Borrowed(t), Some("deg".into()));
+                let degrees = Some(NamedUnit::named("deg"));
+                let mut row = Line::scalar(scene, angle, Cow::Borrowed(t), degrees);
                 if let Some(v) = &mut row.value {
                     v.iter_mut().for_each(|x| *x = x.to_degrees());
                 }
@@ -49,7 +51,8 @@ pub(super) fn rows<'a>(scene: &Scene, corrections: &'a [Correction; 2]) -> Vec<R
                     rows.push(Line::scalar(scene, name, Cow::Owned(tangent), None));
                 }
                 if let (Some(q), Some(p)) = (value(scene, q), value(scene, p)) {
-                    rows.push(Line::number(angle, q.atan2(p).to_degrees(), "deg"));
+                    let degrees = NamedUnit::named("deg");
+                    rows.push(Line::number(angle, q.atan2(p).to_degrees(), degrees));
                 }
             }
             CorrectionAngle::Undefined => rows.push(Line::words(angle, "undefined")),

@@ -12,7 +12,7 @@
 //! naming ([`crate::scene::derived_dimension`]: `I_xy` kg·m², `v_Ax` m/s), else its
 //! right-hand side's SI unit.
 
-use super::numbers::unit;
+use super::numbers::in_joules;
 use super::page::{Block, Heading, Page, Section};
 use super::result::Result;
 use super::shown_value::ShownValue;
@@ -20,6 +20,8 @@ use crate::algebra::{Axis, Expr};
 use crate::mechanics::derivation::Step;
 use crate::print::{self, Notation};
 use crate::scene::derived_dimension;
+use crate::scene::named_unit::{NamedUnit, NO_UNIT};
+use crate::scene::units::dimension_of;
 use crate::scene::units::Dimensions;
 use crate::scene::{Analysis, Scene};
 
@@ -36,7 +38,7 @@ pub(super) struct Number {
     pub name: Expr,
     pub axis: Axis,
     pub value: f64,
-    pub unit: Option<String>,
+    pub unit: Option<NamedUnit>,
 }
 
 /// The engineer's page: the title, the givens, the results by their numbers (the answers),
@@ -68,7 +70,7 @@ impl Number {
     pub(super) fn shown_value(&self) -> ShownValue<'_> {
         ShownValue {
             numbers: std::slice::from_ref(&self.value),
-            unit: self.unit.as_deref().unwrap_or_default(),
+            unit: self.unit.as_ref().unwrap_or(&NO_UNIT),
         }
     }
 }
@@ -82,15 +84,12 @@ pub(super) fn intermediate(
 ) -> Vec<StepValues> {
     // A derived name's unit is the chapter's (`I_xy`: kg·m²), a declared one's its own:
     // the right-hand side may hold plain SI numbers (`150 mm` is 3/20) and tell nothing.
-    let unit_of = |lhs: &Expr, rhs: &Expr| {
+    let dimension_of = |lhs: &Expr, rhs: &Expr| {
         let symbol = lhs.as_symbol()?;
         let declared = dims.get(&symbol).copied();
-        match declared.or_else(|| derived_dimension(symbol.name())) {
-            Some(d) => Some(d.si_unit()),
-            None => Some(rhs)
-                .filter(|e| !e.is_zero())
-                .and_then(|e| unit(dims, e)),
-        }
+        declared
+            .or_else(|| derived_dimension(symbol.name()))
+            .or_else(|| dimension_of(rhs, dims).ok().filter(|_| !rhs.is_zero()))
     };
     let values = |step: &Step| -> Vec<Number> {
         if step.relations.iter().any(|r| r.lhs.as_symbol().is_none()) {
@@ -106,15 +105,9 @@ pub(super) fn intermediate(
                 let shown_name = print::render(&r.lhs, Notation::Text, r.axis);
                 let rhs = named.whole(&r.rhs);
                 let value = super::evaluation::value(scene, &rhs)?;
-                let unit = unit_of(&r.lhs, &rhs);
                 // The kinetic energy is work: joules, as in the results.
-                let unit = unit.map(|u| {
-                    if stem(&shown_name) == "T" && u == "N·m" {
-                        "J".into()
-                    } else {
-                        u
-                    }
-                });
+                let energy = stem(&shown_name) == "T";
+                let unit = dimension_of(&r.lhs, &rhs).map(|d| in_joules(d, energy));
                 Some(Number {
                     name: r.lhs.clone(),
                     axis: r.axis,

@@ -146,10 +146,7 @@ fn inline_list(items: impl Iterator<Item = String>) -> String {
 fn given(g: &Given) -> String {
     let name = print::mathml(&Expr::sym(g.symbol));
     match &g.written {
-        Some(w) => {
-            let (number, unit) = w.split_once(' ').unwrap_or((w.as_str(), ""));
-            format!("<math>{name}<mo>=</mo>{}</math>", value(number, unit))
-        }
+        Some(w) => format!("<math>{name}<mo>=</mo>{}</math>", value(&w.number, &w.unit)),
         None => format!("<math>{name}</math>"),
     }
 }

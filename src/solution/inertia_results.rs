@@ -18,6 +18,7 @@ use super::page::Name;
 use super::result::{Body, Form, Line, Result, Show};
 use crate::algebra::{Expr, Matrix};
 use crate::mechanics::principal_frame::PrincipalFrame;
+use crate::scene::named_unit::NamedUnit;
 use crate::scene::units::Dimension;
 use crate::scene::Scene;
 
@@ -30,7 +31,7 @@ pub(super) fn tensor<'a>(scene: &Scene, name: Name, m: &'a Matrix) -> Line<'a> {
         show: shown(value.is_some(), numeric),
         form: Some(Form::Matrix(m)),
         value,
-        unit: Some(Dimension::INERTIA.si_unit()),
+        unit: Some(NamedUnit::si(Dimension::INERTIA)),
     }
 }
 
@@ -53,7 +54,7 @@ pub(super) fn frame<'a>(scene: &Scene, name: Name, frame: &'a PrincipalFrame) ->
                 show: shown(value.is_some(), number(m)),
                 form: Some(Form::Expr(std::borrow::Cow::Borrowed(m))),
                 value,
-                unit: Some(Dimension::INERTIA.si_unit()),
+                unit: Some(NamedUnit::si(Dimension::INERTIA)),
             }
         })
         .collect();
@@ -73,7 +74,7 @@ pub(super) fn frame<'a>(scene: &Scene, name: Name, frame: &'a PrincipalFrame) ->
                 },
                 form: Some(Form::Vector(e, None)),
                 value,
-                unit: Some(String::new()),
+                unit: Some(NamedUnit::default()),
             }
         })
         .collect();

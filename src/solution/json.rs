@@ -121,7 +121,8 @@ fn step_values_json(step: &StepValues) -> serde_json::Value {
         .iter()
         .map(|n| {
             let name = print::render(&n.name, Notation::Text, n.axis);
-            serde_json::json!({"name": name, "value": n.value, "unit": n.unit})
+            let unit = n.unit.as_ref().map(ToString::to_string);
+            serde_json::json!({"name": name, "value": n.value, "unit": unit})
         })
         .collect();
     serde_json::json!({"step": markup::text(&step.title), "values": values})
@@ -157,7 +158,7 @@ fn givens_json(givens: &[Given]) -> Vec<serde_json::Value> {
         .map(|g| {
             serde_json::json!({
                 "name": g.symbol.name(),
-                "written": g.written,
+                "written": g.written.as_ref().map(ToString::to_string),
                 "si_value": g.value,
                 "unit": g.dimension.si_unit(),
             })
@@ -196,10 +197,11 @@ fn value_json(r: &Result) -> serde_json::Value {
     }
 }
 
-/// A result's unit: its line's, a frame's moments'.
-fn unit<'r>(r: &'r Result) -> Option<&'r str> {
-    match &r.body {
-        Body::Line(l) => l.unit.as_deref(),
-        Body::Frame { moments, .. } => moments.first()?.unit.as_deref(),
-    }
+/// A result's unit in text: its line's, a frame's moments'.
+fn unit(r: &Result) -> Option<String> {
+    let unit = match &r.body {
+        Body::Line(l) => l.unit.as_ref(),
+        Body::Frame { moments, .. } => moments.first()?.unit.as_ref(),
+    };
+    unit.map(ToString::to_string)
 }

@@ -87,10 +87,7 @@ fn inline_list(items: impl Iterator<Item = String>) -> String {
 pub(super) fn given(g: &Given) -> String {
     let name = print::latex(&Expr::sym(g.symbol));
     match &g.written {
-        Some(w) => {
-            let (number, unit) = w.split_once(' ').unwrap_or((w.as_str(), ""));
-            format!("${name} = {}$", quantity(number, unit))
-        }
+        Some(w) => format!("${name} = {}$", quantity(&w.number, &w.unit)),
         None => format!("${name}$"),
     }
 }

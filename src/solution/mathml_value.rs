@@ -3,13 +3,13 @@
 //! `·`, quotients `/` and powers (`m^2`, `s²`, `kg^-1`) as `<msup>`; an angle in degrees
 //! as the LaTeX's `60^\circ`, the degree sign close after the number.
 
-use super::unit_latex::is_degrees;
 use crate::print::mathml::escaped;
+use crate::scene::named_unit::{NamedUnit, UnitMarks};
 
 /// `number` (a decimal as written or printed: `-2`, `0.3`, `1.500e-7`) and its `unit`
 /// (`N*m`, `rad/s²`, `deg`; empty for none).
-pub fn value(number: &str, unit: &str) -> String {
-    if is_degrees(unit) {
+pub fn value(number: &str, unit: &NamedUnit) -> String {
+    if unit.is_degrees() {
         // A number in scientific notation ends in a superscript of its own: fenced, so that
         // the degree sign is not read as raising its power of ten (`(1.5 × 10⁵)°`).
         let shown = match scientific(number) {
@@ -57,79 +57,57 @@ fn scientific(magnitude: &str) -> Option<(&str, &str)> {
 }
 
 /// A unit after the space that separates it from its number; nothing for no unit.
-pub fn spaced_unit(unit: &str) -> String {
-    if unit.trim().is_empty() {
+pub fn spaced_unit(unit: &NamedUnit) -> String {
+    if unit.is_none() {
         return String::new();
     }
     format!(r#"<mspace width="0.25em"/>{}"#, unit_mathml(unit))
 }
 
-/// A unit's MathML: names upright, `*` and `·` a centred dot, an exponent on the name before.
-fn unit_mathml(unit: &str) -> String {
-    let mut elements: Vec<String> = Vec::new();
-    let mut chars = unit.chars().peekable();
-    while let Some(c) = chars.next() {
-        let exponent = match c {
-            '²' => Some("2".to_string()),
-            '³' => Some("3".to_string()),
-            '^' => {
-                let mut e = String::new();
-                while let Some(d) =
-                    chars.next_if(|d| d.is_ascii_digit() || (*d == '-' && e.is_empty()))
-                {
-                    e.push(d);
-                }
-                Some(e)
-            }
-            _ => None,
-        };
-        if let Some(exponent) = exponent {
-            let base = elements.pop().unwrap_or_else(|| "<mrow></mrow>".into());
-            let raised = match exponent.strip_prefix('-') {
-                Some(e) => format!("<mo>\u{2212}</mo><mn>{e}</mn>"),
-                None => format!("<mn>{exponent}</mn>"),
+/// A unit's MathML: names upright, products a centred dot, `/` close (as `\mathrm{rad/s}`
+/// sets it), a power on its name.
+fn unit_mathml(unit: &NamedUnit) -> String {
+    let letters = unit.written_with(&UnitMarks {
+        name: |name| format!(r#"<mi mathvariant="normal">{}</mi>"#, escaped(name)),
+        power: |name, e| {
+            let raised = match e {
+                e if e < 0 => format!("<mo>\u{2212}</mo><mn>{}</mn>", -e),
+                e => format!("<mn>{e}</mn>"),
             };
-            elements.push(format!("<msup>{base}<mrow>{raised}</mrow></msup>"));
-            continue;
-        }
-        let element = match c {
-            ' ' => continue,
-            '*' | '·' => "<mo>\u{b7}</mo>".to_string(),
-            // `rad/s` is written close, as `\mathrm{rad/s}` sets it.
-            '/' => r#"<mo lspace="0" rspace="0">/</mo>"#.to_string(),
-            c if c.is_alphabetic() => {
-                let mut name = String::from(c);
-                while let Some(l) = chars.next_if(|l| l.is_alphabetic()) {
-                    name.push(l);
-                }
-                format!(r#"<mi mathvariant="normal">{}</mi>"#, escaped(&name))
-            }
-            c if c.is_ascii_digit() => format!("<mn>{c}</mn>"),
-            c => format!("<mo>{}</mo>", escaped(&c.to_string())),
-        };
-        elements.push(element);
-    }
-    format!("<mrow>{}</mrow>", elements.concat())
+            format!("<msup>{name}<mrow>{raised}</mrow></msup>")
+        },
+        times: "<mo>\u{b7}</mo>",
+        over: r#"<mo lspace="0" rspace="0">/</mo>"#,
+    });
+    format!("<mrow>{letters}</mrow>")
 }
 
 #[cfg(test)]
 mod tests {
     use super::value;
+    use crate::scene::named_unit::NamedUnit;
+
+    fn unit(text: &str) -> NamedUnit {
+        match text {
+            "" => NamedUnit::default(),
+            text => NamedUnit::read(text).unwrap(),
+        }
+    }
 
     #[test]
     fn numbers_and_units() {
         let normal = |name: &str| format!(r#"<mi mathvariant="normal">{name}</mi>"#);
         let space = r#"<mspace width="0.25em"/>"#;
-        assert_eq!(value("0.3", ""), "<mn>0.3</mn>");
+        assert_eq!(value("0.3", &unit("")), "<mn>0.3</mn>");
         assert_eq!(
-            value("-129.8", "N"),
+            value("-129.8", &unit("N")),
             format!(
                 "<mrow><mo>\u{2212}</mo><mn>129.8</mn></mrow>{space}<mrow>{}</mrow>",
                 normal("N")
             )
         );
         assert_eq!(
-            value("6", "N*m"),
+            value("6", &unit("N*m")),
             format!(
                 "<mn>6</mn>{space}<mrow>{}<mo>·</mo>{}</mrow>",
                 normal("N"),
@@ -137,7 +115,7 @@ mod tests {
             )
         );
         assert_eq!(
-            value("3000", "rad/s²"),
+            value("3000", &unit("rad/s²")),
             format!(
                 "<mn>3000</mn>{space}<mrow>{}<mo lspace=\"0\" rspace=\"0\">/</mo><msup>{}<mrow><mn>2</mn></mrow></msup></mrow>",
                 normal("rad"),
@@ -145,14 +123,14 @@ mod tests {
             )
         );
         assert_eq!(
-            value("1", "kg^-1"),
+            value("1", &unit("kg^-1")),
             format!(
                 "<mn>1</mn>{space}<mrow><msup>{}<mrow><mo>\u{2212}</mo><mn>1</mn></mrow></msup></mrow>",
                 normal("kg")
             )
         );
         assert_eq!(
-            value("30", "deg"),
+            value("30", &unit("deg")),
             "<mn>30</mn><mo lspace=\"0\" rspace=\"0\">°</mo>"
         );
     }
@@ -163,19 +141,19 @@ mod tests {
     fn scientific_notation_is_a_power_of_ten() {
         let ten = |raised: &str| format!("<mo>×</mo><msup><mn>10</mn>{raised}</msup>");
         assert_eq!(
-            value("-1.371e-6", ""),
+            value("-1.371e-6", &unit("")),
             format!(
                 "<mrow><mo>\u{2212}</mo><mn>1.371</mn>{}</mrow>",
                 ten("<mrow><mo>\u{2212}</mo><mn>6</mn></mrow>")
             )
         );
         assert_eq!(
-            value("1.5e5", "deg"),
+            value("1.5e5", &unit("deg")),
             format!(
                 "<mrow><mo>(</mo><mrow><mn>1.5</mn>{}</mrow><mo>)</mo></mrow><mo lspace=\"0\" rspace=\"0\">°</mo>",
                 ten("<mn>5</mn>")
             )
         );
-        assert_eq!(value("e5", ""), "<mn>e5</mn>");
+        assert_eq!(value("e5", &unit("")), "<mn>e5</mn>");
     }
 }

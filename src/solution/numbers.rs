@@ -4,6 +4,7 @@ pub use super::evaluation::value;
 use crate::algebra::{vector, AlgebraError, Expr, Symbol, Q};
 use crate::parse::Diagnostic;
 use crate::scene::model::{exact_decimal, Quantity, Request};
+use crate::scene::named_unit::NamedUnit;
 use crate::scene::units::{dimension_of, Dimension, Dimensions};
 use crate::scene::{Analysis, Scene, Value};
 use num_bigint::BigInt;
@@ -26,8 +27,8 @@ pub fn scene_dimensions(scene: &Scene) -> Dimensions {
 }
 
 /// The SI unit of `e`, when its dimension is consistent.
-pub fn unit(dims: &Dimensions, e: &Expr) -> Option<String> {
-    dimension_of(e, dims).ok().map(Dimension::si_unit)
+pub fn unit(dims: &Dimensions, e: &Expr) -> Option<NamedUnit> {
+    dimension_of(e, dims).ok().map(NamedUnit::si)
 }
 
 /// Checks that no requested number is silently left out. A request written `find X in UNIT`
@@ -59,7 +60,7 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
                 .filter(|s| !s.is_pi() && scene.value(*s).is_none())
                 .map(|s| s.name())
                 .collect();
-            let Some((written, unit)) = &request.unit else {
+            let Some(written) = &request.unit else {
                 if missing.is_empty() {
                     finite(scene, request, e, &dims)?;
                 }
@@ -67,7 +68,7 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
             };
             let dimension = request.quantity.dimension(&dims);
             if let Some(d) = dimension.or_else(|| dimension_of(e, &dims).ok()) {
-                if d != unit.dimension {
+                if d != written.unit().dimension {
                     return Err(fail(
                         format!(
                             "unit mismatch: {} is in {d}, not in {written}",
@@ -91,24 +92,28 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
 
 /// The unit a result is shown in: the SI unit of the quantity's dimension (so a zero keeps
 /// its unit), but joules (not newton metres) for the kinetic energies, which are work-like.
-pub fn result_unit(request: &Request, dims: &Dimensions) -> Option<String> {
-    let u = request.quantity.dimension(dims)?.si_unit();
+pub fn result_unit(request: &Request, dims: &Dimensions) -> Option<NamedUnit> {
+    let d = request.quantity.dimension(dims)?;
     let energy = [
         Quantity::KineticEnergy,
         Quantity::TranslationalKineticEnergy,
         Quantity::RotationalKineticEnergy,
     ];
-    Some(if energy.contains(&request.quantity) && u == "N·m" {
-        "J".into()
-    } else {
-        u
-    })
+    Some(in_joules(d, energy.contains(&request.quantity)))
+}
+
+/// The SI unit of `d`, in joules where `energy` says a moment's dimension is work.
+pub(super) fn in_joules(d: Dimension, energy: bool) -> NamedUnit {
+    match energy && d == Dimension::MOMENT {
+        true => NamedUnit::named("J"),
+        false => NamedUnit::si(d),
+    }
 }
 
 /// `e`, every given of which has a value, is a finite number in the unit asked for; else
 /// the error at the request says why.
 fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Result<(), Diagnostic> {
-    let to_si = request.unit.as_ref().map_or(1.0, |(_, u)| u.to_si);
+    let to_si = request.unit.as_ref().map_or(1.0, |u| u.unit().to_si);
     let v = value(scene, e).map(|v| v / to_si);
     // A zero that is not zero exactly has underflowed: it is not the answer either.
     let underflow = v == Some(0.0) && exact_value(scene, e).is_ok_and(|q| !q.is_zero());
@@ -126,7 +131,7 @@ fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Resu
     match exact_value(scene, e) {
         Ok(q) => {
             let unit = match &request.unit {
-                Some((written, _)) => written.clone(),
+                Some(unit) => unit.clone(),
                 None => result_unit(request, dims).unwrap_or_default(),
             };
             let q = &q * &exact_decimal(1.0 / to_si).unwrap_or(Q::ONE);

@@ -8,6 +8,7 @@ use super::numbers::value;
 use super::page::Name;
 use super::result::{Line, Result};
 use crate::mechanics::torque_free_axisymmetric::{Precession, PrecessionSense};
+use crate::scene::named_unit::NamedUnit;
 use crate::scene::Scene;
 use std::borrow::Cow;
 
@@ -24,7 +25,7 @@ pub(super) fn rows<'a>(scene: &Scene, precession: &'a Precession) -> Vec<Result<
         rows.push(Line::number(
             named("gamma", r"\gamma"),
             t.atan().to_degrees(),
-            "deg",
+            NamedUnit::named("deg"),
         ));
     }
     let words = match precession.sense {

@@ -17,6 +17,7 @@ use crate::print::grouped_vector::{grouped, GroupedVector};
 use crate::print::{self, markup, matrix, Notation};
 use crate::scene::analysis::Abbreviations;
 use crate::scene::model::{Quantity, Request};
+use crate::scene::named_unit::{NamedUnit, NO_UNIT};
 use crate::scene::units::Dimensions;
 use crate::scene::{Analysis, Scene, Value};
 use std::borrow::Cow;
@@ -48,8 +49,8 @@ pub(super) struct Line<'a> {
     pub form: Option<Form<'a>>,
     /// The numbers (one, a vector's three, a tensor's nine row by row) in `unit`.
     pub value: Option<Vec<f64>>,
-    /// The unit of the value (and of the form), as the page prints it.
-    pub unit: Option<String>,
+    /// The unit of the value (and of the form).
+    pub unit: Option<NamedUnit>,
     pub show: Show,
 }
 
@@ -120,7 +121,7 @@ impl<'a> Line<'a> {
     pub(super) fn shown_value(&self) -> Option<ShownValue<'_>> {
         Some(ShownValue {
             numbers: self.value.as_deref()?,
-            unit: self.unit.as_deref().unwrap_or_default(),
+            unit: self.unit.as_ref().unwrap_or(&NO_UNIT),
         })
     }
 
@@ -130,7 +131,7 @@ impl<'a> Line<'a> {
         scene: &Scene,
         name: Name,
         e: Cow<'a, Expr>,
-        unit: Option<String>,
+        unit: Option<NamedUnit>,
     ) -> Self {
         let value = value(scene, &e).map(|x| vec![x]);
         let integer = e.as_num().is_some_and(|q| q.is_integer());
@@ -159,12 +160,12 @@ impl<'a> Line<'a> {
     }
 
     /// A number known only as a number, in `unit`.
-    pub(super) fn number(name: Name, x: f64, unit: &str) -> Self {
+    pub(super) fn number(name: Name, x: f64, unit: NamedUnit) -> Self {
         Line {
             name,
             form: None,
             value: Some(vec![x]),
-            unit: Some(unit.into()),
+            unit: Some(unit),
             show: Show::Value,
         }
     }
@@ -206,7 +207,8 @@ impl<'a> Result<'a> {
         let shown = |l: &Line| match (&l.form, l.show) {
             (Some(form), Show::Form | Show::Both) => form.render(notation),
             (_, _) => l.value.as_deref().map_or_else(String::new, |numbers| {
-                ShownValue { numbers, unit: "" }.render(notation)
+                let unit = &NO_UNIT;
+                ShownValue { numbers, unit }.render(notation)
             }),
         };
         match &self.body {
@@ -298,14 +300,15 @@ fn computed<'a>(
 /// A value asked for `in UNIT` is converted from SI and labelled with the unit as written
 /// (a principal frame's moments; its axes have no unit).
 fn in_requested_unit<'a>(request: &Request, mut result: Result<'a>) -> Result<'a> {
-    let Some((written, unit)) = &request.unit else {
+    let Some(unit) = &request.unit else {
         return result;
     };
+    let to_si = unit.unit().to_si;
     let convert = |line: &mut Line| {
         if let Some(v) = &mut line.value {
-            v.iter_mut().for_each(|x| *x /= unit.to_si);
+            v.iter_mut().for_each(|x| *x /= to_si);
         }
-        line.unit = Some(written.clone());
+        line.unit = Some(unit.clone());
     };
     match &mut result.body {
         Body::Line(line) => convert(line),

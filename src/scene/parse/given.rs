@@ -4,8 +4,9 @@
 //! `real` (`given x = 0.2 m real`, `given x : m real`: a coordinate) or its value is
 //! negative; any other given is real, and `real` on it is refused at the word.
 
-use super::super::model::Given;
-use super::super::units::{Dimension, Unit};
+use super::super::model::{Given, Written};
+use super::super::named_unit::NamedUnit;
+use super::super::units::Dimension;
 use super::{span, Reader, Rule};
 use crate::algebra::Domain;
 use crate::mechanics::validation::validate_mass;
@@ -46,21 +47,20 @@ impl Reader<'_> {
                             .error(span(&number), "the value is not a finite number")
                             .with_help("write the value in a unit that keeps it within 1e308"));
                     }
-                    let unit = match q.next() {
+                    let named = match q.next() {
                         Some(u) => self.unit(&u)?,
-                        None => Unit {
-                            dimension: Dimension::NONE,
-                            to_si: 1.0,
-                        },
+                        None => NamedUnit::default(),
                     };
+                    let unit = named.unit();
                     value = Some(n * unit.to_si);
-                    // As written, each run of blanks (tabs, a lone CR) one space.
-                    let words: Vec<&str> = p.as_str().split_whitespace().collect();
-                    written = Some(words.join(" "));
+                    written = Some(Written {
+                        number: number.as_str().to_string(),
+                        unit: named,
+                    });
                     dimension = Some((unit.dimension, span(p)));
                 }
                 Rule::unit => {
-                    let unit = self.unit(p)?;
+                    let unit = self.unit(p)?.unit();
                     if let Some((d, _)) = dimension {
                         if d != unit.dimension {
                             return Err(self

@@ -3,7 +3,7 @@
 //! expression parser; its diagnostics are moved to their place in the file.
 
 use super::model::{Constraint, ConstraintKind, Force, Places, Quantity, Request, Scene, Span};
-use super::unit_text::unit_of_text;
+use super::named_unit::NamedUnit;
 use super::units::{dimension_with, Dimension, DimensionError, Dimensions};
 use super::units_in_math::{marker, marker_dimension};
 use crate::algebra::{vector, Expr, Symbol, Vector};
@@ -255,7 +255,7 @@ impl Reader<'_> {
                         .next()
                         .map_or("balance".to_string(), |n| n.as_str().to_string());
                     let unit = match parts.next() {
-                        Some(u) => Some((u.as_str().to_string(), self.unit(&u)?)),
+                        Some(u) => Some(self.unit(&u)?),
                         None => None,
                     };
                     if self.scene.requests.iter().any(|q| q.name == name) {
@@ -406,8 +406,8 @@ impl Reader<'_> {
     }
 
     /// The unit written at `p` (`unit_text.rs`), an error located inside it.
-    fn unit(&self, p: &Pair<Rule>) -> Result<super::units::Unit, Diagnostic> {
-        unit_of_text(p.as_str()).map_err(|e| {
+    fn unit(&self, p: &Pair<Rule>) -> Result<NamedUnit, Diagnostic> {
+        NamedUnit::read(p.as_str()).map_err(|e| {
             let start = span(p).0;
             self.error((start + e.span.0, start + e.span.1), e.message)
                 .with_help(e.help)
@@ -420,7 +420,9 @@ impl Reader<'_> {
             _ => None,
         };
         for name in inner.iter().filter(|p| p.as_rule() == Rule::name) {
-            let dimension = unit.map_or_else(|| default_dimension(name.as_str()), |u| u.dimension);
+            let dimension = unit
+                .as_ref()
+                .map_or_else(|| default_dimension(name.as_str()), |u| u.unit().dimension);
             let symbol = self.declare(name, dimension)?;
             self.scene.unknowns.push((symbol, dimension));
         }

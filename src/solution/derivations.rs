@@ -5,14 +5,11 @@
 //! Text and Markdown headings are `#`/`##` lines, LaTeX headings `\section*`/`\subsection*`
 //! (never `%` comments), so a page of derivations reads like the chapter.
 
-use super::json::relations_json;
 use super::page::{rows, Block, Heading, Page, Section};
-use super::parts_table;
 use super::Format;
 use crate::algebra::Axis;
 use crate::mechanics::catalogue::convention;
 use crate::mechanics::{Derivation, Step};
-use crate::print::markup;
 use std::borrow::Cow;
 
 /// How `kinetics derive` shows its derivations.
@@ -33,9 +30,11 @@ pub fn render_derivations(derivations: &[Derivation], shown: Shown) -> String {
         .iter()
         .map(|d| convention(&d.name, shown.axis))
         .collect();
-    let page = page(derivations, &conventions, shown.all_steps);
+    // JSON holds every step and the result apart.
+    let all_steps = shown.all_steps || matches!(shown.format, Format::Json);
+    let page = page(derivations, &conventions, all_steps);
     match shown.format {
-        Format::Json => json(derivations, shown.axis).to_string(),
+        Format::Json => super::json::derivations(&page).to_string(),
         Format::Html => super::html::page(&page),
         Format::Latex => super::latex::page(&page, shown.standalone)
             .trim_end()
@@ -56,7 +55,11 @@ fn page<'a>(
         .iter()
         .zip(conventions)
         .map(|(d, convention)| {
-            let mut section = Section::new(Heading::Derivation(&d.title), Vec::new());
+            let heading = Heading::Derivation {
+                name: &d.name,
+                title: &d.title,
+            };
+            let mut section = Section::new(heading, Vec::new());
             if let Some(c) = convention {
                 section.blocks.push(Block::Words(Cow::Borrowed(c)));
             }
@@ -87,27 +90,4 @@ fn blocks(step: &Step) -> Vec<Block<'_>> {
     }
     blocks.push(Block::Relations(rows(&step.relations)));
     blocks
-}
-
-fn json(derivations: &[Derivation], axis: Axis) -> serde_json::Value {
-    serde_json::Value::Array(
-        derivations
-            .iter()
-            .map(|d| {
-                serde_json::json!({
-                    "name": d.name,
-                    "title": markup::text(&d.title),
-                    "title_latex": markup::latex(&d.title),
-                    "convention": convention(&d.name, axis).map(|c| markup::text(&c)),
-                    "result": relations_json(d.result()),
-                    "steps": d.steps.iter().map(|s| serde_json::json!({
-                        "title": markup::text(&s.title),
-                        "title_latex": markup::latex(&s.title),
-                        "table": s.table.as_ref().map(parts_table::json),
-                        "relations": relations_json(&s.relations),
-                    })).collect::<Vec<_>>(),
-                })
-            })
-            .collect(),
-    )
 }

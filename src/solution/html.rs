@@ -68,7 +68,7 @@ pub(super) fn page(page: &Page) -> String {
 fn section(out: &mut String, section: &Section) {
     let enclosed = matches!(
         section.heading,
-        Heading::Step { .. } | Heading::Derivation(_)
+        Heading::Step { .. } | Heading::Derivation { .. }
     );
     if enclosed {
         out.push_str("<section>\n");
@@ -84,7 +84,9 @@ fn section(out: &mut String, section: &Section) {
         )),
         Heading::Results => out.push_str("<h2>Results</h2>\n"),
         Heading::Intermediate => out.push_str("<h2>Intermediate values</h2>\n"),
-        Heading::Derivation(title) => out.push_str(&format!("<h2>{}</h2>\n", markup::html(title))),
+        Heading::Derivation { title, .. } => {
+            out.push_str(&format!("<h2>{}</h2>\n", markup::html(title)))
+        }
         Heading::DerivationStep(title) => {
             out.push_str(&format!("<h3>{}</h3>\n", markup::html(title)));
         }

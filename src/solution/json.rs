@@ -3,7 +3,7 @@
 //! and LaTeX, the names of long radicands, and the results with their forms and values.
 
 use super::engineer::StepValues;
-use super::page::{Block, Heading, Page, Row};
+use super::page::{Block, Heading, Page, Row, Section};
 use super::parts_table;
 use super::render::relation;
 use super::result::{Body, Form, Line, Result};
@@ -51,26 +51,62 @@ pub(super) fn solution(page: &Page, analysis: &Analysis) -> serde_json::Value {
                 _ => {}
             }
         }
-        if let Heading::Step { title, .. } = section.heading {
-            let (mut table, mut relations) = (None, Vec::new());
-            for block in &section.blocks {
-                match block {
-                    Block::Table(t) => table = Some(parts_table::json(t)),
-                    Block::Relations(rows) => relations = rows_json(rows),
-                    _ => {}
-                }
-            }
-            steps.push(serde_json::json!({
-                "title": markup::text(title),
-                "title_latex": markup::latex(title),
-                "table": table,
-                "relations": relations,
-            }));
+        if let Heading::Step { .. } = section.heading {
+            steps.push(step_json(section));
         }
     }
     solution["plan"] = steps.iter().map(|s| s["title"].clone()).collect();
     solution["steps"] = steps.into();
     solution
+}
+
+/// A page of derivations as JSON: a derivation's name, title, convention, its steps (title,
+/// table, relations as the page shows them) and its result (its last step's relations).
+pub(super) fn derivations(page: &Page) -> serde_json::Value {
+    let derivation = |section: &Section| {
+        let Heading::Derivation { name, title } = section.heading else {
+            return None;
+        };
+        let convention = section.blocks.iter().find_map(|b| match b {
+            Block::Words(words) => Some(markup::text(words)),
+            _ => None,
+        });
+        let steps: Vec<serde_json::Value> = section.subsections.iter().map(step_json).collect();
+        let result = steps
+            .last()
+            .map_or(serde_json::json!([]), |s| s["relations"].clone());
+        Some(serde_json::json!({
+            "name": name,
+            "title": markup::text(title),
+            "title_latex": markup::latex(title),
+            "convention": convention,
+            "result": result,
+            "steps": steps,
+        }))
+    };
+    page.sections.iter().filter_map(derivation).collect()
+}
+
+/// A step of a page: its title (text and LaTeX), its table of parts and its relations.
+fn step_json(section: &Section) -> serde_json::Value {
+    let title = match section.heading {
+        Heading::Step { title, .. } | Heading::DerivationStep(title) => title,
+        _ => "",
+    };
+    let (mut table, mut relations) = (None, Vec::new());
+    for block in &section.blocks {
+        match block {
+            Block::Table(t) => table = Some(parts_table::json(t)),
+            Block::Relations(rows) => relations = rows_json(rows),
+            _ => {}
+        }
+    }
+    serde_json::json!({
+        "title": markup::text(title),
+        "title_latex": markup::latex(title),
+        "table": table,
+        "relations": relations,
+    })
 }
 
 /// The engineer's page as JSON: `{title, givens, results: [{name, value, unit}],

@@ -53,7 +53,7 @@ fn section(out: &mut String, section: &Section) {
         Heading::Results => out.push_str("\\paragraph{Results}\n"),
         // The heading on its own line: each step title is a paragraph of its own.
         Heading::Intermediate => out.push_str("\\paragraph{Intermediate values}\\mbox{}\n\n"),
-        Heading::Derivation(title) => {
+        Heading::Derivation { title, .. } => {
             out.push_str(&format!("\\section*{{{}}}\n", markup::latex(title)));
         }
         Heading::DerivationStep(title) => {

@@ -34,7 +34,9 @@ fn section(out: &mut String, section: &Section) {
         }
         Heading::Results => out.push_str("## Results\n\n"),
         Heading::Intermediate => out.push_str("## Intermediate values\n\n"),
-        Heading::Derivation(title) => out.push_str(&format!("## {}\n\n", markup::markdown(title))),
+        Heading::Derivation { title, .. } => {
+            out.push_str(&format!("## {}\n\n", markup::markdown(title)))
+        }
         Heading::DerivationStep(title) => {
             out.push_str(&format!("### {}\n\n", markup::markdown(title)));
         }

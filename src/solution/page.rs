@@ -58,8 +58,12 @@ pub enum Heading<'a> {
     Results,
     /// The plan's intermediate values (the engineer's page).
     Intermediate,
-    /// A derivation of `kinetics derive` (its title), and one of its steps.
-    Derivation(&'a str),
+    /// A derivation of `kinetics derive` (its name, `H_G`, and its title), and one of its
+    /// steps.
+    Derivation {
+        name: &'a str,
+        title: &'a str,
+    },
     DerivationStep(&'a str),
 }
 

@@ -31,7 +31,7 @@ fn section(section: &Section) -> String {
         Heading::Step { number, title } => format!("Step {number}: {}\n", markup::text(title)),
         Heading::Results => "Results\n".into(),
         Heading::Intermediate => "Intermediate values\n".into(),
-        Heading::Derivation(title) => format!("# {}\n", markup::text(title)),
+        Heading::Derivation { title, .. } => format!("# {}\n", markup::text(title)),
         Heading::DerivationStep(title) => format!("## {}\n", markup::text(title)),
     };
     for block in &section.blocks {

@@ -51,7 +51,7 @@ pub mod work;
 pub use axis::Axis;
 pub use cancel::polynomial_gcd;
 pub use collect::Collected;
-pub use decimal::four_significant_figures;
+pub use decimal::{four_significant_figures, significant_figures};
 pub use digit_bound::MAX_DIGITS;
 pub use domain::{Domain, Domains};
 pub use error::{AlgebraError, MAX_EXPANDED_TERMS};

@@ -1,9 +1,11 @@
-//! `kinetics solve SCENE [--format text|latex|markdown|json|html] [--standalone] [--numbers]` and
+//! `kinetics solve SCENE [--format text|latex|markdown|json|html] [--standalone] [--numbers]
+//! [--digits N]` and
 //! `kinetics plan SCENE`: a scene file (or `-` for standard input) analysed on demand.
 
 use super::budget::Input;
 use super::error::CliError;
 use kinetics::scene::{analyse, parse_scene, Analysis, Scene};
+use kinetics::solution::numbers::{with_digits, DEFAULT_DIGITS};
 use kinetics::solution::{render, render_numbers, Format};
 
 #[derive(clap::Args)]
@@ -20,6 +22,10 @@ pub struct Args {
     /// intermediate values, without the symbolic steps (in any format).
     #[arg(long)]
     pub numbers: bool,
+    /// Significant figures of every number on the page (1 to 17); a rounded value keeps its
+    /// trailing zeros, and from 10⁵ up or below 10⁻⁴ it is in engineering notation.
+    #[arg(long, default_value_t = DEFAULT_DIGITS as u8, value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: u8,
 }
 
 /// The formats of a worked solution as the command line spells them (the library's
@@ -79,11 +85,10 @@ fn page(args: &Args, scene: &Scene, analysis: &Analysis) -> Result<String, CliEr
             "--standalone goes with --format latex".into(),
         ));
     }
-    let page = if args.numbers {
-        render_numbers(scene, analysis, format, args.standalone)
-    } else {
-        render(scene, analysis, format, args.standalone)
-    };
+    let page = with_digits(usize::from(args.digits), || match args.numbers {
+        true => render_numbers(scene, analysis, format, args.standalone),
+        false => render(scene, analysis, format, args.standalone),
+    });
     Ok(page.trim_end().to_string())
 }
 

@@ -184,14 +184,30 @@ fn scientific(q: &Q) -> String {
     format!("{sign}{mantissa}e{exponent}")
 }
 
-/// Four significant figures, without trailing noise: `-129.8`, `0.01234`, `1.235e-7`.
+/// The significant figures of the page being written (`solve --digits`).
+pub const DEFAULT_DIGITS: usize = 4;
+
+thread_local! {
+    static DIGITS: std::cell::Cell<usize> = const { std::cell::Cell::new(DEFAULT_DIGITS) };
+}
+
+/// `write` with every number on its page in `digits` significant figures.
+pub fn with_digits<R>(digits: usize, write: impl FnOnce() -> R) -> R {
+    let before = DIGITS.replace(digits.max(1));
+    let written = write();
+    DIGITS.set(before);
+    written
+}
+
+/// A value in the page's significant figures ([`crate::algebra::significant_figures`]):
+/// `-129.8`, `0.01234`, `3.930`, `123.5e3`.
 pub fn format_value(x: f64) -> String {
-    crate::algebra::four_significant_figures(x)
+    crate::algebra::significant_figures(x, DIGITS.get())
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{format_value, scientific};
+    use super::{format_value, scientific, with_digits};
     use crate::algebra::Q;
 
     #[test]
@@ -211,7 +227,25 @@ mod tests {
         assert_eq!(format_value(-129.7518), "-129.8");
         assert_eq!(format_value(2700.0), "2700");
         assert_eq!(format_value(0.012345), "0.01235");
-        assert_eq!(format_value(1.5e-7), "1.500e-7");
         assert_eq!(format_value(-135.0), "-135");
+        // Rounded values keep their trailing zeros; exact ones show what they are.
+        assert_eq!(format_value(3.929_999_7), "3.930");
+        assert_eq!(format_value(3.93), "3.93");
+        assert_eq!(format_value(0.000_666_67), "0.0006667");
+        assert_eq!(format_value(9.999_96), "10.00");
+        // Engineering notation from 10⁵ up and below 10⁻⁴.
+        assert_eq!(format_value(123_456.0), "123.5e3");
+        assert_eq!(format_value(99_990.0), "99990");
+        assert_eq!(format_value(99_999.0), "100.0e3");
+        assert_eq!(format_value(-1.5e-7), "-150e-9");
+        assert_eq!(format_value(1.234_56e-5), "12.35e-6");
+        assert_eq!(format_value(2e10), "20e9");
+    }
+
+    #[test]
+    fn digits_of_the_page() {
+        assert_eq!(with_digits(3, || format_value(-129.7518)), "-130");
+        assert_eq!(with_digits(6, || format_value(1.0 / 3.0)), "0.333333");
+        assert_eq!(format_value(1.0 / 3.0), "0.3333");
     }
 }

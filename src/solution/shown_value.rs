@@ -205,7 +205,7 @@ mod tests {
         // Only a component that shows as zero is left out: a tiny one stays.
         assert_eq!(
             text(&[1.0, 1e-20, 0.0], &unit("N")),
-            "(1 N) i + (1.000e-20 N) j"
+            "(1 N) i + (10e-21 N) j"
         );
         assert_eq!(
             latex(&[-135.0, 0.0, 2.0], &unit("m/s^2")),

@@ -149,3 +149,26 @@ fn a_name_has_one_spelling_on_the_page() {
     assert!(latex.contains(r"M_1 &= 0\,\mathrm{N\cdot m}"), "{latex}");
     assert!(!latex.contains("w1") && !latex.contains("M1"), "{latex}");
 }
+
+/// `--digits N` sets the significant figures of every number on the page, in every format:
+/// SP 18.3's T_BC = 1857 N (by hand, `by_hand`) is 1860 N in three figures, and A_x, from
+/// ΣF_x = A_x − T_BC = m ā_x, is −843.4 N, or −843 N; out of 1..=17 it is refused.
+#[test]
+fn digits_set_the_significant_figures() {
+    let rod = scene("sp18_3_rotating_rod");
+    let (abar_x, _, _, t_bc) = by_hand();
+    let a_x = 20.0 * abar_x + t_bc;
+    assert_eq!(format!("{t_bc:.0}"), "1857");
+    assert_eq!(format!("{a_x:.1}"), "-843.4");
+    let text = solve(&["solve", &rod, "--digits", "3"]);
+    assert!(text.contains("  T_BC = 1860 N\n"), "{text}");
+    assert!(text.contains("  A_x = -843 N\n"), "{text}");
+    let latex = solve(&["solve", &rod, "--digits", "6", "--format", "latex"]);
+    assert!(
+        latex.contains(&format!(r"= {t_bc:.2}\,\mathrm{{N}}")),
+        "{latex}"
+    );
+    let (code, _, err) = kinetics(&["solve", &rod, "--digits", "0"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("0 is not in 1..=17"), "{err}");
+}

@@ -314,7 +314,7 @@ fn the_reactions_are_forces_in_newtons() {
         "{out}"
     );
     assert!(
-        out.contains("T = 1/8*m*r^2*(cos(beta)^2 + 1)*w^2 = 224 J"),
+        out.contains("T = 1/8*m*r^2*(cos(beta)^2 + 1)*w^2 = 224.0 J"),
         "{out}"
     );
 }

@@ -100,10 +100,10 @@ fn the_engineers_page_has_every_number_with_its_names_unit() {
     // π from `1 deg` is a constant: the principal frame about O is found.
     assert!(page.contains("principal_O:\n    I_1 = "), "{page}");
     // v_P = ω × r_P: ω r = 3000 rpm · 120 mm = 37.70 m/s along −y (a length, not rad/s).
-    assert!(page.contains("    v_Py = -37.7 m/s\n"), "{page}");
+    assert!(page.contains("    v_Py = -37.70 m/s\n"), "{page}");
     assert!(page.contains("    v_Px = 0 m/s\n"), "{page}");
     assert!(page.contains("    rbar_x = 0.1 m\n"), "{page}");
-    assert!(page.contains("    I_xz = 0.000111 kg·m²\n"), "{page}");
+    assert!(page.contains("    I_xz = 0.0001110 kg·m²\n"), "{page}");
     // The correction masses have values: their planes are lengths in SI.
     assert!(page.contains("  m_1 = 0.02455 kg\n"), "{page}");
     assert!(!page.contains("has no value"), "{page}");

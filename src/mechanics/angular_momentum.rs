@@ -43,6 +43,7 @@ pub fn angular_momentum(
         name: format!("H_{point}"),
         title: format!("angular momentum about ${point}$"),
         steps: vec![Step {
+            vectors: Vec::new(),
             table: None,
             title: format!(
                 r"angular momentum about ${point}$, $\{{\mathbf{{H}}_{{{point}}}\}} = {tensor}\{{\boldsymbol{{\omega}}\}}$ (moments and products of inertia about ${point}$; products positive, entered with a minus sign)",
@@ -102,7 +103,8 @@ pub fn angular_momentum_about_point(
             components: "H",
             name: "H_O",
             title: "angular momentum about $O$",
-            moment_title: r"moment of the linear momentum, $\bar{\mathbf{r}} \times m\bar{\mathbf{v}}$",
+            moment: r"\bar{\mathbf{r}} \times m\bar{\mathbf{v}}",
+            moment_title: "moment of the linear momentum",
             total_title: r"angular momentum about $O$, $\mathbf{H}_O = \mathbf{H}_G + \bar{\mathbf{r}} \times m\bar{\mathbf{v}}$",
         },
     )

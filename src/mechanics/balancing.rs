@@ -56,6 +56,7 @@ pub fn dynamic_balancing(
         name: "balancing".into(),
         title: "dynamic balancing with two corrective masses".into(),
         steps: vec![Step {
+            vectors: Vec::new(),
             table: None,
             title: format!(
                 "static balance (mass centre on the axis ${la}$) and ${} = {} = 0$ after correction",

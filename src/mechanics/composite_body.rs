@@ -68,6 +68,7 @@ pub fn composite_body(parts: &[MassPart]) -> Result<(MassProperties, Derivation)
         name: "body".into(),
         title: "mass, mass centre and centroidal inertia".into(),
         steps: vec![Step {
+            vectors: Vec::new(),
             table: parts_table(parts, &own, Columns::OwnCentroidal),
             title: if parts.len() > 1 {
                 PARTS_TITLE.into()

@@ -75,7 +75,20 @@ impl Relation {
 pub struct Step {
     pub title: String,
     pub table: Option<Table>,
+    /// Vectors with names of their own (`Ω × H_O = I_xy ω² k`), before the relations.
+    pub vectors: Vec<VectorRelation>,
     pub relations: Vec<Relation>,
+}
+
+/// A vector quantity under the name the chapter gives it and its value, shown as one
+/// vector: `(Ḣ_O)_Oxyz = 0`, `Ω × H_O = I_xy ω² k`, `r̄ × m v̄ = …`. A term of a sum
+/// is written so, not by components named like the sum's (`Ḣ_x` would name three
+/// quantities in three steps).
+#[derive(Debug, Clone, PartialEq)]
+pub struct VectorRelation {
+    /// The name in the LaTeX subset of titles (`\boldsymbol{\Omega} \times \mathbf{H}_O`).
+    pub name: String,
+    pub value: crate::algebra::Vector,
 }
 
 /// A table of a composite body's parts as a student lays it out: a row per part (its label,
@@ -115,7 +128,25 @@ impl Step {
         Step {
             title: title.into(),
             table: None,
+            vectors: Vec::new(),
             relations,
+        }
+    }
+
+    /// A step that finds one named vector.
+    pub fn vector(
+        title: impl Into<String>,
+        name: impl Into<String>,
+        value: crate::algebra::Vector,
+    ) -> Step {
+        Step {
+            title: title.into(),
+            table: None,
+            vectors: vec![VectorRelation {
+                name: name.into(),
+                value,
+            }],
+            relations: Vec::new(),
         }
     }
 
@@ -135,6 +166,14 @@ impl Step {
                     })
                     .collect(),
             }),
+            vectors: self
+                .vectors
+                .iter()
+                .map(|v| VectorRelation {
+                    name: v.name.clone(),
+                    value: v.value.map(|c| presented(&c, domains)),
+                })
+                .collect(),
             relations: self
                 .relations
                 .iter()

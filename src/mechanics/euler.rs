@@ -55,6 +55,7 @@ pub fn euler_equations(inertia: &InertiaTensor) -> Result<Derivation, AlgebraErr
     ))?;
     let mut steps = rate.steps;
     steps.push(Step {
+        vectors: Vec::new(),
         table: None,
         title: r"Euler's equations: $\Sigma\mathbf{M}_G = \dot{\mathbf{H}}_G$ with $\boldsymbol{\Omega} = \boldsymbol{\omega}$ (axes fixed in the body)".into(),
         relations: Relation::components("SumM", &moments),

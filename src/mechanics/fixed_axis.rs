@@ -72,6 +72,7 @@ pub fn fixed_axis_rotation(
     let moments = Vector::from_iterator(rate.result().iter().map(|r| r.rhs.clone()));
     let (la, lb, lc) = (LETTERS[a], LETTERS[b], LETTERS[c]);
     let mut steps = vec![Step {
+        vectors: Vec::new(),
         table: None,
         title: format!(
             r"${la}$ along the fixed axis: $\boldsymbol{{\omega}} = \omega{}$, $\boldsymbol{{\Omega}} = \boldsymbol{{\omega}}$, $\alpha = \dot{{\omega}}$ ($\omega_{lb} = \omega_{lc} = 0$)",
@@ -81,6 +82,7 @@ pub fn fixed_axis_rotation(
     }];
     steps.extend(rate.steps);
     steps.push(Step {
+        vectors: Vec::new(),
         table: None,
         title: r"$\Sigma\mathbf{M}_O = \dot{\mathbf{H}}_O$".into(),
         relations: Relation::components("SumM", &moments),
@@ -138,6 +140,7 @@ pub fn bearing_reactions(
         title: "dynamic reactions of the bearings".into(),
         steps: vec![
             Step {
+                vectors: Vec::new(),
                 table: None,
                 title: format!(
                     r"moments about $A$ of the reaction at $B$: $\Sigma M_{lb} = -l B_{lc}$, $\Sigma M_{lc} = l B_{lb}$"
@@ -148,6 +151,7 @@ pub fn bearing_reactions(
                 ],
             },
             Step {
+                vectors: Vec::new(),
                 table: None,
                 title: format!(
                     r"$\Sigma\mathbf{{F}} = m\bar{{\mathbf{{a}}}}$ with $\bar{{\mathbf{{a}}}} = \alpha{} \times \bar{{\mathbf{{r}}}} - \omega^2 \bar{{\mathbf{{r}}}}$",
@@ -159,6 +163,7 @@ pub fn bearing_reactions(
                 ],
             },
             Step {
+                vectors: Vec::new(),
                 table: None,
                 title: "the reactions".into(),
                 relations: vec![

@@ -58,6 +58,7 @@ pub fn impulse_momentum(p: &ImpulseMomentum) -> Result<Derivation, AlgebraError>
         name: "impulse".into(),
         title: "impulse and momentum".into(),
         steps: vec![Step {
+            vectors: Vec::new(),
             table: None,
             title: r"impulse and momentum: $m\bar{\mathbf{v}}_1 + \Sigma\mathbf{F}\,\Delta t = m\bar{\mathbf{v}}_2$ ($x, y, z$), then $\mathbf{H}_1 + \Sigma\mathbf{M}\,\Delta t = \mathbf{H}_2$ ($x, y, z$)".into(),
             relations: [

@@ -54,6 +54,7 @@ pub fn inertia_about_fixed_point(
         .fold(InertiaTensor::zero(), |sum, part| sum.add(part))
         .expanded()?;
     let step = Step {
+        vectors: Vec::new(),
         title: r"moments and products of inertia about $O$, $I_x = \Sigma(\bar{I}_{x'} + m(\bar{y}^2 + \bar{z}^2))$, $I_{xy} = \Sigma(\bar{I}_{x'y'} + m\bar{x}\bar{y})$ (products positive, $I_{xy} = \int xy\,dm$)".into(),
         table: parts_table(parts, &about_o, Columns::AboutPoint),
         relations: total.relations(),

@@ -13,10 +13,12 @@ use crate::algebra::vector::expand_each;
 use crate::algebra::vector_products::cross;
 use crate::algebra::{AlgebraError, Vector};
 
-/// How one transfer is named and shown: the components' name (`H`, `Hdot`), the
-/// derivation's name and title, and the titles of its two steps.
+/// How one transfer is named and shown: the components' name (`H`, `Hdot`), the moment's
+/// name (`\bar{\mathbf{r}} \times m\bar{\mathbf{v}}`), the derivation's name and title, and
+/// the titles of its two steps.
 pub(super) struct Labels<'a> {
     pub components: &'a str,
+    pub moment: &'a str,
     pub name: &'a str,
     pub title: &'a str,
     pub moment_title: &'a str,
@@ -36,10 +38,7 @@ pub(super) fn moment_transfer(
         name: labels.name.into(),
         title: labels.title.into(),
         steps: vec![
-            Step::new(
-                labels.moment_title,
-                Relation::components(labels.components, &moment),
-            ),
+            Step::vector(labels.moment_title, labels.moment, moment),
             Step::new(
                 labels.total_title,
                 Relation::components(labels.components, &about_o),

@@ -62,15 +62,17 @@ pub fn rate_of_angular_momentum(
         name: "Hdot".into(),
         title: "rate of change of angular momentum".into(),
         steps: vec![
-            Step::new(
+            Step::vector(
                 format!(
                     r"rate relative to the rotating frame, $(\dot{{\mathbf{{H}}}}_{point})_{{{point}xyz}} = {tensor}\{{(\dot{{\boldsymbol{{\omega}}}})_{{{point}xyz}}\}}$"
                 ),
-                Relation::components("Hdot", &expand_each(&relative)?),
+                format!(r"(\dot{{\mathbf{{H}}}}_{point})_{{{point}xyz}}"),
+                expand_each(&relative)?,
             ),
-            Step::new(
-                format!(r"transport term $\boldsymbol{{\Omega}} \times \mathbf{{H}}_{point}$"),
-                Relation::components("Hdot", &expand_each(&transport)?),
+            Step::vector(
+                "transport term",
+                format!(r"\boldsymbol{{\Omega}} \times \mathbf{{H}}_{point}"),
+                expand_each(&transport)?,
             ),
             Step::new(
                 format!(
@@ -113,7 +115,8 @@ pub fn rate_of_angular_momentum_about_point(
             components: "Hdot",
             name: "Hdot_O",
             title: "rate of change of angular momentum about $O$",
-            moment_title: r"moment of the effective force, $\bar{\mathbf{r}} \times m\bar{\mathbf{a}}$",
+            moment: r"\bar{\mathbf{r}} \times m\bar{\mathbf{a}}",
+            moment_title: "moment of the effective force",
             total_title: r"rate of change of angular momentum about the fixed point $O$, $\dot{\mathbf{H}}_O = \dot{\mathbf{H}}_G + \bar{\mathbf{r}} \times m\bar{\mathbf{a}}$",
         },
     )

@@ -50,9 +50,16 @@ pub fn grouped(v: &Vector) -> Option<GroupedVector> {
 impl GroupedVector {
     /// The width in ems of the grouped vector on one line.
     pub fn width_em(&self) -> f64 {
+        let parentheses = if self.factor_is_sum() { 1.0 } else { 0.0 };
         super::width_em(&self.factor, Axis::X)
+            + parentheses
             + 1.0
             + super::line_break::vector_width_em(&self.inner)
+    }
+
+    /// A factor of several terms stands in parentheses: `(Iω_z − I′φ̇ cos θ)(φ̇ sin θ i − θ̇ j)`.
+    fn factor_is_sum(&self) -> bool {
+        matches!(self.factor.view(), View::Add(_))
     }
 
     /// `factor (inner)` in `notation`: `6*F*Dt/(m*a*b)*(a*i - b*j)` in text (which reads
@@ -61,6 +68,15 @@ impl GroupedVector {
     /// around fractions.
     pub fn render(&self, notation: Notation) -> String {
         let factor = render(&self.factor, notation, Axis::X);
+        let factor = match (self.factor_is_sum(), notation) {
+            (false, _) => factor,
+            (true, Notation::Text) => format!("({factor})"),
+            (true, Notation::Latex) if factor.contains(r"\frac") => {
+                format!(r"\left({factor}\right)")
+            }
+            (true, Notation::Latex) => format!("({factor})"),
+            (true, Notation::MathMl) => format!("<mrow><mo>(</mo>{factor}<mo>)</mo></mrow>"),
+        };
         let inner = vector(&self.inner, notation);
         let nested = match notation {
             Notation::MathMl => inner.contains("<mo>(</mo>") || inner.contains("<mo stretchy"),
@@ -112,6 +128,28 @@ mod tests {
             grouped(&h).unwrap().render(Notation::Text),
             "1/2*F*Dt*(b*i - a*j)"
         );
+    }
+
+    /// A factor that is a sum is set in parentheses, so the product reads as one: the
+    /// transport term of a top, `(I ω_z − I′ φ̇ cos θ)(φ̇ sin θ i − θ̇ j)`.
+    #[test]
+    fn a_factor_of_several_terms_is_in_parentheses() {
+        let transport = vector([
+            "I*omega_z*phidot*sin(theta) - I'*phidot^2*sin(theta)*cos(theta)",
+            "-I*omega_z*thetadot + I'*phidot*thetadot*cos(theta)",
+            "0",
+        ]);
+        regrouped_is_the_vector(&transport);
+        let g = grouped(&transport).expect("grouped");
+        let text = g.render(Notation::Text);
+        assert!(text.starts_with('(') && text.contains(")*("), "{text}");
+        assert!(g.render(Notation::Latex).starts_with('('));
+        // Read back, the text is the vector.
+        let read = parse_expression("", &text).unwrap();
+        let whole = crate::algebra::vector::components(&read).unwrap();
+        for (a, b) in whole.iter().zip(transport.iter()) {
+            assert!((a - b).cancel().unwrap().is_zero(), "{a} vs {b}");
+        }
     }
 
     #[test]

@@ -177,6 +177,7 @@ pub fn solve_constraints(
                 .map(|(u, v)| Relation::new(Expr::sym(*u), v.clone(), Axis::X)),
         );
         steps.push(Step {
+            vectors: Vec::new(),
             table: None,
             title: "kinematic constraints, solved for the unknown rates".into(),
             relations,
@@ -201,6 +202,7 @@ pub fn solve_constraints(
         relations.extend(Relation::components("Omega", &frame_rate));
     }
     steps.extend((!shown_already).then(|| Step {
+        vectors: Vec::new(),
         table: None,
         title: if stated.frame_rate.is_some() {
             r"angular velocity $\boldsymbol{\omega}$ of the body and $\boldsymbol{\Omega}$ of the frame ($\boldsymbol{\Omega} \neq \boldsymbol{\omega}$: $[I]$ is constant in this frame)".into()

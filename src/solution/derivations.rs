@@ -5,7 +5,7 @@
 //! Text and Markdown headings are `#`/`##` lines, LaTeX headings `\section*`/`\subsection*`
 //! (never `%` comments), so a page of derivations reads like the chapter.
 
-use super::page::{rows, Block, Heading, Page, Section};
+use super::page::{step_rows, Block, Heading, Page, Section};
 use super::Format;
 use crate::algebra::Axis;
 use crate::mechanics::catalogue::convention;
@@ -88,6 +88,6 @@ fn blocks(step: &Step) -> Vec<Block<'_>> {
     if let Some(table) = &step.table {
         blocks.push(Block::Table(table));
     }
-    blocks.push(Block::Relations(rows(&step.relations)));
+    blocks.push(Block::Relations(step_rows(step)));
     blocks
 }

@@ -9,8 +9,10 @@
 //! one value share a row, `I_xy = I_yz = I_xz = 0`.
 
 use super::engineer::StepValues;
-use super::result::Result;
-use crate::mechanics::derivation::{Relation, Table};
+use super::result::{Form, Result};
+use crate::mechanics::derivation::{Relation, Step, Table, VectorRelation};
+use crate::print::grouped_vector::grouped;
+use crate::print::markup;
 use crate::print::{self, Notation};
 use crate::scene::model::Given;
 use std::borrow::Cow;
@@ -101,27 +103,43 @@ pub enum Row<'a> {
     /// Relations `qₖ = value` of consecutive components of one named quantity, each with
     /// the same right-hand side (one or more).
     Equal(Vec<&'a Relation>),
+    /// A named vector, written as a vector (its common factor in front where that reads
+    /// shorter).
+    Vector(&'a VectorRelation, Form<'a>),
 }
 
 impl Row<'_> {
     /// The left of the row's first `=`: a relation's left-hand side, or the first of the
-    /// equal quantities (the row aligns there, as its column does).
+    /// equal quantities (the row aligns there, as its column does); a vector's name.
     pub fn left(&self, notation: Notation) -> String {
-        let r = self.first();
-        print::render(&r.lhs, notation, r.axis)
+        match self.relations() {
+            Some((first, _, _)) => print::render(&first.lhs, notation, first.axis),
+            None => match (self, notation) {
+                (Row::Vector(v, _), Notation::Latex) => v.name.clone(),
+                (Row::Vector(v, _), Notation::Text) => markup::text(&format!("${}$", v.name)),
+                (Row::Vector(v, _), Notation::MathMl) => markup::mathml(&format!("${}$", v.name)),
+                (Row::Relation(_) | Row::Equal(_), _) => String::new(),
+            },
+        }
     }
 
     /// The width in ems of [`Row::left`] typeset, for the room of the right-hand sides.
     pub fn left_em(&self) -> f64 {
-        let r = self.first();
-        print::width_em(&r.lhs, r.axis)
+        match self.relations() {
+            Some((first, _, _)) => print::width_em(&first.lhs, first.axis),
+            None => print::width::symbol_em(&self.left(Notation::Text)),
+        }
     }
 
     /// The right of the row's first `=` in `notation`, in lines that fit from `first_em`
     /// within `width_em`: the right-hand side broken as a sum is, after the other equal
-    /// quantities (`I_yz = I_xz = 0`).
+    /// quantities (`I_yz = I_xz = 0`); a vector as [`Form::lines`] breaks it.
     pub fn right_lines(&self, notation: Notation, first_em: f64, width_em: f64) -> Vec<String> {
-        let (others, last) = self.others_and_last();
+        let Some((_, others, last)) = self.relations() else {
+            return self
+                .vector_form()
+                .map_or_else(Vec::new, |form| form.lines(notation, first_em, width_em));
+        };
         let others_em: f64 = others
             .iter()
             .map(|r| print::width_em(&r.lhs, r.axis) + print::width::RELATION_EM)
@@ -134,49 +152,62 @@ impl Row<'_> {
             width_em,
         );
         if let Some(first) = lines.first_mut() {
-            *first = format!("{}{first}", self.others_text(notation));
+            *first = format!("{}{first}", others_text(others, notation));
         }
         lines
     }
 
     /// The row on one line in `notation`, `lhs = rhs` (for JSON and the tests).
     pub fn one_line(&self, notation: Notation) -> String {
-        let (_, last) = self.others_and_last();
-        let right = print::render(&last.rhs, notation, last.axis);
-        format!(
-            "{} = {}{right}",
-            self.left(notation),
-            self.others_text(notation)
-        )
-    }
-
-    /// The equal quantities after the first, each followed by `=`.
-    fn others_text(&self, notation: Notation) -> String {
-        let equals = match notation {
-            Notation::MathMl => "<mo>=</mo>",
-            _ => " = ",
+        let right = match self.relations() {
+            Some((_, others, last)) => {
+                let right = print::render(&last.rhs, notation, last.axis);
+                format!("{}{right}", others_text(others, notation))
+            }
+            None => self
+                .vector_form()
+                .map_or_else(String::new, |f| f.render(notation)),
         };
-        let (others, _) = self.others_and_last();
-        others
-            .iter()
-            .map(|r| print::render(&r.lhs, notation, r.axis) + equals)
-            .collect()
+        format!("{} = {right}", self.left(notation))
     }
 
-    fn first(&self) -> &Relation {
+    /// A row of relations: its first, the ones after the first, and the last (whose
+    /// right-hand side the row ends with); none for a vector's row.
+    fn relations(&self) -> Option<(&Relation, &[&Relation], &Relation)> {
         match self {
-            Row::Relation(r) => r,
-            Row::Equal(equal) => equal[0],
+            Row::Relation(r) => Some((r, &[], r)),
+            Row::Equal(equal) => Some((equal.first()?, &equal[1..], equal.last()?)),
+            Row::Vector(..) => None,
         }
     }
 
-    /// The relations after the first, and the last (whose right-hand side the row ends with).
-    fn others_and_last(&self) -> (&[&Relation], &Relation) {
+    fn vector_form(&self) -> Option<&Form<'_>> {
         match self {
-            Row::Relation(r) => (&[], r),
-            Row::Equal(equal) => (&equal[1..], equal[equal.len() - 1]),
+            Row::Vector(_, form) => Some(form),
+            Row::Relation(_) | Row::Equal(_) => None,
         }
     }
+}
+
+/// The equal quantities after the first, each followed by `=`.
+fn others_text(others: &[&Relation], notation: Notation) -> String {
+    let equals = match notation {
+        Notation::MathMl => "<mo>=</mo>",
+        _ => " = ",
+    };
+    others
+        .iter()
+        .map(|r| print::render(&r.lhs, notation, r.axis) + equals)
+        .collect()
+}
+
+/// The rows of a step: its named vectors, then its relations' rows ([`rows`]).
+pub fn step_rows(step: &Step) -> Vec<Row<'_>> {
+    let vectors = step
+        .vectors
+        .iter()
+        .map(|v| Row::Vector(v, Form::Vector(&v.value, grouped(&v.value))));
+    vectors.chain(rows(&step.relations)).collect()
 }
 
 /// The rows `relations` are shown as: tautologies left out (a quantity equal to itself, or

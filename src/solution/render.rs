@@ -11,6 +11,7 @@
 use super::numbers::scene_dimensions;
 use super::result::{results, Result};
 use super::solution_page::solution_page;
+use crate::algebra::Expr;
 use crate::mechanics::derivation::Relation;
 use crate::print::{self, Notation};
 use crate::scene::{Analysis, Scene};
@@ -81,11 +82,13 @@ pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bo
 /// `omega_x`) are told apart, unless a relation `omega_x = w_x` states them one quantity.
 fn on_the_page(scene: &Scene, analysis: &Analysis, write: impl FnOnce() -> String) -> String {
     let relations = || analysis.plan.iter().flat_map(|s| &s.relations);
+    let vectors = analysis.plan.iter().flat_map(|s| &s.vectors);
     let page = scene
         .givens
         .iter()
         .map(|g| g.symbol)
-        .chain(relations().flat_map(|r| r.lhs.symbols().into_iter().chain(r.rhs.symbols())));
+        .chain(relations().flat_map(|r| r.lhs.symbols().into_iter().chain(r.rhs.symbols())))
+        .chain(vectors.flat_map(|v| v.value.iter().flat_map(Expr::symbols)));
     let identities = relations().filter_map(|r| Some((r.lhs.as_symbol()?, r.rhs.as_symbol()?)));
     print::on_one_page(page, identities, write)
 }

@@ -3,7 +3,7 @@
 //! each step of the plan that has something to say (its table of parts, its relations), then
 //! the results (a last step that only states them is left to Results).
 
-use super::page::{rows, Block, Heading, Name, Page, Section};
+use super::page::{step_rows, Block, Heading, Name, Page, Section};
 use super::result::{quantity_latex, shown_name, Body, Form, Result};
 use crate::mechanics::derivation::Relation;
 use crate::mechanics::Step;
@@ -44,7 +44,7 @@ pub(super) fn solution_page<'a>(
     };
     let mut number = 0;
     for step in plan {
-        let rows = rows(&step.relations);
+        let rows = step_rows(step);
         // A step whose every relation says nothing (the velocity as given) is left out; one
         // with no relations says what it found in its title.
         if rows.is_empty() && !step.relations.is_empty() && step.table.is_none() {

@@ -433,6 +433,7 @@ impl<'a> Analyser<'a> {
             (Some(given), _) => {
                 let v = self.known_vector(given, at)?;
                 self.plan.push(Step {
+                    vectors: Vec::new(),
                     table: None,
                     title: "velocity of the mass centre (given)".into(),
                     relations: Relation::components("vbar", &v),
@@ -463,6 +464,7 @@ impl<'a> Analyser<'a> {
             self.kinematics(at)?;
             let a = self.known_vector(given, at)?;
             self.plan.push(Step {
+                vectors: Vec::new(),
                 table: None,
                 title: "acceleration of the mass centre (given)".into(),
                 relations: Relation::components("abar", &a),

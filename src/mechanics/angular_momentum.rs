@@ -46,7 +46,7 @@ pub fn angular_momentum(
             vectors: Vec::new(),
             table: None,
             title: format!(
-                r"angular momentum about ${point}$, $\{{\mathbf{{H}}_{{{point}}}\}} = {tensor}\{{\boldsymbol{{\omega}}\}}$ (moments and products of inertia about ${point}$; products positive, entered with a minus sign)",
+                r"angular momentum, $\{{\mathbf{{H}}_{{{point}}}\}} = {tensor}\{{\boldsymbol{{\omega}}\}}$",
                 tensor = InertiaTensor::written_about(point)
             ),
             relations: Relation::components("H", &h),

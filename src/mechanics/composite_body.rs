@@ -25,10 +25,10 @@ pub struct MassProperties {
 }
 
 /// The step of a body of several parts: the parallel-axis sums its relations are.
-const PARTS_TITLE: &str = r"mass, mass centre and centroidal inertia of the body: $\bar{I}_x = \Sigma(\bar{I}_{x'} + m((y - \bar{y})^2 + (z - \bar{z})^2))$, $\bar{I}_{xy} = \Sigma(\bar{I}_{x'y'} + m(x - \bar{x})(y - \bar{y}))$ (products of inertia positive, $\int xy\,dm$)";
+const PARTS_TITLE: &str = r"mass, mass centre and centroidal inertia: $\bar{I}_x = \Sigma(\bar{I}_{x'} + m((y - \bar{y})^2 + (z - \bar{z})^2))$, $\bar{I}_{xy} = \Sigma(\bar{I}_{x'y'} + m(x - \bar{x})(y - \bar{y}))$ ($I_{xy} = \int xy\,dm$)";
 
 /// The step of a body of one part, whose inertia is its shape's.
-const ONE_PART_TITLE: &str = r"mass, mass centre and centroidal inertia of the body (products of inertia positive, $\int xy\,dm$)";
+const ONE_PART_TITLE: &str = r"mass, mass centre and centroidal inertia ($I_{xy} = \int xy\,dm$)";
 
 /// The mass, mass centre and centroidal inertia of the parts together, with the step that
 /// shows them. A total mass that is zero is refused ([`AlgebraError::DivisionByZero`]): the

@@ -55,7 +55,7 @@ pub fn inertia_about_fixed_point(
         .expanded()?;
     let step = Step {
         vectors: Vec::new(),
-        title: r"moments and products of inertia about $O$, $I_x = \Sigma(\bar{I}_{x'} + m(\bar{y}^2 + \bar{z}^2))$, $I_{xy} = \Sigma(\bar{I}_{x'y'} + m\bar{x}\bar{y})$ (products positive, $I_{xy} = \int xy\,dm$)".into(),
+        title: r"inertia about $O$ by parallel axes, $I_x = \Sigma(\bar{I}_{x'} + m(\bar{y}^2 + \bar{z}^2))$, $I_{xy} = \Sigma(\bar{I}_{x'y'} + m\bar{x}\bar{y})$".into(),
         table: parts_table(parts, &about_o, Columns::AboutPoint),
         relations: total.relations(),
     };

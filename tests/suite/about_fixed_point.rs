@@ -386,7 +386,7 @@ fn t_about_o_pulls_only_the_inertia_about_o() {
     let analysis = analyse(&scene).unwrap();
     let titles: Vec<&str> = analysis.plan.iter().map(|s| s.title.as_str()).collect();
     assert_eq!(titles.len(), 3, "{titles:?}");
-    assert!(titles[1].starts_with("moments and products of inertia about $O$"));
+    assert!(titles[1].starts_with("inertia about $O$ by parallel axes"));
     assert!(!titles
         .iter()
         .any(|t| t.contains("mass centre") || t.contains("rate")));

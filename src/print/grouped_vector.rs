@@ -40,7 +40,12 @@ pub fn grouped(v: &Vector) -> Option<GroupedVector> {
     if factor.is_one() || (-&factor).is_one() {
         return None;
     }
-    let inner = components(&inner).ok()?;
+    // Each component with its own common factor out where that is shorter:
+    // `(m_1 + 2 m_2) a i`, not `(m_1 a + 2 m_2 a) i`.
+    let inner = components(&inner).ok()?.map(|c| match c.factor_terms() {
+        Ok(f) if f.operation_count() < c.operation_count() => f,
+        _ => c,
+    });
     let apart: usize = v.iter().map(Expr::operation_count).sum();
     let together =
         factor.operation_count() + 1 + inner.iter().map(Expr::operation_count).sum::<usize>();

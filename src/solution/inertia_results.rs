@@ -72,7 +72,7 @@ pub(super) fn frame<'a>(scene: &Scene, name: Name, frame: &'a PrincipalFrame) ->
                     Show::Both if exact => Show::Form,
                     shown => shown,
                 },
-                form: Some(Form::Vector(e, None)),
+                form: Some(Form::Vector(std::borrow::Cow::Borrowed(e), None)),
                 value,
                 unit: Some(NamedUnit::default()),
             }

@@ -10,7 +10,8 @@
 
 use super::engineer::StepValues;
 use super::result::{Form, Result};
-use crate::mechanics::derivation::{Relation, Step, Table, VectorRelation};
+use crate::algebra::{Symbol, Vector};
+use crate::mechanics::derivation::{Relation, Step, Table};
 use crate::print::grouped_vector::grouped;
 use crate::print::markup;
 use crate::print::{self, Notation};
@@ -103,9 +104,9 @@ pub enum Row<'a> {
     /// Relations `qₖ = value` of consecutive components of one named quantity, each with
     /// the same right-hand side (one or more).
     Equal(Vec<&'a Relation>),
-    /// A named vector, written as a vector (its common factor in front where that reads
-    /// shorter).
-    Vector(&'a VectorRelation, Form<'a>),
+    /// A named vector (its name in the LaTeX subset of titles), written as a vector (its
+    /// common factor in front where that reads shorter).
+    Vector(Cow<'a, str>, Form<'a>),
 }
 
 impl Row<'_> {
@@ -115,9 +116,9 @@ impl Row<'_> {
         match self.relations() {
             Some((first, _, _)) => print::render(&first.lhs, notation, first.axis),
             None => match (self, notation) {
-                (Row::Vector(v, _), Notation::Latex) => v.name.clone(),
-                (Row::Vector(v, _), Notation::Text) => markup::text(&format!("${}$", v.name)),
-                (Row::Vector(v, _), Notation::MathMl) => markup::mathml(&format!("${}$", v.name)),
+                (Row::Vector(name, _), Notation::Latex) => name.to_string(),
+                (Row::Vector(name, _), Notation::Text) => markup::text(&format!("${name}$")),
+                (Row::Vector(name, _), Notation::MathMl) => markup::mathml(&format!("${name}$")),
                 (Row::Relation(_) | Row::Equal(_), _) => String::new(),
             },
         }
@@ -201,13 +202,81 @@ fn others_text(others: &[&Relation], notation: Notation) -> String {
         .collect()
 }
 
-/// The rows of a step: its named vectors, then its relations' rows ([`rows`]).
+/// The rows of a step: its named vectors, then its relations' rows ([`rows`]), where the
+/// three components of one vector follow each other written as that vector (`ω = ω j`,
+/// not `ω_x = 0`, `ω_y = ω`, `ω_z = 0`).
 pub fn step_rows(step: &Step) -> Vec<Row<'_>> {
-    let vectors = step
+    fn vector_row<'a>(name: Cow<'a, str>, v: Cow<'a, Vector>) -> Row<'a> {
+        let grouped = grouped(&v);
+        Row::Vector(name, Form::Vector(v, grouped))
+    }
+    let mut shown: Vec<Row> = step
         .vectors
         .iter()
-        .map(|v| Row::Vector(v, Form::Vector(&v.value, grouped(&v.value))));
-    vectors.chain(rows(&step.relations)).collect()
+        .map(|v| vector_row(Cow::Borrowed(&v.name), Cow::Borrowed(&v.value)))
+        .collect();
+    let relations = &step.relations;
+    let (mut start, mut k) = (0, 0);
+    while k < relations.len() {
+        match one_vector(&relations[k..]) {
+            Some((name, v)) => {
+                shown.extend(rows(&relations[start..k]));
+                shown.push(vector_row(Cow::Owned(name), Cow::Owned(v)));
+                k += 3;
+                start = k;
+            }
+            None => k += 1,
+        }
+    }
+    shown.extend(rows(&relations[start..]));
+    shown
+}
+
+/// The vector whose x, y and z components the first three relations give, and its name,
+/// where they are `q_x`, `q_y`, `q_z` of one of the kinematic vectors the chapter writes in
+/// bold (ω, Ω, α and their rates; v̄, ā, r̄), none of them saying nothing. Moments of
+/// inertia are no vector, and the angular momentum and its rate stay in components: the
+/// moment equations take them one by one.
+fn one_vector(relations: &[Relation]) -> Option<(String, Vector)> {
+    let three = relations.get(..3)?;
+    let symbols: Vec<Symbol> = three
+        .iter()
+        .map(|r| r.lhs.as_symbol())
+        .collect::<Option<_>>()?;
+    let stem = |s: &Symbol| s.name().rsplit_once('_').map(|(stem, _)| stem);
+    let first = symbols[0];
+    let one_quantity = symbols
+        .iter()
+        .enumerate()
+        .all(|(k, s)| s.axis() == Some(k) && s.subscript().len() == 1 && stem(s) == stem(&first));
+    if !one_quantity || three.iter().any(is_tautology) {
+        return None;
+    }
+    let name = vector_latex(first, stem(&first)?)?;
+    Some((
+        name,
+        Vector::from_iterator(three.iter().map(|r| r.rhs.clone())),
+    ))
+}
+
+/// A kinematic vector's name in bold from a component's symbol: `omegadot_x` is
+/// `\dot{\boldsymbol{\omega}}`, `abar_x` is `\bar{\mathbf{a}}`; none for any other quantity.
+fn vector_latex(component: Symbol, stem: &str) -> Option<String> {
+    let base = component.base();
+    let barred = stem
+        .strip_prefix(base)
+        .is_some_and(|rest| rest.starts_with("bar"));
+    let name = match (base, barred) {
+        ("omega" | "w", false) => r"\boldsymbol{\omega}".to_string(),
+        ("Omega" | "alpha", false) => format!(r"\boldsymbol{{\{base}}}"),
+        ("v" | "a" | "r", true) => format!(r"\bar{{\mathbf{{{base}}}}}"),
+        _ => return None,
+    };
+    match component.dots() {
+        0 => Some(name),
+        1 => Some(format!(r"\dot{{{name}}}")),
+        _ => None,
+    }
 }
 
 /// The rows `relations` are shown as: tautologies left out (a quantity equal to itself, or
@@ -285,6 +354,46 @@ mod tests {
         assert_eq!(
             shown,
             ["I_x = m", "I_xy = I_yz = I_xz = 0", "H_x = m", "H_z = 0"]
+        );
+    }
+
+    /// `ω_x = 0`, `ω_y = w`, `ω_z = 0` is the vector `ω = w j`; `ā` likewise, accent and
+    /// all; the components of H stay rows, and so does a triple with a tautology.
+    #[test]
+    fn three_components_of_one_vector_are_that_vector() {
+        use crate::mechanics::derivation::Step;
+        let w = Expr::symbol("w");
+        let step = Step::new(
+            "kinematics",
+            vec![
+                relation("I_x", Expr::symbol("m")),
+                relation("omega_x", Expr::zero()),
+                relation("omega_y", w.clone()),
+                relation("omega_z", Expr::zero()),
+                relation("abar_x", -&w),
+                relation("abar_y", Expr::zero()),
+                relation("abar_z", Expr::zero()),
+                relation("H_x", Expr::zero()),
+                relation("H_y", w.clone()),
+                relation("H_z", Expr::zero()),
+                relation("vbar_x", Expr::symbol("vbar_x")),
+                relation("vbar_y", Expr::zero()),
+                relation("vbar_z", Expr::zero()),
+            ],
+        );
+        let rows = super::step_rows(&step);
+        let latex: Vec<String> = rows.iter().map(|r| r.one_line(Notation::Latex)).collect();
+        assert_eq!(
+            latex,
+            [
+                "I_x = m",
+                r"\boldsymbol{\omega} = \omega \mathbf{j}",
+                r"\bar{\mathbf{a}} = -\omega \mathbf{i}",
+                "H_x = 0",
+                r"H_y = \omega",
+                "H_z = 0",
+                r"\bar{v}_y = \bar{v}_z = 0",
+            ]
         );
     }
 

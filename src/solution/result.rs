@@ -59,7 +59,7 @@ pub(super) enum Form<'a> {
     Expr(Cow<'a, Expr>),
     /// A vector, with its common factor in front where that reads shorter ([`grouped`]):
     /// found once, shown by every notation.
-    Vector(&'a Vector, Option<GroupedVector>),
+    Vector(Cow<'a, Vector>, Option<GroupedVector>),
     Matrix(&'a Matrix),
     /// Words in the markup of titles: a precession's sense, no balance correction.
     Words(Cow<'a, str>),
@@ -279,7 +279,7 @@ fn computed<'a>(
             let zero = vec.iter().all(Expr::is_zero);
             Result::line(Line {
                 name,
-                form: Some(Form::Vector(vec, grouped(vec))),
+                form: Some(Form::Vector(Cow::Borrowed(vec), grouped(vec))),
                 show: match value {
                     Some(_) if zero => Show::Value,
                     Some(_) => Show::Both,

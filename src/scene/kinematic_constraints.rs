@@ -204,8 +204,11 @@ pub fn solve_constraints(
     steps.extend((!shown_already).then(|| Step {
         vectors: Vec::new(),
         table: None,
+        // An impulse problem has no rate of change and so no frame rate to speak of.
         title: if stated.frame_rate.is_some() {
             r"angular velocity $\boldsymbol{\omega}$ of the body and $\boldsymbol{\Omega}$ of the frame ($\boldsymbol{\Omega} \neq \boldsymbol{\omega}$: $[I]$ is constant in this frame)".into()
+        } else if !scene.impulses.is_empty() {
+            r"angular velocity $\boldsymbol{\omega}$".into()
         } else {
             r"angular velocity $\boldsymbol{\omega}$ (axes fixed in the body, $\boldsymbol{\Omega} = \boldsymbol{\omega}$)".into()
         },

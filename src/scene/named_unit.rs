@@ -4,7 +4,7 @@
 //! ([`NamedUnit::si`]); every page prints it from its names, never from text.
 
 use super::unit_text::{unit_powers, UnitTextError};
-use super::units::{exact_factor, unit_named, Dimension, Unit};
+use super::units::{exact_factor, table_name, unit_named, Dimension, Unit};
 use crate::algebra::Q;
 use std::fmt;
 
@@ -50,21 +50,23 @@ impl NamedUnit {
                 help: "write a unit of a physical quantity (m/s^2, kg·m²)".into(),
             };
             let exponent = i8::try_from(p.exponent).map_err(|_| too_large())?;
-            let named = unit_named(p.name).expect("unit_powers reads only the table's names");
+            let name = table_name(p.name).expect("unit_powers reads only the table's names");
+            let named = unit_named(name).expect("a name of the table");
             dimension = named
                 .dimension
                 .rational_power(&Q::from(i64::from(exponent)))
                 .and_then(|d| dimension.checked_times(d))
                 .ok_or_else(too_large)?;
-            powers.push((table_name(p.name), exponent));
+            powers.push((name, exponent));
         }
         Ok(NamedUnit { powers })
     }
 
     /// One unit of the table by its name (`J`, `deg`).
     pub fn named(name: &str) -> NamedUnit {
+        let name = table_name(name).expect("a unit of the table, named by the program");
         NamedUnit {
-            powers: vec![(table_name(name), 1)],
+            powers: vec![(name, 1)],
         }
     }
 
@@ -72,7 +74,7 @@ impl NamedUnit {
     /// `kg·m²`), else kilograms, metres and seconds with their powers.
     pub fn si(d: Dimension) -> NamedUnit {
         if let Some((_, names)) = SI_NAMES.iter().find(|(named, _)| *named == d) {
-            let powers = names.iter().map(|(n, e)| (table_name(n), *e)).collect();
+            let powers = names.to_vec();
             return NamedUnit { powers };
         }
         let powers = [("kg", d.mass), ("m", d.length), ("s", d.time)]
@@ -134,14 +136,6 @@ impl NamedUnit {
         };
         (part(|e| e > 0), part(|e| e < 0))
     }
-}
-
-/// The table's own spelling of a name it holds.
-fn table_name(name: &str) -> &'static str {
-    super::units::UNIT_NAMES
-        .split(", ")
-        .find(|n| *n == name)
-        .expect("a unit name read from the table")
 }
 
 /// How a notation writes a unit: a name, a name raised to a power, and the marks of a

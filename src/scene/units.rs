@@ -157,6 +157,14 @@ pub fn unit_named(name: &str) -> Option<Unit> {
     })
 }
 
+/// The table's own spelling of the unit `name`, where the table has it.
+pub fn table_name(name: &str) -> Option<&'static str> {
+    UNIT_TABLE
+        .iter()
+        .find(|(n, ..)| *n == name)
+        .map(|(n, ..)| *n)
+}
+
 /// The names accepted by [`unit_named`], for hints.
 pub const UNIT_NAMES: &str = "kg, g, slug, m, mm, cm, ft, in, s, min, N, kN, lb, J, rad, deg, rpm";
 

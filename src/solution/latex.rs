@@ -184,7 +184,8 @@ fn line(l: &Line, (first_em, width_em): (f64, f64), values_only: bool) -> String
     if name.is_empty() {
         return format!("& {}", form.render(Notation::Latex));
     }
-    let fits = first_em + form.width_em() <= width_em;
+    let form_em = form.width_em();
+    let fits = first_em + form_em <= width_em;
     let show = match l.show {
         Show::Both if values_only => Show::Value,
         show => show,
@@ -199,7 +200,7 @@ fn line(l: &Line, (first_em, width_em): (f64, f64), values_only: bool) -> String
             let tail = format!("= {value}");
             let on_its_row = matches!(form, Form::Matrix(_))
                 || lines.len() > 1
-                || first_em + form.width_em() + RELATION_EM + value_em > width_em;
+                || first_em + form_em + RELATION_EM + value_em > width_em;
             if on_its_row {
                 return format!("{} \\\\\n&{tail}", aligned_row(&name, &lines));
             }

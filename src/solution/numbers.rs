@@ -26,11 +26,6 @@ pub fn scene_dimensions(scene: &Scene) -> Dimensions {
     dims
 }
 
-/// The SI unit of `e`, when its dimension is consistent.
-pub fn unit(dims: &Dimensions, e: &Expr) -> Option<NamedUnit> {
-    dimension_of(e, dims).ok().map(NamedUnit::si)
-}
-
 /// Checks that no requested number is silently left out. A request written `find X in UNIT`
 /// must be in that kind of unit and every given it depends on must have a value; any request
 /// whose givens all have values must have a finite value (in the unit asked for). An answer

@@ -113,15 +113,16 @@ impl Row<'_> {
     /// The left of the row's first `=`: a relation's left-hand side, or the first of the
     /// equal quantities (the row aligns there, as its column does); a vector's name.
     pub fn left(&self, notation: Notation) -> String {
-        match self.relations() {
-            Some((first, _, _)) => print::render(&first.lhs, notation, first.axis),
-            None => match (self, notation) {
-                (Row::Vector(name, _), Notation::Latex) => name.to_string(),
-                (Row::Vector(name, _), Notation::Text) => markup::text(&format!("${name}$")),
-                (Row::Vector(name, _), Notation::MathMl) => markup::mathml(&format!("${name}$")),
-                (Row::Relation(_) | Row::Equal(_), _) => String::new(),
-            },
+        if let Row::Vector(name, _) = self {
+            return match notation {
+                Notation::Latex => name.to_string(),
+                Notation::Text => markup::text(&format!("${name}$")),
+                Notation::MathMl => markup::mathml(&format!("${name}$")),
+            };
         }
+        self.relations().map_or_else(String::new, |(first, _, _)| {
+            print::render(&first.lhs, notation, first.axis)
+        })
     }
 
     /// The width in ems of [`Row::left`] typeset, for the room of the right-hand sides.

@@ -65,7 +65,7 @@ fn powers_of_ten(text: &str) -> String {
 }
 
 /// The unit inside `\mathrm{…}`: products as `\cdot`, powers as superscripts.
-pub fn unit_letters(unit: &NamedUnit) -> String {
+fn unit_letters(unit: &NamedUnit) -> String {
     unit.written_with(&UnitMarks {
         name: str::to_string,
         power: |name, e| match e {

@@ -85,36 +85,34 @@ impl<'a> Analyser<'a> {
         Ok(Vector::from_iterator(relations.into_iter().skip(3)))
     }
 
-    /// A named impulse as the scene gives it; its unknown components are solved with the
-    /// others when the result is put in the givens.
     /// A named force's vector as written (its unknowns solved with the other results).
     pub(super) fn named_force(&self, at: Span, name: Symbol) -> Result<Vector, Diagnostic> {
-        self.scene
-            .forces
-            .iter()
-            .find(|f| f.name == name.name())
-            .map(|f| f.value.clone())
-            .ok_or_else(|| {
-                self.fail(
-                    at,
-                    format!("no force is named {}", name.name()),
-                    "name it: 'force R = R_x*i + R_y*j at (x, y, z)'",
-                )
-            })
+        let force = self.scene.forces.iter().find(|f| f.name == name.name());
+        self.named_vector(at, name, "force", force.map(|f| &f.value))
     }
 
+    /// A named impulse as the scene gives it; its unknown components are solved with the
+    /// others when the result is put in the givens.
     pub(super) fn named_impulse(&self, at: Span, name: Symbol) -> Result<Vector, Diagnostic> {
-        self.scene
-            .impulses
-            .iter()
-            .find(|i| i.name == Some(name))
-            .map(|i| i.value.clone())
-            .ok_or_else(|| {
-                self.fail(
-                    at,
-                    format!("no impulse is named {}", name.name()),
-                    "name it: 'impulse R = R_x*i + R_y*j at (x, y, z)'",
-                )
-            })
+        let impulse = self.scene.impulses.iter().find(|i| i.name == Some(name));
+        self.named_vector(at, name, "impulse", impulse.map(|i| &i.value))
+    }
+
+    /// The vector of the `kind` (force, impulse) named `name`, or the error at `at` that
+    /// says how to name one.
+    fn named_vector(
+        &self,
+        at: Span,
+        name: Symbol,
+        kind: &str,
+        found: Option<&Vector>,
+    ) -> Result<Vector, Diagnostic> {
+        found.cloned().ok_or_else(|| {
+            self.fail(
+                at,
+                format!("no {kind} is named {}", name.name()),
+                format!("name it: '{kind} R = R_x*i + R_y*j at (x, y, z)'"),
+            )
+        })
     }
 }

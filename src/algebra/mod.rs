@@ -41,6 +41,7 @@ mod square_rewrite;
 mod subs;
 mod sum_of_products;
 mod symbol;
+mod tangent_quotient;
 mod together;
 mod traversal;
 mod trig_simplify;

@@ -212,7 +212,11 @@ fn component(
     domains: &Domains,
     seed: u64,
 ) -> Component {
-    let difference = &correct - &claimed;
+    // Tangents as quotients, so that `tan β = sin β / cos β` and `1 + tan² = sec²` reduce.
+    let difference = match (correct.tangents_as_quotients(), claimed.tangents_as_quotients()) {
+        (Ok(c), Ok(s)) => &c - &s,
+        _ => &correct - &claimed,
+    };
     let expanded = expanded_numerator(&difference);
     let opinion = second_opinion(&correct, &claimed, domains, seed);
     let exact = match (&expanded, &opinion) {

@@ -13,7 +13,7 @@
 
 use super::diagnostic::Diagnostic;
 use super::expression::{lower_expression, statement_of, statement_sides, to_ast, Statement};
-use super::lower::{Ast, Node};
+use super::lower::{Ast, Node, RECIPROCAL_TRIG};
 use crate::algebra::{reads_as_several_letters, Func, Symbol};
 
 /// A statement as written, in the two notations.
@@ -208,11 +208,9 @@ impl Writer<'_> {
                 self.bare(out, x);
                 out.push_str(r"\right|");
             }
-            (_, [x], Notation::Latex) if Func::from_name(name).is_some() => {
+            (_, [x], Notation::Latex) if operator_name(name).is_some() => {
                 out.push('\\');
-                if let Some(f) = Func::from_name(name) {
-                    out.push_str(f.page_name());
-                }
+                out.push_str(operator_name(name).unwrap_or(name));
                 self.function_argument(out, x);
             }
             _ => {
@@ -269,16 +267,14 @@ impl Writer<'_> {
 
     fn power(&self, out: &mut String, base: &Node, exponent: &Node) {
         let function = match &base.ast {
-            Ast::Call(name, args) if args.len() == 1 => {
-                Func::from_name(name).map(|f| (f, &args[0]))
-            }
+            Ast::Call(name, args) if args.len() == 1 => operator_name(name).map(|f| (f, &args[0])),
             _ => None,
         };
         match (function, self.notation) {
             // `\sin^2 t`: the exponent on the function's name.
-            (Some((f, argument)), Notation::Latex) if f != Func::Abs => {
+            (Some((f, argument)), Notation::Latex) => {
                 out.push('\\');
-                out.push_str(f.page_name());
+                out.push_str(f);
                 self.superscript(out, exponent);
                 self.function_argument(out, argument);
             }
@@ -504,10 +500,23 @@ fn bare_function(node: &Node) -> bool {
     }
 }
 
+/// The LaTeX operator (without its backslash) of a function written `name(x)`: `sin`,
+/// `arccos`, `cot`; none for `abs` and `sqrt`, which are not written as operators.
+fn operator_name(name: &str) -> Option<&str> {
+    match Func::from_name(name) {
+        Some(Func::Abs) => None,
+        Some(f) => Some(f.page_name()),
+        None => RECIPROCAL_TRIG
+            .iter()
+            .find(|(n, _, _)| *n == name)
+            .map(|(n, _, _)| *n),
+    }
+}
+
 fn is_function(node: &Node) -> bool {
     match &node.ast {
         Ast::Power(base, _) => is_function(base),
-        Ast::Call(name, _) => name != "abs" && Func::from_name(name).is_some(),
+        Ast::Call(name, _) => operator_name(name).is_some(),
         _ => false,
     }
 }

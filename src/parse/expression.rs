@@ -373,7 +373,7 @@ fn primary(p: Pair<Rule>, source_name: &str, source: &str) -> Ast {
                 return Ast::Error(
                     Diagnostic::at(source_name, source, start, end, format!("unknown function {name}"))
                         .with_help(format!(
-                            "the functions are sin, cos, tan, acos, sqrt, abs, cross(a, b) and dot(a, b); for a product write {name}*(...)"
+                            "the functions are sin, cos, tan, cot, sec, csc, acos, sqrt, abs, cross(a, b) and dot(a, b); for a product write {name}*(...)"
                         )),
                 );
             }

@@ -69,9 +69,21 @@ const CROSS: &str = "cross";
 /// `dot(a, b)`, the scalar product.
 const DOT: &str = "dot";
 
-/// Whether `name(...)` is a call of a known function: one of [`Func`], or the three above.
+/// `cot x = cos x / sin x`, `sec x = 1 / cos x`, `csc x = 1 / sin x`: names people write,
+/// lowered to the quotient they stand for (no function of their own), each as
+/// `(numerator, denominator)` of its argument.
+pub(super) const RECIPROCAL_TRIG: [(&str, Option<Func>, Func); 3] = [
+    ("cot", Some(Func::Cos), Func::Sin),
+    ("sec", None, Func::Cos),
+    ("csc", None, Func::Sin),
+];
+
+/// Whether `name(...)` is a call of a known function: one of [`Func`], the three above, or
+/// a reciprocal of [`RECIPROCAL_TRIG`].
 pub(super) fn is_function(name: &str) -> bool {
-    Func::from_name(name).is_some() || [SQRT, CROSS, DOT].contains(&name)
+    Func::from_name(name).is_some()
+        || [SQRT, CROSS, DOT].contains(&name)
+        || RECIPROCAL_TRIG.iter().any(|(n, _, _)| *n == name)
 }
 
 /// Reads one parse tree into an [`Expr`]: the source it was read from, for located
@@ -354,6 +366,14 @@ impl Lowering<'_> {
             return Err(claim_vectors::function_of_a_vector(
                 self, name, whole, arg_span,
             ));
+        }
+        if let Some((_, numerator, denominator)) = RECIPROCAL_TRIG.iter().find(|r| r.0 == name) {
+            let top = numerator.map_or_else(Expr::one, |f| f.apply(arg.clone()));
+            return denominator
+                .apply(arg)
+                .checked_pow(&Expr::int(-1))
+                .map(|reciprocal| &top * &reciprocal)
+                .map_err(|e| self.algebra_error(e, Operation::Division, whole));
         }
         match Func::from_name(name) {
             Some(f) => f

@@ -20,11 +20,11 @@ fn bench(c: &mut Criterion) {
     let contexts = [
         (
             "general",
-            Context::general(false).expect("the general body"),
+            Context::general(false, false).expect("the general body"),
         ),
         (
             "principal",
-            Context::general(true).expect("the principal body"),
+            Context::general(true, false).expect("the principal body"),
         ),
     ];
     for line in claims

@@ -19,10 +19,10 @@
 use crate::algebra::{AlgebraError, Domains, Expr, Symbol, Vector};
 use crate::mechanics::catalogue::derive_general;
 use crate::parse::claim::Name;
-use crate::parse::Diagnostic;
 use crate::scene::model::{Quantity, Request, Span};
 use crate::scene::units::{dimension_of, Dimension, Dimensions};
-use crate::scene::{analyse, Scene, Value};
+use crate::scene::analysis::values_of;
+use crate::scene::{Scene, Value};
 use std::collections::HashMap;
 
 /// What a name stands for in a context.
@@ -98,8 +98,11 @@ fn general_dimensions() -> Dimensions {
 }
 
 impl Context {
-    /// A general body in body-fixed axes (Ω = ω); `principal`: every product of inertia zero.
-    pub fn general(principal: bool) -> Result<Context, AlgebraError> {
+    /// A general body in body-fixed axes (Ω = ω); `principal`: every product of inertia
+    /// zero; `fixed_point`: the body turns about a fixed point O (or its mass centre is at
+    /// rest), v̄ = 0 and the axes, moments of inertia and angular momentum are about that
+    /// point (`T = ½ ωᵀ[I_O]ω`, `H_O = [I_O]ω`).
+    pub fn general(principal: bool, fixed_point: bool) -> Result<Context, AlgebraError> {
         let mut c = Context::empty("a general body in body-fixed axes", general_dimensions());
         if principal {
             c.description.push_str(", principal axes");
@@ -141,10 +144,13 @@ impl Context {
             );
         }
         for axis in ["x", "y", "z"] {
+            // Body-fixed axes: the frame's Ω is ω.
             for (alias, target) in [
                 ("omega", "w"),
+                ("Omega", "w"),
                 ("alpha", "wdot"),
                 ("a", "wdot"),
+                ("omegadot", "wdot"),
                 ("v", "vbar"),
             ] {
                 c.alias(&format!("{alias}_{axis}"), &format!("{target}_{axis}"));
@@ -154,7 +160,36 @@ impl Context {
         let speed = expr_sum_of_squares(["vbar_x", "vbar_y", "vbar_z"])
             .checked_pow(&Expr::rational(1, 2))?;
         c.meanings.insert("v".into(), Meaning::Alias(speed));
+        if fixed_point {
+            c.about_fixed_point()?;
+        }
         Ok(c)
+    }
+
+    /// The general body turned about a fixed point O: v̄ = 0 in every derived value, and the
+    /// angular momentum and its rate named about O (the moments of inertia are O's).
+    fn about_fixed_point(&mut self) -> Result<(), AlgebraError> {
+        self.description = format!("{} about a fixed point O", self.description);
+        let at_rest = |s: Symbol| {
+            matches!(s.name(), "vbar_x" | "vbar_y" | "vbar_z").then(Expr::zero)
+        };
+        for meaning in self.meanings.values_mut() {
+            if let Meaning::Derived(e) | Meaning::Alias(e) = meaning {
+                *e = e.subs(&at_rest)?;
+            }
+        }
+        for name in ["vbar_x", "vbar_y", "vbar_z"] {
+            self.meanings.insert(name.into(), Meaning::Alias(Expr::zero()));
+        }
+        let about_g = "about G: with a fixed point the axes are at O; write H_O, Hdot_O";
+        for (g, o) in [("H_G", "H_O"), ("Hdot_G", "Hdot_O")] {
+            if let Some(Meaning::Derived(e)) = self.meanings.remove(g) {
+                self.derived(o, e);
+            }
+            self.meanings
+                .insert(g.into(), Meaning::Underivable(about_g.into()));
+        }
+        Ok(())
     }
 
     /// Rotation about the fixed axis z at `w`, `alpha` (§18.7): the moments and the bearings'
@@ -171,6 +206,19 @@ impl Context {
         }
         c.alias("a", "alpha");
         c.alias("omega", "w");
+        // H_O = [I_O]ω and T = ½ ωᵀ[I_O]ω of the general body, turning at ω = w k about O.
+        let about_axis = |s: Symbol| match s.name() {
+            "w_x" | "w_y" | "vbar_x" | "vbar_y" | "vbar_z" => Some(Expr::zero()),
+            "w_z" => Some(Expr::symbol("w")),
+            _ => None,
+        };
+        let h = Context::derive_vector("H_G", false)?.map(|e| {
+            e.subs(&about_axis)
+                .expect("substituting symbols and zeros cannot divide by zero")
+        });
+        c.components("H", &h);
+        c.derived("H_O", unit_vector_sum(&h));
+        c.derived("T", Context::derive_scalar("T", false)?.subs(&about_axis)?);
         Ok(c)
     }
 
@@ -212,34 +260,66 @@ impl Context {
         }
         let impulses = scene.impulses.iter().filter_map(|i| i.name);
         quantities.extend(impulses.map(|s| (s.name().to_string(), Quantity::NamedImpulse(s))));
-        for (name, quantity) in quantities {
-            // Once the command's work budget is spent, every derivation left would be
-            // refused for it: the context is refused whole (`work::Budget::run`).
-            if crate::algebra::work::check().is_err() {
-                break;
-            }
-            let meaning = match derive_in(scene, &name, quantity) {
-                Ok(Value::Scalar(e)) => Meaning::Derived(e),
-                Ok(Value::Vector(v)) => {
-                    if quantity == Quantity::AngularMomentumAboutG {
-                        c.components("H", &v);
-                    }
-                    Meaning::Derived(unit_vector_sum(&v))
-                }
-                Ok(Value::Balance(_)) => {
-                    Meaning::Underivable("a balance is not a quantity of a claim".into())
-                }
-                Ok(Value::Precession(_)) => Meaning::Underivable(
-                    "the sense of a precession is not a quantity of a claim".into(),
-                ),
-                Ok(Value::Tensor(_) | Value::Principal(_)) => Meaning::Underivable(
-                    "a tensor or a frame of axes is not a value a claim can hold".into(),
-                ),
+        let requests: Vec<Request> = quantities
+            .iter()
+            .map(|(name, quantity)| request(scene, name, *quantity))
+            .collect();
+        // One analyser for every quantity: what several need is derived once.
+        for ((name, quantity), values) in quantities.iter().zip(values_of(scene, &requests)) {
+            let meaning = match values {
+                Ok(values) if values.len() > 1 => Meaning::Underivable(format!(
+                    "{name} has {} values, one in each solution of the scene's equations; a claim about a quantity with several values is not checked",
+                    values.len()
+                )),
+                Ok(mut values) => match values.pop() {
+                    Some(value) => c.meaning_of(name, *quantity, value, scene),
+                    None => continue,
+                },
                 Err(d) => Meaning::Underivable(d.message),
             };
-            c.meanings.insert(name, meaning);
+            c.meanings.insert(name.clone(), meaning);
         }
         c
+    }
+
+    /// What a scene's derived value means in a claim; a vector's components are named too
+    /// (`omega_x`, `abar_y`, `H_z`), and an inertia tensor's moments and products (`I_x`,
+    /// `I_xy`, and for an axisymmetric body `I` and `I'`), where no given or unknown has the
+    /// name.
+    fn meaning_of(&mut self, name: &str, quantity: Quantity, value: Value, scene: &Scene) -> Meaning {
+        // The moments a claim names are about the fixed point, else about G.
+        let reference = if scene.fixed_point {
+            Quantity::InertiaAboutO
+        } else {
+            Quantity::InertiaAboutG
+        };
+        let axisymmetric = scene.euler_angles.is_some();
+        match value {
+            Value::Scalar(e) => Meaning::Derived(e),
+            Value::Vector(v) => {
+                if let Some(base) = component_base(quantity) {
+                    self.components(base, &v);
+                }
+                Meaning::Derived(unit_vector_sum(&v))
+            }
+            Value::Tensor(m) => {
+                if quantity == reference {
+                    self.inertia_names(&m, axisymmetric);
+                }
+                Meaning::Underivable(format!(
+                    "{name} is a tensor, not a value a claim can hold; its moments and products are I_x, I_y, I_z, I_xy, I_yz, I_xz"
+                ))
+            }
+            Value::Balance(_) => {
+                Meaning::Underivable("a balance is not a quantity of a claim".into())
+            }
+            Value::Precession(_) => Meaning::Underivable(
+                "the sense of a precession is not a quantity of a claim".into(),
+            ),
+            Value::Principal(_) => Meaning::Underivable(
+                "a frame of principal axes is not a value a claim can hold".into(),
+            ),
+        }
     }
 
     fn empty(description: &str, dimensions: Dimensions) -> Context {
@@ -276,9 +356,38 @@ impl Context {
     }
 
     /// `base_x`, `base_y`, `base_z` for the components of `v`.
+    /// A name the context gives a derived value, unless a given or unknown has it.
+    fn derived_unless_taken(&mut self, name: &str, value: Expr) {
+        if !self.dimensions.contains_key(&Symbol::new(name)) {
+            self.derived(name, value);
+        }
+    }
+
+    /// `base_x`, `base_y`, `base_z` for the components of `v`.
     fn components(&mut self, base: &str, v: &Vector) {
         for (axis, value) in ["x", "y", "z"].iter().zip(v.iter()) {
-            self.derived(&format!("{base}_{axis}"), value.clone());
+            self.derived_unless_taken(&format!("{base}_{axis}"), value.clone());
+        }
+    }
+
+    /// The moments and products of inertia of a tensor in the chapter's convention
+    /// (`[I]` has `−I_xy` off the diagonal): `I_x`, `I_y`, `I_z`, `I_xy`, `I_yz`, `I_xz`; and for
+    /// an axisymmetric body about z, the textbook's `I` (about the axis) and `I'` (across it).
+    fn inertia_names(&mut self, tensor: &crate::algebra::Matrix, axisymmetric: bool) {
+        let entry = |r: usize, c: usize| tensor[(r, c)].clone();
+        for (name, value) in [
+            ("I_x", entry(0, 0)),
+            ("I_y", entry(1, 1)),
+            ("I_z", entry(2, 2)),
+            ("I_xy", -entry(0, 1)),
+            ("I_yz", -entry(1, 2)),
+            ("I_xz", -entry(0, 2)),
+        ] {
+            self.derived_unless_taken(name, value);
+        }
+        if axisymmetric {
+            self.derived_unless_taken("I", entry(2, 2));
+            self.derived_unless_taken("I'", entry(0, 0));
         }
     }
 
@@ -293,7 +402,10 @@ impl Context {
         match meaning {
             Some(Meaning::Derived(e) | Meaning::Alias(e)) => return Name::Derived(e.clone()),
             Some(Meaning::Underivable(why)) => {
-                return Name::Unknown(format!("the scene cannot derive {written}: {why}"))
+                return Name::Unknown(format!(
+                    "{} cannot derive {written}: {why}",
+                    self.description
+                ))
             }
             None => {}
         }
@@ -301,7 +413,8 @@ impl Context {
             return Name::Symbol;
         }
         let base = written.split('_').next().unwrap_or(written);
-        let misspelt = written.contains('_') && CHAPTER_BASES.contains(&base);
+        let misspelt = written.contains('_') && CHAPTER_BASES.contains(&base)
+            || self.spelt_like_known(written);
         if self.free_symbols && !misspelt {
             return Name::Symbol;
         }
@@ -318,15 +431,24 @@ impl Context {
         matches!(meaning, Some(Meaning::Alias(_)))
     }
 
-    /// The help for an unknown name: the known names nearest to it.
-    fn suggestion(&self, written: &str) -> String {
-        let fold = |s: &str| s.to_lowercase().replace('_', "");
-        let known = self
-            .meanings
+    /// Whether `written` is a known name spelt otherwise, in case or underscores (`Ix` for
+    /// `I_x`, `hx` for `H_x`): refused with the suggestion, never a new symbol.
+    fn spelt_like_known(&self, written: &str) -> bool {
+        let folded = fold(written);
+        self.known_names().any(|k| k != written && fold(k) == folded)
+    }
+
+    fn known_names(&self) -> impl Iterator<Item = &str> {
+        self.meanings
             .keys()
             .map(String::as_str)
-            .chain(self.dimensions.keys().map(|s| s.name()));
-        let mut near: Vec<&str> = known
+            .chain(self.dimensions.keys().map(|s| s.name()))
+    }
+
+    /// The help for an unknown name: the known names nearest to it.
+    fn suggestion(&self, written: &str) -> String {
+        let mut near: Vec<&str> = self
+            .known_names()
             .filter(|k| fold(k) == fold(written) || close(k, written))
             .collect();
         near.sort_unstable();
@@ -368,6 +490,11 @@ impl Context {
     }
 }
 
+/// A name in lower case without underscores: `I_x` and `Ix` fold alike.
+fn fold(name: &str) -> String {
+    name.to_lowercase().replace('_', "")
+}
+
 /// Whether two names are one edit apart (a letter added, dropped or changed).
 fn close(a: &str, b: &str) -> bool {
     let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
@@ -384,10 +511,9 @@ fn close(a: &str, b: &str) -> bool {
     a.len().max(b.len()) - prefix - suffix <= 1
 }
 
-/// One quantity of a scene, derived by its analysis as `find NAME` would.
-fn derive_in(scene: &Scene, name: &str, quantity: Quantity) -> Result<Value, Diagnostic> {
-    let mut alone = scene.clone();
-    alone.requests = vec![Request {
+/// `find NAME` for a quantity, at the end of the scene's text.
+fn request(scene: &Scene, name: &str, quantity: Quantity) -> Request {
+    Request {
         quantity,
         name: name.to_string(),
         span: Span {
@@ -396,26 +522,17 @@ fn derive_in(scene: &Scene, name: &str, quantity: Quantity) -> Result<Value, Dia
         },
         unit: None,
         solution: None,
-    }];
-    let analysis = analyse(&alone)?;
-    if analysis.results.len() > 1 {
-        let end = Span {
-            start: scene.source.len(),
-            end: scene.source.len(),
-        };
-        return Err(scene.error_at(
-            end,
-            format!(
-                "{name} has {} values, one in each solution of the scene's equations",
-                analysis.results.len()
-            ),
-            "a claim about a quantity with several values is not checked: make a claim about a quantity the solutions share, or give the multi-valued unknown a value",
-        ));
     }
-    Ok(analysis
-        .results
-        .into_iter()
-        .next()
-        .map(|(_, v)| v)
-        .expect("one result per request"))
+}
+
+/// The base of the names of a derived vector's components in a claim (`omega_x`).
+fn component_base(quantity: Quantity) -> Option<&'static str> {
+    match quantity {
+        Quantity::AngularVelocity => Some("omega"),
+        Quantity::MassCentreVelocity => Some("vbar"),
+        Quantity::MassCentreAcceleration => Some("abar"),
+        Quantity::AngularMomentumAboutG => Some("H"),
+        Quantity::RateOfAngularMomentum => Some("Hdot"),
+        _ => None,
+    }
 }

@@ -1,4 +1,4 @@
-//! `kinetics check [SCENE] [--principal | --fixed-axis] --claim "<eq>"... [--claims FILE|-]
+//! `kinetics check [SCENE] [--principal] [--fixed-point | --fixed-axis] --claim "<eq>"... [--claims FILE|-]
 //! [--format text|latex|json]`: hand-written claims checked against the derivations.
 //!
 //! Exit status: 0 when every claim holds, 1 when one differs, 3 when none differs and one is
@@ -19,7 +19,7 @@ use std::process::ExitCode;
 
 #[derive(clap::Args)]
 #[command(
-    after_help = "Example:\n  kinetics check --principal --claim \"T = 1/2 (I_x w_x^2 + I_y w_y^2 + I_z w_z^2)\""
+    after_help = "Example:\n  kinetics check --principal --fixed-point --claim \"T = 1/2 (I_x w_x^2 + I_y w_y^2 + I_z w_z^2)\""
 )]
 pub struct Args {
     /// A scene file whose givens, unknowns and derived quantities the claims may use;
@@ -34,6 +34,10 @@ pub struct Args {
     /// Principal axes: every product of inertia is zero.
     #[arg(long, conflicts_with_all = ["scene", "fixed_axis"])]
     pub principal: bool,
+    /// The body turns about a fixed point O (or its mass centre G is at rest): v̄ = 0, and
+    /// the axes, moments of inertia and H_O are about that point.
+    #[arg(long, conflicts_with_all = ["scene", "fixed_axis"])]
+    pub fixed_point: bool,
     /// Rotation about the fixed axis z at w, alpha (§18.7).
     #[arg(long, conflicts_with = "scene")]
     pub fixed_axis: bool,
@@ -76,7 +80,7 @@ fn context(args: &Args) -> Result<Context, CliError> {
     let general = if args.fixed_axis {
         Context::fixed_axis()
     } else {
-        Context::general(args.principal)
+        Context::general(args.principal, args.fixed_point)
     };
     general.map_err(|source| CliError::Algebra { name: None, source })
 }

@@ -43,7 +43,7 @@ fn verdict(context: &Context, claim: &str) -> Verdict {
 
 #[test]
 fn the_general_body_names_stand_for_the_chapter_definitions() {
-    let c = Context::general(false).expect("the general body");
+    let c = Context::general(false, false).expect("the general body");
     // {H_G} = [I]{ω} with the chapter's convention: products of inertia with a minus.
     let h = [
         "I_x w_x - I_xy w_y - I_xz w_z",
@@ -81,7 +81,7 @@ fn the_general_body_names_stand_for_the_chapter_definitions() {
 
 #[test]
 fn principal_euler_and_fixed_axis_moments_are_the_textbook_ones() {
-    let p = Context::general(true).expect("principal");
+    let p = Context::general(true, false).expect("principal");
     assert_same(
         &derived(&p, "M_x"),
         &expr("I_x wdot_x - (I_y - I_z) w_y w_z"),
@@ -101,7 +101,7 @@ fn principal_euler_and_fixed_axis_moments_are_the_textbook_ones() {
 
 #[test]
 fn multiples_and_rearrangements_hold() {
-    let p = Context::general(true).expect("principal");
+    let p = Context::general(true, false).expect("principal");
     for claim in [
         "2 T = m (vbar_x^2 + vbar_y^2 + vbar_z^2) + I_x w_x^2 + I_y w_y^2 + I_z w_z^2",
         "L M_x = L I_x wdot_x - L (I_y - I_z) w_y w_z",
@@ -115,7 +115,7 @@ fn multiples_and_rearrangements_hold() {
 
 #[test]
 fn identities_the_algebra_reduces_hold_and_slips_differ() {
-    let g = Context::general(false).expect("general");
+    let g = Context::general(false, false).expect("general");
     assert_eq!(verdict(&g, "sin(2 t) = 2 sin(t) cos(t)"), Verdict::Holds);
     assert_eq!(verdict(&g, "sin(t)^2 = 1 - cos(t)^2"), Verdict::Holds);
     // m is a mass, positive: √(m²) = m; x is a coordinate: √(x²) = |x|, not x.
@@ -129,7 +129,7 @@ fn identities_the_algebra_reduces_hold_and_slips_differ() {
 
 #[test]
 fn what_only_evaluation_sees_is_undecided_never_differs() {
-    let g = Context::general(false).expect("general");
+    let g = Context::general(false, false).expect("general");
     // sin(t + π) = −sin(t): true, but the algebra does not shift angles by π.
     let report = check(&g, "test", "sin(t + pi) = -sin(t)").expect("reads");
     assert_eq!(report.verdict, Verdict::Undecided, "{report:?}");
@@ -182,7 +182,7 @@ fn a_claim_written_with_the_givens_values_is_decided_at_them() {
 
 #[test]
 fn dimensions_judge_what_the_student_wrote() {
-    let p = Context::general(true).expect("principal");
+    let p = Context::general(true, false).expect("principal");
     // |u| has the unit of u; exponents past a unit's range are not judged, never an error.
     assert_eq!(verdict(&p, "abs(v) = v"), Verdict::Holds);
     assert_eq!(verdict(&p, "w_x^129 = w_x^129"), Verdict::Holds);

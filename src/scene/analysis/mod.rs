@@ -166,6 +166,24 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
     Ok(analysis)
 }
 
+/// The value of each request (one a solution of the scene's equations), all asked of one
+/// analyser: what several need (the body, the kinematics, the unknowns) is derived once, and
+/// a request the scene cannot derive has its error while the others have their values. No
+/// plan is kept or simplified: this is for the checker's context, which asks for every
+/// quantity a scene names.
+pub fn values_of(scene: &Scene, requests: &[Request]) -> Vec<Result<Vec<Value>, Diagnostic>> {
+    let mut a = Analyser::new(scene);
+    requests
+        .iter()
+        .map(|request| {
+            let raw = a.request(request)?;
+            let value = a.in_givens(request.span, raw.clone())?;
+            let others = a.in_other_solutions(request, &raw, &value)?;
+            Ok(std::iter::once(value).chain(others).collect())
+        })
+        .collect()
+}
+
 /// The body's mass, mass centre (from O) and centroidal inertia, for callers that need the
 /// body but no derivation (the simulator); an error stands at the first body statement.
 pub fn centroidal_body(scene: &Scene) -> Result<MassProperties, Diagnostic> {

@@ -30,7 +30,7 @@ impl Expr {
                     .map(Expr::tangents_as_quotients)
                     .collect::<Result<Vec<_>, _>>()?,
             ),
-            View::Pow(b, e) => b.tangents_as_quotients()?.checked_pow(&e)?,
+            View::Pow(b, e) => b.tangents_as_quotients()?.checked_pow(e)?,
             View::Func(Func::Tan, a) => {
                 let a = a.tangents_as_quotients()?;
                 let cosine = Func::Cos.apply(a.clone());

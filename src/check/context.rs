@@ -19,9 +19,9 @@
 use crate::algebra::{AlgebraError, Domains, Expr, Symbol, Vector};
 use crate::mechanics::catalogue::derive_general;
 use crate::parse::claim::Name;
+use crate::scene::analysis::values_of;
 use crate::scene::model::{Quantity, Request, Span};
 use crate::scene::units::{dimension_of, Dimension, Dimensions};
-use crate::scene::analysis::values_of;
 use crate::scene::{Scene, Value};
 use std::collections::HashMap;
 
@@ -170,16 +170,16 @@ impl Context {
     /// angular momentum and its rate named about O (the moments of inertia are O's).
     fn about_fixed_point(&mut self) -> Result<(), AlgebraError> {
         self.description = format!("{} about a fixed point O", self.description);
-        let at_rest = |s: Symbol| {
-            matches!(s.name(), "vbar_x" | "vbar_y" | "vbar_z").then(Expr::zero)
-        };
+        let at_rest =
+            |s: Symbol| matches!(s.name(), "vbar_x" | "vbar_y" | "vbar_z").then(Expr::zero);
         for meaning in self.meanings.values_mut() {
             if let Meaning::Derived(e) | Meaning::Alias(e) = meaning {
                 *e = e.subs(&at_rest)?;
             }
         }
         for name in ["vbar_x", "vbar_y", "vbar_z"] {
-            self.meanings.insert(name.into(), Meaning::Alias(Expr::zero()));
+            self.meanings
+                .insert(name.into(), Meaning::Alias(Expr::zero()));
         }
         let about_g = "about G: with a fixed point the axes are at O; write H_O, Hdot_O";
         for (g, o) in [("H_G", "H_O"), ("Hdot_G", "Hdot_O")] {
@@ -286,7 +286,13 @@ impl Context {
     /// (`omega_x`, `abar_y`, `H_z`), and an inertia tensor's moments and products (`I_x`,
     /// `I_xy`, and for an axisymmetric body `I` and `I'`), where no given or unknown has the
     /// name.
-    fn meaning_of(&mut self, name: &str, quantity: Quantity, value: Value, scene: &Scene) -> Meaning {
+    fn meaning_of(
+        &mut self,
+        name: &str,
+        quantity: Quantity,
+        value: Value,
+        scene: &Scene,
+    ) -> Meaning {
         // The moments a claim names are about the fixed point, else about G.
         let reference = if scene.fixed_point {
             Quantity::InertiaAboutO
@@ -435,7 +441,8 @@ impl Context {
     /// `I_x`, `hx` for `H_x`): refused with the suggestion, never a new symbol.
     fn spelt_like_known(&self, written: &str) -> bool {
         let folded = fold(written);
-        self.known_names().any(|k| k != written && fold(k) == folded)
+        self.known_names()
+            .any(|k| k != written && fold(k) == folded)
     }
 
     fn known_names(&self) -> impl Iterator<Item = &str> {

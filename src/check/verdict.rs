@@ -213,7 +213,10 @@ fn component(
     seed: u64,
 ) -> Component {
     // Tangents as quotients, so that `tan β = sin β / cos β` and `1 + tan² = sec²` reduce.
-    let difference = match (correct.tangents_as_quotients(), claimed.tangents_as_quotients()) {
+    let difference = match (
+        correct.tangents_as_quotients(),
+        claimed.tangents_as_quotients(),
+    ) {
         (Ok(c), Ok(s)) => &c - &s,
         _ => &correct - &claimed,
     };

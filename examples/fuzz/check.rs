@@ -27,8 +27,8 @@ pub const RUNS: [&str; 4] = [
 const LABEL: &str = "claim 1";
 
 thread_local! {
-    static GENERAL: Context = Context::general(false).expect("the general body derives");
-    static PRINCIPAL: Context = Context::general(true).expect("principal axes derive");
+    static GENERAL: Context = Context::general(false, false).expect("the general body derives");
+    static PRINCIPAL: Context = Context::general(true, false).expect("principal axes derive");
     static FIXED_AXIS: Context = Context::fixed_axis().expect("the fixed axis derives");
     static IN_SCENE: Context = scene_context();
 }

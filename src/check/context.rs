@@ -22,6 +22,7 @@ use crate::parse::claim::Name;
 use crate::scene::analysis::values_of;
 use crate::scene::model::{Quantity, Request, Span};
 use crate::scene::units::{dimension_of, Dimension, Dimensions};
+use crate::scene::units_in_math::{marker, marker_dimension};
 use crate::scene::{Scene, Value};
 use std::collections::HashMap;
 
@@ -50,7 +51,13 @@ pub struct Context {
     domains: Domains,
     /// The exact values (in SI) of a scene's givens that have one.
     values: HashMap<Symbol, Expr>,
+    /// How close a claim written in numbers must come to the exact value, relative to it.
+    relative_tolerance: f64,
 }
+
+/// The relative tolerance of a claim in numbers unless told otherwise: 0.5 %, a number
+/// rounded to three significant figures.
+pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 0.005;
 
 /// The chapter's bases whose subscripts a general-body claim must spell right.
 const CHAPTER_BASES: [&str; 10] = [
@@ -336,6 +343,7 @@ impl Context {
             free_symbols: true,
             domains: Domains::chapter_defaults(),
             values: HashMap::new(),
+            relative_tolerance: DEFAULT_RELATIVE_TOLERANCE,
         }
     }
 
@@ -437,12 +445,15 @@ impl Context {
         matches!(meaning, Some(Meaning::Alias(_)))
     }
 
-    /// Whether `written` is a known name spelt otherwise, in case or underscores (`Ix` for
-    /// `I_x`, `hx` for `H_x`): refused with the suggestion, never a new symbol.
+    /// Whether `written` is a known subscripted name with its underscore left out (`Ix` for
+    /// `I_x`, `hx` for `H_x`): refused with the suggestion, never a new symbol. (Names that
+    /// differ in case alone, `l` and `L`, are two symbols.)
     fn spelt_like_known(&self, written: &str) -> bool {
         let folded = fold(written);
-        self.known_names()
-            .any(|k| k != written && fold(k) == folded)
+        !written.contains('_')
+            && self
+                .known_names()
+                .any(|k| k.contains('_') && fold(k) == folded)
     }
 
     fn known_names(&self) -> impl Iterator<Item = &str> {
@@ -471,14 +482,41 @@ impl Context {
         }
     }
 
-    /// A symbol's dimension, when the context knows it.
+    /// A symbol's dimension, when the context knows it (a unit's marker, [`Context::unit`],
+    /// has its unit's).
     pub fn dimension(&self, s: Symbol) -> Option<Dimension> {
-        self.dimensions.get(&s).copied().or_else(|| {
-            self.meanings.get(s.name()).and_then(|m| match m {
-                Meaning::Derived(e) | Meaning::Alias(e) => dimension_of(e, &self.dimensions).ok(),
-                Meaning::Underivable(_) => None,
+        self.dimensions
+            .get(&s)
+            .copied()
+            .or_else(|| {
+                self.meanings.get(s.name()).and_then(|m| match m {
+                    Meaning::Derived(e) | Meaning::Alias(e) => {
+                        dimension_of(e, &self.dimensions).ok()
+                    }
+                    Meaning::Underivable(_) => None,
+                })
             })
-        })
+            .or_else(|| marker_dimension(s))
+    }
+
+    /// The unit a name after a number stands for (`1857 N`, `150 mm`), as its marker: in a
+    /// context whose givens have values, a unit of the table that is not a name here (in SP
+    /// 18.5, where `N` is the normal force, `2 N` is twice it).
+    pub fn unit(&self, name: &str) -> Option<Expr> {
+        let taken =
+            self.meanings.contains_key(name) || self.dimensions.contains_key(&Symbol::new(name));
+        (self.has_values() && !taken).then(|| marker(name))?
+    }
+
+    /// This context deciding claims in numbers within `relative` of the exact value.
+    pub fn with_relative_tolerance(mut self, relative: f64) -> Context {
+        self.relative_tolerance = relative;
+        self
+    }
+
+    /// How close a claim written in numbers must come to the exact value, relative to it.
+    pub fn relative_tolerance(&self) -> f64 {
+        self.relative_tolerance
     }
 
     /// The exact value in SI of a given the scene gives one (`beta = 60 deg` is π/3).

@@ -11,7 +11,8 @@
 
 use super::diagnosis::Diagnosis;
 use super::dimension::OddTerm;
-use super::verdict::{Component, Report, Verdict};
+use super::verdict::{Component, Numbers, Report, Verdict};
+use crate::algebra::significant_figures;
 use crate::algebra::{Axis, Domains, Expr};
 use crate::mechanics::derivation::presented;
 use crate::parse::parse_expression;
@@ -74,6 +75,45 @@ fn not_holding(report: &Report) -> impl Iterator<Item = &Component> {
         .filter(|c| c.verdict != Verdict::Holds)
 }
 
+/// The significant figures a report shows a claimed number in: as many as the tolerance
+/// asks for (four at the default 0.5 %, one more a tenfold tighter).
+fn figures(n: &Numbers) -> usize {
+    (1.0 - n.tolerance.log10()).ceil().clamp(4.0, 16.0) as usize
+}
+
+/// A number with the SI unit of its component.
+fn number(x: f64, digits: usize, n: &Numbers) -> String {
+    let unit = n
+        .dimension
+        .filter(|d| *d != crate::scene::units::Dimension::NONE)
+        .map(|d| format!(" {}", d.si_unit()))
+        .unwrap_or_default();
+    format!("{}{unit}", significant_figures(x, digits))
+}
+
+/// `1900 N is 2.3 % from the exact 1857 N; the tolerance is 0.5 %`.
+fn numbers_sentence(n: &Numbers) -> String {
+    let percent = |r: f64| significant_figures(100.0 * r, 2);
+    let digits = figures(n);
+    let claimed = number(n.claimed, digits, n);
+    // The exact value in the claim's figures where it differs (the answer to write), in one
+    // more where it holds (to show how near it came).
+    let correct = number(n.correct, digits + usize::from(n.holds()), n);
+    let tolerance = percent(n.tolerance);
+    match (n.relative, n.holds()) {
+        (r, _) if r == 0.0 => format!("{claimed} is the exact value"),
+        (r, true) => format!(
+            "{claimed} is {} % from the exact {correct}, within the tolerance of {tolerance} %",
+            percent(r)
+        ),
+        (r, false) if r.is_finite() => format!(
+            "{claimed} is {} % from the exact {correct}; the tolerance is {tolerance} %",
+            percent(r)
+        ),
+        _ => format!("{claimed} where the exact value is {correct}"),
+    }
+}
+
 /// The claim's report in text: the verdict, where the claim was written and the claim, then
 /// for each component that does not hold the claimed and the correct forms, the residual and
 /// the diagnosis.
@@ -84,11 +124,17 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
         return out;
     }
     let name = &report.correct_side;
-    for c in not_holding(report) {
-        let of = match c.axis {
-            None => name.clone(),
-            Some(_) => format!("{name}, {} component", axis_name(c.axis)),
-        };
+    let of = |c: &Component| match c.axis {
+        None => name.clone(),
+        Some(_) => format!("{name}, {} component", axis_name(c.axis)),
+    };
+    for c in &report.components {
+        if let Some(n) = &c.numbers {
+            out.push_str(&format!("  {}: {}\n", of(c), numbers_sentence(n)));
+        }
+    }
+    for c in not_holding(report).filter(|c| c.numbers.is_none()) {
+        let of = of(c);
         let form = |e: &Expr| shown(e, c.axis, Notation::Text, domains);
         out.push_str(&format!("  {of}, as claimed: {}\n", form(&c.claimed)));
         out.push_str(&format!("  {of}, correct:    {}\n", form(&c.correct)));
@@ -198,7 +244,10 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
         return out;
     }
     let name = side_latex(report);
-    for c in not_holding(report) {
+    for n in report.components.iter().filter_map(|c| c.numbers.as_ref()) {
+        out.push_str(&format!("{}.\n", markup::latex_words(&numbers_sentence(n))));
+    }
+    for c in not_holding(report).filter(|c| c.numbers.is_none()) {
         let of = match c.axis {
             None => name.clone(),
             Some(_) => format!(
@@ -345,6 +394,14 @@ pub fn json(report: &Report, domains: &Domains) -> Json {
             "correct": both(&c.correct, c.axis, domains),
             "residual": both(&(&c.claimed - &c.correct), c.axis, domains),
             "undecided_because": c.undecided_because,
+            "numbers": c.numbers.as_ref().map(|n| json!({
+                "correct": n.correct,
+                "claimed": n.claimed,
+                "relative": n.relative.is_finite().then_some(n.relative),
+                "tolerance": n.tolerance,
+                "unit": n.dimension.map(|d| d.si_unit()),
+                "sentence": numbers_sentence(n),
+            })),
             "diagnosis": c.diagnosis.as_ref().map(|d| diagnosis_json(d, c.axis, domains)),
         })).collect::<Vec<_>>(),
     })

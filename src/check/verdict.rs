@@ -19,8 +19,12 @@ use super::dimension::{odd_term, OddTerm};
 use super::second_opinion::{second_opinion, Opinion};
 use crate::algebra::vector::{components, has_unit_vectors};
 use crate::algebra::{AlgebraError, Axis, Domains, Expr, Vector};
-use crate::parse::claim::{parse_claim, Claim, ClaimSide};
+use crate::algebra::{Role, Symbol};
+use crate::parse::claim::{Claim, ClaimSide};
+use crate::parse::parse_claim_with_units;
 use crate::parse::Diagnostic;
+use crate::scene::units::{dimension_with, Dimension};
+use crate::scene::units_in_math::in_si;
 
 /// What a check concludes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -45,6 +49,22 @@ pub struct Component {
     pub undecided_because: Option<String>,
     /// What differs, term by term, when the verdict is `differs`.
     pub diagnosis: Option<Diagnosis>,
+    /// A component written in numbers: both values, decided within the tolerance.
+    pub numbers: Option<Numbers>,
+}
+
+/// A component written in numbers (`T_BC = 1857 N`), decided by its values within the
+/// context's relative tolerance: `|claimed − correct| ≤ rtol · |correct|`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Numbers {
+    pub correct: f64,
+    pub claimed: f64,
+    /// `|claimed − correct| / |correct|` (infinite when the correct value is zero and the
+    /// claimed one is not).
+    pub relative: f64,
+    pub tolerance: f64,
+    /// The component's dimension, for its SI unit (none when it cannot be told).
+    pub dimension: Option<Dimension>,
 }
 
 /// The check of one claim.
@@ -81,7 +101,8 @@ impl Report {
 /// Checks the claim `text` in `context`. A claim that cannot be read (a syntax error, an
 /// unknown name, no `=`, a vector equated to a scalar) is a located error.
 pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report, Diagnostic> {
-    let claim = parse_claim(source_name, text, &|name| context.name(name))?;
+    let unit = |name: &str| context.unit(name);
+    let claim = parse_claim_with_units(source_name, text, &|name| context.name(name), Some(&unit))?;
     let derived = |side: &ClaimSide| side.resolved.iter().any(|n| !context.is_alias(n));
     let (correct, claimed) = if derived(&claim.rhs) && !derived(&claim.lhs) {
         (&claim.rhs, &claim.lhs)
@@ -115,13 +136,20 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
         .map_err(algebra_error)?
         .into_iter()
         .map(|(axis, c, s)| {
-            let evaluated = evaluated_givens(context, &c, &s);
-            let (c, s) = if evaluated {
-                (in_values(context, &c), in_values(context, &s))
-            } else {
-                (c, s)
-            };
-            component(axis, c, s, context.domains(), seed)
+            let (c, s) = (in_si(&c).unwrap_or(c), in_si(&s).unwrap_or(s));
+            if !evaluated_givens(context, &c, &s) {
+                return component(axis, c, s, context.domains(), seed);
+            }
+            let dimension = dimension_with(&c, &|s| context.dimension(s)).ok();
+            let (c, s) = (in_values(context, &c), in_values(context, &s));
+            match in_numbers(&c, &s) {
+                Some((correct, claimed)) => {
+                    let tolerance = context.relative_tolerance();
+                    let numbers = Numbers::new(correct, claimed, tolerance, dimension);
+                    numeric_component(axis, c, s, numbers)
+                }
+                None => component(axis, c, s, context.domains(), seed),
+            }
         })
         .collect();
     report.verdict = overall(&report.components);
@@ -139,6 +167,58 @@ fn evaluated_givens(context: &Context, correct: &Expr, claimed: &Expr) -> bool {
         .any(|s| context.value(s).is_some() && !claimed.contains(s))
 }
 
+/// Both sides' values, when neither holds a symbol (π aside): a claim written in numbers.
+fn in_numbers(correct: &Expr, claimed: &Expr) -> Option<(f64, f64)> {
+    let value = |e: &Expr| {
+        if e.has_symbol_where(&|s| !s.is_pi()) {
+            return None;
+        }
+        e.eval::<f64>(&|_| None).ok().filter(|v| v.is_finite())
+    };
+    Some((value(correct)?, value(claimed)?))
+}
+
+impl Numbers {
+    fn new(correct: f64, claimed: f64, tolerance: f64, dimension: Option<Dimension>) -> Numbers {
+        let off = (claimed - correct).abs();
+        let relative = if off == 0.0 { 0.0 } else { off / correct.abs() };
+        Numbers {
+            correct,
+            claimed,
+            relative,
+            tolerance,
+            dimension,
+        }
+    }
+
+    /// Whether the claimed number is within the tolerance of the correct one.
+    pub fn holds(&self) -> bool {
+        self.relative <= self.tolerance
+    }
+}
+
+/// A component written in numbers, decided by its values alone ([`Numbers`]).
+fn numeric_component(
+    axis: Option<Axis>,
+    correct: Expr,
+    claimed: Expr,
+    numbers: Numbers,
+) -> Component {
+    let verdict = match numbers.holds() {
+        true => Verdict::Holds,
+        false => Verdict::Differs,
+    };
+    Component {
+        axis,
+        correct,
+        claimed,
+        verdict,
+        undecided_because: None,
+        diagnosis: None,
+        numbers: Some(numbers),
+    }
+}
+
 /// `e` with every given that has a value replaced by it (exact, in SI).
 fn in_values(context: &Context, e: &Expr) -> Expr {
     e.subs(&|s| context.value(s)).unwrap_or_else(|_| e.clone())
@@ -154,7 +234,12 @@ fn is_number_in_si(context: &Context, claim: &Claim, span: (usize, usize)) -> bo
             .iter()
             .chain(&claim.rhs.terms)
             .find(|t| t.span == span)
-            .is_some_and(|t| t.value.symbols().is_empty())
+            .is_some_and(|t| !t.value.has_symbol_where(&|s| !is_number_symbol(s)))
+}
+
+/// The symbols a number may hold: π, and the unit vectors of a vector in numbers.
+fn is_number_symbol(s: Symbol) -> bool {
+    s.is_pi() || s.role() == Role::UnitVector
 }
 
 /// The components to compare, `(axis, correct, claimed)`: one for scalars, and for vectors
@@ -275,6 +360,7 @@ fn component(
         verdict,
         undecided_because,
         diagnosis,
+        numbers: None,
     }
 }
 

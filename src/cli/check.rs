@@ -8,7 +8,7 @@ use super::budget::Input;
 use super::error::CliError;
 use super::input::read_file;
 use kinetics::algebra::work::Budget;
-use kinetics::check::context::Context;
+use kinetics::check::context::{Context, DEFAULT_RELATIVE_TOLERANCE};
 use kinetics::check::report;
 use kinetics::check::verdict::{check, Report, Verdict};
 use kinetics::parse::Diagnostic;
@@ -41,8 +41,21 @@ pub struct Args {
     /// Rotation about the fixed axis z at w, alpha (§18.7).
     #[arg(long, conflicts_with = "scene")]
     pub fixed_axis: bool,
+    /// How close a claim written in numbers must come to the exact value, relative to it
+    /// (0.005 is 0.5 %, a number in three significant figures).
+    #[arg(long, default_value_t = DEFAULT_RELATIVE_TOLERANCE, value_parser = relative_tolerance)]
+    pub rtol: f64,
     #[arg(long, value_enum, default_value_t = super::show::Format::Text)]
     pub format: super::show::Format,
+}
+
+/// `--rtol`: a number from 0 up to, not including, 1.
+fn relative_tolerance(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(r) if (0.0..1.0).contains(&r) => Ok(r),
+        Ok(_) => Err(format!("{text} is not a relative tolerance: give a number from 0 up to 1, like 0.005 for 0.5 %")),
+        Err(_) => Err(format!("{text} is not a number: give a relative tolerance like 0.005 for 0.5 %")),
+    }
 }
 
 /// One claim to check: where it was written (its file and line, or its flag's place), how
@@ -74,8 +87,9 @@ pub fn run(args: Args) -> ExitCode {
 fn context(args: &Args) -> Result<Context, CliError> {
     if let Some(path) = &args.scene {
         let (name, source) = read_file(path)?;
-        return Input::scene(&name, &source)
-            .within(|| Ok::<_, CliError>(Context::scene(&parse_scene(&name, &source)?)));
+        let scene = Input::scene(&name, &source)
+            .within(|| Ok::<_, CliError>(Context::scene(&parse_scene(&name, &source)?)))?;
+        return Ok(scene.with_relative_tolerance(args.rtol));
     }
     let general = if args.fixed_axis {
         Context::fixed_axis()

@@ -9,7 +9,7 @@ use super::claim_vectors::is_vector;
 use super::diagnostic::Diagnostic;
 use super::expression::{parse_checked, to_ast, Rule};
 use super::limits::check_input;
-use super::lower::{Ast, Lowering, Node, Span};
+use super::lower::{Ast, Lowering, Node, Span, Units};
 use super::names::Names;
 use crate::algebra::Expr;
 use pest::iterators::Pair;
@@ -78,6 +78,17 @@ pub fn parse_claim(
     source: &str,
     resolve: &dyn Fn(&str) -> Name,
 ) -> Result<Claim, Diagnostic> {
+    parse_claim_with_units(source_name, source, resolve, None)
+}
+
+/// [`parse_claim`] where a name after a number (`1857 N`, `150 mm`) is what `units` gives
+/// it, when it gives something ([`Units`]).
+pub fn parse_claim_with_units(
+    source_name: &str,
+    source: &str,
+    resolve: &dyn Fn(&str) -> Name,
+    units: Option<Units>,
+) -> Result<Claim, Diagnostic> {
     check_input(source_name, source)?;
     let equals = the_equals_sign(source_name, source)?;
     let parsed = parse_checked(Rule::claim_input, source_name, source)?;
@@ -98,7 +109,7 @@ pub fn parse_claim(
         source_name,
         source,
         names: Some(Names::new(resolve)),
-        units: None,
+        units,
     };
     let lhs = side(&mut lowering, lhs)?;
     let rhs = side(&mut lowering, rhs)?;

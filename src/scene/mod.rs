@@ -12,7 +12,7 @@ pub mod stated_kinematics;
 pub mod top_simulation;
 pub mod unit_text;
 pub mod units;
-mod units_in_math;
+pub(crate) mod units_in_math;
 
 pub use analysis::{analyse, Analysis, Value};
 pub use model::Scene;

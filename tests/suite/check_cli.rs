@@ -199,3 +199,65 @@ fn claims_from_standard_input_skip_comments_and_blank_lines() {
     assert_eq!(summary["differs"], 1);
     assert_eq!(summary["errors"], 0);
 }
+
+/// The example `kinetics check --help` gives, run as written there: it holds.
+#[test]
+fn the_help_example_holds() {
+    let help = check(&["--help"]).stdout;
+    let example = help
+        .lines()
+        .skip_while(|l| !l.starts_with("Example"))
+        .nth(1)
+        .expect("an example line after 'Example:'");
+    let words = split_command(example.trim());
+    assert_eq!(&words[..2], ["kinetics", "check"], "{example}");
+    let args: Vec<&str> = words[2..].iter().map(String::as_str).collect();
+    let run = check(&args);
+    assert_eq!(run.code, 0, "{example}\n{}{}", run.stdout, run.stderr);
+    assert!(run.stdout.starts_with("holds"), "{}", run.stdout);
+}
+
+/// A command line split as a shell splits it: words, with double quotes around a word that
+/// holds blanks.
+fn split_command(line: &str) -> Vec<String> {
+    let (mut words, mut word, mut quoted) = (Vec::new(), String::new(), false);
+    for c in line.chars() {
+        match c {
+            '"' => quoted = !quoted,
+            ' ' if !quoted => words.extend((!word.is_empty()).then(|| std::mem::take(&mut word))),
+            _ => word.push(c),
+        }
+    }
+    words.extend((!word.is_empty()).then_some(word));
+    words
+}
+
+/// `Ix` for `I_x` is a name left out of the claim's reading, never a new symbol: an error at
+/// the name that suggests `I_x`.
+#[test]
+fn a_subscript_without_its_underscore_is_refused_with_the_name() {
+    let run = check(&["--claim", "H_x = Ix w_x - I_xy w_y - I_xz w_z"]);
+    assert_eq!(run.code, 2, "{}{}", run.stdout, run.stderr);
+    assert_located(&run, ":1:", Some(7));
+    assert!(run.stderr.contains("did you mean I_x?"), "{}", run.stderr);
+}
+
+/// SP 18.3: T_BC = m g cos β / (2 sin β) + ⅓ m L ω² cos β = 20·9.81/(2√3) + ⅓·20·2.4·225·½
+/// = 56.64 + 1800 = 1856.6 N. A number with its unit holds within 0.5 %; 1900 N is 2.3 %
+/// off and the report gives the exact value in the claim's figures.
+#[test]
+fn a_number_with_its_unit_holds_within_the_tolerance() {
+    let sp18_3 = scene("sp18_3_rotating_rod");
+    let near = check(&[&sp18_3, "--claim", "T_BC = 1857 N"]);
+    assert_eq!(near.code, 0, "{}{}", near.stdout, near.stderr);
+    let far = check(&[&sp18_3, "--claim", "T_BC = 1900 N"]);
+    assert_eq!(far.code, 1, "{}{}", far.stdout, far.stderr);
+    assert!(far.stdout.contains("the exact 1857 N"), "{}", far.stdout);
+    let tight = check(&[&sp18_3, "--rtol", "1e-5", "--claim", "T_BC = 1857 N"]);
+    assert_eq!(tight.code, 1, "{}{}", tight.stdout, tight.stderr);
+    let kilo = check(&[&sp18_3, "--claim", "T_BC = 1.857 kN"]);
+    assert_eq!(kilo.code, 0, "{}{}", kilo.stdout, kilo.stderr);
+    let wide = check(&[&sp18_3, "--rtol", "2", "--claim", "T_BC = 1857 N"]);
+    assert_eq!(wide.code, 2, "{}{}", wide.stdout, wide.stderr);
+    assert!(wide.stderr.contains("from 0 up to 1"), "{}", wide.stderr);
+}

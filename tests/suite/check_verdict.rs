@@ -174,7 +174,17 @@ fn a_claim_written_with_the_givens_values_is_decided_at_them() {
     assert_eq!(verdict(&c, "cos(beta) = 1/2"), Verdict::Holds);
     assert_eq!(verdict(&c, "abar = -1/4 L w^2 i"), Verdict::Holds);
     assert_eq!(verdict(&c, "A_y = 196.2"), Verdict::Holds);
-    assert_eq!(verdict(&c, "A_y = 196"), Verdict::Differs);
+    // A number holds within the relative tolerance (0.5 % unless told): 196 is 0.1 % from
+    // 196.2, 190 is 3.2 % from it; at 0.01 % 196 differs too.
+    assert_eq!(verdict(&c, "A_y = 196"), Verdict::Holds);
+    assert_eq!(verdict(&c, "A_y = 190"), Verdict::Differs);
+    let tight = c.clone().with_relative_tolerance(1e-4);
+    assert_eq!(verdict(&tight, "A_y = 196"), Verdict::Differs);
+    // With its unit, converted: 0.1962 kN is 196.2 N; a unit of another dimension is the
+    // odd term.
+    assert_eq!(verdict(&c, "A_y = 0.1962 kN"), Verdict::Holds);
+    assert_eq!(verdict(&c, "A_y = 196.2 N"), Verdict::Holds);
+    assert_eq!(verdict(&c, "A_y = 196.2 kg"), Verdict::Differs);
     // Written in the givens' names, a claim is decided in their names.
     assert_eq!(verdict(&c, "A_y = m g"), Verdict::Holds);
     assert_eq!(verdict(&c, "abar = -1/2 L cos(beta) w^2 i"), Verdict::Holds);

@@ -101,7 +101,7 @@ fn numbers_sentence(n: &Numbers) -> String {
     let correct = number(n.correct, digits + usize::from(n.holds()), n);
     let tolerance = percent(n.tolerance);
     match (n.relative, n.holds()) {
-        (r, _) if r == 0.0 => format!("{claimed} is the exact value"),
+        (0.0, _) => format!("{claimed} is the exact value"),
         (r, true) => format!(
             "{claimed} is {} % from the exact {correct}, within the tolerance of {tolerance} %",
             percent(r)

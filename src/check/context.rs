@@ -21,7 +21,7 @@ use crate::mechanics::catalogue::derive_general;
 use crate::parse::claim::Name;
 use crate::scene::analysis::values_of;
 use crate::scene::model::{Quantity, Request, Span};
-use crate::scene::units::{dimension_of, Dimension, Dimensions};
+use crate::scene::units::{dimension_with, Dimension, Dimensions};
 use crate::scene::units_in_math::{marker, marker_dimension};
 use crate::scene::{Scene, Value};
 use std::collections::HashMap;
@@ -267,6 +267,13 @@ impl Context {
         }
         let impulses = scene.impulses.iter().filter_map(|i| i.name);
         quantities.extend(impulses.map(|s| (s.name().to_string(), Quantity::NamedImpulse(s))));
+        // A named force (`force R = R_x*i + R_y*j at ...`) whose name no given or unknown has.
+        let forces = scene
+            .forces
+            .iter()
+            .map(|f| Symbol::new(&f.name))
+            .filter(|s| !s.name().is_empty() && !c.dimensions.contains_key(s));
+        quantities.extend(forces.map(|s| (s.name().to_string(), Quantity::NamedForce(s))));
         let requests: Vec<Request> = quantities
             .iter()
             .map(|(name, quantity)| request(scene, name, *quantity))
@@ -307,6 +314,12 @@ impl Context {
             Quantity::InertiaAboutG
         };
         let axisymmetric = scene.euler_angles.is_some();
+        let dimension = quantity.dimension(&self.dimensions);
+        let value = match value {
+            Value::Scalar(e) => Value::Scalar(self.in_dimension(e, dimension)),
+            Value::Vector(v) => Value::Vector(v.map(|e| self.in_dimension(e, dimension))),
+            other => other,
+        };
         match value {
             Value::Scalar(e) => Meaning::Derived(e),
             Value::Vector(v) => {
@@ -370,6 +383,40 @@ impl Context {
     }
 
     /// `base_x`, `base_y`, `base_z` for the components of `v`.
+    /// `value` as a quantity of `dimension`: where a number written with its unit in the
+    /// scene (`at (150 mm, 0, 0)`) is a plain SI number in it (3/20), the expression's
+    /// dimension is not the quantity's, and the difference is made up by unit markers of
+    /// factor one (`[kg]`, `[m]`, `[s]`, gone when the verdict takes the sides in SI), so that
+    /// a claim's terms are judged as the quantities they name.
+    fn in_dimension(&self, value: Expr, dimension: Option<Dimension>) -> Expr {
+        let (Some(wanted), Ok(has)) = (dimension, self.dimension_of(&value)) else {
+            return value;
+        };
+        if wanted == has || value.is_zero() {
+            return value;
+        }
+        let missing = [
+            ("kg", wanted.mass - has.mass),
+            ("m", wanted.length - has.length),
+            ("s", wanted.time - has.time),
+        ];
+        let markers = missing
+            .iter()
+            .filter(|(_, power)| *power != 0)
+            .filter_map(|(unit, power)| Some(marker(unit)?.powi(i64::from(*power))));
+        value * Expr::mul_all(markers)
+    }
+
+    /// The dimension of an expression of this context's symbols and unit markers.
+    fn dimension_of(&self, e: &Expr) -> Result<Dimension, crate::scene::units::DimensionError> {
+        dimension_with(e, &|s| {
+            self.dimensions
+                .get(&s)
+                .copied()
+                .or_else(|| marker_dimension(s))
+        })
+    }
+
     /// A name the context gives a derived value, unless a given or unknown has it.
     fn derived_unless_taken(&mut self, name: &str, value: Expr) {
         if !self.dimensions.contains_key(&Symbol::new(name)) {
@@ -397,11 +444,14 @@ impl Context {
             ("I_yz", -entry(1, 2)),
             ("I_xz", -entry(0, 2)),
         ] {
+            let value = self.in_dimension(value, Some(Dimension::INERTIA));
             self.derived_unless_taken(name, value);
         }
         if axisymmetric {
-            self.derived_unless_taken("I", entry(2, 2));
-            self.derived_unless_taken("I'", entry(0, 0));
+            for (name, value) in [("I", entry(2, 2)), ("I'", entry(0, 0))] {
+                let value = self.in_dimension(value, Some(Dimension::INERTIA));
+                self.derived_unless_taken(name, value);
+            }
         }
     }
 
@@ -490,9 +540,7 @@ impl Context {
             .copied()
             .or_else(|| {
                 self.meanings.get(s.name()).and_then(|m| match m {
-                    Meaning::Derived(e) | Meaning::Alias(e) => {
-                        dimension_of(e, &self.dimensions).ok()
-                    }
+                    Meaning::Derived(e) | Meaning::Alias(e) => self.dimension_of(e).ok(),
                     Meaning::Underivable(_) => None,
                 })
             })

@@ -122,7 +122,7 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
     if report
         .odd_term
         .as_ref()
-        .is_some_and(|odd| !is_number_in_si(context, &claim, odd.span))
+        .is_some_and(|odd| !written_in_si_numbers(context, &claim, text, odd.span))
     {
         return Ok(report);
     }
@@ -224,22 +224,43 @@ fn in_values(context: &Context, e: &Expr) -> Expr {
     e.subs(&|s| context.value(s)).unwrap_or_else(|_| e.clone())
 }
 
-/// Whether the written term at `span` is a plain number in a scene whose givens have values:
-/// a number in SI units (`A_y = 196.2`), not a term without a unit.
-fn is_number_in_si(context: &Context, claim: &Claim, span: (usize, usize)) -> bool {
-    context.has_values()
-        && claim
+/// Whether the dimension check passes over the odd term at `span`, because the claim is
+/// written in SI numbers in a scene whose givens have values: the term is a plain number
+/// (`A_y = 196.2`, not a term without a unit), or the claim holds a decimal number, which may
+/// stand for a quantity with its unit (`0.3 B_y` with 0.3 the 300 mm arm). Such a claim is
+/// decided by its values.
+fn written_in_si_numbers(
+    context: &Context,
+    claim: &Claim,
+    text: &str,
+    span: (usize, usize),
+) -> bool {
+    let plain_number = || {
+        claim
             .lhs
             .terms
             .iter()
             .chain(&claim.rhs.terms)
             .find(|t| t.span == span)
-            .is_some_and(|t| !t.value.has_symbol_where(&|s| !is_number_symbol(s)))
+            .is_some_and(|t| !t.value.has_symbol_where(&|s| !is_number_symbol(context, s)))
+    };
+    context.has_values() && (plain_number() || holds_decimal(text))
 }
 
-/// The symbols a number may hold: π, and the unit vectors of a vector in numbers.
-fn is_number_symbol(s: Symbol) -> bool {
-    s.is_pi() || s.role() == Role::UnitVector
+/// Whether `text` writes a decimal number (`0.3`, `.5`, `2.`).
+fn holds_decimal(text: &str) -> bool {
+    let bytes = text.as_bytes();
+    bytes.iter().enumerate().any(|(k, b)| {
+        let digit_at =
+            |i: Option<usize>| i.and_then(|i| bytes.get(i)).is_some_and(u8::is_ascii_digit);
+        *b == b'.' && (digit_at(k.checked_sub(1)) || digit_at(Some(k + 1)))
+    })
+}
+
+/// The symbols a number may hold: π, the unit vectors of a vector in numbers, and the
+/// angles (no unit) left in names (`-π cos θ / 2` for ψ̇ with φ̇ = π rad/s).
+fn is_number_symbol(context: &Context, s: Symbol) -> bool {
+    s.is_pi() || s.role() == Role::UnitVector || context.dimension(s) == Some(Dimension::NONE)
 }
 
 /// The components to compare, `(axis, correct, claimed)`: one for scalars, and for vectors

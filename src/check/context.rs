@@ -24,7 +24,9 @@ use crate::scene::model::{Quantity, Request, Span};
 use crate::scene::units::{dimension_with, Dimension, Dimensions};
 use crate::scene::units_in_math::{marker, marker_dimension};
 use crate::scene::{Scene, Value};
+use crate::mechanics::slip::Slip;
 use std::collections::HashMap;
+use std::sync::{Arc, OnceLock};
 
 /// What a name stands for in a context.
 #[derive(Debug, Clone)]
@@ -53,6 +55,19 @@ pub struct Context {
     values: HashMap<Symbol, Expr>,
     /// How close a claim written in numbers must come to the exact value, relative to it.
     relative_tolerance: f64,
+    /// Where the meanings come from, to derive them again with a slip (none in a context
+    /// derived with one).
+    source: Option<Source>,
+    /// The context derived with each slip of [`Slip::ALL`], when a claim first needs it.
+    slipped: Arc<[OnceLock<Option<Context>>; Slip::ALL.len()]>,
+}
+
+/// Where a context's meanings come from.
+#[derive(Debug, Clone)]
+enum Source {
+    General { principal: bool, fixed_point: bool },
+    FixedAxis,
+    Scene(Arc<Scene>),
 }
 
 /// The relative tolerance of a claim in numbers unless told otherwise: 0.5 %, a number
@@ -170,6 +185,10 @@ impl Context {
         if fixed_point {
             c.about_fixed_point()?;
         }
+        c.source = Some(Source::General {
+            principal,
+            fixed_point,
+        });
         Ok(c)
     }
 
@@ -226,6 +245,7 @@ impl Context {
         c.components("H", &h);
         c.derived("H_O", unit_vector_sum(&h));
         c.derived("T", Context::derive_scalar("T", false)?.subs(&about_axis)?);
+        c.source = Some(Source::FixedAxis);
         Ok(c)
     }
 
@@ -293,7 +313,31 @@ impl Context {
             };
             c.meanings.insert(name.clone(), meaning);
         }
+        c.source = Some(Source::Scene(Arc::new(scene.clone())));
         c
+    }
+
+    /// This context derived again with `slip` made wherever its piece is formed: what a
+    /// claim holds in when it makes that slip. Derived once, when first asked; none for a
+    /// context that is itself slipped, or where the slipped derivation fails.
+    pub fn slipped(&self, slip: Slip) -> Option<&Context> {
+        let source = self.source.as_ref()?;
+        let k = Slip::ALL.iter().position(|s| *s == slip)?;
+        self.slipped[k]
+            .get_or_init(|| {
+                let mut c = slip.applied(|| match source {
+                    Source::General {
+                        principal,
+                        fixed_point,
+                    } => Context::general(*principal, *fixed_point).ok(),
+                    Source::FixedAxis => Context::fixed_axis().ok(),
+                    Source::Scene(scene) => Some(Context::scene(scene)),
+                })?;
+                c.source = None;
+                c.relative_tolerance = self.relative_tolerance;
+                Some(c)
+            })
+            .as_ref()
     }
 
     /// What a scene's derived value means in a claim; a vector's components are named too
@@ -357,6 +401,8 @@ impl Context {
             domains: Domains::chapter_defaults(),
             values: HashMap::new(),
             relative_tolerance: DEFAULT_RELATIVE_TOLERANCE,
+            source: None,
+            slipped: Arc::new(std::array::from_fn(|_| OnceLock::new())),
         }
     }
 
@@ -559,6 +605,7 @@ impl Context {
     /// This context deciding claims in numbers within `relative` of the exact value.
     pub fn with_relative_tolerance(mut self, relative: f64) -> Context {
         self.relative_tolerance = relative;
+        self.slipped = Arc::new(std::array::from_fn(|_| OnceLock::new()));
         self
     }
 

@@ -11,7 +11,7 @@
 
 use super::diagnosis::Diagnosis;
 use super::dimension::OddTerm;
-use super::verdict::{Component, Numbers, Report, Verdict};
+use super::verdict::{Component, Numbers, Piece, Report, Verdict};
 use crate::algebra::significant_figures;
 use crate::algebra::{Axis, Domains, Expr};
 use crate::mechanics::derivation::presented;
@@ -91,6 +91,33 @@ fn number(x: f64, digits: usize, n: &Numbers) -> String {
     format!("{}{unit}", significant_figures(x, digits))
 }
 
+/// The quantity a slip's piece is part of: `D_z`, `H_O (j component)`.
+fn of_piece(report: &Report, piece: &Piece) -> String {
+    match piece.axis {
+        None => report.correct_side.clone(),
+        Some(_) => format!(
+            "{} ({} component)",
+            report.correct_side,
+            axis_name(piece.axis)
+        ),
+    }
+}
+
+/// What the slip changes in a component, in the givens' names and, for a claim in
+/// numbers, in value: `correct − claimed = -1/8*m*c*w^2 (-59.25 N)`.
+fn piece_text(piece: &Piece, c: Option<&Component>, notation: Notation, domains: &Domains) -> String {
+    let form = shown(&piece.in_symbols, piece.axis, notation, domains);
+    let value = piece
+        .value
+        .zip(c.and_then(|c| c.numbers.as_ref()))
+        .map(|(v, n)| format!(" ({})", number(v, figures(n), n)))
+        .unwrap_or_default();
+    match notation {
+        Notation::Latex => format!(r"$\text{{correct}} - \text{{claimed}} = {form}${value}"),
+        _ => format!("correct - claimed = {form}{value}"),
+    }
+}
+
 /// `1900 N is 2.3 % from the exact 1857 N; the tolerance is 0.5 %`.
 fn numbers_sentence(n: &Numbers) -> String {
     let percent = |r: f64| significant_figures(100.0 * r, 2);
@@ -133,6 +160,18 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
             out.push_str(&format!("  {}: {}\n", of(c), numbers_sentence(n)));
         }
     }
+    if let Some(slip) = &report.slip {
+        let concept = markup::text(slip.slip.concept());
+        out.push_str(&format!("  {}: {concept}\n", slip.slip.name()));
+        for piece in &slip.pieces {
+            let c = report.components.iter().find(|c| c.axis == piece.axis);
+            out.push_str(&format!(
+                "    {}: {}\n",
+                of_piece(report, piece),
+                piece_text(piece, c, Notation::Text, domains)
+            ));
+        }
+    }
     for c in not_holding(report).filter(|c| c.numbers.is_none()) {
         let of = of(c);
         let form = |e: &Expr| shown(e, c.axis, Notation::Text, domains);
@@ -142,7 +181,7 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
             out.push_str(&format!("  undecided: {why}\n"));
         }
         if let Some(d) = &c.diagnosis {
-            out.push_str(&diagnosis_text(d, c, domains));
+            out.push_str(&diagnosis_text(d, c, report.slip.is_none(), domains));
         }
     }
     out
@@ -170,14 +209,15 @@ fn terms_text(terms: &[Expr], c: &Component, domains: &Domains) -> String {
     out
 }
 
-fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
+fn diagnosis_text(d: &Diagnosis, c: &Component, with_reading: bool, domains: &Domains) -> String {
     let mut out = String::new();
     let residual = &c.claimed - &c.correct;
     out.push_str(&format!(
         "  residual (claimed - correct): {}\n",
         shown(&residual, c.axis, Notation::Text, domains)
     ));
-    if let Some(r) = &d.reading {
+    // A slip of the mechanics, when one explains the claim, is its reading instead.
+    if let Some(r) = d.reading.as_ref().filter(|_| with_reading) {
         out.push_str(&format!(
             "  {}: {}\n",
             r.name,
@@ -247,6 +287,17 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
     for n in report.components.iter().filter_map(|c| c.numbers.as_ref()) {
         out.push_str(&format!("{}.\n", markup::latex_words(&numbers_sentence(n))));
     }
+    if let Some(slip) = &report.slip {
+        out.push_str(&format!("{}.\n", markup::latex(slip.slip.concept())));
+        for piece in &slip.pieces {
+            let c = report.components.iter().find(|c| c.axis == piece.axis);
+            out.push_str(&format!(
+                "{}: {}.\n",
+                markup::latex_words(&of_piece(report, piece)),
+                piece_text(piece, c, Notation::Latex, domains)
+            ));
+        }
+    }
     for c in not_holding(report).filter(|c| c.numbers.is_none()) {
         let of = match c.axis {
             None => name.clone(),
@@ -276,7 +327,7 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
             out.push_str(&format!("Undecided: {}.\n", markup::latex_words(why)));
         }
         if let Some(d) = &c.diagnosis {
-            out.push_str(&diagnosis_latex(d, c, domains));
+            out.push_str(&diagnosis_latex(d, c, report.slip.is_none(), domains));
         }
     }
     out
@@ -295,11 +346,11 @@ fn in_component(explanation: &str, c: &Component) -> String {
 }
 
 /// The reading's explanation, then the wrong, missing and extra terms, typeset.
-fn diagnosis_latex(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
+fn diagnosis_latex(d: &Diagnosis, c: &Component, with_reading: bool, domains: &Domains) -> String {
     let math = |e: &Expr| format!("${}$", shown(e, c.axis, Notation::Latex, domains));
     let list = |terms: &[Expr]| terms.iter().map(math).collect::<Vec<_>>().join(", ");
     let mut parts = Vec::new();
-    if let Some(r) = &d.reading {
+    if let Some(r) = d.reading.as_ref().filter(|_| with_reading) {
         parts.push(explanation_latex(&in_component(&r.explanation, c)));
     }
     for w in &d.wrong {
@@ -387,6 +438,16 @@ pub fn json(report: &Report, domains: &Domains) -> Json {
         "correct_side": report.correct_side,
         "claimed_side": report.claimed_side,
         "odd_term": report.odd_term.as_ref().map(odd_term_json),
+        "slip": report.slip.as_ref().map(|slip| json!({
+            "name": slip.slip.name(),
+            "explanation": markup::text(slip.slip.concept()),
+            "explanation_latex": markup::latex(slip.slip.concept()),
+            "pieces": slip.pieces.iter().map(|piece| json!({
+                "axis": piece.axis.map(|a| ["x", "y", "z"][a as usize]),
+                "form": both(&piece.in_symbols, piece.axis, domains),
+                "value": piece.value,
+            })).collect::<Vec<_>>(),
+        })),
         "components": report.components.iter().map(|c| json!({
             "axis": c.axis.map(|a| ["x", "y", "z"][a as usize]),
             "verdict": c.verdict.word(),

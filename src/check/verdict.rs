@@ -21,10 +21,11 @@ use crate::algebra::vector::{components, has_unit_vectors};
 use crate::algebra::{AlgebraError, Axis, Domains, Expr, Vector};
 use crate::algebra::{Role, Symbol};
 use crate::parse::claim::{Claim, ClaimSide};
+use crate::mechanics::slip::Slip;
 use crate::parse::parse_claim_with_units;
 use crate::parse::Diagnostic;
 use crate::scene::units::{dimension_with, Dimension};
-use crate::scene::units_in_math::in_si;
+use crate::scene::units_in_math::{in_si, unit_of};
 
 /// What a check concludes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -51,6 +52,26 @@ pub struct Component {
     pub diagnosis: Option<Diagnosis>,
     /// A component written in numbers: both values, decided within the tolerance.
     pub numbers: Option<Numbers>,
+    /// The correct value before the givens' values were put in (the same as `correct` for
+    /// a claim in the givens' names).
+    pub correct_in_symbols: Expr,
+}
+
+/// A slip that explains a claim: in the context derived with it the claim holds.
+#[derive(Debug, Clone)]
+pub struct SlipReading {
+    pub slip: Slip,
+    /// What the slipped piece is worth in each component that differs.
+    pub pieces: Vec<Piece>,
+}
+
+/// The part of one component the slip changed: correct − slipped, in the givens' names,
+/// and its value when the claim is in numbers.
+#[derive(Debug, Clone)]
+pub struct Piece {
+    pub axis: Option<Axis>,
+    pub in_symbols: Expr,
+    pub value: Option<f64>,
 }
 
 /// A component written in numbers (`T_BC = 1857 N`), decided by its values within the
@@ -83,6 +104,8 @@ pub struct Report {
     pub components: Vec<Component>,
     /// A term whose dimension differs from the others': the claim is not checked further.
     pub odd_term: Option<OddTerm>,
+    /// The slip of the mechanics that turns the correct side into the claimed one.
+    pub slip: Option<SlipReading>,
 }
 
 impl Report {
@@ -90,6 +113,9 @@ impl Report {
     pub fn reading(&self) -> Option<&'static str> {
         if self.odd_term.is_some() {
             return Some("inhomogeneous");
+        }
+        if let Some(slip) = &self.slip {
+            return Some(slip.slip.name());
         }
         self.components
             .iter()
@@ -118,6 +144,7 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
         verdict: Verdict::Differs,
         components: Vec::new(),
         odd_term: odd_term(&claim, text, &|s| context.dimension(s)),
+        slip: None,
     };
     if report
         .odd_term
@@ -140,20 +167,71 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
             if !evaluated_givens(context, &c, &s) {
                 return component(axis, c, s, context.domains(), seed);
             }
+            // Decided at the givens' values; the correct side in their names kept for a
+            // slip's piece.
             let dimension = dimension_with(&c, &|s| context.dimension(s)).ok();
+            let in_symbols = c.clone();
             let (c, s) = (in_values(context, &c), in_values(context, &s));
             match in_numbers(&c, &s) {
                 Some((correct, claimed)) => {
                     let tolerance = context.relative_tolerance();
                     let numbers = Numbers::new(correct, claimed, tolerance, dimension);
-                    numeric_component(axis, c, s, numbers)
+                    Component {
+                        correct_in_symbols: in_symbols,
+                        ..numeric_component(axis, c, s, numbers)
+                    }
                 }
-                None => component(axis, c, s, context.domains(), seed),
+                None => Component {
+                    correct_in_symbols: in_symbols,
+                    ..component(axis, c, s, context.domains(), seed)
+                },
             }
         })
         .collect();
     report.verdict = overall(&report.components);
+    if report.verdict == Verdict::Differs {
+        report.slip = slip_reading(context, source_name, text, &report);
+    }
     Ok(report)
+}
+
+/// The first slip of [`Slip::ALL`] in whose context the claim holds, with what the slipped
+/// piece is worth in each component that differs.
+fn slip_reading(
+    context: &Context,
+    source_name: &str,
+    text: &str,
+    report: &Report,
+) -> Option<SlipReading> {
+    Slip::ALL.into_iter().find_map(|slip| {
+        let slipped = check(context.slipped(slip)?, source_name, text).ok()?;
+        if slipped.verdict != Verdict::Holds {
+            return None;
+        }
+        let pieces = report
+            .components
+            .iter()
+            .filter(|c| c.verdict == Verdict::Differs)
+            .map(|c| {
+                let as_slipped = slipped.components.iter().find(|s| s.axis == c.axis);
+                let in_symbols = match as_slipped {
+                    Some(s) => &c.correct_in_symbols - &s.correct_in_symbols,
+                    None => c.correct_in_symbols.clone(),
+                };
+                let value = c.numbers.as_ref().and_then(|_| {
+                    in_values(context, &in_symbols)
+                        .eval::<f64>(&|_| None)
+                        .ok()
+                });
+                Piece {
+                    axis: c.axis,
+                    in_symbols,
+                    value,
+                }
+            })
+            .collect();
+        Some(SlipReading { slip, pieces })
+    })
 }
 
 /// Whether the claimed side was written with a given's value in place of its name: the
@@ -210,12 +288,13 @@ fn numeric_component(
     };
     Component {
         axis,
-        correct,
         claimed,
         verdict,
         undecided_because: None,
         diagnosis: None,
         numbers: Some(numbers),
+        correct_in_symbols: correct.clone(),
+        correct,
     }
 }
 
@@ -226,9 +305,9 @@ fn in_values(context: &Context, e: &Expr) -> Expr {
 
 /// Whether the dimension check passes over the odd term at `span`, because the claim is
 /// written in SI numbers in a scene whose givens have values: the term is a plain number
-/// (`A_y = 196.2`, not a term without a unit), or the claim holds a decimal number, which may
-/// stand for a quantity with its unit (`0.3 B_y` with 0.3 the 300 mm arm). Such a claim is
-/// decided by its values.
+/// (`A_y = 196.2`, not a term without a unit), or the claim holds a decimal number and no
+/// unit, and the number may stand for a quantity in SI (`0.3 B_y` with 0.3 the 300 mm arm).
+/// Such a claim is decided by its values.
 fn written_in_si_numbers(
     context: &Context,
     claim: &Claim,
@@ -244,7 +323,12 @@ fn written_in_si_numbers(
             .find(|t| t.span == span)
             .is_some_and(|t| !t.value.has_symbol_where(&|s| !is_number_symbol(context, s)))
     };
-    context.has_values() && (plain_number() || holds_decimal(text))
+    let with_units = || {
+        [&claim.lhs, &claim.rhs]
+            .iter()
+            .any(|side| side.value.has_symbol_where(&|s| unit_of(s).is_some()))
+    };
+    context.has_values() && (plain_number() || holds_decimal(text) && !with_units())
 }
 
 /// Whether `text` writes a decimal number (`0.3`, `.5`, `2.`).
@@ -376,12 +460,13 @@ fn component(
     };
     Component {
         axis,
-        correct,
         claimed,
         verdict,
         undecided_because,
         diagnosis,
         numbers: None,
+        correct_in_symbols: correct.clone(),
+        correct,
     }
 }
 

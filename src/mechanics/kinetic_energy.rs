@@ -11,6 +11,7 @@
 
 use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
+use super::slip::{half_unless, Slip};
 use crate::algebra::vector_products::{dot, mat_vec};
 use crate::algebra::{AlgebraError, Axis, Expr, Vector};
 
@@ -81,7 +82,8 @@ pub fn kinetic_energy_split(
     vbar: &Vector,
     o_fixed: bool,
 ) -> Result<Derivation, AlgebraError> {
-    let translational = (Expr::rational(1, 2) * mass * dot(vbar, vbar)).expand()?;
+    let half = half_unless(Slip::HalfMissingTranslation);
+    let translational = (half * mass * dot(vbar, vbar)).expand()?;
     let rotational = rotational_energy(inertia, omega)?;
     let parts = r"$T_{\text{trans}} = \tfrac12 m\bar{v}^2$, $T_{\text{rot}} = \tfrac12\{\boldsymbol{\omega}\}^T[I]\{\boldsymbol{\omega}\}$";
     let title = if o_fixed {
@@ -114,5 +116,6 @@ pub fn kinetic_energy_split(
 
 /// `½ {ω}ᵀ[I]{ω}`, multiplied out.
 fn rotational_energy(inertia: &InertiaTensor, omega: &Vector) -> Result<Expr, AlgebraError> {
-    (Expr::rational(1, 2) * dot(omega, &mat_vec(&inertia.matrix(), omega))).expand()
+    let half = half_unless(Slip::HalfMissingRotation);
+    (half * dot(omega, &mat_vec(&inertia.matrix(), omega))).expand()
 }

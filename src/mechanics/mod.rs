@@ -28,6 +28,7 @@ pub mod resultant;
 pub mod rotating_frame;
 pub mod rotation;
 pub mod shapes;
+pub mod slip;
 pub mod steady_precession;
 pub mod torque_free_axisymmetric;
 pub mod two_plane_balance;

@@ -16,6 +16,7 @@ use super::derivation::{Derivation, Relation, Step};
 use super::inertia::InertiaTensor;
 use super::linear_momentum::effective_force;
 use super::moment_transfer::{moment_transfer, Labels};
+use super::slip::Slip;
 use crate::algebra::vector::expand_each;
 use crate::algebra::vector_products::{cross, mat_vec};
 use crate::algebra::{AlgebraError, Expr, Vector};
@@ -53,9 +54,12 @@ pub fn rate_of_angular_momentum(
     point: &str,
 ) -> Result<Derivation, AlgebraError> {
     let matrix = inertia.matrix();
-    let relative = mat_vec(&matrix, omega_dot);
+    let relative = match Slip::SquareForRate.is_active() {
+        true => mat_vec(&matrix, &omega.map(|w| w.powi(2))),
+        false => mat_vec(&matrix, omega_dot),
+    };
     let h = mat_vec(&matrix, omega);
-    let transport = cross(frame_rate, &h);
+    let transport = transport_term(frame_rate, omega, &h);
     let total = expand_each(&(&relative + &transport))?;
     let tensor = InertiaTensor::written_about(point);
     Ok(Derivation {
@@ -82,6 +86,19 @@ pub fn rate_of_angular_momentum(
             ),
         ],
     })
+}
+
+/// The transport term `Ω × H` (or what a slip makes of it: none, `ω × H`, `H × Ω`).
+fn transport_term(frame_rate: &Vector, omega: &Vector, h: &Vector) -> Vector {
+    if Slip::TransportTermMissing.is_active() {
+        Vector::from_element(Expr::zero())
+    } else if Slip::OmegaForFrameRate.is_active() {
+        cross(omega, h)
+    } else if Slip::CrossProductReversed.is_active() {
+        cross(h, frame_rate)
+    } else {
+        cross(frame_rate, h)
+    }
 }
 
 /// `Ḣ_O = Ḣ_G + r̄ × m ā` for a body turning about the fixed point O, from the rate

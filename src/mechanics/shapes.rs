@@ -14,6 +14,7 @@
 //! may also be given by its six centroidal components ([`Shape::Explicit`]).
 
 use super::inertia::InertiaTensor;
+use super::slip::Slip;
 use crate::algebra::{AlgebraError, Expr};
 
 /// A body whose inertia is known in closed form.
@@ -86,7 +87,11 @@ impl Shape {
         let sq = |e: &Expr| e.powi(2);
         let moments = match self {
             Shape::SlenderRod { length } => {
-                let i = q(1, 12) * sq(length);
+                let twelfth = match Slip::RodAboutEnd.is_active() {
+                    true => q(1, 3),
+                    false => q(1, 12),
+                };
+                let i = twelfth * sq(length);
                 [Expr::zero(), i.clone(), i]
             }
             Shape::ThinPlate { a, b } => [
@@ -116,6 +121,11 @@ impl Shape {
             Shape::Explicit(tensor) => return Ok(tensor.clone()),
         };
         let [x, y, z] = moments.map(|e| e.expand());
-        Ok(InertiaTensor::diagonal([x?, y?, z?]))
+        let [x, y, z] = [x?, y?, z?];
+        let axisymmetric = matches!(self, Shape::ThinDisk { .. } | Shape::SolidCylinder { .. });
+        if axisymmetric && Slip::AxialAndDiametralExchanged.is_active() {
+            return Ok(InertiaTensor::diagonal([y, x.clone(), x]));
+        }
+        Ok(InertiaTensor::diagonal([x, y, z]))
     }
 }

@@ -18,13 +18,13 @@
 
 use crate::algebra::{AlgebraError, Domains, Expr, Symbol, Vector};
 use crate::mechanics::catalogue::derive_general;
+use crate::mechanics::slip::Slip;
 use crate::parse::claim::Name;
 use crate::scene::analysis::values_of;
 use crate::scene::model::{Quantity, Request, Span};
 use crate::scene::units::{dimension_with, Dimension, Dimensions};
 use crate::scene::units_in_math::{marker, marker_dimension};
 use crate::scene::{Scene, Value};
-use crate::mechanics::slip::Slip;
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock};
 

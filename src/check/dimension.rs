@@ -14,6 +14,9 @@ use crate::parse::claim::{Claim, ClaimSide, WrittenTerm};
 use crate::scene::units::{dimension_with, Dimension, DimensionError};
 use std::collections::HashMap;
 
+/// The reading of a claim with a term of another dimension.
+pub const INHOMOGENEOUS: &str = "inhomogeneous";
+
 /// A written term whose dimension differs from the claim's.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OddTerm {

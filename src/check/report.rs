@@ -105,7 +105,12 @@ fn of_piece(report: &Report, piece: &Piece) -> String {
 
 /// What the slip changes in a component, in the givens' names and, for a claim in
 /// numbers, in value: `correct − claimed = -1/8*m*c*w^2 (-59.25 N)`.
-fn piece_text(piece: &Piece, c: Option<&Component>, notation: Notation, domains: &Domains) -> String {
+fn piece_text(
+    piece: &Piece,
+    c: Option<&Component>,
+    notation: Notation,
+    domains: &Domains,
+) -> String {
     let form = shown(&piece.in_symbols, piece.axis, notation, domains);
     let value = piece
         .value

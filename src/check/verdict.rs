@@ -20,12 +20,12 @@ use super::second_opinion::{second_opinion, Opinion};
 use crate::algebra::vector::{components, has_unit_vectors};
 use crate::algebra::{AlgebraError, Axis, Domains, Expr, Vector};
 use crate::algebra::{Role, Symbol};
-use crate::parse::claim::{Claim, ClaimSide};
 use crate::mechanics::slip::Slip;
+use crate::parse::claim::{Claim, ClaimSide};
 use crate::parse::parse_claim_with_units;
 use crate::parse::Diagnostic;
 use crate::scene::units::{dimension_with, Dimension};
-use crate::scene::units_in_math::{in_si, unit_of};
+use crate::scene::units_in_math::in_si;
 
 /// What a check concludes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -112,7 +112,7 @@ impl Report {
     /// The name of the slip: `inhomogeneous`, or the first differing component's reading.
     pub fn reading(&self) -> Option<&'static str> {
         if self.odd_term.is_some() {
-            return Some("inhomogeneous");
+            return Some(super::dimension::INHOMOGENEOUS);
         }
         if let Some(slip) = &self.slip {
             return Some(slip.slip.name());
@@ -127,7 +127,13 @@ impl Report {
 /// Checks the claim `text` in `context`. A claim that cannot be read (a syntax error, an
 /// unknown name, no `=`, a vector equated to a scalar) is a located error.
 pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report, Diagnostic> {
-    let unit = |name: &str| context.unit(name);
+    // Whether the claim writes a unit after a number (`1857 N`).
+    let wrote_unit = std::cell::Cell::new(false);
+    let unit = |name: &str| {
+        let unit = context.unit(name);
+        wrote_unit.set(wrote_unit.get() || unit.is_some());
+        unit
+    };
     let claim = parse_claim_with_units(source_name, text, &|name| context.name(name), Some(&unit))?;
     let derived = |side: &ClaimSide| side.resolved.iter().any(|n| !context.is_alias(n));
     let (correct, claimed) = if derived(&claim.rhs) && !derived(&claim.lhs) {
@@ -146,11 +152,9 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
         odd_term: odd_term(&claim, text, &|s| context.dimension(s)),
         slip: None,
     };
-    if report
-        .odd_term
-        .as_ref()
-        .is_some_and(|odd| !written_in_si_numbers(context, &claim, text, odd.span))
-    {
+    if report.odd_term.as_ref().is_some_and(|odd| {
+        !written_in_si_numbers(context, &claim, text, wrote_unit.get(), odd.span)
+    }) {
         return Ok(report);
     }
     report.odd_term = None;
@@ -218,11 +222,10 @@ fn slip_reading(
                     Some(s) => &c.correct_in_symbols - &s.correct_in_symbols,
                     None => c.correct_in_symbols.clone(),
                 };
-                let value = c.numbers.as_ref().and_then(|_| {
-                    in_values(context, &in_symbols)
-                        .eval::<f64>(&|_| None)
-                        .ok()
-                });
+                let value = c
+                    .numbers
+                    .as_ref()
+                    .and_then(|_| in_values(context, &in_symbols).eval::<f64>(&|_| None).ok());
                 Piece {
                     axis: c.axis,
                     in_symbols,
@@ -312,6 +315,7 @@ fn written_in_si_numbers(
     context: &Context,
     claim: &Claim,
     text: &str,
+    wrote_unit: bool,
     span: (usize, usize),
 ) -> bool {
     let plain_number = || {
@@ -323,12 +327,7 @@ fn written_in_si_numbers(
             .find(|t| t.span == span)
             .is_some_and(|t| !t.value.has_symbol_where(&|s| !is_number_symbol(context, s)))
     };
-    let with_units = || {
-        [&claim.lhs, &claim.rhs]
-            .iter()
-            .any(|side| side.value.has_symbol_where(&|s| unit_of(s).is_some()))
-    };
-    context.has_values() && (plain_number() || holds_decimal(text) && !with_units())
+    context.has_values() && (plain_number() || holds_decimal(text) && !wrote_unit)
 }
 
 /// Whether `text` writes a decimal number (`0.3`, `.5`, `2.`).
@@ -402,11 +401,9 @@ fn component(
     domains: &Domains,
     seed: u64,
 ) -> Component {
-    // Tangents as quotients, so that `tan β = sin β / cos β` and `1 + tan² = sec²` reduce.
-    let difference = match (
-        correct.tangents_as_quotients(),
-        claimed.tangents_as_quotients(),
-    ) {
+    // In single angles, so that `tan β = sin β / cos β`, `1 + tan² = sec²` and
+    // `sin 2θ = 2 sin θ cos θ` reduce.
+    let difference = match (correct.in_single_angles(), claimed.in_single_angles()) {
         (Ok(c), Ok(s)) => &c - &s,
         _ => &correct - &claimed,
     };

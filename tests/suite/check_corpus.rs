@@ -4,7 +4,7 @@
 //! claim's verdict and reading must be the corpus's; all mismatches are reported together.
 
 use crate::common::check::{check_file, try_judged, ClaimsFile};
-use kinetics::check::diagnosis::READINGS;
+use kinetics::check::reading_names;
 use std::collections::BTreeMap;
 
 /// One line of the corpus: `CONTEXT | VERDICT | READING | CLAIM`.
@@ -19,9 +19,6 @@ struct Entry {
 }
 
 const VERDICTS: [&str; 4] = ["holds", "differs", "undecided", "error"];
-
-/// The reading of a claim with a term of another dimension.
-const INHOMOGENEOUS: &str = "inhomogeneous";
 
 fn corpus() -> Vec<Entry> {
     let text = include_str!("../data/check_corpus.txt");
@@ -42,7 +39,7 @@ fn corpus() -> Vec<Entry> {
                 i + 1
             );
             assert!(
-                reading == "-" || reading == INHOMOGENEOUS || READINGS.contains(&reading),
+                reading == "-" || reading_names().contains(&reading),
                 "corpus line {}: no reading is named {reading}",
                 i + 1
             );
@@ -66,7 +63,7 @@ fn the_corpus_is_large_and_covers_every_reading() {
     assert!(corpus
         .iter()
         .all(|e| e.verdict != "holds" || e.reading.is_none()));
-    for name in READINGS.iter().chain([&INHOMOGENEOUS]) {
+    for name in reading_names() {
         let n = corpus
             .iter()
             .filter(|e| e.reading.as_deref() == Some(name))

@@ -46,7 +46,7 @@ pub struct Diagnosis {
 }
 
 /// What differs between `claimed` and `correct` (two scalar expressions, any form: they are
-/// brought to comparable sums of terms here, `common_denominator.rs`), term by term
+/// brought to single angles and comparable sums of terms here, `common_denominator.rs`), term by term
 /// (`comparison.rs`), and the first reading of the rule table that fits (`rules.rs`).
 /// Never panics; an expression beyond the algebra's bounds gives its `AlgebraError`.
 ///
@@ -60,7 +60,10 @@ pub struct Diagnosis {
 /// assert_eq!(diagnosis.reading.unwrap().name, "product-sign-convention");
 /// ```
 pub fn diagnose(claimed: &Expr, correct: &Expr) -> Result<Diagnosis, AlgebraError> {
-    let (claimed, correct) = common_denominator::comparable_sums(claimed, correct)?;
+    // In single angles, so that `½ sin 2θ` for `sin θ cos θ` is one term, not one missing
+    // and one extra.
+    let (claimed, correct) = (claimed.in_single_angles()?, correct.in_single_angles()?);
+    let (claimed, correct) = common_denominator::comparable_sums(&claimed, &correct)?;
     let differences = comparison::Differences::between(&claimed, &correct);
     let reading = rules::first_reading(&differences);
     Ok(differences.into_diagnosis(reading))

@@ -125,6 +125,34 @@ impl Budget {
     }
 }
 
+impl Budget {
+    /// [`Budget::run`] for work that belongs to another input than the one whose budget is
+    /// running on this thread (the checker's context derived again with a slip, once, for
+    /// every claim that needs it): the running budget is suspended and not charged.
+    pub fn run_apart<T>(self, work: impl FnOnce() -> T) -> Result<(T, u64), AlgebraError> {
+        let outer = Apart {
+            spent: SPENT.with(Cell::get),
+            limit: LIMIT.with(Cell::get),
+        };
+        let outcome = self.run(work);
+        drop(outer);
+        outcome
+    }
+}
+
+/// The budget a [`Budget::run_apart`] leaves as it found it.
+struct Apart {
+    spent: u64,
+    limit: u64,
+}
+
+impl Drop for Apart {
+    fn drop(&mut self) {
+        SPENT.with(|s| s.set(self.spent));
+        LIMIT.with(|l| l.set(self.limit));
+    }
+}
+
 /// The budget a [`Budget::run`] suspends, restored when the run ends, however it ends (a
 /// panic caught further up leaves this thread's budget as it was): charged with the run's
 /// work.

@@ -16,6 +16,7 @@
 //! Every derived value comes from the mechanics functions `derive` and `solve` print (the
 //! catalogue, or the scene's analysis), never from a copy.
 
+use crate::algebra::work::Budget;
 use crate::algebra::{AlgebraError, Domains, Expr, Symbol, Vector};
 use crate::mechanics::catalogue::derive_general;
 use crate::mechanics::slip::Slip;
@@ -317,6 +318,17 @@ impl Context {
         c
     }
 
+    /// Whether `slip` changes what `name` stands for (a slip that changes no name of a
+    /// claim cannot explain it).
+    pub fn slip_changes(&self, slip: Slip, name: &str) -> bool {
+        let value = |c: &Context| match c.meanings.get(name) {
+            Some(Meaning::Derived(e) | Meaning::Alias(e)) => Some(e.clone()),
+            _ => None,
+        };
+        self.slipped(slip)
+            .is_some_and(|slipped| value(slipped) != value(self))
+    }
+
     /// This context derived again with `slip` made wherever its piece is formed: what a
     /// claim holds in when it makes that slip. Derived once, when first asked; none for a
     /// context that is itself slipped, or where the slipped derivation fails.
@@ -325,14 +337,24 @@ impl Context {
         let k = Slip::ALL.iter().position(|s| *s == slip)?;
         self.slipped[k]
             .get_or_init(|| {
-                let mut c = slip.applied(|| match source {
-                    Source::General {
-                        principal,
-                        fixed_point,
-                    } => Context::general(*principal, *fixed_point).ok(),
-                    Source::FixedAxis => Context::fixed_axis().ok(),
-                    Source::Scene(scene) => Some(Context::scene(scene)),
-                })?;
+                // The context's work, not the claim's that first needs it: bounded by the
+                // budget of the context's own input.
+                let bytes = match source {
+                    Source::Scene(scene) => scene.source.len(),
+                    _ => 0,
+                };
+                let derive = || {
+                    slip.applied(|| match source {
+                        Source::General {
+                            principal,
+                            fixed_point,
+                        } => Context::general(*principal, *fixed_point).ok(),
+                        Source::FixedAxis => Context::fixed_axis().ok(),
+                        Source::Scene(scene) => Some(Context::scene(scene)),
+                    })
+                };
+                let (c, _) = Budget::for_input(bytes).run_apart(derive).ok()?;
+                let mut c = c?;
                 c.source = None;
                 c.relative_tolerance = self.relative_tolerance;
                 Some(c)

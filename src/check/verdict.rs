@@ -127,69 +127,33 @@ impl Report {
 /// Checks the claim `text` in `context`. A claim that cannot be read (a syntax error, an
 /// unknown name, no `=`, a vector equated to a scalar) is a located error.
 pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report, Diagnostic> {
-    // Whether the claim writes a unit after a number (`1857 N`).
-    let wrote_unit = std::cell::Cell::new(false);
-    let unit = |name: &str| {
-        let unit = context.unit(name);
-        wrote_unit.set(wrote_unit.get() || unit.is_some());
-        unit
-    };
-    let claim = parse_claim_with_units(source_name, text, &|name| context.name(name), Some(&unit))?;
-    let derived = |side: &ClaimSide| side.resolved.iter().any(|n| !context.is_alias(n));
-    let (correct, claimed) = if derived(&claim.rhs) && !derived(&claim.lhs) {
-        (&claim.rhs, &claim.lhs)
-    } else {
-        (&claim.lhs, &claim.rhs)
-    };
+    let (claim, wrote_unit) = read(context, source_name, text)?;
+    let (correct, claimed) = sides(context, &claim);
     let side_text = |side: &ClaimSide| text[side.span.0..side.span.1].to_string();
     let mut report = Report {
         claim: text.to_string(),
         correct_side: side_text(correct),
         claimed_side: side_text(claimed),
-        correct_is_derived: derived(correct),
+        correct_is_derived: is_derived(context, correct),
         verdict: Verdict::Differs,
         components: Vec::new(),
         odd_term: odd_term(&claim, text, &|s| context.dimension(s)),
         slip: None,
     };
-    if report.odd_term.as_ref().is_some_and(|odd| {
-        !written_in_si_numbers(context, &claim, text, wrote_unit.get(), odd.span)
-    }) {
+    if report
+        .odd_term
+        .as_ref()
+        .is_some_and(|odd| !written_in_si_numbers(context, &claim, text, wrote_unit, odd.span))
+    {
         return Ok(report);
     }
     report.odd_term = None;
     let seed = seed_of(text);
-    let algebra_error = |e: AlgebraError| {
-        Diagnostic::at(source_name, text, 0, text.len(), e.to_string())
-            .with_help("the claim is beyond the bounds of the algebra; write it in parts")
-    };
-    report.components = pairs(&claim, correct, claimed)
-        .map_err(algebra_error)?
+    report.components = compared(context, &claim, source_name, text)?
         .into_iter()
-        .map(|(axis, c, s)| {
-            let (c, s) = (in_si(&c).unwrap_or(c), in_si(&s).unwrap_or(s));
-            if !evaluated_givens(context, &c, &s) {
-                return component(axis, c, s, context.domains(), seed);
-            }
-            // Decided at the givens' values; the correct side in their names kept for a
-            // slip's piece.
-            let dimension = dimension_with(&c, &|s| context.dimension(s)).ok();
-            let in_symbols = c.clone();
-            let (c, s) = (in_values(context, &c), in_values(context, &s));
-            match in_numbers(&c, &s) {
-                Some((correct, claimed)) => {
-                    let tolerance = context.relative_tolerance();
-                    let numbers = Numbers::new(correct, claimed, tolerance, dimension);
-                    Component {
-                        correct_in_symbols: in_symbols,
-                        ..numeric_component(axis, c, s, numbers)
-                    }
-                }
-                None => Component {
-                    correct_in_symbols: in_symbols,
-                    ..component(axis, c, s, context.domains(), seed)
-                },
-            }
+        .map(|mut pair| match pair.numbers.take() {
+            Some(numbers) => numeric_component(pair, numbers),
+            None => component(pair, context.domains(), seed),
         })
         .collect();
     report.verdict = overall(&report.components);
@@ -197,6 +161,106 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
         report.slip = slip_reading(context, source_name, text, &report);
     }
     Ok(report)
+}
+
+/// The claim read in `context` (its names resolved, a unit after a number as its marker),
+/// and whether it writes a unit (`1857 N`).
+fn read(context: &Context, source_name: &str, text: &str) -> Result<(Claim, bool), Diagnostic> {
+    let wrote_unit = std::cell::Cell::new(false);
+    let unit = |name: &str| {
+        let unit = context.unit(name);
+        wrote_unit.set(wrote_unit.get() || unit.is_some());
+        unit
+    };
+    let claim = parse_claim_with_units(source_name, text, &|name| context.name(name), Some(&unit))?;
+    Ok((claim, wrote_unit.get()))
+}
+
+/// Whether a side names a derived quantity (not only aliases of symbols).
+fn is_derived(context: &Context, side: &ClaimSide) -> bool {
+    side.resolved.iter().any(|n| !context.is_alias(n))
+}
+
+/// `(correct, claimed)`: the side that names a derived quantity is correct; else the left.
+fn sides<'c>(context: &Context, claim: &'c Claim) -> (&'c ClaimSide, &'c ClaimSide) {
+    if is_derived(context, &claim.rhs) && !is_derived(context, &claim.lhs) {
+        (&claim.rhs, &claim.lhs)
+    } else {
+        (&claim.lhs, &claim.rhs)
+    }
+}
+
+/// One component's two sides as they are compared: in SI, and at the givens' values when
+/// the claim is written with them (then in numbers when nothing else is left).
+struct Compared {
+    axis: Option<Axis>,
+    correct: Expr,
+    claimed: Expr,
+    /// The correct side before the givens' values were put in.
+    correct_in_symbols: Expr,
+    numbers: Option<Numbers>,
+}
+
+/// The components of a claim as they are compared ([`Compared`]).
+fn compared(
+    context: &Context,
+    claim: &Claim,
+    source_name: &str,
+    text: &str,
+) -> Result<Vec<Compared>, Diagnostic> {
+    let (correct, claimed) = sides(context, claim);
+    let algebra_error = |e: AlgebraError| {
+        Diagnostic::at(source_name, text, 0, text.len(), e.to_string())
+            .with_help("the claim is beyond the bounds of the algebra; write it in parts")
+    };
+    Ok(pairs(claim, correct, claimed)
+        .map_err(algebra_error)?
+        .into_iter()
+        .map(|(axis, c, s)| {
+            let (c, s) = (in_si(&c).unwrap_or(c), in_si(&s).unwrap_or(s));
+            if !evaluated_givens(context, &c, &s) {
+                return Compared {
+                    axis,
+                    correct_in_symbols: c.clone(),
+                    correct: c,
+                    claimed: s,
+                    numbers: None,
+                };
+            }
+            let dimension = dimension_with(&c, &|s| context.dimension(s)).ok();
+            let (values_c, values_s) = (in_values(context, &c), in_values(context, &s));
+            let numbers = in_numbers(&values_c, &values_s).map(|(correct, claimed)| {
+                Numbers::new(correct, claimed, context.relative_tolerance(), dimension)
+            });
+            Compared {
+                axis,
+                correct: values_c,
+                claimed: values_s,
+                correct_in_symbols: c,
+                numbers,
+            }
+        })
+        .collect())
+}
+
+/// Whether the claim holds in `context`, decided quickly: each component in numbers within
+/// the tolerance, or else by evaluation alone (25 digits at random points). For trying a
+/// slip's context, where the verdict is already `differs` and only its reading is sought.
+fn holds_by_values(context: &Context, source_name: &str, text: &str) -> bool {
+    let Ok((claim, _)) = read(context, source_name, text) else {
+        return false;
+    };
+    let Ok(compared) = compared(context, &claim, source_name, text) else {
+        return false;
+    };
+    let seed = seed_of(text);
+    compared.iter().all(|pair| match &pair.numbers {
+        Some(numbers) => numbers.holds(),
+        None => matches!(
+            second_opinion(&pair.correct, &pair.claimed, context.domains(), seed),
+            Opinion::Zero
+        ),
+    })
 }
 
 /// The first slip of [`Slip::ALL`] in whose context the claim holds, with what the slipped
@@ -207,18 +271,29 @@ fn slip_reading(
     text: &str,
     report: &Report,
 ) -> Option<SlipReading> {
+    let (claim, _) = read(context, source_name, text).ok()?;
+    let names: Vec<&String> = claim
+        .lhs
+        .resolved
+        .iter()
+        .chain(&claim.rhs.resolved)
+        .collect();
     Slip::ALL.into_iter().find_map(|slip| {
-        let slipped = check(context.slipped(slip)?, source_name, text).ok()?;
-        if slipped.verdict != Verdict::Holds {
+        if !names.iter().any(|name| context.slip_changes(slip, name)) {
             return None;
         }
+        let slipped = context.slipped(slip)?;
+        if !holds_by_values(slipped, source_name, text) {
+            return None;
+        }
+        let (claim, _) = read(slipped, source_name, text).ok()?;
+        let as_slipped = compared(slipped, &claim, source_name, text).ok()?;
         let pieces = report
             .components
             .iter()
             .filter(|c| c.verdict == Verdict::Differs)
             .map(|c| {
-                let as_slipped = slipped.components.iter().find(|s| s.axis == c.axis);
-                let in_symbols = match as_slipped {
+                let in_symbols = match as_slipped.iter().find(|s| s.axis == c.axis) {
                     Some(s) => &c.correct_in_symbols - &s.correct_in_symbols,
                     None => c.correct_in_symbols.clone(),
                 };
@@ -235,17 +310,6 @@ fn slip_reading(
             .collect();
         Some(SlipReading { slip, pieces })
     })
-}
-
-/// Whether the claimed side was written with a given's value in place of its name: the
-/// correct side holds a given that has a value, and the claimed side does not hold it
-/// (`cos(beta) = 1/2` with `beta = 60 deg`, `A_y = 196.2`). Such a claim is decided at the
-/// givens' exact values; a claim in the givens' names is decided in their names.
-fn evaluated_givens(context: &Context, correct: &Expr, claimed: &Expr) -> bool {
-    correct
-        .symbols()
-        .into_iter()
-        .any(|s| context.value(s).is_some() && !claimed.contains(s))
 }
 
 /// Both sides' values, when neither holds a symbol (π aside): a claim written in numbers.
@@ -279,26 +343,32 @@ impl Numbers {
 }
 
 /// A component written in numbers, decided by its values alone ([`Numbers`]).
-fn numeric_component(
-    axis: Option<Axis>,
-    correct: Expr,
-    claimed: Expr,
-    numbers: Numbers,
-) -> Component {
+fn numeric_component(pair: Compared, numbers: Numbers) -> Component {
     let verdict = match numbers.holds() {
         true => Verdict::Holds,
         false => Verdict::Differs,
     };
     Component {
-        axis,
-        claimed,
+        axis: pair.axis,
+        correct: pair.correct,
+        claimed: pair.claimed,
         verdict,
         undecided_because: None,
         diagnosis: None,
         numbers: Some(numbers),
-        correct_in_symbols: correct.clone(),
-        correct,
+        correct_in_symbols: pair.correct_in_symbols,
     }
+}
+
+/// Whether the claimed side was written with a given's value in place of its name: the
+/// correct side holds a given that has a value, and the claimed side does not hold it
+/// (`cos(beta) = 1/2` with `beta = 60 deg`, `A_y = 196.2`). Such a claim is decided at the
+/// givens' exact values; a claim in the givens' names is decided in their names.
+fn evaluated_givens(context: &Context, correct: &Expr, claimed: &Expr) -> bool {
+    correct
+        .symbols()
+        .into_iter()
+        .any(|s| context.value(s).is_some() && !claimed.contains(s))
 }
 
 /// `e` with every given that has a value replaced by it (exact, in SI).
@@ -394,13 +464,14 @@ enum Exact {
 }
 
 /// One component decided by the algebra and by evaluation.
-fn component(
-    axis: Option<Axis>,
-    correct: Expr,
-    claimed: Expr,
-    domains: &Domains,
-    seed: u64,
-) -> Component {
+fn component(pair: Compared, domains: &Domains, seed: u64) -> Component {
+    let Compared {
+        axis,
+        correct,
+        claimed,
+        correct_in_symbols,
+        ..
+    } = pair;
     // In single angles, so that `tan β = sin β / cos β`, `1 + tan² = sec²` and
     // `sin 2θ = 2 sin θ cos θ` reduce.
     let difference = match (correct.in_single_angles(), claimed.in_single_angles()) {
@@ -462,7 +533,7 @@ fn component(
         undecided_because,
         diagnosis,
         numbers: None,
-        correct_in_symbols: correct.clone(),
+        correct_in_symbols,
         correct,
     }
 }

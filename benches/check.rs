@@ -46,5 +46,34 @@ fn bench(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, bench);
+/// A class: 1000 claims of one scene (the corpus's claims about SP 18.3, right and wrong,
+/// repeated), the context analysed once and the claims checked in parallel as `kinetics
+/// check --claims` does; the slipped contexts are derived once, when a claim first differs.
+fn class(c: &mut Criterion) {
+    use rayon::prelude::*;
+    let corpus = include_str!("../tests/data/check_corpus.txt");
+    let scene_path = "examples/scenes/sp18_3_rotating_rod.scene";
+    let claims: Vec<&str> = corpus
+        .lines()
+        .filter(|l| l.starts_with(scene_path))
+        .filter_map(|l| l.splitn(4, '|').nth(3).map(str::trim))
+        .cycle()
+        .take(1000)
+        .collect();
+    let path = format!("{}/{scene_path}", env!("CARGO_MANIFEST_DIR"));
+    let source = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let scene = kinetics::parse_scene(&path, &source).expect("SP 18.3 reads");
+    c.bench_function("check a class: 1000 claims of SP 18.3, context included", |b| {
+        b.iter(|| {
+            let context = Context::scene(&scene);
+            let verdicts: Vec<_> = claims
+                .par_iter()
+                .map(|claim| check(&context, "class", claim).map(|r| r.verdict))
+                .collect();
+            black_box(verdicts)
+        })
+    });
+}
+
+criterion_group!(benches, bench, class);
 criterion_main!(benches);

@@ -63,16 +63,19 @@ fn class(c: &mut Criterion) {
     let path = format!("{}/{scene_path}", env!("CARGO_MANIFEST_DIR"));
     let source = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     let scene = kinetics::parse_scene(&path, &source).expect("SP 18.3 reads");
-    c.bench_function("check a class: 1000 claims of SP 18.3, context included", |b| {
-        b.iter(|| {
-            let context = Context::scene(&scene);
-            let verdicts: Vec<_> = claims
-                .par_iter()
-                .map(|claim| check(&context, "class", claim).map(|r| r.verdict))
-                .collect();
-            black_box(verdicts)
-        })
-    });
+    c.bench_function(
+        "check a class: 1000 claims of SP 18.3, context included",
+        |b| {
+            b.iter(|| {
+                let context = Context::scene(&scene);
+                let verdicts: Vec<_> = claims
+                    .par_iter()
+                    .map(|claim| check(&context, "class", claim).map(|r| r.verdict))
+                    .collect();
+                black_box(verdicts)
+            })
+        },
+    );
 }
 
 criterion_group!(benches, bench, class);

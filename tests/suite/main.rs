@@ -20,6 +20,7 @@ mod check_cli;
 mod check_corpus;
 mod check_dimension;
 mod check_properties;
+mod check_slips;
 mod check_verdict;
 mod claim_parsing;
 mod cli_bad_input;

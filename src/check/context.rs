@@ -37,6 +37,9 @@ enum Meaning {
     /// Another spelling of symbols the context knows (`omega_x` for `w_x`, `v` for
     /// `√(vbar_x² + vbar_y² + vbar_z²)`, `omega` for `w_x i + w_y j + w_z k`): not derived.
     Alias(Expr),
+    /// A scene quantity with a value in each solution of the scene's equations (a top's
+    /// slow and fast precession), in the order the analysis gives them.
+    Solutions(Vec<Expr>),
     /// A scene quantity its analysis could not derive: why.
     Underivable(String),
 }
@@ -302,10 +305,7 @@ impl Context {
         // One analyser for every quantity: what several need is derived once.
         for ((name, quantity), values) in quantities.iter().zip(values_of(scene, &requests)) {
             let meaning = match values {
-                Ok(values) if values.len() > 1 => Meaning::Underivable(format!(
-                    "{name} has {} values, one in each solution of the scene's equations; a claim about a quantity with several values is not checked",
-                    values.len()
-                )),
+                Ok(values) if values.len() > 1 => c.solutions(name, *quantity, values),
                 Ok(mut values) => match values.pop() {
                     Some(value) => c.meaning_of(name, *quantity, value, scene),
                     None => continue,
@@ -323,6 +323,7 @@ impl Context {
     pub fn slip_changes(&self, slip: Slip, name: &str) -> bool {
         let value = |c: &Context| match c.meanings.get(name) {
             Some(Meaning::Derived(e) | Meaning::Alias(e)) => Some(e.clone()),
+            Some(Meaning::Solutions(each)) => each.first().cloned(),
             _ => None,
         };
         self.slipped(slip)
@@ -360,6 +361,28 @@ impl Context {
                 Some(c)
             })
             .as_ref()
+    }
+
+    /// A quantity with a value in each solution of the scene's equations: a scalar or a
+    /// vector (its components are not named apart).
+    fn solutions(&self, name: &str, quantity: Quantity, values: Vec<Value>) -> Meaning {
+        let dimension = quantity.dimension(&self.dimensions);
+        let each: Option<Vec<Expr>> = values
+            .into_iter()
+            .map(|value| match value {
+                Value::Scalar(e) => Some(self.in_dimension(e, dimension)),
+                Value::Vector(v) => {
+                    Some(unit_vector_sum(&v.map(|e| self.in_dimension(e, dimension))))
+                }
+                _ => None,
+            })
+            .collect();
+        match each {
+            Some(each) => Meaning::Solutions(each),
+            None => Meaning::Underivable(format!(
+                "{name} has a value in each solution of the scene's equations, and is not a scalar or a vector"
+            )),
+        }
     }
 
     /// What a scene's derived value means in a claim; a vector's components are named too
@@ -523,16 +546,22 @@ impl Context {
         }
     }
 
-    /// What a written name stands for here: the resolver of [`crate::parse::parse_claim`].
+    /// What a written name stands for here: the resolver of [`crate::parse::parse_claim`]
+    /// (in the first solution of a scene's equations, where they have several).
     pub fn name(&self, written: &str) -> Name {
+        self.name_in_solution(written, 0)
+    }
+
+    /// What a written name stands for in the solution `k` (from 0) of a scene's equations.
+    pub fn name_in_solution(&self, written: &str, k: usize) -> Name {
         // `w1` is the symbol `w_1`: a name is looked up as written and as the symbol's.
         let symbol = Symbol::new(written);
-        let meaning = self
-            .meanings
-            .get(written)
-            .or_else(|| self.meanings.get(symbol.name()));
+        let meaning = self.meaning(written);
         match meaning {
             Some(Meaning::Derived(e) | Meaning::Alias(e)) => return Name::Derived(e.clone()),
+            Some(Meaning::Solutions(each)) => {
+                return Name::Derived(each[k.min(each.len() - 1)].clone())
+            }
             Some(Meaning::Underivable(why)) => {
                 return Name::Unknown(format!(
                     "{} cannot derive {written}: {why}",
@@ -551,6 +580,21 @@ impl Context {
             return Name::Symbol;
         }
         Name::Unknown(self.suggestion(written))
+    }
+
+    /// The meaning of a written name, looked up as written and as its symbol's name.
+    fn meaning(&self, written: &str) -> Option<&Meaning> {
+        self.meanings
+            .get(written)
+            .or_else(|| self.meanings.get(Symbol::new(written).name()))
+    }
+
+    /// How many values `name` has: one in each solution of the scene's equations, else 1.
+    pub fn solution_count(&self, name: &str) -> usize {
+        match self.meaning(name) {
+            Some(Meaning::Solutions(each)) => each.len(),
+            _ => 1,
+        }
     }
 
     /// Whether `name`, written in a claim, is another spelling of symbols (not a derived
@@ -609,6 +653,7 @@ impl Context {
             .or_else(|| {
                 self.meanings.get(s.name()).and_then(|m| match m {
                     Meaning::Derived(e) | Meaning::Alias(e) => self.dimension_of(e).ok(),
+                    Meaning::Solutions(each) => self.dimension_of(each.first()?).ok(),
                     Meaning::Underivable(_) => None,
                 })
             })

@@ -75,6 +75,15 @@ fn not_holding(report: &Report) -> impl Iterator<Item = &Component> {
         .filter(|c| c.verdict != Verdict::Holds)
 }
 
+/// `in solution 2 of the scene's 2 (its names have a value in each)`.
+fn solution_sentence(report: &Report) -> String {
+    format!(
+        "in solution {} of the scene's {} (its names have a value in each)",
+        report.solution + 1,
+        report.solutions
+    )
+}
+
 /// The significant figures a report shows a claimed number in: as many as the tolerance
 /// asks for (four at the default 0.5 %, one more a tenfold tighter).
 fn figures(n: &Numbers) -> usize {
@@ -154,6 +163,9 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
     if let Some(odd) = &report.odd_term {
         out.push_str(&format!("  inhomogeneous: {}\n", odd_term_sentence(odd)));
         return out;
+    }
+    if report.solutions > 1 {
+        out.push_str(&format!("  {}\n", solution_sentence(report)));
     }
     let name = &report.correct_side;
     let of = |c: &Component| match c.axis {
@@ -287,6 +299,12 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
             markup::latex_words(&odd_term_sentence(odd))
         ));
         return out;
+    }
+    if report.solutions > 1 {
+        out.push_str(&format!(
+            "{}.\n",
+            markup::latex_words(&solution_sentence(report))
+        ));
     }
     let name = side_latex(report);
     for n in report.components.iter().filter_map(|c| c.numbers.as_ref()) {
@@ -443,6 +461,10 @@ pub fn json(report: &Report, domains: &Domains) -> Json {
         "correct_side": report.correct_side,
         "claimed_side": report.claimed_side,
         "odd_term": report.odd_term.as_ref().map(odd_term_json),
+        "solution": (report.solutions > 1).then(|| json!({
+            "number": report.solution + 1,
+            "of": report.solutions,
+        })),
         "slip": report.slip.as_ref().map(|slip| json!({
             "name": slip.slip.name(),
             "explanation": markup::text(slip.slip.concept()),

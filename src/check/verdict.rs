@@ -106,6 +106,10 @@ pub struct Report {
     pub odd_term: Option<OddTerm>,
     /// The slip of the mechanics that turns the correct side into the claimed one.
     pub slip: Option<SlipReading>,
+    /// The solution of the scene's equations the claim is decided in (from 0), of
+    /// `solutions` (1 unless a name it uses has a value in each of several).
+    pub solution: usize,
+    pub solutions: usize,
 }
 
 impl Report {
@@ -125,9 +129,33 @@ impl Report {
 }
 
 /// Checks the claim `text` in `context`. A claim that cannot be read (a syntax error, an
-/// unknown name, no `=`, a vector equated to a scalar) is a located error.
+/// unknown name, no `=`, a vector equated to a scalar) is a located error. A claim about a
+/// quantity with a value in each solution of a scene's equations holds when it holds in
+/// one of them (the top's slow or fast precession), and says which.
 pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report, Diagnostic> {
-    let (claim, wrote_unit) = read(context, source_name, text)?;
+    let first = check_in_solution(context, source_name, text, 0)?;
+    if first.verdict == Verdict::Holds {
+        return Ok(first);
+    }
+    for k in 1..first.solutions {
+        let report = check_in_solution(context, source_name, text, k)?;
+        if report.verdict == Verdict::Holds {
+            return Ok(report);
+        }
+    }
+    Ok(first)
+}
+
+/// [`check`] with each name in the solution `k` of the scene's equations.
+fn check_in_solution(
+    context: &Context,
+    source_name: &str,
+    text: &str,
+    k: usize,
+) -> Result<Report, Diagnostic> {
+    let (claim, wrote_unit) = read(context, source_name, text, k)?;
+    let names = claim.lhs.resolved.iter().chain(&claim.rhs.resolved);
+    let solutions = names.map(|n| context.solution_count(n)).max().unwrap_or(1);
     let (correct, claimed) = sides(context, &claim);
     let side_text = |side: &ClaimSide| text[side.span.0..side.span.1].to_string();
     let mut report = Report {
@@ -139,6 +167,8 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
         components: Vec::new(),
         odd_term: odd_term(&claim, text, &|s| context.dimension(s)),
         slip: None,
+        solution: k,
+        solutions,
     };
     if report
         .odd_term
@@ -165,14 +195,20 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
 
 /// The claim read in `context` (its names resolved, a unit after a number as its marker),
 /// and whether it writes a unit (`1857 N`).
-fn read(context: &Context, source_name: &str, text: &str) -> Result<(Claim, bool), Diagnostic> {
+fn read(
+    context: &Context,
+    source_name: &str,
+    text: &str,
+    solution: usize,
+) -> Result<(Claim, bool), Diagnostic> {
     let wrote_unit = std::cell::Cell::new(false);
     let unit = |name: &str| {
         let unit = context.unit(name);
         wrote_unit.set(wrote_unit.get() || unit.is_some());
         unit
     };
-    let claim = parse_claim_with_units(source_name, text, &|name| context.name(name), Some(&unit))?;
+    let resolve = |name: &str| context.name_in_solution(name, solution);
+    let claim = parse_claim_with_units(source_name, text, &resolve, Some(&unit))?;
     Ok((claim, wrote_unit.get()))
 }
 
@@ -229,9 +265,8 @@ fn compared(
             }
             let dimension = dimension_with(&c, &|s| context.dimension(s)).ok();
             let (values_c, values_s) = (in_values(context, &c), in_values(context, &s));
-            let numbers = in_numbers(&values_c, &values_s).map(|(correct, claimed)| {
-                Numbers::new(correct, claimed, context.relative_tolerance(), dimension)
-            });
+            let numbers = in_numbers(&values_c, &values_s)
+                .map(|values| Numbers::new(values, context.relative_tolerance(), dimension));
             Compared {
                 axis,
                 correct: values_c,
@@ -246,8 +281,8 @@ fn compared(
 /// Whether the claim holds in `context`, decided quickly: each component in numbers within
 /// the tolerance, or else by evaluation alone (25 digits at random points). For trying a
 /// slip's context, where the verdict is already `differs` and only its reading is sought.
-fn holds_by_values(context: &Context, source_name: &str, text: &str) -> bool {
-    let Ok((claim, _)) = read(context, source_name, text) else {
+fn holds_by_values(context: &Context, source_name: &str, text: &str, solution: usize) -> bool {
+    let Ok((claim, _)) = read(context, source_name, text, solution) else {
         return false;
     };
     let Ok(compared) = compared(context, &claim, source_name, text) else {
@@ -271,7 +306,7 @@ fn slip_reading(
     text: &str,
     report: &Report,
 ) -> Option<SlipReading> {
-    let (claim, _) = read(context, source_name, text).ok()?;
+    let (claim, _) = read(context, source_name, text, report.solution).ok()?;
     let names: Vec<&String> = claim
         .lhs
         .resolved
@@ -283,10 +318,10 @@ fn slip_reading(
             return None;
         }
         let slipped = context.slipped(slip)?;
-        if !holds_by_values(slipped, source_name, text) {
+        if !holds_by_values(slipped, source_name, text, report.solution) {
             return None;
         }
-        let (claim, _) = read(slipped, source_name, text).ok()?;
+        let (claim, _) = read(slipped, source_name, text, report.solution).ok()?;
         let as_slipped = compared(slipped, &claim, source_name, text).ok()?;
         let pieces = report
             .components
@@ -312,21 +347,39 @@ fn slip_reading(
     })
 }
 
-/// Both sides' values, when neither holds a symbol (π aside): a claim written in numbers.
-fn in_numbers(correct: &Expr, claimed: &Expr) -> Option<(f64, f64)> {
+/// Both sides' values, when neither holds a symbol (π aside): a claim written in numbers;
+/// and the scale of the correct side, the sum of its terms' magnitudes (an exact zero
+/// evaluates to round-off of that size: `3 r cos θ φ̇² − 2 r ψ̇ φ̇ + 4 g = 0` at a root).
+fn in_numbers(correct: &Expr, claimed: &Expr) -> Option<(f64, f64, f64)> {
     let value = |e: &Expr| {
         if e.has_symbol_where(&|s| !s.is_pi()) {
             return None;
         }
         e.eval::<f64>(&|_| None).ok().filter(|v| v.is_finite())
     };
-    Some((value(correct)?, value(claimed)?))
+    let scale = correct
+        .terms()
+        .iter()
+        .map(|t| value(t).map(f64::abs))
+        .sum::<Option<f64>>()?;
+    Some((value(correct)?, value(claimed)?, scale))
 }
 
+/// A difference this small relative to the scale of the correct side's terms is round-off.
+const ROUND_OFF: f64 = 1e-12;
+
 impl Numbers {
-    fn new(correct: f64, claimed: f64, tolerance: f64, dimension: Option<Dimension>) -> Numbers {
+    fn new(
+        (correct, claimed, scale): (f64, f64, f64),
+        tolerance: f64,
+        dimension: Option<Dimension>,
+    ) -> Numbers {
         let off = (claimed - correct).abs();
-        let relative = if off == 0.0 { 0.0 } else { off / correct.abs() };
+        let relative = if off <= ROUND_OFF * scale.max(claimed.abs()) {
+            0.0
+        } else {
+            off / correct.abs()
+        };
         Numbers {
             correct,
             claimed,

@@ -174,6 +174,12 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
     };
     for c in &report.components {
         if let Some(n) = &c.numbers {
+            // A claim that differs, decided in numbers: the correct value in the givens'
+            // names first, where it has any (what the student derives), then the numbers.
+            if !n.holds() && !c.correct_in_symbols.symbols().is_empty() {
+                let form = shown(&c.correct_in_symbols, c.axis, Notation::Text, domains);
+                out.push_str(&format!("  {}, correct: {form}\n", of(c)));
+            }
             out.push_str(&format!("  {}: {}\n", of(c), numbers_sentence(n)));
         }
     }

@@ -181,6 +181,9 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
                 out.push_str(&format!("  {}, correct: {form}\n", of(c)));
             }
             out.push_str(&format!("  {}: {}\n", of(c), numbers_sentence(n)));
+            if let Some(d) = &c.diagnosis {
+                out.push_str(&diagnosis_text(d, c, report.slip.is_none(), domains));
+            }
         }
     }
     if let Some(slip) = &report.slip {
@@ -234,7 +237,8 @@ fn terms_text(terms: &[Expr], c: &Component, domains: &Domains) -> String {
 
 fn diagnosis_text(d: &Diagnosis, c: &Component, with_reading: bool, domains: &Domains) -> String {
     let mut out = String::new();
-    let residual = &c.claimed - &c.correct;
+    // In the givens' names: a claim decided in numbers is diagnosed in them.
+    let residual = &c.claimed_in_symbols - &c.correct_in_symbols;
     out.push_str(&format!(
         "  residual (claimed - correct): {}\n",
         shown(&residual, c.axis, Notation::Text, domains)

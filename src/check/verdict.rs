@@ -52,9 +52,10 @@ pub struct Component {
     pub diagnosis: Option<Diagnosis>,
     /// A component written in numbers: both values, decided within the tolerance.
     pub numbers: Option<Numbers>,
-    /// The correct value before the givens' values were put in (the same as `correct` for
-    /// a claim in the givens' names).
+    /// The values before the givens' values were put in (the same as `correct` and
+    /// `claimed` for a claim in the givens' names).
     pub correct_in_symbols: Expr,
+    pub claimed_in_symbols: Expr,
 }
 
 /// A slip that explains a claim: in the context derived with it the claim holds.
@@ -232,8 +233,9 @@ struct Compared {
     axis: Option<Axis>,
     correct: Expr,
     claimed: Expr,
-    /// The correct side before the givens' values were put in.
+    /// The sides before the givens' values were put in.
     correct_in_symbols: Expr,
+    claimed_in_symbols: Expr,
     numbers: Option<Numbers>,
 }
 
@@ -258,6 +260,7 @@ fn compared(
                 return Compared {
                     axis,
                     correct_in_symbols: c.clone(),
+                    claimed_in_symbols: s.clone(),
                     correct: c,
                     claimed: s,
                     numbers: None,
@@ -272,6 +275,7 @@ fn compared(
                 correct: values_c,
                 claimed: values_s,
                 correct_in_symbols: c,
+                claimed_in_symbols: s,
                 numbers,
             }
         })
@@ -396,10 +400,19 @@ impl Numbers {
 }
 
 /// A component written in numbers, decided by its values alone ([`Numbers`]).
+/// One that differs, written in symbols that leave a given out (`A_x = -1/6 m L w^2 cos(beta)`
+/// without g), is diagnosed term by term in the givens' names.
 fn numeric_component(pair: Compared, numbers: Numbers) -> Component {
     let verdict = match numbers.holds() {
         true => Verdict::Holds,
         false => Verdict::Differs,
+    };
+    let in_symbols = pair.claimed_in_symbols.has_symbol_where(&|s| !s.is_pi());
+    let diagnosis = match verdict {
+        Verdict::Differs if in_symbols => {
+            diagnose(&pair.claimed_in_symbols, &pair.correct_in_symbols).ok()
+        }
+        _ => None,
     };
     Component {
         axis: pair.axis,
@@ -407,9 +420,10 @@ fn numeric_component(pair: Compared, numbers: Numbers) -> Component {
         claimed: pair.claimed,
         verdict,
         undecided_because: None,
-        diagnosis: None,
+        diagnosis,
         numbers: Some(numbers),
         correct_in_symbols: pair.correct_in_symbols,
+        claimed_in_symbols: pair.claimed_in_symbols,
     }
 }
 
@@ -523,6 +537,7 @@ fn component(pair: Compared, domains: &Domains, seed: u64) -> Component {
         correct,
         claimed,
         correct_in_symbols,
+        claimed_in_symbols,
         ..
     } = pair;
     // In single angles, so that `tan β = sin β / cos β`, `1 + tan² = sec²` and
@@ -587,6 +602,7 @@ fn component(pair: Compared, domains: &Domains, seed: u64) -> Component {
         diagnosis,
         numbers: None,
         correct_in_symbols,
+        claimed_in_symbols,
         correct,
     }
 }

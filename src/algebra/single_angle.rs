@@ -26,24 +26,35 @@ impl Expr {
     /// assert_eq!(e.in_single_angles().unwrap(), single);
     /// ```
     pub fn in_single_angles(&self) -> Result<Expr, AlgebraError> {
-        Ok(match self.view() {
-            View::Num(_) | View::Sym(_) => self.clone(),
-            View::Add(terms) => Expr::add_all(
-                terms
-                    .iter()
-                    .map(Expr::in_single_angles)
-                    .collect::<Result<Vec<_>, _>>()?,
-            ),
-            View::Mul(factors) => Expr::mul_all(
-                factors
-                    .iter()
-                    .map(Expr::in_single_angles)
-                    .collect::<Result<Vec<_>, _>>()?,
-            ),
-            View::Pow(b, e) => b.in_single_angles()?.checked_pow(e)?,
-            View::Func(f, a) => single_angle(f, a.in_single_angles()?)?,
-        })
+        single_angles(self, Tangents::AsQuotients)
     }
+
+    /// This expression with each `sin 2x`, `cos 2x` in its single-angle form, tangents kept
+    /// as written (the diagnosis lists a term as the student wrote it: `L tan θ`).
+    pub fn double_angles_multiplied_out(&self) -> Result<Expr, AlgebraError> {
+        single_angles(self, Tangents::Kept)
+    }
+}
+
+/// Whether a tangent is written as the quotient.
+#[derive(Clone, Copy, PartialEq)]
+enum Tangents {
+    AsQuotients,
+    Kept,
+}
+
+fn single_angles(e: &Expr, tangents: Tangents) -> Result<Expr, AlgebraError> {
+    let each = |e: &Expr| single_angles(e, tangents);
+    Ok(match e.view() {
+        View::Num(_) | View::Sym(_) => e.clone(),
+        View::Add(terms) => Expr::add_all(terms.iter().map(each).collect::<Result<Vec<_>, _>>()?),
+        View::Mul(factors) => {
+            Expr::mul_all(factors.iter().map(each).collect::<Result<Vec<_>, _>>()?)
+        }
+        View::Pow(b, exponent) => each(b)?.checked_pow(exponent)?,
+        View::Func(Func::Tan, a) if tangents == Tangents::Kept => Func::Tan.apply(each(a)?),
+        View::Func(f, a) => single_angle(f, each(a)?)?,
+    })
 }
 
 /// `f(a)` in single angles, `a` already so.

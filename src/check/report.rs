@@ -75,10 +75,16 @@ fn not_holding(report: &Report) -> impl Iterator<Item = &Component> {
         .filter(|c| c.verdict != Verdict::Holds)
 }
 
-/// `in solution 2 of the scene's 2 (its names have a value in each)`.
+/// A component's term-by-term diagnosis, shown where no slip of the mechanics explains the
+/// claim (the slip's line says what differs, once).
+fn term_by_term<'r>(report: &Report, c: &'r Component) -> Option<&'r Diagnosis> {
+    c.diagnosis.as_ref().filter(|_| report.slip.is_none())
+}
+
+/// `in solution 2 of the 2 the scene's equations have`.
 fn solution_sentence(report: &Report) -> String {
     format!(
-        "in solution {} of the scene's {} (its names have a value in each)",
+        "in solution {} of the {} the scene's equations have",
         report.solution + 1,
         report.solutions
     )
@@ -141,8 +147,12 @@ fn numbers_sentence(n: &Numbers) -> String {
     // more where it holds (to show how near it came).
     let correct = number(n.correct, digits + usize::from(n.holds()), n);
     let tolerance = percent(n.tolerance);
+    let wrong_sign = n.claimed * n.correct < 0.0;
     match (n.relative, n.holds()) {
         (0.0, _) => format!("{claimed} is the exact value"),
+        (_, false) if wrong_sign => {
+            format!("{claimed} has the wrong sign: the exact value is {correct}")
+        }
         (r, true) => format!(
             "{claimed} is {} % from the exact {correct}, within the tolerance of {tolerance} %",
             percent(r)
@@ -181,8 +191,8 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
                 out.push_str(&format!("  {}, correct: {form}\n", of(c)));
             }
             out.push_str(&format!("  {}: {}\n", of(c), numbers_sentence(n)));
-            if let Some(d) = &c.diagnosis {
-                out.push_str(&diagnosis_text(d, c, report.slip.is_none(), domains));
+            if let Some(d) = term_by_term(report, c) {
+                out.push_str(&diagnosis_text(d, c, domains));
             }
         }
     }
@@ -206,8 +216,8 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
         if let Some(why) = &c.undecided_because {
             out.push_str(&format!("  undecided: {why}\n"));
         }
-        if let Some(d) = &c.diagnosis {
-            out.push_str(&diagnosis_text(d, c, report.slip.is_none(), domains));
+        if let Some(d) = term_by_term(report, c) {
+            out.push_str(&diagnosis_text(d, c, domains));
         }
     }
     out
@@ -235,7 +245,7 @@ fn terms_text(terms: &[Expr], c: &Component, domains: &Domains) -> String {
     out
 }
 
-fn diagnosis_text(d: &Diagnosis, c: &Component, with_reading: bool, domains: &Domains) -> String {
+fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
     let mut out = String::new();
     // In the givens' names: a claim decided in numbers is diagnosed in them.
     let residual = &c.claimed_in_symbols - &c.correct_in_symbols;
@@ -243,8 +253,7 @@ fn diagnosis_text(d: &Diagnosis, c: &Component, with_reading: bool, domains: &Do
         "  residual (claimed - correct): {}\n",
         shown(&residual, c.axis, Notation::Text, domains)
     ));
-    // A slip of the mechanics, when one explains the claim, is its reading instead.
-    if let Some(r) = d.reading.as_ref().filter(|_| with_reading) {
+    if let Some(r) = &d.reading {
         out.push_str(&format!(
             "  {}: {}\n",
             r.name,
@@ -359,8 +368,8 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
         if let Some(why) = &c.undecided_because {
             out.push_str(&format!("Undecided: {}.\n", markup::latex_words(why)));
         }
-        if let Some(d) = &c.diagnosis {
-            out.push_str(&diagnosis_latex(d, c, report.slip.is_none(), domains));
+        if let Some(d) = term_by_term(report, c) {
+            out.push_str(&diagnosis_latex(d, c, domains));
         }
     }
     out
@@ -379,11 +388,11 @@ fn in_component(explanation: &str, c: &Component) -> String {
 }
 
 /// The reading's explanation, then the wrong, missing and extra terms, typeset.
-fn diagnosis_latex(d: &Diagnosis, c: &Component, with_reading: bool, domains: &Domains) -> String {
+fn diagnosis_latex(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
     let math = |e: &Expr| format!("${}$", shown(e, c.axis, Notation::Latex, domains));
     let list = |terms: &[Expr]| terms.iter().map(math).collect::<Vec<_>>().join(", ");
     let mut parts = Vec::new();
-    if let Some(r) = d.reading.as_ref().filter(|_| with_reading) {
+    if let Some(r) = &d.reading {
         parts.push(explanation_latex(&in_component(&r.explanation, c)));
     }
     for w in &d.wrong {

@@ -62,7 +62,10 @@ pub struct Diagnosis {
 pub fn diagnose(claimed: &Expr, correct: &Expr) -> Result<Diagnosis, AlgebraError> {
     // In single angles, so that `½ sin 2θ` for `sin θ cos θ` is one term, not one missing
     // and one extra.
-    let (claimed, correct) = (claimed.in_single_angles()?, correct.in_single_angles()?);
+    let (claimed, correct) = (
+        claimed.double_angles_multiplied_out()?,
+        correct.double_angles_multiplied_out()?,
+    );
     let (claimed, correct) = common_denominator::comparable_sums(&claimed, &correct)?;
     let differences = comparison::Differences::between(&claimed, &correct);
     let reading = rules::first_reading(&differences);

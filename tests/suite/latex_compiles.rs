@@ -48,7 +48,8 @@ fn pdflatex_error(dir: &Path, tex: &Path) -> Option<String> {
 }
 
 /// A check's LaTeX report compiles: every verdict and reading, a vector claim, a claim of pure
-/// algebra, an odd term, a power of a power, and a claims file whose name has underscores.
+/// algebra, an odd term, a power of a power, a claims file whose name has underscores, a slip
+/// of the mechanics and claims in numbers.
 #[test]
 fn a_check_report_compiles_with_pdflatex() {
     let dir = std::env::temp_dir().join(format!("kinetics-check-latex-{}", std::process::id()));
@@ -71,8 +72,18 @@ fn a_check_report_compiles_with_pdflatex() {
         .arg(&claims)
         .output()
         .expect("kinetics runs");
-    let body = String::from_utf8_lossy(&report.stdout);
+    let mut body = String::from_utf8_lossy(&report.stdout).into_owned();
+    // In a scene with values: a slip read in symbols then numbers, a number with its unit
+    // that differs, and one of the wrong sign.
+    let scene = crate::common::binary::scene("sp18_4_shaft_reactions");
+    let in_numbers = Command::new(env!("CARGO_BIN_EXE_kinetics"))
+        .args(["check", &scene, "--format", "latex"])
+        .args(["--claim", "D_z = m c alpha/4", "--claim", "D_z = 40 N"])
+        .output()
+        .expect("kinetics runs");
+    body.push_str(&String::from_utf8_lossy(&in_numbers.stdout));
     assert!(body.contains(r"\paragraph{"), "{body}");
+    assert!(body.contains("transport term missing"), "{body}");
     let tex = dir.join("check.tex");
     std::fs::write(
         &tex,

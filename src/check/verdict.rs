@@ -189,7 +189,7 @@ fn check_in_solution(
         .collect();
     report.verdict = overall(&report.components);
     if report.verdict == Verdict::Differs {
-        report.slip = slip_reading(context, source_name, text, &report);
+        report.slip = slip_reading(context, &claim, source_name, text, &report);
     }
     Ok(report)
 }
@@ -282,35 +282,38 @@ fn compared(
         .collect())
 }
 
-/// Whether the claim holds in `context`, decided quickly: each component in numbers within
-/// the tolerance, or else by evaluation alone (25 digits at random points). For trying a
-/// slip's context, where the verdict is already `differs` and only its reading is sought.
-fn holds_by_values(context: &Context, source_name: &str, text: &str, solution: usize) -> bool {
-    let Ok((claim, _)) = read(context, source_name, text, solution) else {
-        return false;
-    };
-    let Ok(compared) = compared(context, &claim, source_name, text) else {
-        return false;
-    };
+/// The claim's components in `context` when it holds there, decided quickly: each
+/// component in numbers within the tolerance, or else by evaluation alone (25 digits at
+/// random points). For trying a slip's context, where the verdict is already `differs` and
+/// only its reading is sought.
+fn holding_by_values(
+    context: &Context,
+    source_name: &str,
+    text: &str,
+    solution: usize,
+) -> Option<Vec<Compared>> {
+    let (claim, _) = read(context, source_name, text, solution).ok()?;
+    let compared = compared(context, &claim, source_name, text).ok()?;
     let seed = seed_of(text);
-    compared.iter().all(|pair| match &pair.numbers {
+    let holds = compared.iter().all(|pair| match &pair.numbers {
         Some(numbers) => numbers.holds(),
         None => matches!(
             second_opinion(&pair.correct, &pair.claimed, context.domains(), seed),
             Opinion::Zero
         ),
-    })
+    });
+    holds.then_some(compared)
 }
 
 /// The first slip of [`Slip::ALL`] in whose context the claim holds, with what the slipped
 /// piece is worth in each component that differs.
 fn slip_reading(
     context: &Context,
+    claim: &Claim,
     source_name: &str,
     text: &str,
     report: &Report,
 ) -> Option<SlipReading> {
-    let (claim, _) = read(context, source_name, text, report.solution).ok()?;
     let names: Vec<&String> = claim
         .lhs
         .resolved
@@ -322,11 +325,7 @@ fn slip_reading(
             return None;
         }
         let slipped = context.slipped(slip)?;
-        if !holds_by_values(slipped, source_name, text, report.solution) {
-            return None;
-        }
-        let (claim, _) = read(slipped, source_name, text, report.solution).ok()?;
-        let as_slipped = compared(slipped, &claim, source_name, text).ok()?;
+        let as_slipped = holding_by_values(slipped, source_name, text, report.solution)?;
         let pieces = report
             .components
             .iter()

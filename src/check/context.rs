@@ -152,10 +152,7 @@ impl Context {
             "Omega_z" => Some(Expr::symbol("w_z")),
             _ => None,
         };
-        let hdot = Context::derive_vector("Hdot", principal)?.map(|e| {
-            e.subs(&body_fixed)
-                .expect("substituting symbols for symbols cannot fail")
-        });
+        let hdot = Context::derive_vector_with("Hdot", principal, &body_fixed)?;
         c.components("Hdot", &hdot);
         c.derived("Hdot_G", unit_vector_sum(&hdot));
         for (vector, parts) in [
@@ -242,10 +239,7 @@ impl Context {
             "w_z" => Some(Expr::symbol("w")),
             _ => None,
         };
-        let h = Context::derive_vector("H_G", false)?.map(|e| {
-            e.subs(&about_axis)
-                .expect("substituting symbols and zeros cannot divide by zero")
-        });
+        let h = Context::derive_vector_with("H_G", false, &about_axis)?;
         c.components("H", &h);
         c.derived("H_O", unit_vector_sum(&h));
         c.derived("T", Context::derive_scalar("T", false)?.subs(&about_axis)?);
@@ -321,13 +315,17 @@ impl Context {
     /// Whether `slip` changes what `name` stands for (a slip that changes no name of a
     /// claim cannot explain it).
     pub fn slip_changes(&self, slip: Slip, name: &str) -> bool {
-        let value = |c: &Context| match c.meanings.get(name) {
-            Some(Meaning::Derived(e) | Meaning::Alias(e)) => Some(e.clone()),
-            Some(Meaning::Solutions(each)) => each.first().cloned(),
-            _ => None,
-        };
         self.slipped(slip)
-            .is_some_and(|slipped| value(slipped) != value(self))
+            .is_some_and(|slipped| slipped.stands_for(name) != self.stands_for(name))
+    }
+
+    /// The value `name` stands for (in the first solution, where it has several).
+    fn stands_for(&self, name: &str) -> Option<&Expr> {
+        match self.meanings.get(name)? {
+            Meaning::Derived(e) | Meaning::Alias(e) => Some(e),
+            Meaning::Solutions(each) => each.first(),
+            Meaning::Underivable(_) => None,
+        }
     }
 
     /// This context derived again with `slip` made wherever its piece is formed: what a
@@ -366,14 +364,11 @@ impl Context {
     /// A quantity with a value in each solution of the scene's equations: a scalar or a
     /// vector (its components are not named apart).
     fn solutions(&self, name: &str, quantity: Quantity, values: Vec<Value>) -> Meaning {
-        let dimension = quantity.dimension(&self.dimensions);
         let each: Option<Vec<Expr>> = values
             .into_iter()
-            .map(|value| match value {
-                Value::Scalar(e) => Some(self.in_dimension(e, dimension)),
-                Value::Vector(v) => {
-                    Some(unit_vector_sum(&v.map(|e| self.in_dimension(e, dimension))))
-                }
+            .map(|value| match self.value_in_dimension(value, quantity) {
+                Value::Scalar(e) => Some(e),
+                Value::Vector(v) => Some(unit_vector_sum(&v)),
                 _ => None,
             })
             .collect();
@@ -403,13 +398,7 @@ impl Context {
             Quantity::InertiaAboutG
         };
         let axisymmetric = scene.euler_angles.is_some();
-        let dimension = quantity.dimension(&self.dimensions);
-        let value = match value {
-            Value::Scalar(e) => Value::Scalar(self.in_dimension(e, dimension)),
-            Value::Vector(v) => Value::Vector(v.map(|e| self.in_dimension(e, dimension))),
-            other => other,
-        };
-        match value {
+        match self.value_in_dimension(value, quantity) {
             Value::Scalar(e) => Meaning::Derived(e),
             Value::Vector(v) => {
                 if let Some(base) = component_base(quantity) {
@@ -458,6 +447,20 @@ impl Context {
         ))
     }
 
+    /// [`Context::derive_vector`] with symbols replaced (`Omega_x` by `w_x` in body axes).
+    fn derive_vector_with(
+        name: &str,
+        principal: bool,
+        replace: &dyn Fn(Symbol) -> Option<Expr>,
+    ) -> Result<Vector, AlgebraError> {
+        let v = Context::derive_vector(name, principal)?;
+        Ok(Vector::from_iterator(
+            v.iter()
+                .map(|e| e.subs(replace))
+                .collect::<Result<Vec<_>, _>>()?,
+        ))
+    }
+
     fn derive_scalar(name: &str, principal: bool) -> Result<Expr, AlgebraError> {
         let d = derive_general(name, principal).expect("a catalogue name")?;
         Ok(d.result()[0].rhs.clone())
@@ -473,7 +476,17 @@ impl Context {
             .insert(name.to_string(), Meaning::Alias(Expr::symbol(of)));
     }
 
-    /// `base_x`, `base_y`, `base_z` for the components of `v`.
+    /// A scalar's or a vector's components as `quantity`'s dimension ([`Context::in_dimension`]);
+    /// other values as they are.
+    fn value_in_dimension(&self, value: Value, quantity: Quantity) -> Value {
+        let dimension = quantity.dimension(&self.dimensions);
+        match value {
+            Value::Scalar(e) => Value::Scalar(self.in_dimension(e, dimension)),
+            Value::Vector(v) => Value::Vector(v.map(|e| self.in_dimension(e, dimension))),
+            other => other,
+        }
+    }
+
     /// `value` as a quantity of `dimension`: where a number written with its unit in the
     /// scene (`at (150 mm, 0, 0)`) is a plain SI number in it (3/20), the expression's
     /// dimension is not the quantity's, and the difference is made up by unit markers of
@@ -600,11 +613,7 @@ impl Context {
     /// Whether `name`, written in a claim, is another spelling of symbols (not a derived
     /// quantity): its side is not thereby the derived one.
     pub fn is_alias(&self, name: &str) -> bool {
-        let meaning = self
-            .meanings
-            .get(name)
-            .or_else(|| self.meanings.get(Symbol::new(name).name()));
-        matches!(meaning, Some(Meaning::Alias(_)))
+        matches!(self.meaning(name), Some(Meaning::Alias(_)))
     }
 
     /// Whether `written` is a known subscripted name with its underscore left out (`Ix` for

@@ -106,15 +106,11 @@ fn number(x: f64, digits: usize, n: &Numbers) -> String {
     format!("{}{unit}", significant_figures(x, digits))
 }
 
-/// The quantity a slip's piece is part of: `D_z`, `H_O (j component)`.
-fn of_piece(report: &Report, piece: &Piece) -> String {
-    match piece.axis {
+/// The quantity a component of the correct side is: `D_z`, `H_O, j component`.
+fn component_label(report: &Report, axis: Option<Axis>) -> String {
+    match axis {
         None => report.correct_side.clone(),
-        Some(_) => format!(
-            "{} ({} component)",
-            report.correct_side,
-            axis_name(piece.axis)
-        ),
+        Some(_) => format!("{}, {} component", report.correct_side, axis_name(axis)),
     }
 }
 
@@ -177,11 +173,7 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
     if report.solutions > 1 {
         out.push_str(&format!("  {}\n", solution_sentence(report)));
     }
-    let name = &report.correct_side;
-    let of = |c: &Component| match c.axis {
-        None => name.clone(),
-        Some(_) => format!("{name}, {} component", axis_name(c.axis)),
-    };
+    let of = |c: &Component| component_label(report, c.axis);
     for c in &report.components {
         if let Some(n) = &c.numbers {
             // A claim that differs, decided in numbers: the correct value in the givens'
@@ -203,7 +195,7 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
             let c = report.components.iter().find(|c| c.axis == piece.axis);
             out.push_str(&format!(
                 "    {}: {}\n",
-                of_piece(report, piece),
+                component_label(report, piece.axis),
                 piece_text(piece, c, Notation::Text, domains)
             ));
         }
@@ -335,7 +327,7 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
             let c = report.components.iter().find(|c| c.axis == piece.axis);
             out.push_str(&format!(
                 "{}: {}.\n",
-                markup::latex_words(&of_piece(report, piece)),
+                markup::latex_words(&component_label(report, piece.axis)),
                 piece_text(piece, c, Notation::Latex, domains)
             ));
         }

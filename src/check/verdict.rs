@@ -155,8 +155,11 @@ fn check_in_solution(
     k: usize,
 ) -> Result<Report, Diagnostic> {
     let (claim, wrote_unit) = read(context, source_name, text, k)?;
-    let names = claim.lhs.resolved.iter().chain(&claim.rhs.resolved);
-    let solutions = names.map(|n| context.solution_count(n)).max().unwrap_or(1);
+    let solutions = claim
+        .resolved_names()
+        .map(|n| context.solution_count(n))
+        .max()
+        .unwrap_or(1);
     let (correct, claimed) = sides(context, &claim);
     let side_text = |side: &ClaimSide| text[side.span.0..side.span.1].to_string();
     let mut report = Report {
@@ -314,14 +317,11 @@ fn slip_reading(
     text: &str,
     report: &Report,
 ) -> Option<SlipReading> {
-    let names: Vec<&String> = claim
-        .lhs
-        .resolved
-        .iter()
-        .chain(&claim.rhs.resolved)
-        .collect();
     Slip::ALL.into_iter().find_map(|slip| {
-        if !names.iter().any(|name| context.slip_changes(slip, name)) {
+        if !claim
+            .resolved_names()
+            .any(|name| context.slip_changes(slip, name))
+        {
             return None;
         }
         let slipped = context.slipped(slip)?;

@@ -40,6 +40,13 @@ pub struct Claim {
     pub rhs: ClaimSide,
 }
 
+impl Claim {
+    /// The names the resolver gave a value for, on either side.
+    pub fn resolved_names(&self) -> impl Iterator<Item = &String> {
+        self.lhs.resolved.iter().chain(&self.rhs.resolved)
+    }
+}
+
 /// What a name in a claim stands for, as the checker's context says.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Name {

@@ -125,6 +125,11 @@ impl Slip {
     pub fn is_active(self) -> bool {
         ACTIVE.with(Cell::get) == Some(self)
     }
+
+    /// The slip being made on this thread, if any.
+    pub fn active() -> Option<Slip> {
+        ACTIVE.with(Cell::get)
+    }
 }
 
 /// The factor ½ of a kinetic energy, or 1 while `slip` leaves it out.

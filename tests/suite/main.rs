@@ -56,6 +56,7 @@ mod layering;
 mod line_break;
 mod markup;
 mod mathml;
+mod motion_obeys_loads;
 mod nalgebra_ops;
 mod numeric_powers;
 mod operation_count;

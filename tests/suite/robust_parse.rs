@@ -158,8 +158,10 @@ fn long_runs_of_blanks_in_a_scene_line_finish() {
     let outcome = kinetics(&["solve", "-"], &scene_with_omega(&omega));
     assert_error_at(&outcome, "<stdin>:5:9", "unknown symbol x");
 
-    let line = format!("force D = m*r*w^2*i{blanks}\tat{blanks}(r, 0, 0)");
-    let scene = scene_with_omega("w*i").replace("find T", &format!("{line}\nfind T"));
+    // D_x unknown: a given force there would be refused, as no load acts on this motion.
+    let line = format!("force D = D_x*i{blanks}\tat{blanks}(r, 0, 0)");
+    let scene =
+        scene_with_omega("w*i").replace("find T", &format!("unknown D_x : N\n{line}\nfind T"));
     let (code, stderr) = kinetics(&["plan", "-"], &scene);
     assert_eq!(code, Some(0), "the force reads with its point: {stderr}");
 }

@@ -29,6 +29,7 @@
 
 mod abbreviations;
 mod balance;
+mod motion_obeys_loads;
 mod points;
 mod presented;
 mod principal;
@@ -53,6 +54,7 @@ use crate::mechanics::principal_frame::PrincipalFrame;
 use crate::mechanics::rotating_frame::{
     rate_of_angular_momentum, rate_of_angular_momentum_about_point,
 };
+use crate::mechanics::slip::Slip;
 use crate::mechanics::torque_free_axisymmetric::Precession;
 use crate::mechanics::two_plane_balance::Correction;
 use crate::parse::Diagnostic;
@@ -153,6 +155,7 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
             results.push((row, value));
         }
     }
+    a.motion_obeys_loads()?;
     let domains = scene.domains();
     let mut analysis = Analysis {
         plan: a.plan.iter().map(|s| s.simplified(&domains)).collect(),
@@ -173,7 +176,7 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
 /// quantity a scene names.
 pub fn values_of(scene: &Scene, requests: &[Request]) -> Vec<Result<Vec<Value>, Diagnostic>> {
     let mut a = Analyser::new(scene);
-    requests
+    let values: Vec<Result<Vec<Value>, Diagnostic>> = requests
         .iter()
         .map(|request| {
             let raw = a.request(request)?;
@@ -181,7 +184,17 @@ pub fn values_of(scene: &Scene, requests: &[Request]) -> Vec<Result<Vec<Value>, 
             let others = a.in_other_solutions(request, &raw, &value)?;
             Ok(std::iter::once(value).chain(others).collect())
         })
-        .collect()
+        .collect();
+    // A motion its loads cannot produce has no quantities to check a claim against. With a
+    // slip made (the checker's reading of a student's error) the values are that error's, not
+    // the scene's statement: the scene was checked as derived.
+    if Slip::active().is_some() {
+        return values;
+    }
+    match a.motion_obeys_loads() {
+        Ok(()) => values,
+        Err(refusal) => values.iter().map(|_| Err(refusal.clone())).collect(),
+    }
 }
 
 /// The body's mass, mass centre (from O) and centroidal inertia, for callers that need the

@@ -214,7 +214,7 @@ impl Analyser<'_> {
 
     /// `ΣF = m ā` and the moments: `ΣM_O = Ḣ_O` about a fixed point O, or with the rate
     /// about G, `ΣM_O = Ḣ_G + r̄ × m ā` (`about G`), or `ΣM_G = Ḣ_G` (no fixed point).
-    fn equations_of_motion(&mut self, at: Span) -> Result<Derivation, Diagnostic> {
+    pub(super) fn equations_of_motion(&mut self, at: Span) -> Result<Derivation, Diagnostic> {
         let scene = self.scene;
         let a = self.abar(at)?;
         let about = match (scene.fixed_point, scene.about_mass_centre) {
@@ -255,7 +255,7 @@ impl Analyser<'_> {
     /// `m v̄₁ + Σ F Δt = m v̄₂` and `[I]{ω₁} + Σ r × F Δt = [I]{ω₂}` about G, for an impact
     /// on a body that moves with `v̄₁` and `ω₁` before it (`before vbar`, `before omega`; at
     /// rest when not given).
-    fn impulse_momentum(&mut self, at: Span) -> Result<Derivation, Diagnostic> {
+    pub(super) fn impulse_momentum(&mut self, at: Span) -> Result<Derivation, Diagnostic> {
         let v = self.vbar(at)?;
         let h = self.h_g(at)?;
         let scene = self.scene;

@@ -8,7 +8,16 @@
 //! | solid cylinder, radius r, length h | axis x | `mr²/2, m(3r²+h²)/12, m(3r²+h²)/12` |
 //! | solid sphere, radius r | any | `2mr²/5` each |
 //! | rectangular prism a × b × c | edges along x, y, z | `m(b²+c²)/12, m(c²+a²)/12, m(a²+b²)/12` |
+//! | solid cone, base radius r, height h | axis x, apex to base | `3mr²/10, 3m(4r²+h²)/80, 3m(4r²+h²)/80` |
+//! | hollow cylinder (tube), radii r_o > r_i, length h | axis x | `m(r_o²+r_i²)/2, m(3(r_o²+r_i²)+h²)/12, …` |
+//! | thin spherical shell, radius r | any | `2mr²/3` each |
+//! | thin ring, radius r | axis x | `mr², mr²/2, mr²/2` |
+//! | radii of gyration k_x, k_y, k_z | x, y, z | `m k_x², m k_y², m k_z²` |
 //! | point mass | any | `0, 0, 0` |
+//!
+//! A cone is placed, like every shape, by its mass centre G, which lies on its axis a quarter
+//! of the height from the base: its apex is ¾h behind G (at x = −3h/4), so about a transverse
+//! axis through the apex `3m(4r²+h²)/80 + m(3h/4)² = 3m(r²/4 + h²)/5`.
 //!
 //! All products of inertia are zero in these axes (they are principal by symmetry). A body
 //! may also be given by its six centroidal components ([`Shape::Explicit`]).
@@ -42,6 +51,29 @@ pub enum Shape {
         b: Expr,
         c: Expr,
     },
+    /// A solid right circular cone, its axis along x from the apex to the base.
+    SolidCone {
+        radius: Expr,
+        height: Expr,
+    },
+    /// A hollow circular cylinder (a tube), its axis along x; `inner` is less than `outer`.
+    Tube {
+        outer: Expr,
+        inner: Expr,
+        length: Expr,
+    },
+    /// A thin spherical shell.
+    SphericalShell {
+        radius: Expr,
+    },
+    /// A thin circular ring (a hoop), its axis along x.
+    ThinRing {
+        radius: Expr,
+    },
+    /// A body given by its centroidal radii of gyration about its own axes x, y, z (principal).
+    Gyration {
+        radii: [Expr; 3],
+    },
     PointMass,
     /// A body whose centroidal moments `[I_x, I_y, I_z]` and products `[I_xy, I_yz, I_xz]`
     /// (positive-integral convention) are given directly.
@@ -55,10 +87,24 @@ impl Shape {
         match self {
             Shape::SlenderRod { length } => vec![("length", length)],
             Shape::ThinPlate { a, b } => vec![("side", a), ("side", b)],
-            Shape::ThinDisk { radius } | Shape::SolidSphere { radius } => vec![("radius", radius)],
+            Shape::ThinDisk { radius }
+            | Shape::SolidSphere { radius }
+            | Shape::SphericalShell { radius }
+            | Shape::ThinRing { radius } => vec![("radius", radius)],
             Shape::SolidCylinder { radius, length } => {
                 vec![("radius", radius), ("length", length)]
             }
+            Shape::SolidCone { radius, height } => vec![("radius", radius), ("height", height)],
+            Shape::Tube {
+                outer,
+                inner,
+                length,
+            } => vec![
+                ("outer radius", outer),
+                ("inner radius", inner),
+                ("length", length),
+            ],
+            Shape::Gyration { radii } => radii.iter().map(|k| ("radius of gyration", k)).collect(),
             Shape::RectangularPrism { a, b, c } => vec![("side", a), ("side", b), ("side", c)],
             Shape::PointMass | Shape::Explicit(_) => vec![],
         }
@@ -117,12 +163,42 @@ impl Shape {
                 q(1, 12) * (sq(c) + sq(a)),
                 q(1, 12) * (sq(a) + sq(b)),
             ],
+            Shape::SolidCone { radius, height } => {
+                let transverse = q(3, 80) * (Expr::int(4) * sq(radius) + sq(height));
+                [q(3, 10) * sq(radius), transverse.clone(), transverse]
+            }
+            Shape::Tube {
+                outer,
+                inner,
+                length,
+            } => {
+                let radii = sq(outer) + sq(inner);
+                let transverse = q(1, 12) * (Expr::int(3) * radii.clone() + sq(length));
+                [q(1, 2) * radii, transverse.clone(), transverse]
+            }
+            Shape::SphericalShell { radius } => {
+                let i = q(2, 3) * sq(radius);
+                [i.clone(), i.clone(), i]
+            }
+            Shape::ThinRing { radius } => [
+                q(1, 1) * sq(radius),
+                q(1, 2) * sq(radius),
+                q(1, 2) * sq(radius),
+            ],
+            Shape::Gyration { radii } => radii.clone().map(|k| q(1, 1) * sq(&k)),
             Shape::PointMass => [Expr::zero(), Expr::zero(), Expr::zero()],
             Shape::Explicit(tensor) => return Ok(tensor.clone()),
         };
         let [x, y, z] = moments.map(|e| e.expand());
         let [x, y, z] = [x?, y?, z?];
-        let axisymmetric = matches!(self, Shape::ThinDisk { .. } | Shape::SolidCylinder { .. });
+        let axisymmetric = matches!(
+            self,
+            Shape::ThinDisk { .. }
+                | Shape::SolidCylinder { .. }
+                | Shape::SolidCone { .. }
+                | Shape::Tube { .. }
+                | Shape::ThinRing { .. }
+        );
         if axisymmetric && Slip::AxialAndDiametralExchanged.is_active() {
             return Ok(InertiaTensor::diagonal([y, x.clone(), x]));
         }

@@ -48,6 +48,7 @@ mod html_headings;
 mod html_page;
 mod integrators;
 mod issue15_scenes;
+mod issue32_bodies;
 mod json_schema;
 mod latex_compiles;
 mod latex_pages;

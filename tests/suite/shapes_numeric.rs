@@ -151,6 +151,90 @@ fn shapes_match_point_mass_sums() {
     );
 }
 
+/// The cone, tube, shell and ring of issue 32, each filled with point masses in its own
+/// geometry (not from the formulas' shape): the cone sliced along its axis from the apex,
+/// placed so that the apex is ¾h behind G (the sums' own mass centre is checked to be G).
+#[test]
+fn cone_tube_shell_and_ring_match_point_mass_sums() {
+    use std::f64::consts::PI;
+    let (m, r, r_i, h) = (2.0, 0.25, 0.15, 0.9);
+    let values = [("m", m), ("r", r), ("r_i", r_i), ("h", h)];
+    let tensor = |shape: Shape| formula(&shape.centroidal_inertia(&s("m")).unwrap(), &values);
+    // An annulus ρ in (inner, outer) in the yz plane, cells weighted by area (sum 1).
+    let annulus = |outer: f64, inner: f64| -> Vec<(f64, f64, f64)> {
+        let (nr, nt) = (200, 64);
+        let area = PI * (outer * outer - inner * inner);
+        (0..nr)
+            .flat_map(move |i| {
+                let rho = inner + (i as f64 + 0.5) / nr as f64 * (outer - inner);
+                let w = rho * ((outer - inner) / nr as f64) * (2.0 * PI / nt as f64) / area;
+                (0..nt).map(move |k| {
+                    let t = (k as f64 + 0.5) / nt as f64 * 2.0 * PI;
+                    (w, rho * t.cos(), rho * t.sin())
+                })
+            })
+            .collect()
+    };
+    // Solid cone: slices at distance u from the apex, radius r u/h, mass ∝ u².
+    let slices = 400;
+    let mut cone: Vec<(f64, V)> = Vec::new();
+    let volume: f64 = (0..slices)
+        .map(|i| ((i as f64 + 0.5) / slices as f64 * h).powi(2))
+        .sum();
+    for i in 0..slices {
+        let u = (i as f64 + 0.5) / slices as f64 * h;
+        let slice_mass = m * u * u / volume;
+        for (w, y, z) in annulus(r * u / h, 0.0) {
+            cone.push((slice_mass * w, V::new(u - 0.75 * h, y, z)));
+        }
+    }
+    let centre: f64 = cone.iter().map(|(w, p)| w * p.x).sum::<f64>() / m;
+    assert!(
+        centre.abs() < 1e-4 * h,
+        "the cone's mass centre is at x = {centre}"
+    );
+    let shape = Shape::SolidCone {
+        radius: s("r"),
+        height: s("h"),
+    };
+    assert_close("cone", tensor(shape), sums(&cone));
+    // Tube: an annulus extruded along x.
+    let tube: Vec<(f64, V)> = annulus(r, r_i)
+        .into_iter()
+        .flat_map(|(w, y, z)| mid(40, h).map(move |x| (m * w / 40.0, V::new(x, y, z))))
+        .collect();
+    let shape = Shape::Tube {
+        outer: s("r"),
+        inner: s("r_i"),
+        length: s("h"),
+    };
+    assert_close("tube", tensor(shape), sums(&tube));
+    // Spherical shell: latitude bands weighted by their area 2π r² sin φ dφ.
+    let (nphi, nt) = (400, 64);
+    let shell: Vec<(f64, V)> = (0..nphi)
+        .flat_map(|i| {
+            let phi = (i as f64 + 0.5) / nphi as f64 * PI;
+            let w = m * phi.sin() * (PI / nphi as f64) / 2.0 / nt as f64;
+            (0..nt).map(move |k| {
+                let t = (k as f64 + 0.5) / nt as f64 * 2.0 * PI;
+                let p = V::new(phi.cos(), phi.sin() * t.cos(), phi.sin() * t.sin());
+                (w, r * p)
+            })
+        })
+        .collect();
+    let shape = Shape::SphericalShell { radius: s("r") };
+    assert_close("shell", tensor(shape), sums(&shell));
+    // Thin ring about x: points on the circle.
+    let ring: Vec<(f64, V)> = (0..720)
+        .map(|k| {
+            let t = (k as f64 + 0.5) / 720.0 * 2.0 * PI;
+            (m / 720.0, V::new(0.0, r * t.cos(), r * t.sin()))
+        })
+        .collect();
+    let shape = Shape::ThinRing { radius: s("r") };
+    assert_close("ring", tensor(shape), sums(&ring));
+}
+
 #[test]
 fn rotated_tensor_matches_rotated_points() {
     let (m, a, b, c) = (3.0, 0.5, 0.3, 0.2);

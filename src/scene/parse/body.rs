@@ -16,6 +16,9 @@ use crate::mechanics::validation::{
 use crate::parse::Diagnostic;
 use pest::iterators::Pair;
 
+/// Every shape a body may have, as written.
+const SHAPES: &str = "the shapes are rod(L), plate(a, b), disk(r), cylinder(r, h), sphere(r), prism(a, b, c), cone(r, h), tube(r_o, r_i, h), shell(r), ring(r), gyration(k_x, k_y, k_z), point(), inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz)";
+
 impl Reader<'_> {
     pub(super) fn body(
         &mut self,
@@ -48,6 +51,7 @@ impl Reader<'_> {
             let quantity = format!("the {what} of {body}");
             self.positive(&quantity, what, a.as_str().trim(), "m", length, span(a))?;
         }
+        self.shape_admissible(&shape, &body, &args, span(shape_pair))?;
         let mass = self.quantity(&inner[1], Dimension::MASS)?;
         let written = inner[1].as_str().trim();
         self.positive(
@@ -144,6 +148,49 @@ impl Reader<'_> {
         self.positive(&quantity, "total mass", &written, "kg", &total, at)
     }
 
+    /// What a shape's lengths must satisfy beyond each being positive: a tube's inner radius
+    /// less than its outer, `r_o − r_i > 0`; radii of gyration whose moments `m k²` a real
+    /// body can have (each at most the sum of the other two), decided when they have values.
+    fn shape_admissible(
+        &self,
+        shape: &Shape,
+        body: &str,
+        args: &[Pair<Rule>],
+        at: (usize, usize),
+    ) -> Result<(), Diagnostic> {
+        match shape {
+            Shape::Tube { outer, inner, .. } => {
+                let wall = outer - inner;
+                let quantity = format!("the wall thickness of {body}");
+                let [r_o, r_i] = [&args[0], &args[1]].map(|a| a.as_str().trim());
+                let written = format!("{r_o} - {r_i}");
+                self.positive(&quantity, "wall thickness", &written, "m", &wall, at)
+                    .map_err(|e| {
+                        e.with_help(
+                            "the inner radius must be less than the outer: tube(r_o, r_i, h)",
+                        )
+                    })
+            }
+            Shape::Gyration { radii } => {
+                let value = |e: &Expr| e.eval(&|s: Symbol| self.scene.value(s)).ok();
+                let Some(k) = radii.iter().map(value).collect::<Option<Vec<f64>>>() else {
+                    return Ok(());
+                };
+                let diagonal = nalgebra::Matrix3::from_diagonal(&nalgebra::Vector3::new(
+                    k[0] * k[0],
+                    k[1] * k[1],
+                    k[2] * k[2],
+                ));
+                validate_inertia_tensor(&diagonal).map_err(|e| {
+                    self.error(at, e.to_string()).with_help(
+                        "no real body has these radii of gyration (the moments above are per unit mass, k²): each k² must be at most the sum of the other two",
+                    )
+                })
+            }
+            _ => Ok(()),
+        }
+    }
+
     /// `inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz)`: checked for physical admissibility when
     /// every component has a value.
     fn explicit_inertia(&self, mut c: Vec<Expr>, at: (usize, usize)) -> Result<Shape, Diagnostic> {
@@ -191,7 +238,9 @@ impl Reader<'_> {
         Ok(match kind.as_str() {
             "rod" => {
                 expected(1, "rod(L)")?;
-                Shape::SlenderRod { length: l.remove(0) }
+                Shape::SlenderRod {
+                    length: l.remove(0),
+                }
             }
             "plate" => {
                 expected(2, "plate(a, b)")?;
@@ -200,22 +249,70 @@ impl Reader<'_> {
             }
             "disk" => {
                 expected(1, "disk(r)")?;
-                Shape::ThinDisk { radius: l.remove(0) }
+                Shape::ThinDisk {
+                    radius: l.remove(0),
+                }
             }
             "cylinder" => {
                 expected(2, "cylinder(r, h)")?;
                 let h = l.remove(1);
-                Shape::SolidCylinder { radius: l.remove(0), length: h }
+                Shape::SolidCylinder {
+                    radius: l.remove(0),
+                    length: h,
+                }
             }
             "sphere" => {
                 expected(1, "sphere(r)")?;
-                Shape::SolidSphere { radius: l.remove(0) }
+                Shape::SolidSphere {
+                    radius: l.remove(0),
+                }
             }
             "prism" => {
                 expected(3, "prism(a, b, c)")?;
                 let c = l.remove(2);
                 let b = l.remove(1);
-                Shape::RectangularPrism { a: l.remove(0), b, c }
+                Shape::RectangularPrism {
+                    a: l.remove(0),
+                    b,
+                    c,
+                }
+            }
+            "cone" => {
+                expected(2, "cone(r, h)")?;
+                let height = l.remove(1);
+                Shape::SolidCone {
+                    radius: l.remove(0),
+                    height,
+                }
+            }
+            "tube" => {
+                expected(3, "tube(r_o, r_i, h)")?;
+                let length = l.remove(2);
+                let inner = l.remove(1);
+                Shape::Tube {
+                    outer: l.remove(0),
+                    inner,
+                    length,
+                }
+            }
+            "shell" => {
+                expected(1, "shell(r)")?;
+                Shape::SphericalShell {
+                    radius: l.remove(0),
+                }
+            }
+            "ring" => {
+                expected(1, "ring(r)")?;
+                Shape::ThinRing {
+                    radius: l.remove(0),
+                }
+            }
+            "gyration" => {
+                expected(3, "gyration(k_x, k_y, k_z)")?;
+                let [k_x, k_y, k_z]: [Expr; 3] = [l.remove(0), l.remove(0), l.remove(0)];
+                Shape::Gyration {
+                    radii: [k_x, k_y, k_z],
+                }
             }
             "point" => {
                 expected(0, "point()")?;
@@ -224,7 +321,7 @@ impl Reader<'_> {
             other => {
                 return Err(self
                     .error(span(kind), format!("unknown shape '{other}'"))
-                    .with_help("the shapes are rod(L), plate(a, b), disk(r), cylinder(r, h), sphere(r), prism(a, b, c), point(), inertia(I_x, I_y, I_z, I_xy, I_yz, I_xz)"))
+                    .with_help(SHAPES))
             }
         })
     }

@@ -325,6 +325,17 @@ pub(super) fn to_ast(pairs: Pairs<Rule>, source_name: &str, source: &str) -> Nod
 fn primary(p: Pair<Rule>, source_name: &str, source: &str) -> Ast {
     let (start, end) = span_of(&p);
     match p.as_rule() {
+        // A second point right after a number (2.5.1) is a mistyped number, not 2.5 times .1.
+        Rule::number if source[end..].starts_with('.') => Ast::Error(
+            Diagnostic::at(
+                source_name,
+                source,
+                end,
+                end + 1,
+                format!("a second decimal point after {}", p.as_str()),
+            )
+            .with_help("a number has at most one decimal point"),
+        ),
         Rule::number => match Q::parse_decimal(p.as_str()) {
             Some(q) => Ast::Number(q),
             None => Ast::Error(

@@ -1,7 +1,8 @@
 //! A given's value as an exact expression, for the algebra: the number as written is an
 //! exact decimal (`0.1` is 1/10), and each unit's factor to SI is exact too (the table in
 //! `units.rs`): the degree is π/180, the revolution per minute π/30, `ft` 3048/10000, `mm`
-//! 1/1000. So `given theta = 90 deg` is π/2, and `sin θ` there is 1.
+//! 1/1000. So `given theta = 90 deg` is π/2, and `sin θ` there is 1. A given defined by
+//! earlier givens (`given psidot = v/r_w`) is its definition with their exact values.
 
 use super::model::Scene;
 use crate::algebra::{Expr, Symbol, Q};
@@ -10,12 +11,11 @@ impl Scene {
     /// The value of a given as an exact expression (a rational times a power of π), when
     /// the scene gives it a value (see the module documentation).
     pub fn exact_given(&self, s: Symbol) -> Option<Expr> {
-        let written = self
-            .givens
-            .iter()
-            .find(|g| g.symbol == s)?
-            .written
-            .as_ref()?;
+        let given = self.givens.iter().find(|g| g.symbol == s)?;
+        if let Some(definition) = &given.definition {
+            return definition.exact.clone();
+        }
+        let written = given.written.as_ref()?;
         let number = match written.number.strip_prefix('-') {
             Some(magnitude) => -&Q::parse_decimal(magnitude)?,
             None => Q::parse_decimal(&written.number)?,

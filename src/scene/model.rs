@@ -132,11 +132,22 @@ pub struct Given {
     pub value: Option<f64>,
     /// The value as written (`20 kg`), for the worked solution.
     pub written: Option<Written>,
+    /// `given psidot = v/r_w`: the given defined by earlier givens.
+    pub definition: Option<Definition>,
     /// Positive for a given in kg, m, s, N or kg·m² not written `real` and not negative;
     /// real otherwise (`parse/given.rs`).
     pub domain: Domain,
     /// Where the given's name stands, for errors found where it is used.
     pub span: Span,
+}
+
+/// A given defined by earlier givens: the expression in their names (in SI), and its exact
+/// value when each of them has one (their exact values put in when it was read, so a chain of
+/// definitions is worked out once, not again at each use).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Definition {
+    pub expr: Expr,
+    pub exact: Option<Expr>,
 }
 
 /// A part of the body: a standard shape with its mass, the position of its mass centre,

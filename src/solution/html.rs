@@ -144,12 +144,14 @@ fn inline_list(items: impl Iterator<Item = String>) -> String {
     format!("<p>{}.</p>\n", items.collect::<Vec<_>>().join(", "))
 }
 
-/// A given as inline maths: `m = 0.3 kg`, or its name alone when it is symbolic.
+/// A given as inline maths: `m = 0.3 kg`, its definition by other givens, or its name
+/// alone when it is symbolic.
 fn given(g: &Given) -> String {
     let name = print::mathml(&Expr::sym(g.symbol));
-    match &g.written {
-        Some(w) => format!("<math>{name}<mo>=</mo>{}</math>", value(&w.number, &w.unit)),
-        None => format!("<math>{name}</math>"),
+    match (&g.definition, &g.written) {
+        (Some(d), _) => format!("<math>{name}<mo>=</mo>{}</math>", print::mathml(&d.expr)),
+        (None, Some(w)) => format!("<math>{name}<mo>=</mo>{}</math>", value(&w.number, &w.unit)),
+        (None, None) => format!("<math>{name}</math>"),
     }
 }
 

@@ -187,7 +187,7 @@ fn result_json(r: &Result) -> serde_json::Value {
     })
 }
 
-/// The givens as JSON: `[{name, written, si_value, unit}]`.
+/// The givens as JSON: `[{name, written, definition, si_value, unit}]`.
 fn givens_json(givens: &[Given]) -> Vec<serde_json::Value> {
     givens
         .iter()
@@ -195,6 +195,7 @@ fn givens_json(givens: &[Given]) -> Vec<serde_json::Value> {
             serde_json::json!({
                 "name": g.symbol.name(),
                 "written": g.written.as_ref().map(ToString::to_string),
+                "definition": g.definition.as_ref().map(|d| d.expr.to_string()),
                 "si_value": g.value,
                 "unit": g.dimension.si_unit(),
             })

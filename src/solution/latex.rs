@@ -82,13 +82,14 @@ fn inline_list(items: impl Iterator<Item = String>) -> String {
     format!("{}.\n\n", items.collect::<Vec<_>>().join(", "))
 }
 
-/// A given as inline maths: `$m = 0.3\,\mathrm{kg}$`, `$\beta = 60^\circ$`, or its name
-/// alone when it is symbolic.
+/// A given as inline maths: `$m = 0.3\,\mathrm{kg}$`, `$\beta = 60^\circ$`, its
+/// definition by other givens (`$\dot\psi = v/r_w$`), or its name alone when it is symbolic.
 pub(super) fn given(g: &Given) -> String {
     let name = print::latex(&Expr::sym(g.symbol));
-    match &g.written {
-        Some(w) => format!("${name} = {}$", quantity(&w.number, &w.unit)),
-        None => format!("${name}$"),
+    match (&g.definition, &g.written) {
+        (Some(d), _) => format!("${name} = {}$", print::latex(&d.expr)),
+        (None, Some(w)) => format!("${name} = {}$", quantity(&w.number, &w.unit)),
+        (None, None) => format!("${name}$"),
     }
 }
 

@@ -118,9 +118,10 @@ pub fn render_numbers(
 }
 
 pub(super) fn given_line(g: &crate::scene::model::Given) -> String {
-    match &g.written {
-        Some(w) => format!("{} = {w}", g.symbol.name()),
-        None => format!("{} ({}, symbolic)", g.symbol.name(), g.dimension),
+    match (&g.definition, &g.written) {
+        (Some(d), _) => format!("{} = {}", g.symbol.name(), d.expr),
+        (None, Some(w)) => format!("{} = {w}", g.symbol.name()),
+        (None, None) => format!("{} ({}, symbolic)", g.symbol.name(), g.dimension),
     }
 }
 

@@ -4,11 +4,11 @@
 //! `real` (`given x = 0.2 m real`, `given x : m real`: a coordinate) or its value is
 //! negative; any other given is real, and `real` on it is refused at the word.
 
-use super::super::model::{Given, Written};
+use super::super::model::{Definition, Given, Written};
 use super::super::named_unit::NamedUnit;
 use super::super::units::Dimension;
 use super::{span, Reader, Rule};
-use crate::algebra::Domain;
+use crate::algebra::{Domain, Expr, Symbol};
 use crate::mechanics::validation::validate_mass;
 use crate::parse::Diagnostic;
 use crate::scene::model::Span;
@@ -30,9 +30,17 @@ impl Reader<'_> {
         let mut written = None;
         let mut dimension = None;
         let mut real = None;
+        let mut definition = None;
         for p in &inner[1..] {
             match p.as_rule() {
                 Rule::real => real = Some(span(p)),
+                Rule::definition => {
+                    let (expr, d) = self.definition(p)?;
+                    value = expr.eval(&|s: Symbol| self.scene.value(s)).ok();
+                    let exact = self.exact_definition(&expr);
+                    definition = Some(Definition { expr, exact });
+                    dimension = Some((d, span(p)));
+                }
                 Rule::quantity => {
                     let mut q = p.clone().into_inner();
                     let number = q
@@ -117,6 +125,7 @@ impl Reader<'_> {
             dimension,
             value,
             written,
+            definition,
             domain: if positive && real.is_none() && !value.is_some_and(|v| v < 0.0) {
                 Domain::Positive
             } else {
@@ -129,4 +138,72 @@ impl Reader<'_> {
         });
         Ok(())
     }
+
+    /// `given psidot = v/r_w`: the expression in SI and its dimension, from givens declared
+    /// before it (an unknown or a name declared later is refused at the expression).
+    fn definition(&self, p: &Pair<Rule>) -> Result<(Expr, Dimension), Diagnostic> {
+        let e = self
+            .math(p)
+            .map_err(|d| match reads_as_a_value(p.as_str()) {
+                true => self.unreadable_value(d),
+                false => d,
+            })?;
+        if let Some(u) = e.symbols().into_iter().find(|s| self.scene.is_unknown(*s)) {
+            return Err(self
+                .error(
+                    span(p),
+                    format!(
+                        "a given is defined by givens, and {} is an unknown",
+                        u.name()
+                    ),
+                )
+                .with_help(
+                    "declare the givens it is made of first, or make this quantity an unknown too",
+                ));
+        }
+        let dimension = self.dimension(&e, span(p))?;
+        Ok((self.in_si(&e, span(p))?, dimension))
+    }
+
+    /// A value that is neither a number with its unit nor an expression (`2,5 kg`,
+    /// `2 kg;`, `NaN kg`): refused where the expression's reading stopped, the character
+    /// there named.
+    fn unreadable_value(&self, d: Diagnostic) -> Diagnostic {
+        let at = d.span.offset();
+        let found = self.source[at..].chars().next().unwrap_or(' ');
+        let help = match found {
+            ',' => "a decimal is written with a point, 2.5, and one given a line",
+            '.' => "a number has at most one decimal point",
+            _ => "write the value as a number and its unit, 'given m = 2.5 kg', or define it by earlier givens, 'given b = 2*a'",
+        };
+        self.error(
+            (at, at + d.span.len().max(1)),
+            format!(
+                "cannot read this 'given' statement (found '{}'): its value is neither a number with a unit nor an expression of earlier givens",
+                found.escape_default()
+            ),
+        )
+        .with_help(help)
+    }
+
+    /// A defined given's exact value, when every given it is made of has one (and the
+    /// algebra's bounds allow it).
+    fn exact_definition(&self, e: &Expr) -> Option<Expr> {
+        let scene = &self.scene;
+        let exact = |s: Symbol| scene.exact_given(s);
+        let all_exact = e
+            .symbols()
+            .into_iter()
+            .all(|s| s.is_pi() || exact(s).is_some());
+        all_exact.then(|| e.subs(&exact).ok()).flatten()
+    }
+}
+
+/// Whether a given's text after `=` starts as a number would (a digit, a point, a sign, or
+/// the words NaN and inf), so that an error reading it is about its value.
+fn reads_as_a_value(text: &str) -> bool {
+    let text = text.trim_start();
+    let word: String = text.chars().take_while(char::is_ascii_alphabetic).collect();
+    text.starts_with(|c: char| c.is_ascii_digit() || c == '.' || c == '-')
+        || ["nan", "inf", "infinity"].contains(&word.to_ascii_lowercase().as_str())
 }

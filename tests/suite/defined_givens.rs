@@ -1,0 +1,77 @@
+//! `given name = expression` of earlier givens (issue 32): its unit checked against the one
+//! written, its value and exact value from theirs, refused when it names an unknown or a
+//! given not yet declared; and the car wheel on a curve (ψ̇ = v/r_w, φ̇ = v/R) against its
+//! gyroscopic couple worked by hand.
+
+use crate::common::examples::{analysed_example, result};
+use kinetics::scene::{parse_scene, Value};
+use kinetics::{Expr, Symbol};
+
+const BODY: &str = "body disk(r_w) mass m along z\nvbar = 0\nomega = w*k\nfind T";
+
+fn scene_with(definition: &str) -> Result<kinetics::Scene, String> {
+    let text = format!(
+        "given m = 20 kg\ngiven r_w = 0.3 m\ngiven v = 20 m/s\nunknown M_x : N*m\ngiven w = {definition}\n{BODY}"
+    );
+    parse_scene("t.scene", &text).map_err(|e| e.render())
+}
+
+#[test]
+fn a_given_defined_by_earlier_givens_has_their_value_and_its_unit() {
+    let scene = scene_with("v/r_w : rad/s").unwrap();
+    let w = Symbol::new("w");
+    assert!((scene.value(w).unwrap() - 20.0 / 0.3).abs() < 1e-12);
+    // Exact: 20/(3/10) = 200/3.
+    assert_eq!(scene.exact_given(w), Some(Expr::rational(200, 3)));
+}
+
+#[test]
+fn a_definition_in_another_unit_than_the_one_written_is_refused() {
+    let message = scene_with("v : rad/s").unwrap_err();
+    assert!(
+        message.contains("unit mismatch: the value is in m/s but the unit is rad/s"),
+        "{message}"
+    );
+}
+
+#[test]
+fn a_definition_by_an_unknown_or_a_later_name_is_refused_at_it() {
+    let message = scene_with("M_x/r_w").unwrap_err();
+    assert!(
+        message.contains("a given is defined by givens, and M_x is an unknown"),
+        "{message}"
+    );
+    assert!(message.contains("t.scene:5:11"), "{message}");
+    let message = scene_with("q/r_w\ngiven q = 1 m/s").unwrap_err();
+    assert!(message.contains("unknown symbol q"), "{message}");
+}
+
+#[test]
+fn a_chain_of_definitions_stays_exact_and_one_without_values_is_symbolic() {
+    let text = "given a = 15 deg\ngiven b = 2*a\ngiven c = b + a\ngiven r : m\ngiven s = 2*r\ngiven m = 1 kg\nbody sphere(s) mass m\nvbar = 0\nomega = 0\nfind T";
+    let scene = parse_scene("t.scene", text).unwrap();
+    let exact = |name: &str| scene.exact_given(Symbol::new(name));
+    assert_eq!(exact("b"), Some(Expr::pi() / Expr::int(6)));
+    assert_eq!(exact("c"), Some(Expr::pi() / Expr::int(4)));
+    assert_eq!(exact("s"), None);
+    assert_eq!(scene.value(Symbol::new("s")), None);
+}
+
+#[test]
+fn the_car_wheel_couple_against_a_hand_computation() {
+    let (scene, analysis) = analysed_example("car_wheel_on_a_curve", "");
+    let value = |e: &Expr| e.eval(&|s| scene.value(s)).unwrap();
+    let scalar = |name: &str| match result(&analysis, name) {
+        Value::Scalar(e) => value(e),
+        other => panic!("{name}: {other:?}"),
+    };
+    // ΣM_x = I ψ̇ φ̇ at θ = 90°, I = m r_w²/2, ψ̇ = v/r_w, φ̇ = v/R.
+    let (m, r_w, v, big_r) = (20.0, 0.3, 20.0, 50.0);
+    let by_hand = m * r_w * r_w / 2.0 * (v / r_w) * (v / big_r);
+    assert!((scalar("M_x") - by_hand).abs() < 1e-12 * by_hand);
+    assert_eq!((scalar("M_y"), scalar("M_z")), (0.0, 0.0));
+    let Value::Vector(f) = result(&analysis, "F") else {
+        panic!("F is a vector")
+    };
+    assert!((value(&f[2]) + m * v * v / big_r).abs() < 1e-9);
+}

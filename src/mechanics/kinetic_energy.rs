@@ -114,6 +114,69 @@ pub fn kinetic_energy_split(
     })
 }
 
+/// `T₁`, the kinetic energy just before an impact, from the motion then (`ω₁`, and `v̄₁` with
+/// `[Ī]` about G, or about a fixed point O with `[I_O]` and no `v̄₁`):
+/// `T₁ = ½ m v̄₁² + ½ {ω₁}ᵀ[Ī]{ω₁}`, or `T₁ = ½ {ω₁}ᵀ[I_O]{ω₁}`. One step, its result `T_1`.
+///
+/// A sphere sliding at `v₀` and spinning at `w₀` before the blow:
+///
+/// ```
+/// use kinetics::mechanics::kinetic_energy::kinetic_energy_before;
+/// use kinetics::{parse_expression, Expr, InertiaTensor, Vector};
+///
+/// let hand = |t: &str| parse_expression("by hand", t).unwrap().expand().unwrap();
+/// let i = hand("2/5 m r^2");
+/// let sphere = InertiaTensor::diagonal([i.clone(), i.clone(), i]);
+/// let omega = Vector::new(Expr::zero(), Expr::zero(), hand("w_0"));
+/// let vbar = Vector::new(hand("v_0"), Expr::zero(), Expr::zero());
+/// let d = kinetic_energy_before(&sphere, &omega, Some((&hand("m"), &vbar)))?;
+/// assert_eq!(d.result()[0].rhs, hand("1/2 m v_0^2 + 1/5 m r^2 w_0^2"));
+/// # Ok::<(), kinetics::AlgebraError>(())
+/// ```
+pub fn kinetic_energy_before(
+    inertia: &InertiaTensor,
+    omega: &Vector,
+    translation: Option<(&Expr, &Vector)>,
+) -> Result<Derivation, AlgebraError> {
+    let rotational = rotational_energy(inertia, omega)?;
+    let (energy, title) = match translation {
+        Some((mass, vbar)) => {
+            let half = half_unless(Slip::HalfMissingTranslation);
+            let translational = (half * mass * dot(vbar, vbar)).expand()?;
+            (
+                translational + rotational,
+                r"kinetic energy just before the impact, $T_1 = \tfrac12 m\bar{v}_1^2 + \tfrac12\{\boldsymbol{\omega}_1\}^T[I]\{\boldsymbol{\omega}_1\}$",
+            )
+        }
+        None => (
+            rotational,
+            r"kinetic energy just before the impact, about the fixed point $O$, $T_1 = \tfrac12\{\boldsymbol{\omega}_1\}^T[I_O]\{\boldsymbol{\omega}_1\}$",
+        ),
+    };
+    Ok(Derivation {
+        name: "T_1".into(),
+        title: "kinetic energy before the impact".into(),
+        steps: vec![Step::new(
+            title,
+            vec![Relation::new(Expr::symbol("T_1"), energy, Axis::X)],
+        )],
+    })
+}
+
+/// The kinetic energy an impact takes away, `T_lost = T₁ − T₂` (negative when the blow
+/// gives the body energy, as a hammer does).
+pub fn energy_lost(before: &Expr, after: &Expr) -> Result<Derivation, AlgebraError> {
+    let lost = (before - after).expand()?;
+    Ok(Derivation {
+        name: "T_lost".into(),
+        title: "energy lost in the impact".into(),
+        steps: vec![Step::new(
+            r"kinetic energy lost in the impact, $T_{\text{lost}} = T_1 - T_2$",
+            vec![Relation::new(Expr::symbol("T_lost"), lost, Axis::X)],
+        )],
+    })
+}
+
 /// `½ {ω}ᵀ[I]{ω}`, multiplied out.
 fn rotational_energy(inertia: &InertiaTensor, omega: &Vector) -> Result<Expr, AlgebraError> {
     let half = half_unless(Slip::HalfMissingRotation);

@@ -242,6 +242,11 @@ pub enum Quantity {
     /// `T_trans`, `T_rot`: the kinetic energy of the motion of G, and of the rotation about G.
     TranslationalKineticEnergy,
     RotationalKineticEnergy,
+    /// `T_1`, `T_2`: in an impact, the kinetic energy just before and just after the blow
+    /// (`T_2` is `T`); `T_lost = T_1 − T_2`.
+    KineticEnergyBefore,
+    KineticEnergyAfter,
+    EnergyLost,
     /// `v_A`, `a_A`: the velocity and acceleration of the named point A.
     PointVelocity(Symbol),
     PointAcceleration(Symbol),
@@ -267,7 +272,7 @@ pub enum Quantity {
 
 impl Quantity {
     /// The chapter's quantities by the names a scene writes them with.
-    pub const NAMED: [(&'static str, Quantity); 19] = [
+    pub const NAMED: [(&'static str, Quantity); 22] = [
         ("omega", Quantity::AngularVelocity),
         ("vbar", Quantity::MassCentreVelocity),
         ("mvbar", Quantity::LinearMomentum),
@@ -282,6 +287,9 @@ impl Quantity {
         ("Hdot_O", Quantity::RateOfAngularMomentumAboutO),
         ("T_trans", Quantity::TranslationalKineticEnergy),
         ("T_rot", Quantity::RotationalKineticEnergy),
+        ("T_1", Quantity::KineticEnergyBefore),
+        ("T_2", Quantity::KineticEnergyAfter),
+        ("T_lost", Quantity::EnergyLost),
         ("I_G", Quantity::InertiaAboutG),
         ("I_O", Quantity::InertiaAboutO),
         ("principal_G", Quantity::PrincipalAboutG),
@@ -306,6 +314,9 @@ impl Quantity {
             }
             Quantity::TranslationalKineticEnergy => "the kinetic energy of translation",
             Quantity::RotationalKineticEnergy => "the kinetic energy of rotation about G",
+            Quantity::KineticEnergyBefore => "the kinetic energy just before the impact",
+            Quantity::KineticEnergyAfter => "the kinetic energy just after the impact",
+            Quantity::EnergyLost => "the kinetic energy lost in the impact",
             Quantity::PointVelocity(_) => "the velocity of a named point",
             Quantity::PointAcceleration(_) => "the acceleration of a named point",
             Quantity::NamedImpulse(_) => "a named impulse",

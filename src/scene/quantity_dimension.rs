@@ -26,6 +26,9 @@ impl Quantity {
             Quantity::KineticEnergy
             | Quantity::TranslationalKineticEnergy
             | Quantity::RotationalKineticEnergy
+            | Quantity::KineticEnergyBefore
+            | Quantity::KineticEnergyAfter
+            | Quantity::EnergyLost
             | Quantity::RateOfAngularMomentum
             | Quantity::RateOfAngularMomentumAboutO => Dimension::MOMENT,
             Quantity::InertiaAboutG | Quantity::InertiaAboutO => Dimension::INERTIA,

@@ -93,6 +93,9 @@ pub fn result_unit(request: &Request, dims: &Dimensions) -> Option<NamedUnit> {
         Quantity::KineticEnergy,
         Quantity::TranslationalKineticEnergy,
         Quantity::RotationalKineticEnergy,
+        Quantity::KineticEnergyBefore,
+        Quantity::KineticEnergyAfter,
+        Quantity::EnergyLost,
     ];
     Some(in_joules(d, energy.contains(&request.quantity)))
 }

@@ -341,6 +341,9 @@ pub(super) fn quantity_latex(quantity: Quantity) -> String {
         Quantity::RateOfAngularMomentumAboutO => r"\dot{\mathbf{H}}_O".into(),
         Quantity::TranslationalKineticEnergy => r"T_{\text{trans}}".into(),
         Quantity::RotationalKineticEnergy => r"T_{\text{rot}}".into(),
+        Quantity::KineticEnergyBefore => "T_1".into(),
+        Quantity::KineticEnergyAfter => "T_2".into(),
+        Quantity::EnergyLost => r"T_{\text{lost}}".into(),
         Quantity::PointVelocity(p) => format!(r"\mathbf{{v}}_{{{}}}", p.latex()),
         Quantity::PointAcceleration(p) => format!(r"\mathbf{{a}}_{{{}}}", p.latex()),
         // A vector named by one letter in bold, as the textbook writes `\mathbf{R}`.

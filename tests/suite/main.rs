@@ -47,6 +47,7 @@ mod hostile_output;
 mod html_angles;
 mod html_headings;
 mod html_page;
+mod impact_energy;
 mod integrators;
 mod issue15_scenes;
 mod issue32_bodies;

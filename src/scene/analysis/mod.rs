@@ -19,6 +19,7 @@
 //! | `Hdot_G` | body about G, kinematics, rate of change of angular momentum | the same |
 //! | `Hdot_O` | inertia about O, kinematics, `Ḣ_O = [I_O]{ω̇} + Ω × H_O` | `Ḣ_G`, `ā`, `Ḣ_O = Ḣ_G + r̄ × m ā` (refused without a fixed point) |
 //! | `T_trans`, `T_rot` | kinematics, motion of G, body about G, the split | the same |
+//! | `T_1`, `T_lost` | inertia about O, `ω₁` (`T_1`); `T` too (`T_lost`) | body about G, `v̄₁`, `ω₁`; `T` too |
 //! | `v_A`, `a_A` | kinematics, `ω × r_A`, `α × r_A + ω × (ω × r_A)` | kinematics, v̄ or ā, `v̄ + ω × (r_A − r̄)`, ... |
 //! | a named impulse | its components, the unknowns among them solved | the same |
 //! | a named force | its components, the unknowns among them solved | the same |
@@ -29,6 +30,7 @@
 
 mod abbreviations;
 mod balance;
+mod impact_energy;
 mod motion_obeys_loads;
 mod points;
 mod presented;
@@ -103,6 +105,8 @@ struct Analyser<'a> {
     hdot_o: Option<Vector>,
     /// `T_trans`, `T_rot` and `T` about G.
     energy_split: Option<[Expr; 3]>,
+    /// `T_1`, just before an impact.
+    energy_before: Option<Expr>,
     /// The unknowns' values in each solution of the equations (one, unless an unknown
     /// entered polynomially and several real roots remain).
     unknowns: Option<Vec<HashMap<Symbol, Expr>>>,
@@ -228,6 +232,7 @@ impl<'a> Analyser<'a> {
             hdot_g: None,
             hdot_o: None,
             energy_split: None,
+            energy_before: None,
             unknowns: None,
             solution: 0,
             undetermined_with_values: HashMap::new(),
@@ -281,6 +286,12 @@ impl<'a> Analyser<'a> {
                 Value::Scalar(self.energy_split(at)?[0].clone())
             }
             Quantity::RotationalKineticEnergy => Value::Scalar(self.energy_split(at)?[1].clone()),
+            Quantity::KineticEnergyBefore => Value::Scalar(self.energy_before(at)?),
+            Quantity::KineticEnergyAfter => {
+                self.in_an_impact(at, "T_2")?;
+                Value::Scalar(self.kinetic_energy(at)?)
+            }
+            Quantity::EnergyLost => Value::Scalar(self.energy_lost(at)?),
             Quantity::PointVelocity(p) => Value::Vector(self.point_velocity(at, p)?),
             Quantity::PointAcceleration(p) => Value::Vector(self.point_acceleration(at, p)?),
             Quantity::NamedImpulse(s) => Value::Vector(self.named_impulse(at, s)?),

@@ -103,6 +103,7 @@ mod time_derivative;
 mod title_axes;
 mod torque_free;
 mod trigonometry;
+mod unknown_angle;
 mod work_precision;
 mod work_precision_forced_truth;
 

@@ -19,6 +19,7 @@ mod rational_roots;
 mod roots;
 mod square_free;
 mod surd;
+pub mod unknown_angle;
 
 use super::error::AlgebraError;
 use super::expr::Expr;

@@ -7,8 +7,11 @@
 
 use super::super::model::Scene;
 use super::super::units::Dimension;
-use crate::algebra::polynomial_solve::{solve_system, Solutions, SolveContext, SolveError};
-use crate::algebra::{Expr, Symbol};
+use crate::algebra::polynomial_solve::unknown_angle::{at_angle, in_sine_and_cosine};
+use crate::algebra::polynomial_solve::{
+    solve_system, Condition, DroppedRoot, Solutions, SolveContext, SolveError,
+};
+use crate::algebra::{Expr, Func, Symbol};
 use crate::numeric::rounding_error::{bounded, Bounded};
 use std::cmp::Ordering;
 
@@ -46,5 +49,182 @@ pub(super) fn solve_scene(
         sign: &sign,
         positive: &positive,
     };
-    solve_system(equations, wanted, &context)
+    match angle_unknown(equations, wanted)? {
+        Some(u) => solve_for_angle(scene, equations, wanted, u, &context),
+        None => solve_system(equations, wanted, &context),
+    }
+}
+
+/// The first unknown that enters only through sin, cos and tan of itself (and does enter).
+fn angle_unknown(equations: &[Expr], wanted: &[Symbol]) -> Result<Option<Symbol>, SolveError> {
+    for &u in wanted {
+        let (sine, cosine) = sine_and_cosine(u);
+        let mut enters = false;
+        let mut only_there = true;
+        for e in equations.iter().filter(|e| e.contains(u)) {
+            enters = true;
+            if in_sine_and_cosine(e, u, sine, cosine)?.is_none() {
+                only_there = false;
+                break;
+            }
+        }
+        if enters && only_there {
+            return Ok(Some(u));
+        }
+    }
+    Ok(None)
+}
+
+/// The sine and cosine of the angle `u` as unknowns of their own: `s_theta`, `c_theta`.
+fn sine_and_cosine(u: Symbol) -> (Symbol, Symbol) {
+    (
+        Symbol::new(&format!("s_{}", u.name())),
+        Symbol::new(&format!("c_{}", u.name())),
+    )
+}
+
+/// What the symbols of an angle's equation in its sine and cosine stand for, when
+/// `polynomial_in` is such a cosine (`c_theta`): `c_theta = cos(theta)`,
+/// `s_theta = sin(theta)`, for the page.
+pub(super) fn sine_and_cosine_of(
+    scene: &Scene,
+    polynomial_in: Symbol,
+) -> Option<[(Symbol, Expr); 2]> {
+    let angle = scene
+        .unknowns
+        .iter()
+        .map(|u| u.0)
+        .find(|&u| sine_and_cosine(u).1 == polynomial_in)?;
+    let (s, c) = sine_and_cosine(angle);
+    let of = |f: Func| f.apply(Expr::sym(angle));
+    Some([(c, of(Func::Cos)), (s, of(Func::Sin))])
+}
+
+/// The equations solved with the angle `u` through its cosine (`unknown_angle.rs`): the
+/// equations that hold no other unknown give a polynomial in c = cos u; each real root in
+/// [−1, 1] is u = arccos c (and −arccos c, but for the Eulerian angle θ, in [0, π]); at
+/// each, the equations are solved for the other unknowns, a root they contradict ruled out.
+/// The Eulerian angle θ at 0 or π, where φ and ψ are not told apart, is ruled out too.
+fn solve_for_angle(
+    scene: &Scene,
+    equations: &[Expr],
+    wanted: &[Symbol],
+    u: Symbol,
+    context: &SolveContext,
+) -> Result<Solutions, SolveError> {
+    let (s, c) = sine_and_cosine(u);
+    let others: Vec<Symbol> = wanted.iter().copied().filter(|&w| w != u).collect();
+    let alone = equations
+        .iter()
+        .find(|e| e.contains(u) && !others.iter().any(|&w| e.contains(w)));
+    let Some(alone) = alone else {
+        return solve_system(equations, wanted, context);
+    };
+    let Some((even, odd)) = in_sine_and_cosine(alone, u, s, c)? else {
+        return solve_system(equations, wanted, context);
+    };
+    // s P₁(c) = 0 also holds at s = 0, c = ±1; the page shows the equation as it is.
+    let shown = Expr::sym(s) * odd.clone() + even.clone();
+    let (polynomial, sine_zero) = match (even.is_zero(), odd.is_zero()) {
+        (_, true) => (even, false),
+        (true, false) => (odd, true),
+        (false, false) => {
+            let one_less = Expr::one() - Expr::sym(c).powi(2);
+            ((even.powi(2) - one_less * odd.powi(2)).expand()?, false)
+        }
+    };
+    let roots = solve_system(&[polynomial], &[c], context)?;
+    let mut cosines: Vec<Expr> = roots
+        .branches
+        .iter()
+        .filter_map(|b| b.first().map(|(_, v)| v.clone()))
+        .collect();
+    if sine_zero {
+        for end in [Expr::one(), -Expr::one()] {
+            if !cosines.contains(&end) {
+                cosines.push(end);
+            }
+        }
+    }
+    let nutation = scene.euler_angles.is_some() && u == Symbol::new("theta");
+    let mut solutions = Solutions {
+        branches: Vec::new(),
+        dropped: roots.dropped,
+        free: Vec::new(),
+        polynomial: Some((c, shown)),
+    };
+    for cosine in cosines {
+        let one_less = (Expr::one() - cosine.powi(2)).expand()?;
+        if (context.sign)(&one_less) == Some(Ordering::Less) {
+            // The angle's root, its cosine the value shown (`c_theta = -2.05`).
+            let mut beyond = dropped(
+                c,
+                cosine,
+                "its cosine would be beyond ±1, which is no angle",
+                r"a cosine beyond $\pm 1$: no angle",
+            );
+            beyond.unknown = u;
+            solutions.dropped.push(beyond);
+            continue;
+        }
+        let sine = one_less.checked_pow(&Expr::rational(1, 2))?;
+        let angle = Func::Acos.apply(cosine.clone());
+        let mut candidates = vec![(sine.clone(), angle.clone())];
+        if !nutation && !sine.is_zero() {
+            candidates.push((-sine, -angle));
+        }
+        for (sine, angle) in candidates {
+            if nutation && (sine.is_zero()) {
+                solutions.dropped.push(dropped(
+                    u,
+                    angle,
+                    "the axis is vertical there, where the Eulerian angles φ and ψ are not told apart",
+                    r"the axis vertical: $\phi$ and $\psi$ not told apart at $\theta = 0$ or $\pi$",
+                ));
+                continue;
+            }
+            let at: Option<Vec<Expr>> = equations
+                .iter()
+                .map(|e| at_angle(e, u, &sine, &cosine))
+                .collect::<Result<_, _>>()?;
+            let rest: Vec<Expr> = at
+                .unwrap_or_default()
+                .into_iter()
+                .filter(|e| !e.is_zero())
+                .collect();
+            let solved = match rest.is_empty() {
+                true => Ok(Vec::new()),
+                false => solve_system(&rest, &others, context)
+                    .map(|s| s.branches.into_iter().next().unwrap_or_default()),
+            };
+            match solved {
+                Ok(mut branch) => {
+                    branch.insert(0, (u, angle));
+                    solutions.branches.push(branch);
+                }
+                Err(SolveError::Inconsistent { .. }) => solutions.dropped.push(dropped(
+                    u,
+                    angle,
+                    "the other equations do not hold at this angle",
+                    "the other equations do not hold at this angle",
+                )),
+                Err(e) => return Err(e),
+            }
+        }
+    }
+    Ok(solutions)
+}
+
+/// A root ruled out for `reason` (`words` as a page shows it).
+fn dropped(unknown: Symbol, value: Expr, reason: &str, words: &str) -> DroppedRoot {
+    DroppedRoot {
+        unknown,
+        value: value.clone(),
+        reason: reason.into(),
+        condition: Condition {
+            words: words.into(),
+            lhs: Expr::sym(unknown),
+            rhs: value,
+        },
+    }
 }

@@ -6,7 +6,7 @@
 use super::super::kinematic_constraints;
 use super::super::model::{Quantity, Request, Scene, Span};
 use super::super::stated_kinematics::at_reducing_angle;
-use super::scene_solve::solve_scene;
+use super::scene_solve::{sine_and_cosine_of, solve_scene};
 use super::{zero_vector, Analyser, Value};
 use crate::algebra::polynomial_solve::{Solutions, SolveError};
 use crate::algebra::{AlgebraError, Axis, Expr, Symbol, Vector, View};
@@ -65,8 +65,20 @@ impl Analyser<'_> {
             } = solve_scene(self.scene, &equations, &wanted)
                 .map_err(|e| self.solve_error(at, e, &equations))?;
             if let Some((u, p)) = polynomial {
-                let title = format!("the equations reduce to a polynomial in ${}$", u.latex());
-                let relations = vec![Relation::new(p, Expr::zero(), Axis::X)];
+                let mut relations = vec![Relation::new(p, Expr::zero(), Axis::X)];
+                let title = match sine_and_cosine_of(self.scene, u) {
+                    Some([(c, cosine), (s, sine)]) => {
+                        relations.push(Relation::new(Expr::sym(c), cosine, Axis::X));
+                        relations.push(Relation::new(Expr::sym(s), sine, Axis::X));
+                        format!(
+                            "the equations in the angle's sine and cosine, with ${}^2 = 1 - {}^2$: a polynomial in ${}$",
+                            s.latex(),
+                            c.latex(),
+                            c.latex()
+                        )
+                    }
+                    None => format!("the equations reduce to a polynomial in ${}$", u.latex()),
+                };
                 self.plan.push(Step::new(title, relations));
             }
             if branches.is_empty() {

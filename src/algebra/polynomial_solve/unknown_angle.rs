@@ -1,0 +1,104 @@
+//! An unknown angle u that enters only through sin u, cos u and tan u (double angles
+//! multiplied out first), made polynomial in its cosine c = cos u with s = sin u kept apart:
+//! with s² = 1 − c², each equation's numerator is
+//!
+//! ```text
+//! P₀(c) + s P₁(c) = 0
+//! ```
+//!
+//! so the angle comes from a polynomial in c alone: P₀ when P₁ = 0, P₁ (with s = 0, that
+//! is c = ±1) when P₀ = 0, else P₀² − (1 − c²) P₁² (whose roots the caller checks in the
+//! equations themselves). A root c₀ in [−1, 1] is u = ±arccos c₀, s = ±√(1 − c₀²).
+
+use super::super::error::AlgebraError;
+use super::super::expr::{Expr, View};
+use super::super::function::Func;
+use super::super::rational::Q;
+use super::super::square_rewrite::SquareRule;
+use super::super::symbol::Symbol;
+
+/// `e`'s numerator as `(P₀(c), P₁(c))` with sin u = `s`, cos u = `c` (see the module
+/// documentation); none when u appears other than as the whole argument of sin, cos, tan.
+pub fn in_sine_and_cosine(
+    e: &Expr,
+    u: Symbol,
+    s: Symbol,
+    c: Symbol,
+) -> Result<Option<(Expr, Expr)>, AlgebraError> {
+    let (sine, cosine) = (Expr::sym(s), Expr::sym(c));
+    let tangent = sine.checked_div(&cosine)?;
+    let single = e.double_angles_multiplied_out()?;
+    let Some(replaced) = replaced(&single, u, &|f| match f {
+        Func::Sin => Some(sine.clone()),
+        Func::Cos => Some(cosine.clone()),
+        Func::Tan => Some(tangent.clone()),
+        Func::Abs | Func::Acos => None,
+    })?
+    else {
+        return Ok(None);
+    };
+    let numerator = replaced.together_parts()?.0.expand()?;
+    let square = SquareRule {
+        base: &sine,
+        p: Q::int(1),
+        q: Q::int(-1),
+        g: cosine.powi(2),
+    };
+    let reduced = square.rewrite(&numerator)?.expand()?;
+    let (mut even, mut odd) = (Vec::new(), Vec::new());
+    for group in reduced.collect(&[s])? {
+        match group.monomial.is_one() {
+            true => even.push(group.coefficient),
+            false if group.monomial == sine => odd.push(group.coefficient),
+            false => return Ok(None),
+        }
+    }
+    Ok(Some((Expr::add_all(even), Expr::add_all(odd))))
+}
+
+/// `e` with sin u, cos u, tan u given their values `sine`, `cosine` (double angles
+/// multiplied out first), expanded; none when u appears elsewhere.
+pub fn at_angle(
+    e: &Expr,
+    u: Symbol,
+    sine: &Expr,
+    cosine: &Expr,
+) -> Result<Option<Expr>, AlgebraError> {
+    let tangent = sine.checked_div(cosine).ok();
+    let single = e.double_angles_multiplied_out()?;
+    replaced(&single, u, &|f| match f {
+        Func::Sin => Some(sine.clone()),
+        Func::Cos => Some(cosine.clone()),
+        Func::Tan => tangent.clone(),
+        Func::Abs | Func::Acos => None,
+    })?
+    .map(|x| x.expand())
+    .transpose()
+}
+
+/// `e` with each `f(u)` replaced by `by(f)`; none when u appears other than as the whole
+/// argument of a function `by` replaces.
+fn replaced(
+    e: &Expr,
+    u: Symbol,
+    by: &dyn Fn(Func) -> Option<Expr>,
+) -> Result<Option<Expr>, AlgebraError> {
+    if !e.contains(u) {
+        return Ok(Some(e.clone()));
+    }
+    let each = |parts: &[Expr]| -> Result<Option<Vec<Expr>>, AlgebraError> {
+        parts.iter().map(|p| replaced(p, u, by)).collect()
+    };
+    Ok(match e.view() {
+        View::Num(_) | View::Sym(_) => None,
+        View::Add(terms) => each(terms)?.map(Expr::add_all),
+        View::Mul(factors) => each(factors)?.map(Expr::mul_all),
+        View::Pow(b, exponent) if !exponent.contains(u) => match replaced(b, u, by)? {
+            Some(b) => Some(b.checked_pow(exponent)?),
+            None => None,
+        },
+        View::Pow(..) => None,
+        View::Func(f, a) if *a == Expr::sym(u) => by(f),
+        View::Func(..) => None,
+    })
+}

@@ -65,13 +65,18 @@ fn the_car_wheel_couple_against_a_hand_computation() {
         Value::Scalar(e) => value(e),
         other => panic!("{name}: {other:?}"),
     };
-    // ΣM_x = I ψ̇ φ̇ at θ = 90°, I = m r_w²/2, ψ̇ = v/r_w, φ̇ = v/R.
-    let (m, r_w, v, big_r) = (20.0, 0.3, 20.0, 50.0);
-    let by_hand = m * r_w * r_w / 2.0 * (v / r_w) * (v / big_r);
-    assert!((scalar("M_x") - by_hand).abs() < 1e-12 * by_hand);
+    // ΣM_x = I ψ̇ φ̇ at θ = 90°, I = m r_w²/2, ψ̇ = −v/r_w (rolling), φ̇ = v/R.
+    let (m, r_w, v, big_r, g) = (20.0, 0.3, 20.0, 50.0, 9.81);
+    let by_hand = m * r_w * r_w / 2.0 * (-v / r_w) * (v / big_r);
+    assert!((scalar("M_x") - by_hand).abs() < 1e-12 * by_hand.abs());
     assert_eq!((scalar("M_y"), scalar("M_z")), (0.0, 0.0));
     let Value::Vector(f) = result(&analysis, "F") else {
         panic!("F is a vector")
     };
+    // F + W = m ā, ā = −v²/R k: F holds the weight up and turns the wheel.
+    assert!((value(&f[1]) - m * g).abs() < 1e-9);
     assert!((value(&f[2]) + m * v * v / big_r).abs() < 1e-9);
+    // Rolling: the contact point (0, −r_w, 0) is at rest, v + ψ̇ r_w = 0.
+    let psidot = scene.value(kinetics::Symbol::new("psidot")).unwrap();
+    assert!((v + psidot * r_w).abs() < 1e-12);
 }

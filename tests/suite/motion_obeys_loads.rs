@@ -156,3 +156,26 @@ find T_trans";
     assert!(message.contains("m v̄₁ + ΣF Δt = m v̄₂ about x"), "{message}");
     assert!((difference(&message) - 1.0).abs() < 1e-9, "{message}");
 }
+
+#[test]
+fn a_given_gamma_the_motion_does_not_have_is_refused_at_that_given() {
+    // The constraints dropped: ψ̇ comes from ΣM_G = Ḣ_G, and γ then from θ,
+    // tan γ = (I/I′) tan θ = 2 tan 30° = 1.155, γ = 49.11°, not the 30° given.
+    let text = disk_with(
+        "constraint phidot = w",
+        "given gamma = 30 deg\ngiven w = 40 rad/s",
+    )
+    .replace("find phidot, psidot, precession", "find psidot, precession");
+    let message = refusal(&text);
+    assert!(
+        message
+            .contains("gamma = 30 deg (given on line 4) is not the angle between ω and the axis"),
+        "{message}"
+    );
+    let by_hand = (2.0 * 30f64.to_radians().tan()).atan().to_degrees();
+    assert!(
+        message.contains(&format!("γ = {by_hand:.2}°")),
+        "{by_hand}: {message}"
+    );
+    assert!(message.contains("t.scene:4:7"), "{message}");
+}

@@ -32,8 +32,8 @@ const ROUND_OFF: f64 = 1e-9;
 const QUOTED_RELATION_CHARS: usize = 120;
 
 impl Analyser<'_> {
-    /// Refuses, at the constraint that fixed the motion (else the first request), a motion
-    /// the scene's loads cannot produce; see the module documentation.
+    /// Refuses, at the constraint that fixed the motion (else the first load, else the first
+    /// request), a motion the scene's loads cannot produce; see the module documentation.
     pub(super) fn motion_obeys_loads(&mut self) -> Result<(), Diagnostic> {
         let scene = self.scene;
         let torque_free = scene
@@ -52,10 +52,12 @@ impl Analyser<'_> {
         if solved_by_them || !(loaded || torque_free) || !motion_stated || scene.parts.is_empty() {
             return Ok(());
         }
+        let places = &scene.places;
         let at = scene
             .constraints
             .first()
             .map(|c| c.span)
+            .or_else(|| places.forces.first().or(places.couples.first()).copied())
             .or_else(|| scene.requests.first().map(|r| r.span))
             .unwrap_or_default();
         let shown = self.plan.len();

@@ -5,6 +5,7 @@
 
 use super::super::model::{EulerAnglesStatement, Span};
 use super::{Analyser, Value};
+use crate::algebra::four_significant_figures;
 use crate::algebra::{Axis, Expr, Func, Symbol};
 use crate::mechanics::derivation::{presented, Relation, Step};
 use crate::mechanics::gyroscope::{axial_moment, transverse_moment};
@@ -50,6 +51,7 @@ impl Analyser<'_> {
                 .or_else(|| (s == transverse).then(|| i_x.clone()))
         };
         let tan_gamma = motion.tan_gamma.subs(&moment).map_err(self.algebra(at))?;
+        self.given_gamma_agrees(&tan_gamma)?;
         let gamma = Expr::func(Func::Tan, Expr::symbol("gamma"));
         self.plan.push(Step::new(
             r"this body's moments of inertia about $G$: $I = \bar I_z$, $I' = \bar I_x = \bar I_y$; the sign of $I' - I$ is the sense of the precession",
@@ -92,5 +94,36 @@ impl Analyser<'_> {
             ));
         };
         Ok(Value::Precession(Box::new(Precession { tan_gamma, sense })))
+    }
+
+    /// A given `gamma` must be the angle this motion has between ω and the axis,
+    /// `tan γ = (I/I') tan θ`; a scene that states another (the page would show both) is
+    /// refused at that given. Decided with the givens' values, when the two have them. Where
+    /// the constraints fixed rates the moment equation contradicts, that deeper cause is the
+    /// refusal (the analysis stops here, so the check's derivations need not be shown).
+    fn given_gamma_agrees(&mut self, tan_gamma: &Expr) -> Result<(), Diagnostic> {
+        let scene = self.scene;
+        let Some(given) = scene.givens.iter().find(|g| g.symbol.name() == "gamma") else {
+            return Ok(());
+        };
+        let value = |s: Symbol| scene.value(s);
+        let (Some(stated), Ok(derived)) = (given.value, tan_gamma.eval(&value)) else {
+            return Ok(());
+        };
+        let derived_angle = derived.atan().abs();
+        if (stated.tan() - derived).abs() <= 1e-9 * derived.abs().max(1.0) {
+            return Ok(());
+        }
+        self.motion_obeys_loads()?;
+        Err(scene.error_at(
+            given.span,
+            format!(
+                "{} is not the angle between ω and the axis in this motion: under no force tan γ = (I/I') tan θ = {}, so γ = {}°",
+                scene.cite(given),
+                four_significant_figures(derived),
+                four_significant_figures(derived_angle.to_degrees()),
+            ),
+            "under no force γ follows from θ and the body: drop 'given gamma': find precession derives γ from θ",
+        ))
     }
 }

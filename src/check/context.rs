@@ -737,6 +737,7 @@ fn request(scene: &Scene, name: &str, quantity: Quantity) -> Request {
             end: scene.source.len(),
         },
         unit: None,
+        shown_in: None,
         solution: None,
     }
 }

@@ -358,6 +358,9 @@ pub struct Request {
     pub span: Span,
     /// `find D_y in N`: the answer must be a number, given in this unit.
     pub unit: Option<NamedUnit>,
+    /// The unit the result's number is shown in where no `in` asks for one: an unknown's
+    /// declared unit (`unknown C_x : lb` shows C_x in lb when the givens make it a number).
+    pub shown_in: Option<NamedUnit>,
     /// When the equations have several real solutions (a top's slow and fast precession) and
     /// this result differs between them: which solution (1, 2, …) this row is.
     pub solution: Option<usize>,
@@ -413,6 +416,9 @@ pub struct Scene {
     pub points: Vec<NamedPoint>,
     pub constraints: Vec<Constraint>,
     pub unknowns: Vec<(Symbol, Dimension)>,
+    /// The unit each unknown was declared in, where one was written (`unknown C_x : lb`):
+    /// its result's number is shown in it.
+    pub unknown_units: Vec<(Symbol, NamedUnit)>,
     pub requests: Vec<Request>,
     /// Where `find balance ...` puts the correction masses.
     pub balance: Option<BalancePlanes>,

@@ -297,10 +297,10 @@ fn computed<'a>(
     vec![in_requested_unit(request, result)]
 }
 
-/// A value asked for `in UNIT` is converted from SI and labelled with the unit as written
-/// (a principal frame's moments; its axes have no unit).
+/// A value asked for `in UNIT` (else an unknown's declared unit) is converted from SI and
+/// labelled with the unit as written (a principal frame's moments; its axes have no unit).
 fn in_requested_unit<'a>(request: &Request, mut result: Result<'a>) -> Result<'a> {
-    let Some(unit) = &request.unit else {
+    let Some(unit) = request.unit.as_ref().or(request.shown_in.as_ref()) else {
         return result;
     };
     let to_si = unit.unit().to_si;

@@ -26,6 +26,7 @@ mod claim_parsing;
 mod cli_bad_input;
 mod cli_write_failure;
 mod cubic_scene;
+mod declared_units;
 mod defined_givens;
 mod derivations_numeric;
 mod derive_formats;

@@ -118,6 +118,7 @@ pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene,
             points: vec![],
             constraints: vec![],
             unknowns: vec![],
+            unknown_units: vec![],
             requests: vec![],
             balance: None,
             places: Places::default(),
@@ -274,6 +275,7 @@ impl Reader<'_> {
                         name,
                         span: Span { start, end },
                         unit,
+                        shown_in: None,
                         solution: None,
                     });
                 }
@@ -367,6 +369,10 @@ impl Reader<'_> {
                 }
             };
             self.scene.requests[k].quantity = quantity;
+            if let Quantity::Unknown(u) = quantity {
+                let declared = self.scene.unknown_units.iter().find(|(s, _)| *s == u);
+                self.scene.requests[k].shown_in = declared.map(|(_, unit)| unit.clone());
+            }
         }
         Ok(())
     }
@@ -425,6 +431,9 @@ impl Reader<'_> {
                 .map_or_else(|| default_dimension(name.as_str()), |u| u.unit().dimension);
             let symbol = self.declare(name, dimension)?;
             self.scene.unknowns.push((symbol, dimension));
+            if let Some(unit) = &unit {
+                self.scene.unknown_units.push((symbol, unit.clone()));
+            }
         }
         Ok(())
     }

@@ -102,9 +102,10 @@ pub struct ExactFactor {
 }
 
 /// Each unit a scene may name: its dimension and its exact factor to SI (the international
-/// foot 0.3048 m and pound-force 4.4482216152605 N by definition, the slug lbf·s²/ft; the
-/// degree π/180, the revolution per minute 2π/60 = π/30).
-const UNIT_TABLE: [(&str, Dimension, i64, i64, i8); 17] = [
+/// foot 0.3048 m, the mile 1609.344 m and pound-force 4.4482216152605 N by definition (`lb`
+/// and `lbf` alike, the ounce-force `oz` a sixteenth, the `kip` a thousand), the slug
+/// lbf·s²/ft; the hour 3600 s; the degree π/180, the revolution per minute 2π/60 = π/30).
+const UNIT_TABLE: [(&str, Dimension, i64, i64, i8); 23] = [
     ("kg", Dimension::MASS, 1, 1, 0),
     ("g", Dimension::MASS, 1, 1_000, 0),
     (
@@ -117,10 +118,13 @@ const UNIT_TABLE: [(&str, Dimension, i64, i64, i8); 17] = [
     ("m", Dimension::LENGTH, 1, 1, 0),
     ("mm", Dimension::LENGTH, 1, 1_000, 0),
     ("cm", Dimension::LENGTH, 1, 100, 0),
+    ("km", Dimension::LENGTH, 1_000, 1, 0),
+    ("mi", Dimension::LENGTH, 1_609_344, 1_000, 0),
     ("ft", Dimension::LENGTH, 3_048, 10_000, 0),
     ("in", Dimension::LENGTH, 254, 10_000, 0),
     ("s", Dimension::TIME, 1, 1, 0),
     ("min", Dimension::TIME, 60, 1, 0),
+    ("h", Dimension::TIME, 3_600, 1, 0),
     ("N", Dimension::FORCE, 1, 1, 0),
     ("kN", Dimension::FORCE, 1_000, 1, 0),
     (
@@ -128,6 +132,27 @@ const UNIT_TABLE: [(&str, Dimension, i64, i64, i8); 17] = [
         Dimension::FORCE,
         44_482_216_152_605,
         10_000_000_000_000,
+        0,
+    ),
+    (
+        "lbf",
+        Dimension::FORCE,
+        44_482_216_152_605,
+        10_000_000_000_000,
+        0,
+    ),
+    (
+        "oz",
+        Dimension::FORCE,
+        44_482_216_152_605,
+        160_000_000_000_000,
+        0,
+    ),
+    (
+        "kip",
+        Dimension::FORCE,
+        44_482_216_152_605,
+        10_000_000_000,
         0,
     ),
     ("J", Dimension::MOMENT, 1, 1, 0),
@@ -166,7 +191,8 @@ pub fn table_name(name: &str) -> Option<&'static str> {
 }
 
 /// The names accepted by [`unit_named`], for hints.
-pub const UNIT_NAMES: &str = "kg, g, slug, m, mm, cm, ft, in, s, min, N, kN, lb, J, rad, deg, rpm";
+pub const UNIT_NAMES: &str =
+    "kg, g, slug, m, mm, cm, km, ft, in, mi, s, min, h, N, kN, lb, lbf, oz, kip, J, rad, deg, rpm";
 
 /// Dimensions of the symbols of a scene.
 pub type Dimensions = HashMap<Symbol, Dimension>;

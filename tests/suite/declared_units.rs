@@ -59,3 +59,30 @@ fn an_unknown_angle_declared_in_degrees_is_shown_in_degrees() {
     assert_eq!(unit, "deg");
     assert!((number - 31.17).abs() < 0.005, "{number}");
 }
+
+#[test]
+fn the_customary_and_everyday_units_have_their_exact_factors() {
+    use kinetics::{Expr, Symbol};
+    let text = "given v = 72 km/h
+given u = 45 mi/h
+given P = 2 kip
+given Q = 12 oz
+given F = 3 lbf
+given M = 30 in*lb
+given t1 = 0.5 h
+given M_s = 1 kg
+body sphere(0.1 m) mass M_s
+find T";
+    let scene = parse_scene("t.scene", text).unwrap();
+    let exact = |name: &str| scene.exact_given(Symbol::new(name)).unwrap();
+    let lbf = Expr::rational(44_482_216_152_605, 10_000_000_000_000);
+    // 72 km/h = 20 m/s; 45 mi/h = 45 · 1609.344/3600 = 20.1168 m/s; 0.5 h = 1800 s.
+    assert_eq!(exact("v"), Expr::int(20));
+    assert_eq!(exact("u"), Expr::rational(201_168, 10_000));
+    assert_eq!(exact("t_1"), Expr::int(1800));
+    // 2 kip = 2000 lbf; 12 oz = 12/16 lbf; 30 in·lb = 30 · 0.0254 m · 1 lbf.
+    assert_eq!(exact("P"), Expr::int(2000) * lbf.clone());
+    assert_eq!(exact("Q"), Expr::rational(3, 4) * lbf.clone());
+    assert_eq!(exact("F"), Expr::int(3) * lbf.clone());
+    assert_eq!(exact("M"), Expr::rational(762, 1000) * lbf);
+}

@@ -80,3 +80,13 @@ fn the_car_wheel_couple_against_a_hand_computation() {
     let psidot = scene.value(kinetics::Symbol::new("psidot")).unwrap();
     assert!((v + psidot * r_w).abs() < 1e-12);
 }
+
+#[test]
+fn a_definition_by_a_given_declared_later_says_which_line_to_move_below() {
+    let text = "given m = 2 kg\ngiven w = v/r\ngiven r = 0.5 m\ngiven v = 3 m/s\nbody sphere(r) mass m\nvbar = 0\nomega = w*k\nfind T";
+    let message = parse_scene("t.scene", text).unwrap_err().render();
+    assert!(
+        message.contains("is given on line") && message.contains("move this line below that one"),
+        "{message}"
+    );
+}

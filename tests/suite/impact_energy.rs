@@ -52,3 +52,29 @@ fn an_impact_energy_without_an_impulse_is_refused_at_its_find() {
     );
     assert!(message.contains("t.scene:7:9"), "at T_lost: {message}");
 }
+
+#[test]
+fn a_body_at_rest_before_the_blow_says_so() {
+    // Without `before` lines the body was at rest: T_1 = 0, and the page says why.
+    let text = std::fs::read_to_string("examples/scenes/spinning_rod_strikes_a_post.scene")
+        .unwrap()
+        .replace("before vbar = v0*i\n", "")
+        .replace("before omega = w0*k\n", "");
+    let scene = parse_scene("t.scene", &text).unwrap();
+    let analysis = analyse(&scene).unwrap();
+    let Value::Scalar(t1) = result(&analysis, "T_1") else {
+        panic!("T_1 is a scalar")
+    };
+    assert!(t1.is_zero());
+    let titles: Vec<String> = analysis
+        .plan
+        .iter()
+        .map(|s| kinetics::print::markup::text(&s.title))
+        .collect();
+    assert!(
+        titles
+            .iter()
+            .any(|t| t.contains("no `before` line: at rest")),
+        "{titles:?}"
+    );
+}

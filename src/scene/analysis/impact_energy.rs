@@ -10,6 +10,7 @@
 use super::super::model::Span;
 use super::{zero_vector, Analyser};
 use crate::algebra::Expr;
+use crate::mechanics::derivation::{Relation, Step};
 use crate::mechanics::kinematics::velocity_of_mass_centre;
 use crate::mechanics::kinetic_energy::{energy_lost, kinetic_energy_before};
 use crate::parse::Diagnostic;
@@ -35,6 +36,20 @@ impl Analyser<'_> {
         }
         let scene = self.scene;
         let omega = scene.omega_before.clone().unwrap_or_else(zero_vector);
+        // The motion before, as given: a body at rest unless a `before` line says otherwise.
+        let at_rest = match (&scene.vbar_before, &scene.omega_before) {
+            (None, None) => " (no `before` line: at rest)",
+            _ => "",
+        };
+        let vbar_before = scene.vbar_before.clone().unwrap_or_else(zero_vector);
+        self.plan.push(Step::new(
+            format!("the motion just before the impact{at_rest}"),
+            [
+                Relation::components_named(&vbar_before, |axis| format!("vbar_1{axis}")),
+                Relation::components_named(&omega, |axis| format!("omega_1{axis}")),
+            ]
+            .concat(),
+        ));
         let d = if scene.about_fixed_point() && scene.vbar_before.is_none() {
             let inertia = self.inertia_about_o(at)?;
             kinetic_energy_before(&inertia, &omega, None)

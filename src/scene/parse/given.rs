@@ -146,7 +146,7 @@ impl Reader<'_> {
             .math(p)
             .map_err(|d| match reads_as_a_value(p.as_str()) {
                 true => self.unreadable_value(d),
-                false => d,
+                false => self.declared_later(d, span(p).1),
             })?;
         if let Some(u) = e.symbols().into_iter().find(|s| self.scene.is_unknown(*s)) {
             return Err(self
@@ -184,6 +184,30 @@ impl Reader<'_> {
             ),
         )
         .with_help(help)
+    }
+
+    /// An unknown symbol in a definition that a `given` after it declares: the help says so
+    /// (the definition reads only the givens before it).
+    fn declared_later(&self, d: Diagnostic, after: usize) -> Diagnostic {
+        let Some(name) = d.message.strip_prefix("unknown symbol ") else {
+            return d;
+        };
+        let later = self.source[after..].lines().enumerate().find(|(_, line)| {
+            let rest = line.trim_start().strip_prefix("given ").unwrap_or_default();
+            let declared: String = rest
+                .chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                .collect();
+            declared == name
+        });
+        let Some((k, _)) = later else {
+            return d;
+        };
+        let line = self.source[..after].matches('\n').count() + 1 + k;
+        let help = format!(
+            "{name} is given on line {line}, after this one: a given is defined by the givens before it, so move this line below that one"
+        );
+        d.with_help(help)
     }
 
     /// A defined given's exact value, when every given it is made of has one (and the

@@ -56,6 +56,26 @@ pub fn in_sine_and_cosine(
     Ok(Some((Expr::add_all(even), Expr::add_all(odd))))
 }
 
+/// Whether u enters `e` only as the argument of sin, cos (u or 2u) and tan (u): a read of
+/// `e` that builds nothing, so that a solver can ask it of every unknown of every equation
+/// before it rewrites one ([`in_sine_and_cosine`] may still decline, past its bounds).
+pub fn enters_only_through_trigonometry(e: &Expr, u: Symbol) -> bool {
+    if !e.contains(u) {
+        return true;
+    }
+    let angle = Expr::sym(u);
+    match e.view() {
+        View::Num(_) | View::Sym(_) => false,
+        View::Add(parts) | View::Mul(parts) => {
+            parts.iter().all(|p| enters_only_through_trigonometry(p, u))
+        }
+        View::Pow(b, exponent) => !exponent.contains(u) && enters_only_through_trigonometry(b, u),
+        View::Func(Func::Sin | Func::Cos, a) => *a == angle || *a == Expr::int(2) * angle,
+        View::Func(Func::Tan, a) => *a == angle,
+        View::Func(..) => false,
+    }
+}
+
 /// `e` with sin u, cos u, tan u given their values `sine`, `cosine` (double angles
 /// multiplied out first), expanded; none when u appears elsewhere.
 pub fn at_angle(

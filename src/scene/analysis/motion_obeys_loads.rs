@@ -145,7 +145,8 @@ fn percentage(fraction: f64) -> String {
 /// The residual's value with the givens' values and its largest term's size, when it is not
 /// zero (see the module documentation); givens without a value take fixed generic ones.
 fn violation(scene: &Scene, residual: &Expr) -> Result<Option<(f64, f64)>, AlgebraError> {
-    if residual.expand()?.is_zero() {
+    let terms = residual.expand()?;
+    if terms.is_zero() {
         return Ok(None);
     }
     let exact = residual.subs(&|s| scene.exact_given(s))?;
@@ -164,7 +165,7 @@ fn violation(scene: &Scene, residual: &Expr) -> Result<Option<(f64, f64)>, Algeb
             Some(1.0 + 0.618_033_988_75 * (k + 1) as f64 % 1.0)
         })
     };
-    let (Ok(r), Ok(terms)) = (residual.eval(&value), residual.expand()) else {
+    let Ok(r) = residual.eval(&value) else {
         return Ok(None);
     };
     let scale = terms

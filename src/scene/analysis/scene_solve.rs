@@ -5,9 +5,11 @@
 //! its roots that the conditions rule out dropped. Several real roots are several
 //! solutions (a top's slow and fast precession), each shown as a solution of its own.
 
-use super::super::model::Scene;
+use super::super::model::{EulerAnglesStatement, Scene};
 use super::super::units::Dimension;
-use crate::algebra::polynomial_solve::unknown_angle::{at_angle, in_sine_and_cosine};
+use crate::algebra::polynomial_solve::unknown_angle::{
+    at_angle, enters_only_through_trigonometry, in_sine_and_cosine,
+};
 use crate::algebra::polynomial_solve::{
     solve_system, Condition, DroppedRoot, Solutions, SolveContext, SolveError,
 };
@@ -49,30 +51,21 @@ pub(super) fn solve_scene(
         sign: &sign,
         positive: &positive,
     };
-    match angle_unknown(equations, wanted)? {
+    match angle_unknown(equations, wanted) {
         Some(u) => solve_for_angle(scene, equations, wanted, u, &context),
         None => solve_system(equations, wanted, &context),
     }
 }
 
-/// The first unknown that enters only through sin, cos and tan of itself (and does enter).
-fn angle_unknown(equations: &[Expr], wanted: &[Symbol]) -> Result<Option<Symbol>, SolveError> {
-    for &u in wanted {
-        let (sine, cosine) = sine_and_cosine(u);
-        let mut enters = false;
-        let mut only_there = true;
-        for e in equations.iter().filter(|e| e.contains(u)) {
-            enters = true;
-            if in_sine_and_cosine(e, u, sine, cosine)?.is_none() {
-                only_there = false;
-                break;
-            }
-        }
-        if enters && only_there {
-            return Ok(Some(u));
-        }
-    }
-    Ok(None)
+/// The first unknown that enters only through sin, cos and tan of itself (and does enter):
+/// decided by reading the equations, nothing rewritten (asked of every scene's unknowns).
+fn angle_unknown(equations: &[Expr], wanted: &[Symbol]) -> Option<Symbol> {
+    wanted.iter().copied().find(|&u| {
+        equations.iter().any(|e| e.contains(u))
+            && equations
+                .iter()
+                .all(|e| enters_only_through_trigonometry(e, u))
+    })
 }
 
 /// The sine and cosine of the angle `u` as unknowns of their own: `s_theta`, `c_theta`.
@@ -146,7 +139,7 @@ fn solve_for_angle(
             }
         }
     }
-    let nutation = scene.euler_angles.is_some() && u == Symbol::new("theta");
+    let nutation = scene.euler_angles.is_some() && u == EulerAnglesStatement::angles().nutation;
     let mut solutions = Solutions {
         branches: Vec::new(),
         dropped: roots.dropped,

@@ -309,9 +309,8 @@ impl Reader<'_> {
             }
             "gyration" => {
                 expected(3, "gyration(k_x, k_y, k_z)")?;
-                let [k_x, k_y, k_z]: [Expr; 3] = [l.remove(0), l.remove(0), l.remove(0)];
                 Shape::Gyration {
-                    radii: [k_x, k_y, k_z],
+                    radii: [l.remove(0), l.remove(0), l.remove(0)],
                 }
             }
             "point" => {

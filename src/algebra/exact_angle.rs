@@ -42,7 +42,7 @@ pub(super) fn at_multiple_of_pi(f: Func, q: &Q) -> Option<ExactValue> {
             Some(value) => ExactValue::Value(value),
             None => ExactValue::Pole,
         },
-        Func::Abs | Func::Acos => return None,
+        Func::Abs | Func::Acos | Func::Atan => return None,
     })
 }
 

@@ -1,5 +1,6 @@
-//! The elementary functions an expression may hold: `sin`, `cos`, `tan`, `abs`, and the
-//! inverse cosine `acos` (the trigonometric form of a cubic's three real roots).
+//! The elementary functions an expression may hold: `sin`, `cos`, `tan`, `abs`, the
+//! inverse cosine `acos` (the trigonometric form of a cubic's three real roots) and the
+//! inverse tangent `atan` (an angle from its tangent, tan θ = (I′/I) tan γ).
 //! (`sqrt(x)` is the power `x^(1/2)`.)
 //!
 //! Construction applies the parity rules `sin(-x) = -sin x`, `cos(-x) = cos x`,
@@ -7,7 +8,9 @@
 //! at the multiples of 15° (`sin(π/6) = 1/2`, `cos(13π/6) = cos(π/6) = √3/2`; see
 //! `exact_angle.rs`), another multiple of π brought into `[0, π]` (`cos(10π/9) = cos(8π/9)`),
 //! and the inverse of the exact values: `acos x = kπ/12` when `x = cos(kπ/12)` exactly
-//! (`acos(1/2) = π/3`), `cos(acos x) = x`. `tan` at an odd multiple of π/2 is undefined, and
+//! (`acos(1/2) = π/3`), `cos(acos x) = x`; `atan(−x) = −atan x`, `atan x = kπ/12` when `x`
+//! is exactly `tan(kπ/12)`, `tan(atan x) = x`, `cos(atan x) = 1/√(1 + x²)`,
+//! `sin(atan x) = x/√(1 + x²)`. `tan` at an odd multiple of π/2 is undefined, and
 //! `acos` of a number outside `[−1, 1]`: [`Func::checked_apply`] refuses them,
 //! [`Func::apply`] leaves them as they are (`tan(π/2)`).
 
@@ -25,10 +28,13 @@ pub enum Func {
     Abs,
     /// The inverse cosine, valued in `[0, π]`.
     Acos,
+    /// The inverse tangent, valued in `(−π/2, π/2)`.
+    Atan,
 }
 
 impl Func {
-    /// The function of this ASCII name (`sin`, `cos`, `tan`, `abs`, `acos` or `arccos`).
+    /// The function of this ASCII name (`sin`, `cos`, `tan`, `abs`, `acos` or `arccos`,
+    /// `atan` or `arctan`).
     pub fn from_name(name: &str) -> Option<Func> {
         Some(match name {
             "sin" => Func::Sin,
@@ -36,6 +42,7 @@ impl Func {
             "tan" => Func::Tan,
             "abs" => Func::Abs,
             "acos" | "arccos" => Func::Acos,
+            "atan" | "arctan" => Func::Atan,
             _ => return None,
         })
     }
@@ -47,6 +54,7 @@ impl Func {
             Func::Tan => "tan",
             Func::Abs => "abs",
             Func::Acos => "acos",
+            Func::Atan => "atan",
         }
     }
 
@@ -54,6 +62,7 @@ impl Func {
     pub fn page_name(self) -> &'static str {
         match self {
             Func::Acos => "arccos",
+            Func::Atan => "arctan",
             _ => self.name(),
         }
     }
@@ -82,6 +91,16 @@ impl Func {
         if let View::Func(Func::Acos, x) = arg.view() {
             if self == Func::Cos {
                 return x.clone();
+            }
+        }
+        if let View::Func(Func::Atan, x) = arg.view() {
+            if let Some(value) = of_inverse_tangent(self, x) {
+                return value;
+            }
+        }
+        if self == Func::Atan {
+            if let Some(angle) = exact_inverse(Func::Tan, &arg, |v| v.atan()) {
+                return angle;
             }
         }
         if let Some(q) = arg.as_multiple_of_pi() {
@@ -115,7 +134,7 @@ impl Func {
             // The positive argument goes through the rules again: `|-|x|| = ||x|| = |x|`.
             let positive = -arg;
             return match self {
-                Func::Sin | Func::Tan => -self.apply(positive),
+                Func::Sin | Func::Tan | Func::Atan => -self.apply(positive),
                 Func::Cos | Func::Abs => self.apply(positive),
                 Func::Acos => unreachable!("acos returned above"),
             };
@@ -132,6 +151,7 @@ impl Func {
             Func::Tan => Expr::one() + Func::Tan.apply(u.clone()).powi(2),
             Func::Abs => u * &Func::Abs.apply(u.clone()).powi(-1),
             Func::Acos => -(Expr::one() - u.powi(2)).checked_pow(&Expr::rational(-1, 2))?,
+            Func::Atan => (Expr::one() + u.powi(2)).checked_pow(&Expr::int(-1))?,
         })
     }
 
@@ -143,6 +163,7 @@ impl Func {
             Func::Tan => x.tan(),
             Func::Abs => x.abs(),
             Func::Acos => x.acos(),
+            Func::Atan => x.atan(),
         }
     }
 }
@@ -169,7 +190,7 @@ fn reduced_angle(f: Func, q: &Q) -> Option<Expr> {
         Func::Tan => (within, false),
         Func::Sin | Func::Cos if within > d => (2 * d - within, f == Func::Sin),
         Func::Sin | Func::Cos => (within, false),
-        Func::Abs | Func::Acos => return None,
+        Func::Abs | Func::Acos | Func::Atan => return None,
     };
     if angle == n {
         return None;
@@ -179,23 +200,43 @@ fn reduced_angle(f: Func, q: &Q) -> Option<Expr> {
 }
 
 /// `acos x`: the angle `kπ/12` (`0 ≤ k ≤ 12`) when `x` is exactly its cosine, else `acos x`
-/// kept as it is. Only the `k` nearest `acos x` in floating point is tried exactly (a
-/// constant `x`; one with symbols is no such cosine).
+/// kept as it is.
 fn inverse_cosine(x: Expr) -> Expr {
-    let nearest = x
-        .eval(&|_| None)
-        .ok()
-        .filter(|v: &f64| v.abs() <= 1.0)
-        .map(|v| (v.acos() * 12.0 / std::f64::consts::PI).round() as i64);
-    match nearest {
-        Some(k) => {
-            let angle = Expr::rational(k, 12) * Expr::pi();
-            match Func::Cos.apply(angle.clone()) == x {
-                true => angle,
-                false => Expr::func_node(Func::Acos, x),
-            }
-        }
-        None => Expr::func_node(Func::Acos, x),
+    exact_inverse(Func::Cos, &x, |v| match v.abs() <= 1.0 {
+        true => v.acos(),
+        false => f64::NAN,
+    })
+    .unwrap_or_else(|| Expr::func_node(Func::Acos, x))
+}
+
+/// The angle `kπ/12` whose `f` (cos or tan) is exactly `x`: only the `k` nearest
+/// `inverse(x)` in floating point is tried exactly (a constant `x`; one with symbols is no
+/// such value).
+fn exact_inverse(f: Func, x: &Expr, inverse: fn(f64) -> f64) -> Option<Expr> {
+    let value: f64 = x.eval(&|_| None).ok()?;
+    let turns = inverse(value) * 12.0 / std::f64::consts::PI;
+    if !turns.is_finite() {
+        return None;
+    }
+    let angle = Expr::rational(turns.round() as i64, 12) * Expr::pi();
+    (f.apply(angle.clone()) == *x).then_some(angle)
+}
+
+/// `f(atan x)` without the inverse: `tan(atan x) = x`, `cos(atan x) = 1/√(1 + x²)`,
+/// `sin(atan x) = x/√(1 + x²)` (the angle is in (−π/2, π/2), where the cosine is positive).
+fn of_inverse_tangent(f: Func, x: &Expr) -> Option<Expr> {
+    let secant = || {
+        (Expr::one() + x.powi(2))
+            .expand()
+            .ok()?
+            .checked_pow(&Expr::rational(-1, 2))
+            .ok()
+    };
+    match f {
+        Func::Tan => Some(x.clone()),
+        Func::Cos => secant(),
+        Func::Sin => Some(x * &secant()?),
+        Func::Abs | Func::Acos | Func::Atan => None,
     }
 }
 
@@ -242,6 +283,36 @@ mod tests {
         assert!(Func::Acos.checked_apply(root2.clone()).is_err());
         assert!(Func::Acos.checked_apply(root2 / Expr::int(2)).is_ok());
         assert!(Func::Acos.derivative_at(&Expr::one()).is_err());
+    }
+
+    /// `atan` at the tangents of the multiples of 15° is the angle, odd, undone by `tan`, and
+    /// its sine and cosine are algebraic: cos(atan x) = 1/√(1 + x²), sin = x/√(1 + x²).
+    #[test]
+    fn inverse_tangent() {
+        let x = Expr::symbol("x");
+        assert_eq!(Func::Atan.apply(Expr::one()), Expr::pi() / Expr::int(4));
+        assert_eq!(Func::Atan.apply(Expr::zero()), Expr::zero());
+        let root3 = Expr::int(3).checked_pow(&Expr::rational(1, 2)).unwrap();
+        assert_eq!(Func::Atan.apply(-root3), -Expr::pi() / Expr::int(3));
+        let atan_x = Func::Atan.apply(x.clone());
+        assert_eq!(Func::Atan.apply(-x.clone()), -atan_x.clone());
+        assert_eq!(Func::Tan.apply(atan_x.clone()), x);
+        let secant = (Expr::one() + x.powi(2))
+            .checked_pow(&Expr::rational(-1, 2))
+            .unwrap();
+        assert_eq!(Func::Cos.apply(atan_x.clone()), secant);
+        assert_eq!(Func::Sin.apply(atan_x.clone()), &x * &secant);
+        let value: f64 = Func::Atan
+            .apply(Expr::rational(1, 2))
+            .eval(&|_| None)
+            .unwrap();
+        assert!((value - 0.5f64.atan()).abs() < 1e-15);
+        let slope: f64 = Func::Atan
+            .derivative_at(&Expr::int(2))
+            .unwrap()
+            .eval(&|_| None)
+            .unwrap();
+        assert_eq!(slope, 0.2);
     }
 
     /// An angle that is a multiple of π outside [0, π] is brought into it.

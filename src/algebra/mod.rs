@@ -42,6 +42,7 @@ mod square_rewrite;
 mod subs;
 mod sum_of_products;
 mod symbol;
+mod tangent;
 mod together;
 mod traversal;
 mod trig_simplify;

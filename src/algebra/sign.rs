@@ -145,6 +145,8 @@ impl Domains {
             }
             // acos is valued in [0, π].
             View::Func(Func::Acos, _) => Sign::NonNegative,
+            // atan keeps its argument's sign.
+            View::Func(Func::Atan, argument) => self.sign(argument),
             View::Func(..) => Sign::Unknown,
         }
     }

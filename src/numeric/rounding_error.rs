@@ -150,6 +150,8 @@ fn function(f: Func, a: Bounded) -> Bounded {
         Func::Abs => a.error,
         // |acos'(a)| = 1/√(1 − a²)
         Func::Acos => (a.error + own) / (1.0 - a.value.to_f64().powi(2)).sqrt(),
+        // |atan'(a)| = 1/(1 + a²) ≤ 1
+        Func::Atan => a.error + own,
     };
     Bounded { value: v, error }
 }

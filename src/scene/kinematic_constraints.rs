@@ -6,9 +6,15 @@
 //! lhs = rhs:                   lhs − rhs = 0
 //! ```
 //!
+//! `omega_x`, `omega_y`, `omega_z` in a constraint are the components of the body's ω in the
+//! scene's frame (ω = φ̇ sin θ j + (ψ̇ + φ̇ cos θ) k with Eulerian angles), so a torque-free body
+//! is stated as the textbook states it: `constraint omega_y = w*sin(gamma)`.
+//!
 //! In an impact the constraints hold just after the blow, where the impulsive reactions that
 //! enforce them are unknown too: their equations are solved with those of impulse and
-//! momentum, not alone.
+//! momentum, not alone. So are constraints that do not fix their unknowns alone (an angle
+//! inside sin and cos, or fewer equations than unknowns) in a scene whose motion follows from
+//! its loads: they are solved with ΣF = m ā and ΣM = Ḣ.
 
 use super::model::{ConstraintKind, Scene, Span};
 use super::stated_kinematics::stated_kinematics;
@@ -27,9 +33,9 @@ pub struct SolvedConstraints {
     pub frame_rate: Vector,
     /// Values of unknowns fixed by the kinematic constraints.
     pub solved: Vec<(Symbol, Expr)>,
-    /// In an impact, the constraints' equations (each `= 0`), to be solved with impulse and
-    /// momentum.
-    pub with_impulses: Vec<Expr>,
+    /// The constraints' equations (each `= 0`) to be solved with the equations of motion, or
+    /// of impulse and momentum in an impact (see the module documentation).
+    pub with_equations_of_motion: Vec<Expr>,
 }
 
 impl SolvedConstraints {
@@ -131,29 +137,50 @@ pub fn solve_constraints(
                 }
             }
             ConstraintKind::Equation(lhs, rhs) => {
-                equations.push(lhs - rhs);
+                let in_rates = |e: &Expr| omega_components_put_in(e, &omega);
+                let (rates_lhs, rates_rhs) = (
+                    in_rates(lhs).map_err(located(c.span))?,
+                    in_rates(rhs).map_err(located(c.span))?,
+                );
+                equations.push(&rates_lhs - &rates_rhs);
                 sources.push(c.span);
                 shown.push(Relation::new(lhs.clone(), rhs.clone(), Axis::X));
+                if (&rates_lhs, &rates_rhs) != (lhs, rhs) {
+                    shown.push(Relation::new(rates_lhs, rates_rhs, Axis::X));
+                }
             }
         }
     }
     let impact = !scene.impulses.is_empty() && !equations.is_empty();
+    let constrained: Vec<Symbol> = scene
+        .unknowns
+        .iter()
+        .map(|u| u.0)
+        .filter(|u| equations.iter().any(|e| e.contains(*u)))
+        .collect();
+    let alone = match impact || equations.is_empty() {
+        true => None,
+        false => Some(solve_linear(&equations, &constrained)),
+    };
+    // Constraints that do not fix their unknowns alone, where the loads fix the rest.
+    let with_the_loads = scene.motion_follows_from_loads()
+        && match &alone {
+            Some(Err(SolveError::Nonlinear { .. })) => true,
+            Some(Ok(Solution { free, .. })) => !free.is_empty(),
+            _ => false,
+        };
     let solved = if equations.is_empty() {
         vec![]
-    } else if impact {
-        steps.push(Step::new(
-            "kinematic constraints just after the blow (solved with impulse and momentum)",
-            shown,
-        ));
+    } else if impact || with_the_loads {
+        let title = match impact {
+            true => "kinematic constraints just after the blow (solved with impulse and momentum)",
+            false => "kinematic constraints (solved with the equations of motion)",
+        };
+        steps.push(Step::new(title, shown));
         vec![]
     } else {
-        let constrained: Vec<Symbol> = scene
-            .unknowns
-            .iter()
-            .map(|u| u.0)
-            .filter(|u| equations.iter().any(|e| e.contains(*u)))
-            .collect();
-        let Solution { values, free } = solve_linear(&equations, &constrained).map_err(|e| {
+        let solution = alone.unwrap_or_else(|| unreachable!("solved above"));
+        let Solution { values, free } = solution.map_err(|e| {
             // An equation that cannot be used is reported at its constraint.
             let span = match &e {
                 SolveError::Inconsistent { equation, .. }
@@ -189,7 +216,10 @@ pub fn solve_constraints(
         omega_dot: zero_vector(),
         frame_rate: zero_vector(),
         solved,
-        with_impulses: if impact { equations } else { vec![] },
+        with_equations_of_motion: match impact || with_the_loads {
+            true => equations,
+            false => vec![],
+        },
     };
     let substituted = |v: &Vector| kinematics.substitute_vector(v).map_err(located(at));
     let omega = substituted(&omega)?;
@@ -218,6 +248,18 @@ pub fn solve_constraints(
     kinematics.omega_dot = omega_dot;
     kinematics.frame_rate = frame_rate;
     Ok((kinematics, steps))
+}
+
+/// `e` with `omega_x`, `omega_y`, `omega_z` the components of ω (a symbol the scene declares
+/// by that name is ω's component already, and stays as it is).
+fn omega_components_put_in(e: &Expr, omega: &Vector) -> Result<Expr, AlgebraError> {
+    let component = |s: Symbol| {
+        let k = ["omega_x", "omega_y", "omega_z"]
+            .iter()
+            .position(|n| *n == s.name())?;
+        Some(omega[k].clone())
+    };
+    e.subs(&component)
 }
 
 fn zero_vector() -> Vector {

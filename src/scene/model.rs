@@ -494,6 +494,26 @@ impl Scene {
         domains
     }
 
+    /// Whether the scene states the loads its motion follows from: a force, a couple or an
+    /// impulse (or none at all, when it asks for a torque-free `precession`), on a body whose
+    /// motion is stated (a fixed point, ā given, or v̄ after an impact). Its motion is then
+    /// what ΣF = m ā and ΣM = Ḣ (impulse and momentum in an impact) allow.
+    pub fn motion_follows_from_loads(&self) -> bool {
+        let torque_free = self
+            .requests
+            .iter()
+            .any(|r| r.quantity == Quantity::Precession);
+        let impact = !self.impulses.is_empty();
+        let loaded = !self.forces.is_empty() || !self.couples.is_empty() || impact;
+        // ΣF = m ā needs ā (given, or from a fixed point); an impact needs v̄ after it.
+        let motion_stated = self.fixed_point
+            || match impact {
+                true => self.vbar.is_some(),
+                false => self.abar.is_some(),
+            };
+        (loaded || torque_free) && motion_stated && !self.parts.is_empty()
+    }
+
     /// Whether the solution works about the fixed point O with `[I_O]`, as §18.7–18.8 do: the
     /// scene has a fixed point and does not ask for the centroidal route (`about G`).
     pub fn about_fixed_point(&self) -> bool {

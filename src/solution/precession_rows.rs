@@ -19,9 +19,13 @@ pub(super) fn rows<'a>(scene: &Scene, precession: &'a Precession) -> Vec<Result<
         latex: latex.into(),
     };
     let tangent = &precession.tan_gamma;
+    let given = scene.givens.iter().any(|g| g.symbol.name() == "gamma");
     let tan_gamma = named("tan(gamma)", r"\tan\gamma");
-    let mut rows = vec![Line::scalar(scene, tan_gamma, Cow::Borrowed(tangent), None)];
-    if let Some(t) = value(scene, tangent) {
+    let mut rows = Vec::new();
+    if !given {
+        rows.push(Line::scalar(scene, tan_gamma, Cow::Borrowed(tangent), None));
+    }
+    if let Some(t) = value(scene, tangent).filter(|_| !given) {
         rows.push(Line::number(
             named("gamma", r"\gamma"),
             t.atan().to_degrees(),

@@ -9,12 +9,13 @@ use kinetics::scene::{Analysis, Scene, Value};
 use kinetics::solution::{render, Format};
 use std::process::Command;
 
-const EXAMPLES: [&str; 5] = [
+const EXAMPLES: [&str; 6] = [
     "gyroscope_required_moment",
     "top_slow_and_fast_precession",
     "wheel_gyroscope_horizontal",
     "torque_free_cylinder",
     "torque_free_disk",
+    "torque_free_disk_from_omega",
 ];
 
 /// The value of a scalar request with the givens' values.

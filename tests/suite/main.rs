@@ -103,6 +103,7 @@ mod tape_native_memory;
 mod time_derivative;
 mod title_axes;
 mod torque_free;
+mod torque_free_from_omega;
 mod trigonometry;
 mod unknown_angle;
 mod work_precision;

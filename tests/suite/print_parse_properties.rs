@@ -50,7 +50,7 @@ fn up_to_the_signs_of_sums(e: &Expr) -> Expr {
         View::Func(f, arg) => {
             let arg = up_to_the_signs_of_sums(arg);
             match (f, negative_sum(&arg)) {
-                (Func::Sin | Func::Tan, true) => -Expr::func(f, -arg),
+                (Func::Sin | Func::Tan | Func::Atan, true) => -Expr::func(f, -arg),
                 (Func::Cos | Func::Abs, true) => Expr::func(f, -arg),
                 (Func::Acos, true) | (_, false) => Expr::func(f, arg),
             }

@@ -51,7 +51,8 @@ fn every_kind() -> Vec<Expr> {
         x.checked_pow(&Expr::rational(3, 2)).unwrap() + y.powi(-2) * &z,
         f(Func::Sin, &x * &y) - f(Func::Cos, z.clone()).powi(3) + f(Func::Tan, &y / &x),
         f(Func::Abs, &z - &x) * Expr::rational(1, 3) - x.powi(21) / Expr::int(7)
-            + f(Func::Acos, &x / Expr::int(3)),
+            + f(Func::Acos, &x / Expr::int(3))
+            + f(Func::Atan, &y * &z),
         y.checked_pow(&x).unwrap() + z.checked_pow(&Expr::rational(-5, 7)).unwrap(),
         -(&x * &y) / (&z * &z),
         &x * &y + &z,
@@ -259,7 +260,15 @@ fn a_deep_tape_matches_the_interpreter() {
         use Instruction::*;
         let operands: Vec<u32> = match instruction {
             Input(_) | Const(_) => vec![],
-            Neg(a) | Powi(a, _) | Sqrt(a) | Sin(a) | Cos(a) | Tan(a) | Abs(a) | Acos(a) => {
+            Neg(a)
+            | Powi(a, _)
+            | Sqrt(a)
+            | Sin(a)
+            | Cos(a)
+            | Tan(a)
+            | Abs(a)
+            | Acos(a)
+            | Atan(a) => {
                 vec![a]
             }
             Add(a, b) | Sub(a, b) | Mul(a, b) | Div(a, b) | Powf(a, b) => vec![a, b],

@@ -32,7 +32,7 @@ pub fn in_sine_and_cosine(
         Func::Sin => Some(sine.clone()),
         Func::Cos => Some(cosine.clone()),
         Func::Tan => Some(tangent.clone()),
-        Func::Abs | Func::Acos => None,
+        Func::Abs | Func::Acos | Func::Atan => None,
     })?
     else {
         return Ok(None);
@@ -54,6 +54,70 @@ pub fn in_sine_and_cosine(
         }
     }
     Ok(Some((Expr::add_all(even), Expr::add_all(odd))))
+}
+
+/// An equation in the angle u alone, from `equations = 0` in u and the unknowns `others`:
+/// one of them, or one left after eliminating unknowns that enter an equation linearly,
+///
+/// ```text
+/// a w + b = 0,  a ≠ 0 free of the unknowns left   ⇒   w = −b/a
+/// ```
+///
+/// substituted into the rest, each rest's numerator kept (a times the equation, so a root
+/// where a vanishes may be spurious: the caller checks each root in the equations
+/// themselves). Those whose coefficient holds no u first. None when no such chain reaches
+/// u alone.
+pub fn angle_alone(
+    equations: &[Expr],
+    u: Symbol,
+    others: &[Symbol],
+) -> Result<Option<Expr>, AlgebraError> {
+    let mut remaining: Vec<Expr> = equations.to_vec();
+    let mut open: Vec<Symbol> = others.to_vec();
+    loop {
+        let holds_open = |e: &Expr, open: &[Symbol]| open.iter().any(|&w| e.contains(w));
+        if let Some(alone) = remaining
+            .iter()
+            .find(|e| e.contains(u) && !holds_open(e, &open))
+        {
+            return Ok(Some(alone.clone()));
+        }
+        let mut linear: Vec<(usize, Symbol, Expr, Expr)> = Vec::new();
+        for (k, e) in remaining.iter().enumerate() {
+            for &w in open.iter().filter(|&&w| e.contains(w)) {
+                let (mut a, mut b) = (Vec::new(), Vec::new());
+                let mut is_linear = true;
+                for group in e.collect(&[w])? {
+                    match (group.monomial.is_one(), group.monomial == Expr::sym(w)) {
+                        (true, _) => b.push(group.coefficient),
+                        (false, true) => a.push(group.coefficient),
+                        (false, false) => is_linear = false,
+                    }
+                }
+                let (a, b) = (Expr::add_all(a), Expr::add_all(b));
+                if is_linear && !a.is_zero() && !holds_open(&a, &open) && !holds_open(&b, &[w]) {
+                    linear.push((k, w, a, b));
+                }
+            }
+        }
+        linear.sort_by_key(|(_, _, a, _)| a.contains(u));
+        let Some((k, w, a, b)) = linear.into_iter().next() else {
+            return Ok(None);
+        };
+        let value = (-b).checked_div(&a)?;
+        let substituted = |e: &Expr| -> Result<Expr, AlgebraError> {
+            let e = e.subs(&|s| (s == w).then(|| value.clone()))?;
+            e.together_parts()?.0.expand()
+        };
+        remaining = remaining
+            .iter()
+            .enumerate()
+            .filter(|(j, _)| *j != k)
+            .map(|(_, e)| substituted(e))
+            .collect::<Result<Vec<_>, _>>()?;
+        remaining.retain(|e| !e.is_zero());
+        open.retain(|&o| o != w);
+    }
 }
 
 /// Whether u enters `e` only as the argument of sin, cos (u or 2u) and tan (u): a read of
@@ -90,7 +154,7 @@ pub fn at_angle(
         Func::Sin => Some(sine.clone()),
         Func::Cos => Some(cosine.clone()),
         Func::Tan => tangent.clone(),
-        Func::Abs | Func::Acos => None,
+        Func::Abs | Func::Acos | Func::Atan => None,
     })?
     .map(|x| x.expand())
     .transpose()

@@ -250,6 +250,7 @@ fn key(instruction: Instruction) -> InstructionKey {
         Tan(a) => (12, r(a), 0),
         Abs(a) => (13, r(a), 0),
         Acos(a) => (16, r(a), 0),
+        Atan(a) => (17, r(a), 0),
     }
 }
 
@@ -313,6 +314,7 @@ impl Builder<'_> {
                     Func::Tan => Instruction::Tan(a),
                     Func::Abs => Instruction::Abs(a),
                     Func::Acos => Instruction::Acos(a),
+                    Func::Atan => Instruction::Atan(a),
                 })
             }
         };

@@ -41,6 +41,7 @@ pub enum Instruction {
     Tan(u32),
     Abs(u32),
     Acos(u32),
+    Atan(u32),
 }
 
 impl Instruction {
@@ -65,6 +66,7 @@ impl Instruction {
             Tan(a) => Tan(f(a)),
             Abs(a) => Abs(f(a)),
             Acos(a) => Acos(f(a)),
+            Atan(a) => Atan(f(a)),
         }
     }
 }
@@ -208,6 +210,7 @@ impl Tape {
                 Instruction::Tan(a) => lanes1(out, r(a), T::tan),
                 Instruction::Abs(a) => lanes1(out, r(a), T::abs),
                 Instruction::Acos(a) => lanes1(out, r(a), T::acos),
+                Instruction::Atan(a) => lanes1(out, r(a), T::atan),
             }
         }
     }

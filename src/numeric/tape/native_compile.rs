@@ -45,17 +45,19 @@ enum Helper {
     Cos,
     Tan,
     Acos,
+    Atan,
     Powf,
     Powi,
 }
 
 impl Helper {
     /// Every helper, in declaration order (so `helper as usize` indexes this array).
-    const ALL: [Helper; 6] = [
+    const ALL: [Helper; 7] = [
         Helper::Sin,
         Helper::Cos,
         Helper::Tan,
         Helper::Acos,
+        Helper::Atan,
         Helper::Powf,
         Helper::Powi,
     ];
@@ -66,6 +68,7 @@ impl Helper {
             Helper::Cos => "kinetics_tape_cos",
             Helper::Tan => "kinetics_tape_tan",
             Helper::Acos => "kinetics_tape_acos",
+            Helper::Atan => "kinetics_tape_atan",
             Helper::Powf => "kinetics_tape_powf",
             Helper::Powi => "kinetics_tape_powi",
         }
@@ -77,6 +80,7 @@ impl Helper {
             Helper::Cos => tape_cos as *const u8,
             Helper::Tan => tape_tan as *const u8,
             Helper::Acos => tape_acos as *const u8,
+            Helper::Atan => tape_atan as *const u8,
             Helper::Powf => tape_powf as *const u8,
             Helper::Powi => tape_powi as *const u8,
         }
@@ -85,7 +89,7 @@ impl Helper {
     /// The type of the second argument (`f64` → `f64` for the one-argument helpers).
     fn second_argument(self) -> Option<types::Type> {
         match self {
-            Helper::Sin | Helper::Cos | Helper::Tan | Helper::Acos => None,
+            Helper::Sin | Helper::Cos | Helper::Tan | Helper::Acos | Helper::Atan => None,
             Helper::Powf => Some(types::F64),
             Helper::Powi => Some(types::I32),
         }
@@ -106,6 +110,10 @@ extern "C" fn tape_tan(x: f64) -> f64 {
 
 extern "C" fn tape_acos(x: f64) -> f64 {
     x.acos()
+}
+
+extern "C" fn tape_atan(x: f64) -> f64 {
+    x.atan()
 }
 
 extern "C" fn tape_powf(x: f64, y: f64) -> f64 {
@@ -370,6 +378,10 @@ impl Lowering<'_> {
             Acos(a) => {
                 let a = self.operand(a);
                 self.call(Helper::Acos, &[a])
+            }
+            Atan(a) => {
+                let a = self.operand(a);
+                self.call(Helper::Atan, &[a])
             }
             Powf(a, b) => {
                 let (a, b) = (self.operand(a), self.operand(b));

@@ -40,16 +40,8 @@ impl Analyser<'_> {
             .requests
             .iter()
             .any(|r| r.quantity == Quantity::Precession);
-        let impact = !scene.impulses.is_empty();
-        let loaded = !scene.forces.is_empty() || !scene.couples.is_empty() || impact;
-        // ΣF = m ā needs ā (given, or from a fixed point); an impact needs v̄ after it.
-        let motion_stated = scene.fixed_point
-            || match impact {
-                true => scene.vbar.is_some(),
-                false => scene.abar.is_some(),
-            };
         let solved_by_them = self.unknowns.is_some();
-        if solved_by_them || !(loaded || torque_free) || !motion_stated || scene.parts.is_empty() {
+        if solved_by_them || !scene.motion_follows_from_loads() {
             return Ok(());
         }
         let places = &scene.places;
@@ -61,7 +53,7 @@ impl Analyser<'_> {
             .or_else(|| scene.requests.first().map(|r| r.span))
             .unwrap_or_default();
         let shown = self.plan.len();
-        let derivation = match impact {
+        let derivation = match !scene.impulses.is_empty() {
             true => self.impulse_momentum(at)?,
             false => self.equations_of_motion(at)?,
         };

@@ -8,7 +8,7 @@
 use super::super::model::{EulerAnglesStatement, Scene};
 use super::super::units::Dimension;
 use crate::algebra::polynomial_solve::unknown_angle::{
-    at_angle, enters_only_through_trigonometry, in_sine_and_cosine,
+    angle_alone, at_angle, enters_only_through_trigonometry, in_sine_and_cosine,
 };
 use crate::algebra::polynomial_solve::{
     solve_system, Condition, DroppedRoot, Solutions, SolveContext, SolveError,
@@ -93,11 +93,14 @@ pub(super) fn sine_and_cosine_of(
     Some([(c, of(Func::Cos)), (s, of(Func::Sin))])
 }
 
-/// The equations solved with the angle `u` through its cosine (`unknown_angle.rs`): the
-/// equations that hold no other unknown give a polynomial in c = cos u; each real root in
-/// [−1, 1] is u = arccos c (and −arccos c, but for the Eulerian angle θ, in [0, π]); at
-/// each, the equations are solved for the other unknowns, a root they contradict ruled out.
-/// The Eulerian angle θ at 0 or π, where φ and ψ are not told apart, is ruled out too.
+/// The equations solved with the angle `u` through its sine and cosine (`unknown_angle.rs`):
+/// an equation in u alone (one of them, or one left after eliminating the unknowns that
+/// enter linearly) is `P₀(c) + s P₁(c) = 0`. When it is `A s + B c = 0` (A, B free of c), u
+/// comes from its tangent, tan u = −B/A: u = arctan(−B/A) and arctan(−B/A) + π. Else a
+/// polynomial in c = cos u gives each real root in [−1, 1] as u = arccos c (and −arccos c).
+/// The Eulerian angle θ is in [0, π] (its sine ≥ 0), and ruled out at 0 or π, where φ and ψ
+/// are not told apart. At each angle the equations are solved for the other unknowns, a root
+/// they contradict ruled out.
 fn solve_for_angle(
     scene: &Scene,
     equations: &[Expr],
@@ -107,15 +110,148 @@ fn solve_for_angle(
 ) -> Result<Solutions, SolveError> {
     let (s, c) = sine_and_cosine(u);
     let others: Vec<Symbol> = wanted.iter().copied().filter(|&w| w != u).collect();
-    let alone = equations
-        .iter()
-        .find(|e| e.contains(u) && !others.iter().any(|&w| e.contains(w)));
-    let Some(alone) = alone else {
+    let Some(alone) = angle_alone(equations, u, &others)? else {
         return solve_system(equations, wanted, context);
     };
-    let Some((even, odd)) = in_sine_and_cosine(alone, u, s, c)? else {
+    let Some((even, odd)) = in_sine_and_cosine(&alone, u, s, c)? else {
         return solve_system(equations, wanted, context);
     };
+    let nutation = scene.euler_angles.is_some() && u == EulerAnglesStatement::angles().nutation;
+    let (candidates, ruled_out, polynomial) = match tangent(&even, &odd, c)? {
+        Some(t) => from_tangent(u, t, nutation, context)?,
+        None => from_cosine(u, (s, c), even, odd, nutation, context)?,
+    };
+    let mut solutions = Solutions {
+        branches: Vec::new(),
+        dropped: ruled_out,
+        free: Vec::new(),
+        polynomial: Some(polynomial),
+    };
+    for Candidate {
+        sine,
+        cosine,
+        angle,
+    } in candidates
+    {
+        if nutation && sine.is_zero() {
+            solutions.dropped.push(dropped(
+                u,
+                angle,
+                "the axis is vertical there, where the Eulerian angles φ and ψ are not told apart",
+                r"the axis vertical: $\phi$ and $\psi$ not told apart at $\theta = 0$ or $\pi$",
+            ));
+            continue;
+        }
+        let at: Option<Vec<Expr>> = equations
+            .iter()
+            .map(|e| at_angle(e, u, &sine, &cosine))
+            .collect::<Result<_, _>>()?;
+        let rest: Vec<Expr> = at
+            .unwrap_or_default()
+            .into_iter()
+            .filter(|e| !e.is_zero())
+            .collect();
+        let solved = match rest.is_empty() {
+            true => Ok(Vec::new()),
+            false => solve_system(&rest, &others, context)
+                .map(|s| s.branches.into_iter().next().unwrap_or_default()),
+        };
+        match solved {
+            Ok(mut branch) => {
+                branch.insert(0, (u, angle));
+                solutions.branches.push(branch);
+            }
+            Err(SolveError::Inconsistent { .. }) => solutions.dropped.push(dropped(
+                u,
+                angle,
+                "the other equations do not hold at this angle",
+                "the other equations do not hold at this angle",
+            )),
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(solutions)
+}
+
+/// An angle to try: its sine, its cosine and itself.
+struct Candidate {
+    sine: Expr,
+    cosine: Expr,
+    angle: Expr,
+}
+
+/// The angles to try, the roots already ruled out, and the equation shown (in the symbol it
+/// is solved for).
+type Tried = (Vec<Candidate>, Vec<DroppedRoot>, (Symbol, Expr));
+
+/// `−B/A` when `P₀ + s P₁` is `A s + B c` with A ≠ 0 and neither holding c.
+fn tangent(even: &Expr, odd: &Expr, c: Symbol) -> Result<Option<Expr>, SolveError> {
+    if odd.is_zero() || odd.contains(c) {
+        return Ok(None);
+    }
+    let groups = even.collect(&[c])?;
+    let b = match groups.as_slice() {
+        [] => Expr::zero(),
+        [only] if only.monomial == Expr::sym(c) => only.coefficient.clone(),
+        _ => return Ok(None),
+    };
+    Ok(Some((-b).checked_div(odd)?.cancel()?))
+}
+
+/// tan u = t = n/d: u = arctan t (t's sines over cosines as tangents), where
+/// cos u = d/√(n² + d²) and sin u = n/√(n² + d²) (d > 0; else d = 1), and
+/// arctan t + π, where both change sign; for the Eulerian θ only the one whose sine is not
+/// negative, when the sign of t is known.
+fn from_tangent(
+    u: Symbol,
+    t: Expr,
+    nutation: bool,
+    context: &SolveContext,
+) -> Result<Tried, SolveError> {
+    // As the textbook writes it (tan γ / 2); the sine and cosine from t as it is.
+    let written = t.tangents_gathered();
+    let shown = (Func::Tan.apply(Expr::sym(u)) - written.clone()).expand()?;
+    // t = n/d with d > 0: cos u = d/√(n² + d²), sin u = n/√(n² + d²), no root of a fraction.
+    let (mut n, mut d) = t.together_parts()?;
+    match (context.sign)(&d) {
+        Some(Ordering::Greater) => {}
+        Some(Ordering::Less) => (n, d) = (-n, -d),
+        _ => (n, d) = (t.clone(), Expr::one()),
+    }
+    let hypotenuse = (n.powi(2) + d.powi(2))
+        .expand()?
+        .checked_pow(&Expr::rational(-1, 2))?;
+    let (sine, cosine) = ((&n * &hypotenuse).expand()?, (&d * &hypotenuse).expand()?);
+    let angle = Func::Atan.apply(written);
+    let turned = Candidate {
+        sine: -sine.clone(),
+        cosine: -cosine.clone(),
+        angle: &angle + &Expr::pi(),
+    };
+    let first = Candidate {
+        sine,
+        cosine,
+        angle,
+    };
+    let candidates = match (nutation, (context.sign)(&t)) {
+        (true, Some(Ordering::Greater | Ordering::Equal)) => vec![first],
+        (true, Some(Ordering::Less)) => vec![turned],
+        _ => vec![first, turned],
+    };
+    Ok((candidates, Vec::new(), (u, shown)))
+}
+
+/// `P₀ + s P₁ = 0` through a polynomial in c (see [`solve_for_angle`]): each real root c₀
+/// in [−1, 1] is arccos c₀ (sine √(1 − c₀²)) and −arccos c₀, but for the Eulerian θ; a root
+/// beyond ±1 is ruled out.
+fn from_cosine(
+    u: Symbol,
+    (s, c): (Symbol, Symbol),
+    even: Expr,
+    odd: Expr,
+    nutation: bool,
+    context: &SolveContext,
+) -> Result<Tried, SolveError> {
     // s P₁(c) = 0 also holds at s = 0, c = ±1; the page shows the equation as it is.
     let shown = Expr::sym(s) * odd.clone() + even.clone();
     let (polynomial, sine_zero) = match (even.is_zero(), odd.is_zero()) {
@@ -139,13 +275,8 @@ fn solve_for_angle(
             }
         }
     }
-    let nutation = scene.euler_angles.is_some() && u == EulerAnglesStatement::angles().nutation;
-    let mut solutions = Solutions {
-        branches: Vec::new(),
-        dropped: roots.dropped,
-        free: Vec::new(),
-        polynomial: Some((c, shown)),
-    };
+    let mut ruled_out = roots.dropped;
+    let mut candidates = Vec::new();
     for cosine in cosines {
         let one_less = (Expr::one() - cosine.powi(2)).expand()?;
         if (context.sign)(&one_less) == Some(Ordering::Less) {
@@ -157,55 +288,24 @@ fn solve_for_angle(
                 r"a cosine beyond $\pm 1$: no angle",
             );
             beyond.unknown = u;
-            solutions.dropped.push(beyond);
+            ruled_out.push(beyond);
             continue;
         }
         let sine = one_less.checked_pow(&Expr::rational(1, 2))?;
         let angle = Func::Acos.apply(cosine.clone());
-        let mut candidates = vec![(sine.clone(), angle.clone())];
-        if !nutation && !sine.is_zero() {
-            candidates.push((-sine, -angle));
-        }
-        for (sine, angle) in candidates {
-            if nutation && (sine.is_zero()) {
-                solutions.dropped.push(dropped(
-                    u,
-                    angle,
-                    "the axis is vertical there, where the Eulerian angles φ and ψ are not told apart",
-                    r"the axis vertical: $\phi$ and $\psi$ not told apart at $\theta = 0$ or $\pi$",
-                ));
-                continue;
-            }
-            let at: Option<Vec<Expr>> = equations
-                .iter()
-                .map(|e| at_angle(e, u, &sine, &cosine))
-                .collect::<Result<_, _>>()?;
-            let rest: Vec<Expr> = at
-                .unwrap_or_default()
-                .into_iter()
-                .filter(|e| !e.is_zero())
-                .collect();
-            let solved = match rest.is_empty() {
-                true => Ok(Vec::new()),
-                false => solve_system(&rest, &others, context)
-                    .map(|s| s.branches.into_iter().next().unwrap_or_default()),
-            };
-            match solved {
-                Ok(mut branch) => {
-                    branch.insert(0, (u, angle));
-                    solutions.branches.push(branch);
-                }
-                Err(SolveError::Inconsistent { .. }) => solutions.dropped.push(dropped(
-                    u,
-                    angle,
-                    "the other equations do not hold at this angle",
-                    "the other equations do not hold at this angle",
-                )),
-                Err(e) => return Err(e),
-            }
-        }
+        let negative = (!nutation && !sine.is_zero()).then(|| Candidate {
+            sine: -sine.clone(),
+            cosine: cosine.clone(),
+            angle: -angle.clone(),
+        });
+        candidates.push(Candidate {
+            sine,
+            cosine,
+            angle,
+        });
+        candidates.extend(negative);
     }
-    Ok(solutions)
+    Ok((candidates, ruled_out, (c, shown)))
 }
 
 /// A root ruled out for `reason` (`words` as a page shows it).

@@ -50,7 +50,11 @@ impl Analyser<'_> {
                 .then(|| i_z.clone())
                 .or_else(|| (s == transverse).then(|| i_x.clone()))
         };
-        let tan_gamma = motion.tan_gamma.subs(&moment).map_err(self.algebra(at))?;
+        let in_theta = motion.tan_gamma.subs(&moment).map_err(self.algebra(at))?;
+        // θ an unknown (the body stated by ω and γ): its value put in.
+        let Value::Scalar(tan_gamma) = self.in_givens(at, Value::Scalar(in_theta.clone()))? else {
+            unreachable!("a scalar stays a scalar")
+        };
         self.given_gamma_agrees(&tan_gamma)?;
         let gamma = Expr::func(Func::Tan, Expr::symbol("gamma"));
         self.plan.push(Step::new(
@@ -63,7 +67,7 @@ impl Analyser<'_> {
                     &i_x - &i_z,
                     Axis::Z,
                 ),
-                Relation::new(gamma, tan_gamma.clone(), Axis::Z),
+                Relation::new(gamma, in_theta, Axis::Z),
             ],
         ));
         let domains = scene.domains();

@@ -9,7 +9,7 @@ use super::super::stated_kinematics::at_reducing_angle;
 use super::scene_solve::{sine_and_cosine_of, solve_scene};
 use super::{zero_vector, Analyser, Value};
 use crate::algebra::polynomial_solve::{Solutions, SolveError};
-use crate::algebra::{AlgebraError, Axis, Expr, Symbol, Vector, View};
+use crate::algebra::{AlgebraError, Axis, Expr, Func, Symbol, Vector, View};
 use crate::mechanics::angular_momentum::angular_momentum_before;
 use crate::mechanics::derivation::{Derivation, Relation, Step};
 use crate::mechanics::equations_of_motion::{equations_of_motion, Loads, MomentCentre};
@@ -37,7 +37,7 @@ impl Analyser<'_> {
             } else {
                 self.impulse_momentum(at)?
             };
-            let constraints = self.kinematics(at)?.with_impulses.clone();
+            let constraints = self.kinematics(at)?.with_equations_of_motion.clone();
             let equations: Vec<Expr> = derivation
                 .result()
                 .iter()
@@ -65,9 +65,12 @@ impl Analyser<'_> {
             } = solve_scene(self.scene, &equations, &wanted)
                 .map_err(|e| self.solve_error(at, e, &equations))?;
             if let Some((u, p)) = polynomial {
-                let mut relations = vec![Relation::new(p, Expr::zero(), Axis::X)];
-                let title = match sine_and_cosine_of(self.scene, u) {
-                    Some([(c, cosine), (s, sine)]) => {
+                let mut relations = vec![Relation::new(p.clone(), Expr::zero(), Axis::X)];
+                // `tan θ − t`: the angle from its tangent (`scene_solve.rs`).
+                let tangent = Func::Tan.apply(Expr::sym(u));
+                let from_tangent = (&tangent - &p).expand().ok().filter(|t| !t.contains(u));
+                let title = match (sine_and_cosine_of(self.scene, u), from_tangent) {
+                    (Some([(c, cosine), (s, sine)]), _) => {
                         relations.push(Relation::new(Expr::sym(c), cosine, Axis::X));
                         relations.push(Relation::new(Expr::sym(s), sine, Axis::X));
                         format!(
@@ -77,7 +80,16 @@ impl Analyser<'_> {
                             c.latex()
                         )
                     }
-                    None => format!("the equations reduce to a polynomial in ${}$", u.latex()),
+                    (None, Some(t)) => {
+                        relations = vec![Relation::new(tangent, t, Axis::X)];
+                        format!(
+                            r"the equation in ${0}$ alone is $A\,\mathrm{{sin}}\,{0} + B\,\mathrm{{cos}}\,{0} = 0$: ${0}$ from its tangent",
+                            u.latex()
+                        )
+                    }
+                    (None, None) => {
+                        format!("the equations reduce to a polynomial in ${}$", u.latex())
+                    }
                 };
                 self.plan.push(Step::new(title, relations));
             }

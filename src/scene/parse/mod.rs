@@ -228,11 +228,20 @@ impl Reader<'_> {
                     }
                     _ => {
                         let sides: Vec<Pair<Rule>> = c.into_inner().collect();
-                        let lhs = self.math(&sides[0])?;
-                        let rhs = self.math(&sides[1])?;
-                        self.same_dimension(&lhs, &rhs, span(&sides[1]))?;
-                        let lhs = self.in_si(&lhs, span(&sides[0]))?;
-                        ConstraintKind::Equation(lhs, self.in_si(&rhs, span(&sides[1]))?)
+                        // ω's components may be named (`kinematic_constraints.rs`).
+                        let omega: Vec<Symbol> = ["omega_x", "omega_y", "omega_z"]
+                            .into_iter()
+                            .map(Symbol::new)
+                            .filter(|s| !self.dims.contains_key(s))
+                            .collect();
+                        for s in &omega {
+                            self.dims.insert(*s, Dimension::ANGULAR_VELOCITY);
+                        }
+                        let equation = self.constraint_equation(&sides);
+                        for s in &omega {
+                            self.dims.remove(s);
+                        }
+                        equation?
                     }
                 };
                 self.scene.constraints.push(Constraint {
@@ -436,6 +445,18 @@ impl Reader<'_> {
             }
         }
         Ok(())
+    }
+
+    /// `lhs = rhs` of a constraint, in SI, its sides in the same kind of unit.
+    fn constraint_equation(&self, sides: &[Pair<Rule>]) -> Result<ConstraintKind, Diagnostic> {
+        let lhs = self.math(&sides[0])?;
+        let rhs = self.math(&sides[1])?;
+        self.same_dimension(&lhs, &rhs, span(&sides[1]))?;
+        let lhs = self.in_si(&lhs, span(&sides[0]))?;
+        Ok(ConstraintKind::Equation(
+            lhs,
+            self.in_si(&rhs, span(&sides[1]))?,
+        ))
     }
 
     /// The mathematics as written, a unit after a number as its marker

@@ -81,7 +81,7 @@ pub fn tree(vars: usize) -> impl Strategy<Value = Tree> {
                 .prop_map(|(a, (p, q))| Tree::Pow(Box::new(a), p, q)),
             inner.clone().prop_map(|a| Tree::Neg(Box::new(a))),
             (
-                prop::sample::select(vec![Func::Sin, Func::Cos, Func::Tan, Func::Abs]),
+                prop::sample::select(vec![Func::Sin, Func::Cos, Func::Tan, Func::Abs, Func::Atan]),
                 inner,
             )
                 .prop_map(|(f, a)| Tree::Func(f, Box::new(a))),
@@ -184,6 +184,7 @@ impl Tree {
                     // Its slope is infinite at ±1.
                     Func::Acos if u.abs() > 1.0 - NEAR_POLE => return None,
                     Func::Acos => u.acos(),
+                    Func::Atan => u.atan(),
                 }
             }
         };

@@ -32,7 +32,15 @@ fn power_of(factor: &Expr, f: Func) -> Option<(Expr, i64)> {
 }
 
 fn in_product(product: &Expr) -> Expr {
-    let mut factors: Vec<Expr> = product.factors().to_vec();
+    // A denominator kept as one power of a product, (6 r² cos γ)⁻¹, opened into its factors.
+    let mut factors: Vec<Expr> = Vec::new();
+    for factor in product.factors() {
+        let (base, exponent) = factor.base_and_exponent();
+        match (base.view(), exponent.as_num().and_then(|q| q.to_i64())) {
+            (View::Mul(inner), Some(n)) => factors.extend(inner.iter().map(|f| f.powi(n))),
+            _ => factors.push(factor.clone()),
+        }
+    }
     let mut tangents = Vec::new();
     for k in 0..factors.len() {
         let Some((angle, p)) = power_of(&factors[k], Func::Sin).filter(|(_, p)| *p > 0) else {
@@ -75,5 +83,9 @@ mod tests {
             "a*sin(g)/cos(h) + tan(h)"
         );
         assert_eq!(gathered("sin(g)*cos(g)"), "sin(g)*cos(g)");
+        assert_eq!(
+            gathered("(h^2 + 3*r^2)*sin(g)/(6*r^2*cos(g))"),
+            "(h^2 + 3*r^2)*tan(g)/(6*r^2)"
+        );
     }
 }

@@ -51,3 +51,59 @@ fn the_angle_comes_from_its_tangent_on_the_page() {
     assert_eq!(step.relations[0].lhs.to_string(), "tan(theta)");
     assert_eq!(step.relations[0].rhs.to_string(), "1/2*tan(gamma)");
 }
+
+/// The scene with `gamma` given another value, analysed.
+fn with_gamma(
+    degrees: &str,
+) -> Result<(kinetics::scene::Scene, kinetics::scene::Analysis), String> {
+    let text = std::fs::read_to_string("examples/scenes/torque_free_disk_from_omega.scene")
+        .unwrap()
+        .replace("gamma = 30 deg", &format!("gamma = {degrees} deg"));
+    let scene = kinetics::scene::parse_scene("g.scene", &text).unwrap();
+    let analysis = kinetics::scene::analyse(&scene).map_err(|d| d.render())?;
+    Ok((scene, analysis))
+}
+
+/// ω along the axis (γ = 0): the axis is along H_G, θ = 0, where the Eulerian angles do not
+/// tell precession from spin; refused saying so, not "divides by zero".
+#[test]
+fn omega_along_the_axis_is_refused_naming_the_vertical_axis() {
+    let message = with_gamma("0").unwrap_err();
+    assert!(
+        message.contains("every root for theta is ruled out (the axis is vertical there"),
+        "{message}"
+    );
+    assert!(
+        message.contains("state it without 'euler angles'"),
+        "{message}"
+    );
+}
+
+/// ω across the axis (γ = 90°): a disk turning about a diameter, θ = 90°, φ̇ = |ω|, ψ̇ = 0
+/// (the tangent's pole, decided by the given's value).
+#[test]
+fn omega_across_the_axis_turns_the_disk_about_a_diameter() {
+    let (scene, analysis) = with_gamma("90").unwrap();
+    let value = |name: &str| {
+        let Value::Scalar(e) = result(&analysis, name) else {
+            panic!("{name} is a scalar")
+        };
+        e.eval(&|s| scene.value(s)).unwrap()
+    };
+    assert!((value("theta") - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+    assert!((value("phidot") - 40.0).abs() < 1e-12);
+    assert!(value("psidot").abs() < 1e-12);
+}
+
+/// ω at 120° from the axis: θ past 90° (arctan + π), still tan θ = ½ tan γ, and ψ̇ > 0.
+#[test]
+fn omega_beyond_a_right_angle_tilts_the_axis_past_ninety_degrees() {
+    let (scene, analysis) = with_gamma("120").unwrap();
+    let Value::Scalar(theta) = result(&analysis, "theta") else {
+        panic!("θ is a scalar")
+    };
+    let theta = theta.eval(&|s| scene.value(s)).unwrap();
+    let gamma = 120f64.to_radians();
+    assert!((theta.tan() - gamma.tan() / 2.0).abs() < 1e-12);
+    assert!(theta > std::f64::consts::FRAC_PI_2 && theta < std::f64::consts::PI);
+}

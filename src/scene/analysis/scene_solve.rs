@@ -131,23 +131,26 @@ fn solve_for_angle(
         sine,
         cosine,
         angle,
+        by_values,
     } in candidates
     {
         if nutation && sine.is_zero() {
-            solutions.dropped.push(dropped(
-                u,
-                angle,
-                "the axis is vertical there, where the Eulerian angles φ and ψ are not told apart",
-                r"the axis vertical: $\phi$ and $\psi$ not told apart at $\theta = 0$ or $\pi$",
-            ));
+            solutions.dropped.push(vertical(u, angle));
             continue;
         }
         let at: Option<Vec<Expr>> = equations
             .iter()
             .map(|e| at_angle(e, u, &sine, &cosine))
             .collect::<Result<_, _>>()?;
+        let with_values = |e: Expr| match by_values {
+            true => e.subs(&|s| scene.exact_given(s))?.expand(),
+            false => Ok(e),
+        };
         let rest: Vec<Expr> = at
             .unwrap_or_default()
+            .into_iter()
+            .map(with_values)
+            .collect::<Result<Vec<_>, _>>()?
             .into_iter()
             .filter(|e| !e.is_zero())
             .collect();
@@ -173,11 +176,13 @@ fn solve_for_angle(
     Ok(solutions)
 }
 
-/// An angle to try: its sine, its cosine and itself.
+/// An angle to try: its sine, its cosine and itself; `by_values` when the givens' values
+/// decided it (the other unknowns are then solved with those values put in).
 struct Candidate {
     sine: Expr,
     cosine: Expr,
     angle: Expr,
+    by_values: bool,
 }
 
 /// The angles to try, the roots already ruled out, and the equation shown (in the symbol it
@@ -199,9 +204,9 @@ fn tangent(even: &Expr, odd: &Expr, c: Symbol) -> Result<Option<Expr>, SolveErro
 }
 
 /// tan u = t = n/d: u = arctan t (t's sines over cosines as tangents), where
-/// cos u = d/√(n² + d²) and sin u = n/√(n² + d²) (d > 0; else d = 1), and
-/// arctan t + π, where both change sign; for the Eulerian θ only the one whose sine is not
-/// negative, when the sign of t is known.
+/// cos u = d/√(n² + d²) and sin u = n/√(n² + d²) (d > 0; else d = 1), and arctan t + π,
+/// where both change sign. With the givens' values d = 0 is u = ±π/2. The Eulerian θ, in
+/// [0, π], is the one whose sine n is positive; n = 0 is its vertical axis, ruled out.
 fn from_tangent(
     u: Symbol,
     t: Expr,
@@ -209,36 +214,58 @@ fn from_tangent(
     context: &SolveContext,
 ) -> Result<Tried, SolveError> {
     // As the textbook writes it (tan γ / 2); the sine and cosine from t as it is.
-    let written = t.tangents_gathered();
+    let written = t.factor_terms()?.tangents_gathered();
     let shown = (Func::Tan.apply(Expr::sym(u)) - written.clone()).expand()?;
-    // t = n/d with d > 0: cos u = d/√(n² + d²), sin u = n/√(n² + d²), no root of a fraction.
     let (mut n, mut d) = t.together_parts()?;
-    match (context.sign)(&d) {
-        Some(Ordering::Greater) => {}
-        Some(Ordering::Less) => (n, d) = (-n, -d),
-        _ => (n, d) = (t.clone(), Expr::one()),
-    }
-    let hypotenuse = (n.powi(2) + d.powi(2))
-        .expand()?
-        .checked_pow(&Expr::rational(-1, 2))?;
-    let (sine, cosine) = ((&n * &hypotenuse).expand()?, (&d * &hypotenuse).expand()?);
-    let angle = Func::Atan.apply(written);
-    let turned = Candidate {
-        sine: -sine.clone(),
-        cosine: -cosine.clone(),
-        angle: &angle + &Expr::pi(),
+    let mut ruled_out = Vec::new();
+    let quarter = Expr::pi() / Expr::int(2);
+    let (first, turned) = match (context.sign)(&d) {
+        Some(Ordering::Equal) => {
+            let up = |sign: i64| Candidate {
+                sine: Expr::int(sign),
+                cosine: Expr::zero(),
+                angle: Expr::int(sign) * quarter.clone(),
+                by_values: true,
+            };
+            n = Expr::one();
+            (up(1), up(-1))
+        }
+        sign => {
+            match sign {
+                Some(Ordering::Greater) => {}
+                Some(Ordering::Less) => (n, d) = (-n, -d),
+                _ => (n, d) = (t.clone(), Expr::one()),
+            }
+            let hypotenuse = (n.powi(2) + d.powi(2))
+                .expand()?
+                .checked_pow(&Expr::rational(-1, 2))?;
+            let (sine, cosine) = ((&n * &hypotenuse).expand()?, (&d * &hypotenuse).expand()?);
+            let angle = Func::Atan.apply(written);
+            let turned = Candidate {
+                sine: -sine.clone(),
+                cosine: -cosine.clone(),
+                angle: &angle + &Expr::pi(),
+                by_values: false,
+            };
+            let first = Candidate {
+                sine,
+                cosine,
+                angle,
+                by_values: false,
+            };
+            (first, turned)
+        }
     };
-    let first = Candidate {
-        sine,
-        cosine,
-        angle,
-    };
-    let candidates = match (nutation, (context.sign)(&t)) {
-        (true, Some(Ordering::Greater | Ordering::Equal)) => vec![first],
+    let candidates = match (nutation, (context.sign)(&n)) {
+        (true, Some(Ordering::Greater)) => vec![first],
         (true, Some(Ordering::Less)) => vec![turned],
+        (true, Some(Ordering::Equal)) => {
+            ruled_out.push(vertical(u, Expr::zero()));
+            vec![]
+        }
         _ => vec![first, turned],
     };
-    Ok((candidates, Vec::new(), (u, shown)))
+    Ok((candidates, ruled_out, (u, shown)))
 }
 
 /// `P₀ + s P₁ = 0` through a polynomial in c (see [`solve_for_angle`]): each real root c₀
@@ -297,15 +324,27 @@ fn from_cosine(
             sine: -sine.clone(),
             cosine: cosine.clone(),
             angle: -angle.clone(),
+            by_values: false,
         });
         candidates.push(Candidate {
             sine,
             cosine,
             angle,
+            by_values: false,
         });
         candidates.extend(negative);
     }
     Ok((candidates, ruled_out, (c, shown)))
+}
+
+/// The Eulerian θ at 0 or π ruled out: the axis along K, where φ and ψ are not told apart.
+fn vertical(u: Symbol, angle: Expr) -> DroppedRoot {
+    dropped(
+        u,
+        angle,
+        "the axis is vertical there, where the Eulerian angles φ and ψ are not told apart",
+        r"the axis vertical: $\phi$ and $\psi$ not told apart at $\theta = 0$ or $\pi$",
+    )
 }
 
 /// A root ruled out for `reason` (`words` as a page shows it).

@@ -115,7 +115,9 @@ impl Analyser<'_> {
             return Ok(());
         };
         let derived_angle = derived.atan().abs();
-        if (stated.tan() - derived).abs() <= 1e-9 * derived.abs().max(1.0) {
+        // The same line through the axis (γ and γ ± π alike), compared as angles: at 90° the
+        // tangents are poles.
+        if (stated - derived.atan()).sin().abs() <= 1e-9 {
             return Ok(());
         }
         self.motion_obeys_loads()?;

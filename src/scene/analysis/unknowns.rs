@@ -105,7 +105,12 @@ impl Analyser<'_> {
                             d.unknown.name(),
                             reasons.join("; ")
                         ),
-                        "the givens admit no such motion (a top spinning too slowly has no real steady precession): change the givens or the unknowns",
+                        match reasons.as_slice() {
+                            [only] if only.contains("φ and ψ are not told apart") => {
+                                "with the axis along K (θ = 0 or 180°) the motion is a spin about a fixed axis, which the Eulerian angles do not describe: state it without 'euler angles' (omega = w*k), or change the givens"
+                            }
+                            _ => "the givens admit no such motion (a top spinning too slowly has no real steady precession): change the givens or the unknowns",
+                        },
                     ));
                 }
             }

@@ -1,9 +1,10 @@
 //! `kinetics solve SCENE [--format text|latex|markdown|json|html] [--standalone] [--numbers]
-//! [--digits N]` and
+//! [--digits N] [--units si|us]` and
 //! `kinetics plan SCENE`: a scene file (or `-` for standard input) analysed on demand.
 
 use super::budget::Input;
 use super::error::CliError;
+use kinetics::scene::unit_system::UnitSystem;
 use kinetics::scene::{analyse, parse_scene, Analysis, Scene};
 use kinetics::solution::numbers::{with_digits, DEFAULT_DIGITS};
 use kinetics::solution::{render, render_numbers, Format};
@@ -26,6 +27,29 @@ pub struct Args {
     /// trailing zeros, and from 10⁵ up or below 10⁻⁴ it is in engineering notation.
     #[arg(long, default_value_t = DEFAULT_DIGITS as u8, value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: u8,
+    /// The unit system of the values on the page (results and intermediate values): SI, or
+    /// U.S. customary (lb, ft, slug, lb·ft, slug·ft², ft/s). Without it, the system the givens
+    /// are written in. A `find … in UNIT` or an unknown's declared unit still wins.
+    #[arg(long, value_enum)]
+    pub units: Option<Units>,
+}
+
+/// The unit systems as the command line spells them.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Units {
+    /// kg, m, N, N·m, kg·m², m/s.
+    Si,
+    /// U.S. customary: slug, ft, lb, lb·ft, slug·ft², ft/s.
+    Us,
+}
+
+impl From<Units> for UnitSystem {
+    fn from(units: Units) -> UnitSystem {
+        match units {
+            Units::Si => UnitSystem::Si,
+            Units::Us => UnitSystem::Us,
+        }
+    }
 }
 
 /// The formats of a worked solution as the command line spells them (the library's
@@ -63,11 +87,15 @@ pub struct PlanArgs {
 /// the scene's work budget.
 fn with_analysis<T>(
     path: &str,
+    units: Option<Units>,
     work: impl FnOnce(&Scene, &Analysis) -> Result<T, CliError>,
 ) -> Result<T, CliError> {
     let (name, text) = super::input::read_file(path)?;
     Input::scene(&name, &text).within(|| {
-        let scene = parse_scene(&name, &text)?;
+        let mut scene = parse_scene(&name, &text)?;
+        if let Some(units) = units {
+            scene.unit_system = units.into();
+        }
         let analysis = analyse(&scene)?;
         kinetics::solution::numbers::check_numeric_requests(&scene, &analysis)?;
         work(&scene, &analysis)
@@ -75,7 +103,9 @@ fn with_analysis<T>(
 }
 
 pub fn run(args: Args) -> Result<String, CliError> {
-    with_analysis(&args.scene, |scene, analysis| page(&args, scene, analysis))
+    with_analysis(&args.scene, args.units, |scene, analysis| {
+        page(&args, scene, analysis)
+    })
 }
 
 fn page(args: &Args, scene: &Scene, analysis: &Analysis) -> Result<String, CliError> {
@@ -93,7 +123,7 @@ fn page(args: &Args, scene: &Scene, analysis: &Analysis) -> Result<String, CliEr
 }
 
 pub fn plan(args: PlanArgs) -> Result<String, CliError> {
-    with_analysis(&args.scene, |_, analysis| {
+    with_analysis(&args.scene, None, |_, analysis| {
         Ok(analysis
             .plan
             .iter()

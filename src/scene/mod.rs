@@ -10,6 +10,7 @@ mod quantity_dimension;
 pub mod simulation;
 pub mod stated_kinematics;
 pub mod top_simulation;
+pub mod unit_system;
 pub mod unit_text;
 pub mod units;
 pub(crate) mod units_in_math;

@@ -3,6 +3,7 @@
 //! reference frame; vectors are components in that frame.
 
 use super::named_unit::NamedUnit;
+use super::unit_system::UnitSystem;
 use super::units::Dimension;
 use crate::algebra::{AlgebraError, Domain, Domains, Expr, Symbol, Vector, Q};
 use crate::mechanics::composite_body::composite_body;
@@ -419,6 +420,9 @@ pub struct Scene {
     /// The unit each unknown was declared in, where one was written (`unknown C_x : lb`):
     /// its result's number is shown in it.
     pub unknown_units: Vec<(Symbol, NamedUnit)>,
+    /// The unit system the page shows values in: the givens' (`unit_system.rs`), unless
+    /// `--units` chose.
+    pub unit_system: UnitSystem,
     pub requests: Vec<Request>,
     /// Where `find balance ...` puts the correction masses.
     pub balance: Option<BalancePlanes>,

@@ -84,6 +84,19 @@ impl NamedUnit {
         NamedUnit { powers }
     }
 
+    /// Names of the table with their powers, as a unit system names a dimension's unit.
+    pub(super) fn of_names(powers: &[(&'static str, i8)]) -> NamedUnit {
+        debug_assert!(powers.iter().all(|(n, _)| table_name(n).is_some()));
+        NamedUnit {
+            powers: powers.to_vec(),
+        }
+    }
+
+    /// The names of the units it is made of (`lb`, `ft` of `lb·ft`).
+    pub fn names(&self) -> impl Iterator<Item = &'static str> + '_ {
+        self.powers.iter().map(|(n, _)| *n)
+    }
+
     /// No unit: a pure number.
     pub fn is_none(&self) -> bool {
         self.powers.is_empty()

@@ -25,7 +25,7 @@ pub(super) fn rows<'a>(scene: &Scene, corrections: &'a [Correction; 2]) -> Vec<R
             format!("{{{k}}}")
         };
         let named = |text: String, latex: String| Name { text, latex };
-        let mass_unit = Some(NamedUnit::si(Dimension::MASS));
+        let mass_unit = Some(scene.unit_system.unit(Dimension::MASS, false));
         let mass = named(format!("m_{k}"), format!("m_{sub}"));
         rows.push(Line::scalar(
             scene,
@@ -39,11 +39,7 @@ pub(super) fn rows<'a>(scene: &Scene, corrections: &'a [Correction; 2]) -> Vec<R
             _ if no_correction(scene, correction) => rows.push(Line::words(angle, "undefined")),
             CorrectionAngle::Exact(t) => {
                 let degrees = Some(NamedUnit::named("deg"));
-                let mut row = Line::scalar(scene, angle, Cow::Borrowed(t), degrees);
-                if let Some(v) = &mut row.value {
-                    v.iter_mut().for_each(|x| *x = x.to_degrees());
-                }
-                rows.push(row);
+                rows.push(Line::scalar(scene, angle, Cow::Borrowed(t), degrees));
             }
             CorrectionAngle::Atan2 { q, p } => {
                 if let Ok(tangent) = q.checked_div(p) {

@@ -12,7 +12,6 @@
 //! naming ([`crate::scene::derived_dimension`]: `I_xy` kg·m², `v_Ax` m/s), else its
 //! right-hand side's SI unit.
 
-use super::numbers::in_joules;
 use super::page::{Block, Heading, Page, Section};
 use super::result::Result;
 use super::shown_value::ShownValue;
@@ -104,10 +103,11 @@ pub(super) fn intermediate(
             .filter_map(|r| {
                 let shown_name = print::render(&r.lhs, Notation::Text, r.axis);
                 let rhs = named.whole(&r.rhs);
-                let value = super::evaluation::value(scene, &rhs)?;
-                // The kinetic energy is work: joules, as in the results.
+                // The kinetic energy is work: joules (foot-pounds), as in the results.
                 let energy = stem(&shown_name) == "T";
-                let unit = dimension_of(&r.lhs, &rhs).map(|d| in_joules(d, energy));
+                let unit = dimension_of(&r.lhs, &rhs).map(|d| scene.unit_system.unit(d, energy));
+                let si = super::evaluation::value(scene, &rhs)?;
+                let value = si / unit.as_ref().map_or(1.0, |u| u.unit().to_si);
                 Some(Number {
                     name: r.lhs.clone(),
                     axis: r.axis,

@@ -15,7 +15,7 @@
 
 use super::numbers::value;
 use super::page::Name;
-use super::result::{Body, Form, Line, Result, Show};
+use super::result::{in_unit, Body, Form, Line, Result, Show};
 use crate::algebra::{Expr, Matrix};
 use crate::mechanics::principal_frame::PrincipalFrame;
 use crate::scene::named_unit::NamedUnit;
@@ -24,14 +24,16 @@ use crate::scene::Scene;
 
 /// A tensor's line: its matrix and its nine values row by row, in kg·m².
 pub(super) fn tensor<'a>(scene: &Scene, name: Name, m: &'a Matrix) -> Line<'a> {
-    let value: Option<Vec<f64>> = m.transpose().iter().map(|e| value(scene, e)).collect();
+    let unit = scene.unit_system.unit(Dimension::INERTIA, false);
+    let value = m.transpose().iter().map(|e| value(scene, e)).collect();
+    let value = in_unit(value, Some(&unit));
     let numeric = m.iter().all(|e| e.as_num().is_some());
     Line {
         name,
         show: shown(value.is_some(), numeric),
         form: Some(Form::Matrix(m)),
         value,
-        unit: Some(NamedUnit::si(Dimension::INERTIA)),
+        unit: Some(unit),
     }
 }
 
@@ -48,13 +50,14 @@ pub(super) fn frame<'a>(scene: &Scene, name: Name, frame: &'a PrincipalFrame) ->
         .iter()
         .enumerate()
         .map(|(k, m)| {
-            let value = value(scene, m).map(|x| vec![x]);
+            let unit = scene.unit_system.unit(Dimension::INERTIA, false);
+            let value = in_unit(value(scene, m).map(|x| vec![x]), Some(&unit));
             Line {
                 name: named("I", k),
                 show: shown(value.is_some(), number(m)),
                 form: Some(Form::Expr(std::borrow::Cow::Borrowed(m))),
                 value,
-                unit: Some(NamedUnit::si(Dimension::INERTIA)),
+                unit: Some(unit),
             }
         })
         .collect();

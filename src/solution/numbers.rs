@@ -5,6 +5,7 @@ use crate::algebra::{vector, AlgebraError, Expr, Symbol, Q};
 use crate::parse::Diagnostic;
 use crate::scene::model::{exact_decimal, Quantity, Request};
 use crate::scene::named_unit::NamedUnit;
+use crate::scene::unit_system::UnitSystem;
 use crate::scene::units::{dimension_of, Dimension, Dimensions};
 use crate::scene::{Analysis, Scene, Value};
 use num_bigint::BigInt;
@@ -85,9 +86,10 @@ pub fn check_numeric_requests(scene: &Scene, analysis: &Analysis) -> Result<(), 
     Ok(())
 }
 
-/// The unit a result is shown in: the SI unit of the quantity's dimension (so a zero keeps
-/// its unit), but joules (not newton metres) for the kinetic energies, which are work-like.
-pub fn result_unit(request: &Request, dims: &Dimensions) -> Option<NamedUnit> {
+/// The unit a result is shown in: the `system`'s unit of the quantity's dimension (so a zero
+/// keeps its unit), but joules (foot-pounds; not newton metres) for the kinetic energies,
+/// which are work-like.
+pub fn result_unit(request: &Request, dims: &Dimensions, system: UnitSystem) -> Option<NamedUnit> {
     let d = request.quantity.dimension(dims)?;
     let energy = [
         Quantity::KineticEnergy,
@@ -97,15 +99,7 @@ pub fn result_unit(request: &Request, dims: &Dimensions) -> Option<NamedUnit> {
         Quantity::KineticEnergyAfter,
         Quantity::EnergyLost,
     ];
-    Some(in_joules(d, energy.contains(&request.quantity)))
-}
-
-/// The SI unit of `d`, in joules where `energy` says a moment's dimension is work.
-pub(super) fn in_joules(d: Dimension, energy: bool) -> NamedUnit {
-    match energy && d == Dimension::MOMENT {
-        true => NamedUnit::named("J"),
-        false => NamedUnit::si(d),
-    }
+    Some(system.unit(d, energy.contains(&request.quantity)))
 }
 
 /// `e`, every given of which has a value, is a finite number in the unit asked for; else
@@ -130,7 +124,8 @@ fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Resu
         Ok(q) => {
             let unit = match &request.unit {
                 Some(unit) => unit.clone(),
-                None => result_unit(request, dims).unwrap_or_default(),
+                // The value below is in SI.
+                None => result_unit(request, dims, UnitSystem::Si).unwrap_or_default(),
             };
             let q = &q * &exact_decimal(1.0 / to_si).unwrap_or(Q::ONE);
             let name = &request.name;

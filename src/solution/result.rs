@@ -133,7 +133,7 @@ impl<'a> Line<'a> {
         e: Cow<'a, Expr>,
         unit: Option<NamedUnit>,
     ) -> Self {
-        let value = value(scene, &e).map(|x| vec![x]);
+        let value = in_unit(value(scene, &e).map(|x| vec![x]), unit.as_ref());
         let integer = e.as_num().is_some_and(|q| q.is_integer());
         Line {
             name,
@@ -263,7 +263,7 @@ fn computed<'a>(
             latex: format!("{{{}}}^{{({k})}}", quantity_latex(request.quantity)),
         },
     };
-    let unit = result_unit(request, dims);
+    let unit = result_unit(request, dims, scene.unit_system);
     let result = match v {
         Value::Scalar(e) => {
             let mut line = Line::scalar(scene, name, Cow::Borrowed(e), unit);
@@ -274,7 +274,7 @@ fn computed<'a>(
             Result::line(line)
         }
         Value::Vector(vec) => {
-            let value: Option<Vec<f64>> = vec.iter().map(|c| value(scene, c)).collect();
+            let value = in_unit(vec.iter().map(|c| value(scene, c)).collect(), unit.as_ref());
             // A zero vector's value says all its form does.
             let zero = vec.iter().all(Expr::is_zero);
             Result::line(Line {
@@ -297,16 +297,24 @@ fn computed<'a>(
     vec![in_requested_unit(request, result)]
 }
 
-/// A value asked for `in UNIT` (else an unknown's declared unit) is converted from SI and
-/// labelled with the unit as written (a principal frame's moments; its axes have no unit).
+/// Values in SI given in `unit` (divided by its factor to SI; as they are without one).
+pub(super) fn in_unit(values: Option<Vec<f64>>, unit: Option<&NamedUnit>) -> Option<Vec<f64>> {
+    let to_si = unit.map_or(1.0, |u| u.unit().to_si);
+    values.map(|v| v.into_iter().map(|x| x / to_si).collect())
+}
+
+/// A value asked for `in UNIT` (else an unknown's declared unit) is converted from the unit
+/// it is in and labelled with the unit as written (a principal frame's moments; its axes
+/// have no unit).
 fn in_requested_unit<'a>(request: &Request, mut result: Result<'a>) -> Result<'a> {
     let Some(unit) = request.unit.as_ref().or(request.shown_in.as_ref()) else {
         return result;
     };
     let to_si = unit.unit().to_si;
     let convert = |line: &mut Line| {
+        let from_si = line.unit.as_ref().map_or(1.0, |u| u.unit().to_si);
         if let Some(v) = &mut line.value {
-            v.iter_mut().for_each(|x| *x /= to_si);
+            v.iter_mut().for_each(|x| *x *= from_si / to_si);
         }
         line.unit = Some(unit.clone());
     };

@@ -106,6 +106,7 @@ mod torque_free;
 mod torque_free_from_omega;
 mod trigonometry;
 mod unknown_angle;
+mod us_customary;
 mod work_precision;
 mod work_precision_forced_truth;
 

@@ -4,6 +4,7 @@
 
 use super::model::{Constraint, ConstraintKind, Force, Places, Quantity, Request, Scene, Span};
 use super::named_unit::NamedUnit;
+use super::unit_system::UnitSystem;
 use super::units::{dimension_with, Dimension, DimensionError, Dimensions};
 use super::units_in_math::{marker, marker_dimension};
 use crate::algebra::{vector, Expr, Symbol, Vector};
@@ -119,6 +120,7 @@ pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene,
             constraints: vec![],
             unknowns: vec![],
             unknown_units: vec![],
+            unit_system: UnitSystem::Si,
             requests: vec![],
             balance: None,
             places: Places::default(),
@@ -138,6 +140,12 @@ pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene,
     reader.euler_angles_complete()?;
     reader.resolve_requests()?;
     reader.impact_is_determined()?;
+    let scene = &mut reader.scene;
+    let written = scene.givens.iter().filter_map(|g| g.written.as_ref());
+    let units = written
+        .map(|w| &w.unit)
+        .chain(scene.unknown_units.iter().map(|(_, u)| u));
+    scene.unit_system = UnitSystem::of_units(units);
     Ok(reader.scene)
 }
 

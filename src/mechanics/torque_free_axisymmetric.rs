@@ -1,6 +1,6 @@
 //! An axisymmetric body under no force (§18.11). With ΣM_G = 0, `H_G` is fixed in space:
 //! take Z along it, `H_G = H K`. Equating `H_G = I'θ̇ i + I'φ̇ sin θ j + I ω_z k` to
-//! `H K = H sin θ j + H cos θ k` component by component (0 < θ < 90°):
+//! `H K = H sin θ j + H cos θ k` component by component (θ not 0, 90° or 180°):
 //!
 //! ```text
 //! θ̇ = 0 (θ constant),   H = I ω_z / cos θ,   φ̇ = I ω_z / (I' cos θ),   ψ̇ = (I' − I) ω_z / I'
@@ -141,7 +141,7 @@ pub fn torque_free_axisymmetric(
             components,
         ),
         Step::new(
-            r"the components along $x$ and $z$ ($0 < \theta < 90^\circ$): $\theta$ is constant",
+            r"the components along $x$ and $z$ ($\theta \neq 0, 90^\circ, 180^\circ$): $\theta$ is constant",
             vec![
                 Relation::new(Expr::sym(theta_dot), Expr::zero(), Axis::X),
                 Relation::new(Expr::sym(magnitude), h.clone(), Axis::Z),

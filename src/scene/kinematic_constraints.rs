@@ -14,7 +14,8 @@
 //! enforce them are unknown too: their equations are solved with those of impulse and
 //! momentum, not alone. So are constraints that do not fix their unknowns alone (an angle
 //! inside sin and cos, or fewer equations than unknowns) in a scene whose motion follows from
-//! its loads: they are solved with ΣF = m ā and ΣM = Ḣ.
+//! its loads (or a body under no force, stated by its Eulerian angles and ā): they are solved
+//! with ΣF = m ā and ΣM = Ḣ.
 
 use super::model::{ConstraintKind, Scene, Span};
 use super::stated_kinematics::stated_kinematics;
@@ -162,8 +163,14 @@ pub fn solve_constraints(
         true => None,
         false => Some(solve_linear(&equations, &constrained)),
     };
-    // Constraints that do not fix their unknowns alone, where the loads fix the rest.
-    let with_the_loads = scene.motion_follows_from_loads()
+    // Constraints that do not fix their unknowns alone, where the loads fix the rest (a body
+    // stated by its Eulerian angles and ā with no load on it is under no force).
+    let under_no_force = scene.euler_angles.is_some()
+        && scene.abar.is_some()
+        && scene.forces.is_empty()
+        && scene.couples.is_empty()
+        && scene.impulses.is_empty();
+    let with_the_loads = (scene.motion_follows_from_loads() || under_no_force)
         && match &alone {
             Some(Err(SolveError::Nonlinear { .. })) => true,
             Some(Ok(Solution { free, .. })) => !free.is_empty(),

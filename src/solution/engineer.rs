@@ -105,7 +105,14 @@ pub(super) fn intermediate(
                 let rhs = named.whole(&r.rhs);
                 // The kinetic energy is work: joules (foot-pounds), as in the results.
                 let energy = stem(&shown_name) == "T";
-                let unit = dimension_of(&r.lhs, &rhs).map(|d| scene.unit_system.unit(d, energy));
+                // An unknown's declared unit (`unknown theta : deg`), as in the results.
+                let declared = r.lhs.as_symbol().and_then(|s| {
+                    let (_, unit) = scene.unknown_units.iter().find(|(u, _)| *u == s)?;
+                    Some(unit.clone())
+                });
+                let unit = declared.or_else(|| {
+                    dimension_of(&r.lhs, &rhs).map(|d| scene.unit_system.unit(d, energy))
+                });
                 let si = super::evaluation::value(scene, &rhs)?;
                 let value = si / unit.as_ref().map_or(1.0, |u| u.unit().to_si);
                 Some(Number {

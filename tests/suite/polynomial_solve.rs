@@ -114,6 +114,7 @@ fn a_linear_system_is_solved_as_solve_linear_solves_it() {
                     dropped: vec![],
                     free: l.free,
                     polynomial: None,
+                    eliminated: vec![],
                 }
             ),
             Err(l) => assert_eq!(solved.unwrap_err(), l),

@@ -107,3 +107,20 @@ fn omega_beyond_a_right_angle_tilts_the_axis_past_ninety_degrees() {
     assert!((theta.tan() - gamma.tan() / 2.0).abs() < 1e-12);
     assert!(theta > std::f64::consts::FRAC_PI_2 && theta < std::f64::consts::PI);
 }
+
+/// Without `find precession` the scene is still a body under no force (no load, ā given):
+/// its constraints are solved with ΣM_G = Ḣ_G = 0 all the same.
+#[test]
+fn the_rates_without_asking_for_the_precession() {
+    let text = std::fs::read_to_string("examples/scenes/torque_free_disk_from_omega.scene")
+        .unwrap()
+        .replace("find theta, phidot, psidot, precession", "find phidot");
+    let scene = kinetics::scene::parse_scene("p.scene", &text).unwrap();
+    let analysis = kinetics::scene::analyse(&scene).unwrap();
+    let Value::Scalar(phidot) = result(&analysis, "phidot") else {
+        panic!("φ̇ is a scalar")
+    };
+    let phidot = phidot.eval(&|s| scene.value(s)).unwrap();
+    let gamma = 30f64.to_radians();
+    assert!((phidot - 40.0 * (4.0 - 3.0 * gamma.sin().powi(2)).sqrt()).abs() < 1e-12);
+}

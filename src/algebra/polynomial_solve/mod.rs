@@ -84,6 +84,9 @@ pub struct Solutions {
     /// The univariate polynomial that was solved, when there was one: (unknown, polynomial as
     /// an Expr equal to 0), for the worked solution to show.
     pub polynomial: Option<(Symbol, Expr)>,
+    /// Unknowns eliminated to reach that polynomial, in order, each's value in the unknowns
+    /// left (`psidot = w cos γ − phidot cos θ`), for the worked solution to show.
+    pub eliminated: Vec<(Symbol, Expr)>,
 }
 
 /// Solves `equations[i] = 0` for `unknowns` (see the module documentation).
@@ -99,6 +102,7 @@ pub fn solve_system(
                 dropped: Vec::new(),
                 free,
                 polynomial: None,
+                eliminated: Vec::new(),
             })
         }
         Err(SolveError::Nonlinear { term, .. }) => term,
@@ -155,6 +159,7 @@ impl Parametric<'_> {
                 dropped: Vec::new(),
                 free: self.in_given_order(free),
                 polynomial: None,
+                eliminated: Vec::new(),
             });
         };
         let found = roots::real_roots(&polynomial, self.u, self.context)?;
@@ -177,6 +182,7 @@ impl Parametric<'_> {
             dropped,
             free: self.in_given_order(free),
             polynomial: Some((self.u, polynomial.expr(self.u))),
+            eliminated: Vec::new(),
         })
     }
 

@@ -56,6 +56,9 @@ pub fn in_sine_and_cosine(
     Ok(Some((Expr::add_all(even), Expr::add_all(odd))))
 }
 
+/// An equation in u alone and the unknowns eliminated to reach it, each with its value.
+pub type AngleAlone = (Expr, Vec<(Symbol, Expr)>);
+
 /// An equation in the angle u alone, from `equations = 0` in u and the unknowns `others`:
 /// one of them, or one left after eliminating unknowns that enter an equation linearly,
 ///
@@ -65,22 +68,23 @@ pub fn in_sine_and_cosine(
 ///
 /// substituted into the rest, each rest's numerator kept (a times the equation, so a root
 /// where a vanishes may be spurious: the caller checks each root in the equations
-/// themselves). Those whose coefficient holds no u first. None when no such chain reaches
-/// u alone.
+/// themselves). Those whose coefficient holds no u first. Returns that equation and the
+/// unknowns eliminated with their values, in order; none when no such chain reaches u alone.
 pub fn angle_alone(
     equations: &[Expr],
     u: Symbol,
     others: &[Symbol],
-) -> Result<Option<Expr>, AlgebraError> {
+) -> Result<Option<AngleAlone>, AlgebraError> {
     let mut remaining: Vec<Expr> = equations.to_vec();
     let mut open: Vec<Symbol> = others.to_vec();
+    let mut eliminated = Vec::new();
     loop {
         let holds_open = |e: &Expr, open: &[Symbol]| open.iter().any(|&w| e.contains(w));
         if let Some(alone) = remaining
             .iter()
             .find(|e| e.contains(u) && !holds_open(e, &open))
         {
-            return Ok(Some(alone.clone()));
+            return Ok(Some((alone.clone(), eliminated)));
         }
         let mut linear: Vec<(usize, Symbol, Expr, Expr)> = Vec::new();
         for (k, e) in remaining.iter().enumerate() {
@@ -117,6 +121,7 @@ pub fn angle_alone(
             .collect::<Result<Vec<_>, _>>()?;
         remaining.retain(|e| !e.is_zero());
         open.retain(|&o| o != w);
+        eliminated.push((w, value));
     }
 }
 

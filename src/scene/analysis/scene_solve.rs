@@ -13,7 +13,7 @@ use crate::algebra::polynomial_solve::unknown_angle::{
 use crate::algebra::polynomial_solve::{
     solve_system, Condition, DroppedRoot, Solutions, SolveContext, SolveError,
 };
-use crate::algebra::{Expr, Func, Symbol};
+use crate::algebra::{AlgebraError, Expr, Func, Symbol};
 use crate::numeric::rounding_error::{bounded, Bounded};
 use std::cmp::Ordering;
 
@@ -110,7 +110,12 @@ fn solve_for_angle(
 ) -> Result<Solutions, SolveError> {
     let (s, c) = sine_and_cosine(u);
     let others: Vec<Symbol> = wanted.iter().copied().filter(|&w| w != u).collect();
-    let Some(alone) = angle_alone(equations, u, &others)? else {
+    let Some((alone, eliminated)) = angle_alone(equations, u, &others)? else {
+        // Fewer equations than unknowns fix none of them; said so, not that the angle is no
+        // polynomial.
+        if equations.len() < wanted.len() {
+            return Err(SolveError::UnderDetermined(wanted.to_vec()));
+        }
         return solve_system(equations, wanted, context);
     };
     let Some((even, odd)) = in_sine_and_cosine(&alone, u, s, c)? else {
@@ -126,6 +131,7 @@ fn solve_for_angle(
         dropped: ruled_out,
         free: Vec::new(),
         polynomial: Some(polynomial),
+        eliminated: eliminated.clone(),
     };
     for Candidate {
         sine,
@@ -134,30 +140,23 @@ fn solve_for_angle(
         by_values,
     } in candidates
     {
-        if nutation && sine.is_zero() {
+        if nutation && vanishes(scene, context, &sine) {
             solutions.dropped.push(vertical(u, angle));
             continue;
         }
-        let at: Option<Vec<Expr>> = equations
-            .iter()
-            .map(|e| at_angle(e, u, &sine, &cosine))
-            .collect::<Result<_, _>>()?;
-        let with_values = |e: Expr| match by_values {
-            true => e.subs(&|s| scene.exact_given(s))?.expand(),
-            false => Ok(e),
+        let at = Angle {
+            u,
+            sine: &sine,
+            cosine: &cosine,
+            by_values,
         };
-        let rest: Vec<Expr> = at
-            .unwrap_or_default()
-            .into_iter()
-            .map(with_values)
-            .collect::<Result<Vec<_>, _>>()?
-            .into_iter()
-            .filter(|e| !e.is_zero())
-            .collect();
-        let solved = match rest.is_empty() {
-            true => Ok(Vec::new()),
-            false => solve_system(&rest, &others, context)
-                .map(|s| s.branches.into_iter().next().unwrap_or_default()),
+        let solved = match by_elimination(scene, equations, &others, &eliminated, &at, context)? {
+            Some(Found::Solved(branch)) => Ok(branch),
+            Some(Found::NotHolding) => Err(SolveError::Inconsistent {
+                equation: 0,
+                residual: String::new(),
+            }),
+            None => at.solve_rest(scene, equations, &others, context),
         };
         match solved {
             Ok(mut branch) => {
@@ -174,6 +173,115 @@ fn solve_for_angle(
         }
     }
     Ok(solutions)
+}
+
+/// The angle u at a candidate: its sine and cosine put in for sin u and cos u, and the
+/// givens' exact values too when they decided it.
+struct Angle<'a> {
+    u: Symbol,
+    sine: &'a Expr,
+    cosine: &'a Expr,
+    by_values: bool,
+}
+
+impl Angle<'_> {
+    /// `e` at this angle, expanded; none when u enters otherwise than through sin, cos, tan.
+    fn put_in(&self, scene: &Scene, e: &Expr) -> Result<Option<Expr>, AlgebraError> {
+        let Some(at) = at_angle(e, self.u, self.sine, self.cosine)? else {
+            return Ok(None);
+        };
+        match self.by_values {
+            true => Ok(Some(at.subs(&|s| scene.exact_given(s))?.expand()?)),
+            false => Ok(Some(at)),
+        }
+    }
+
+    /// The equations at this angle solved for the other unknowns (the first solution).
+    fn solve_rest(
+        &self,
+        scene: &Scene,
+        equations: &[Expr],
+        others: &[Symbol],
+        context: &SolveContext,
+    ) -> Result<Vec<(Symbol, Expr)>, SolveError> {
+        let mut rest = Vec::new();
+        for e in equations {
+            if let Some(at) = self.put_in(scene, e)? {
+                rest.push(at);
+            }
+        }
+        rest.retain(|e| !e.is_zero());
+        match rest.is_empty() {
+            true => Ok(Vec::new()),
+            false => solve_system(&rest, others, context)
+                .map(|s| s.branches.into_iter().next().unwrap_or_default()),
+        }
+    }
+}
+
+/// What the elimination found at an angle.
+enum Found {
+    /// The other unknowns' values (every equation holds).
+    Solved(Vec<(Symbol, Expr)>),
+    /// An equation does not hold: a root of the squared or multiplied-through equation only.
+    NotHolding,
+}
+
+/// At the angle, the unknowns eliminated to reach it (`eliminated`, in order) back-substituted,
+/// last first, and every equation checked with them ([`vanishes`]). None when the
+/// chain does not give every other unknown (or divides by zero at this angle): the equations
+/// are then solved for them.
+fn by_elimination(
+    scene: &Scene,
+    equations: &[Expr],
+    others: &[Symbol],
+    eliminated: &[(Symbol, Expr)],
+    at: &Angle,
+    context: &SolveContext,
+) -> Result<Option<Found>, SolveError> {
+    if eliminated.len() != others.len() {
+        return Ok(None);
+    }
+    let mut values: Vec<(Symbol, Expr)> = Vec::new();
+    for (w, value) in eliminated.iter().rev() {
+        let lookup = |s: Symbol| values.iter().find(|(v, _)| *v == s).map(|(_, x)| x.clone());
+        let value = at
+            .put_in(scene, value)
+            .and_then(|v| v.map(|v| v.subs(&lookup)?.expand()).transpose());
+        match value {
+            Ok(Some(v)) => values.push((*w, v)),
+            Ok(None) | Err(AlgebraError::DivisionByZero) => return Ok(None),
+            Err(e) => return Err(e.into()),
+        }
+    }
+    let lookup = |s: Symbol| values.iter().find(|(v, _)| *v == s).map(|(_, x)| x.clone());
+    for e in equations {
+        let Some(residual) = at.put_in(scene, e)? else {
+            return Ok(None);
+        };
+        let residual = residual.subs(&lookup)?.expand()?;
+        if !vanishes(scene, context, &residual) {
+            return Ok(Some(Found::NotHolding));
+        }
+    }
+    values.sort_by_key(|(w, _)| others.iter().position(|o| o == w));
+    Ok(Some(Found::Solved(values)))
+}
+
+/// Whether `e` is zero: exactly, or with the givens' exact values within its rounding bound
+/// when every given in it has a value (nested radicals the algebra does not cancel).
+fn vanishes(scene: &Scene, context: &SolveContext, e: &Expr) -> bool {
+    let valued = || {
+        e.symbols()
+            .into_iter()
+            .all(|s| s.is_pi() || scene.value(s).is_some())
+    };
+    e.is_zero()
+        || match (context.sign)(e) {
+            Some(Ordering::Equal) => true,
+            Some(_) => false,
+            None => valued(),
+        }
 }
 
 /// An angle to try: its sine, its cosine and itself; `by_values` when the givens' values

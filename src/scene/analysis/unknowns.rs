@@ -24,6 +24,33 @@ impl Analyser<'_> {
         if matches!(e, SolveError::Inconsistent { .. }) && pivot_without_reaction(self.scene) {
             return self.scene.error_at(at, e.to_string(), PIVOT_REACTION);
         }
+        if let SolveError::UnderDetermined(open) = &e {
+            let scene = self.scene;
+            let wanted: Vec<&str> = scene
+                .unknowns
+                .iter()
+                .map(|u| u.0)
+                .filter(|u| equations.iter().any(|e| e.contains(*u)))
+                .map(|u| u.name())
+                .collect();
+            let open: Vec<&str> = open.iter().map(|s| s.name()).collect();
+            if equations.len() < wanted.len() {
+                return scene.error_at(
+                    at,
+                    format!(
+                        "under-determined: {} equations (the constraints and the equations of motion that hold an unknown) for the {} unknowns {}; they do not fix {}",
+                        equations.len(),
+                        wanted.len(),
+                        wanted.join(", "),
+                        open.join(", ")
+                    ),
+                    format!(
+                        "give one of them a value ('given {} = …') or add a condition ('constraint …')",
+                        open.last().copied().unwrap_or("x")
+                    ),
+                );
+            }
+        }
         kinematic_constraints::solve_error(self.scene, at, e, equations)
     }
 
@@ -62,8 +89,19 @@ impl Analyser<'_> {
                 dropped,
                 free,
                 polynomial,
+                eliminated,
             } = solve_scene(self.scene, &equations, &wanted)
                 .map_err(|e| self.solve_error(at, e, &equations))?;
+            if !eliminated.is_empty() {
+                let relations = eliminated
+                    .into_iter()
+                    .map(|(w, value)| Relation::new(Expr::sym(w), value, Axis::X))
+                    .collect();
+                self.plan.push(Step::new(
+                    "the unknowns that enter an equation linearly, from it, put into the others",
+                    relations,
+                ));
+            }
             if let Some((u, p)) = polynomial {
                 let mut relations = vec![Relation::new(p.clone(), Expr::zero(), Axis::X)];
                 // `tan θ − t`: the angle from its tangent (`scene_solve.rs`).

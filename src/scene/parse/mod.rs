@@ -489,6 +489,11 @@ impl Reader<'_> {
         })?;
         let undeclared = |s: &Symbol| !self.dims.contains_key(s) && marker_dimension(*s).is_none();
         if let Some(unknown) = e.symbols().into_iter().find(undeclared) {
+            if unknown.name() == "omega" {
+                return Err(self
+                    .error(span(p), "omega is the body's angular velocity, a vector, where a number is expected")
+                    .with_help("in a constraint, name one of its components (omega_x, omega_y, omega_z); for its magnitude, give it a name of its own ('given w = 40 rad/s')"));
+            }
             let declared = self.dims.keys().map(|s| s.name());
             return Err(self
                 .error(span(p), format!("unknown symbol {}", unknown.name()))

@@ -124,3 +124,21 @@ fn the_rates_without_asking_for_the_precession() {
     let gamma = 30f64.to_radians();
     assert!((phidot - 40.0 * (4.0 - 3.0 * gamma.sin().powi(2)).sqrt()).abs() < 1e-12);
 }
+
+/// A cylinder with h = √3 r has I' = I exactly: no precession, decided exactly (it said
+/// "retrograde" from the round-off of √3 beside ψ̇ = 0).
+#[test]
+fn equal_moments_by_a_defined_given_are_decided_exactly() {
+    let text = std::fs::read_to_string("examples/scenes/torque_free_cylinder.scene")
+        .unwrap()
+        .replace("given h = 2 m", "given h = sqrt(3)*r");
+    let scene = kinetics::scene::parse_scene("c.scene", &text).unwrap();
+    let analysis = kinetics::scene::analyse(&scene).unwrap();
+    let Value::Precession(p) = result(&analysis, "precession") else {
+        panic!("a precession")
+    };
+    assert_eq!(
+        p.sense,
+        kinetics::mechanics::torque_free_axisymmetric::PrecessionSense::EqualMoments
+    );
+}

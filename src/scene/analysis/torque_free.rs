@@ -71,8 +71,10 @@ impl Analyser<'_> {
             ],
         ));
         let domains = scene.domains();
+        // Exact (a defined given too: h = sqrt(3) r makes I' = I exactly, not by round-off).
         let with_values = |e: &Expr| {
-            e.subs(&|s| scene.exact_value(s).map(Expr::num))
+            e.subs(&|s| scene.exact_given(s))
+                .and_then(|x| x.expand())
                 .unwrap_or_else(|_| e.clone())
         };
         let sense = precession_sense(&i_z, &i_x, &domains)
@@ -114,7 +116,8 @@ impl Analyser<'_> {
         let (Some(stated), Ok(derived)) = (given.value, tan_gamma.eval(&value)) else {
             return Ok(());
         };
-        let derived_angle = derived.atan().abs();
+        // γ in [0°, 180°): the angle of the line of ω from the axis z.
+        let derived_angle = derived.atan().rem_euclid(std::f64::consts::PI);
         // The same line through the axis (γ and γ ± π alike), compared as angles: at 90° the
         // tangents are poles.
         if (stated - derived.atan()).sin().abs() <= 1e-9 {

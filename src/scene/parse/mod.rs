@@ -552,15 +552,20 @@ impl Reader<'_> {
     ) -> Result<(), Diagnostic> {
         let d = self.dimension(e, at)?;
         if d != want && !e.is_zero() {
-            return Err(self
-                .error(
-                    at,
-                    format!("unit mismatch: expected a quantity in {want}, found {d}"),
-                )
-                .with_help(self.given_named_as_unit(
-                    e,
-                    "check the units declared for the symbols of this expression",
-                )));
+            let error = self.error(
+                at,
+                format!("unit mismatch: expected a quantity in {want}, found {d}"),
+            );
+            // A weight (lb, N) where a mass is wanted: its mass is W/g.
+            if want == Dimension::MASS && d == Dimension::FORCE {
+                return Err(error.with_help(
+                    "this is a weight, a force: the mass is the weight over g ('mass W/g', with 'given g = 32.2 ft/s^2' or 'given g = 9.81 m/s^2'), or give the mass in slug or kg",
+                ));
+            }
+            return Err(error.with_help(self.given_named_as_unit(
+                e,
+                "check the units declared for the symbols of this expression",
+            )));
         }
         Ok(())
     }

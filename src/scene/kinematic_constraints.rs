@@ -34,9 +34,10 @@ pub struct SolvedConstraints {
     pub frame_rate: Vector,
     /// Values of unknowns fixed by the kinematic constraints.
     pub solved: Vec<(Symbol, Expr)>,
-    /// The constraints' equations (each `= 0`) to be solved with the equations of motion, or
-    /// of impulse and momentum in an impact (see the module documentation).
-    pub with_equations_of_motion: Vec<Expr>,
+    /// The constraints' equations (each `= 0`, with the constraint it comes from) to be
+    /// solved with the equations of motion, or of impulse and momentum in an impact (see the
+    /// module documentation).
+    pub with_equations_of_motion: Vec<(Expr, Span)>,
 }
 
 impl SolvedConstraints {
@@ -194,7 +195,14 @@ pub fn solve_constraints(
                 | SolveError::Nonlinear { equation, .. } => sources.get(*equation).copied(),
                 _ => None,
             };
-            solve_error(scene, span.unwrap_or(at), e, &equations)
+            match (&e, span) {
+                (SolveError::Inconsistent { residual, .. }, Some(span)) => scene.error_at(
+                    span,
+                    format!("over-determined: this constraint contradicts the other constraints and the givens (with them it reduces to 0 = {residual})"),
+                    "drop this constraint or one it contradicts, or make a given in it an unknown",
+                ),
+                _ => solve_error(scene, span.unwrap_or(at), e, &equations),
+            }
         })?;
         if !free.is_empty() {
             return Err(solve_error(
@@ -224,7 +232,7 @@ pub fn solve_constraints(
         frame_rate: zero_vector(),
         solved,
         with_equations_of_motion: match impact || with_the_loads {
-            true => equations,
+            true => equations.into_iter().zip(sources).collect(),
             false => vec![],
         },
     };

@@ -430,8 +430,11 @@ pub struct Scene {
 }
 
 impl Scene {
-    /// The dimension of a declared symbol.
+    /// The dimension of a declared symbol (π: none).
     pub fn dimension(&self, s: Symbol) -> Option<Dimension> {
+        if s.is_pi() {
+            return Some(Dimension::NONE);
+        }
         self.givens
             .iter()
             .find(|g| g.symbol == s)
@@ -456,13 +459,18 @@ impl Scene {
     /// A given as the user wrote it, with its line, for a help text: `L = 0 m (given on
     /// line 9)`.
     pub fn cite(&self, given: &Given) -> String {
-        let start = self.source.floor_char_boundary(given.span.start);
-        let line = self.source[..start].matches('\n').count() + 1;
+        let line = self.line_of(given.span);
         let written = given
             .written
             .as_ref()
             .map_or("no value".to_string(), ToString::to_string);
         format!("{} = {written} (given on line {line})", given.symbol.name())
+    }
+
+    /// The line (from 1) where `span` starts.
+    pub fn line_of(&self, span: Span) -> usize {
+        let start = self.source.floor_char_boundary(span.start);
+        self.source[..start].matches('\n').count() + 1
     }
 
     /// The request at `at` (written `named`) has no finite value: with the givens' values, the

@@ -162,3 +162,33 @@ fn the_direction_of_omega_fixes_the_tilt_of_a_disk() {
         .count();
     assert_eq!(thetas, 1, "one solution, the vertical axis ruled out");
 }
+
+/// A rod hinged to a vertical shaft, its angle β from the shaft unknown, placed by
+/// `rotated beta - 90 deg` (so β enters as sin(β − 90°) = −cos β): solved as the angle it is,
+/// cos β = 3g/(2Lω²) by hand (ΣM_O = Ḣ_O about z), not refused as over-determined.
+#[test]
+fn an_angle_written_a_quarter_turn_off_is_still_the_angle() {
+    let text = "given m = 2 kg\ngiven L = 0.6 m\ngiven w = 10 rad/s\ngiven g = 9.81 m/s^2\n\
+                unknown beta : deg\nunknown O_x, O_y, O_z : N\nunknown M_x, M_y : N*m\n\
+                body rod(L) mass m at (L/2*sin(beta), -L/2*cos(beta), 0) rotated beta - 90 deg about z\n\
+                fixed point\nomega = w*j\nforce O = O_x*i + O_y*j + O_z*k at (0, 0, 0)\n\
+                force W = -m*g*j at (L/2*sin(beta), -L/2*cos(beta), 0)\ncouple M_x*i + M_y*j\n\
+                find beta\n";
+    let scene = parse_scene("rod.scene", text).unwrap();
+    let analysis = analyse(&scene).unwrap();
+    let betas: Vec<f64> = analysis
+        .results
+        .iter()
+        .map(|(_, v)| {
+            let Value::Scalar(e) = v else {
+                panic!("β is a scalar")
+            };
+            e.eval(&|s| scene.value(s)).unwrap()
+        })
+        .collect();
+    let by_hand = (3.0 * 9.81 / (2.0 * 0.6 * 100.0f64)).acos();
+    assert!(
+        betas.iter().any(|b| (b - by_hand).abs() < 1e-12),
+        "{betas:?} against {by_hand}"
+    );
+}

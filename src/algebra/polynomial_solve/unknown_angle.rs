@@ -139,8 +139,10 @@ pub fn enters_only_through_trigonometry(e: &Expr, u: Symbol) -> bool {
             parts.iter().all(|p| enters_only_through_trigonometry(p, u))
         }
         View::Pow(b, exponent) => !exponent.contains(u) && enters_only_through_trigonometry(b, u),
-        View::Func(Func::Sin | Func::Cos, a) => *a == angle || *a == Expr::int(2) * angle,
-        View::Func(Func::Tan, a) => *a == angle,
+        View::Func(Func::Sin | Func::Cos, a) => {
+            quarter_turns(a, u).is_some() || *a == Expr::int(2) * angle
+        }
+        View::Func(Func::Tan, a) => quarter_turns(a, u).is_some(),
         View::Func(..) => false,
     }
 }
@@ -187,7 +189,48 @@ fn replaced(
             None => None,
         },
         View::Pow(..) => None,
-        View::Func(f, a) if *a == Expr::sym(u) => by(f),
-        View::Func(..) => None,
+        View::Func(f, a) => match quarter_turns(a, u) {
+            Some(k) => shifted(f, k, by)?,
+            None => None,
+        },
+    })
+}
+
+/// k when `a` is u + k·π/2 (k whole), as `sin(beta - 90 deg)` is written.
+fn quarter_turns(a: &Expr, u: Symbol) -> Option<i64> {
+    let shift = (a - &Expr::sym(u)).expand().ok()?;
+    if shift.is_zero() {
+        return Some(0);
+    }
+    let halves = shift.as_multiple_of_pi()? * &Q::int(2);
+    halves.is_integer().then(|| halves.to_i64()).flatten()
+}
+
+/// `f(u + k·π/2)` from sin u, cos u and tan u (`by`): sin(u + π/2) = cos u,
+/// cos(u + π/2) = −sin u, tan(u + π/2) = −1/tan u, each a quarter turn further on.
+fn shifted(
+    f: Func,
+    k: i64,
+    by: &dyn Fn(Func) -> Option<Expr>,
+) -> Result<Option<Expr>, AlgebraError> {
+    let quarter = k.rem_euclid(4);
+    let signed = |g: Func, negative: bool| by(g).map(|x| if negative { -x } else { x });
+    Ok(match f {
+        Func::Sin => match quarter {
+            0 | 2 => signed(Func::Sin, quarter == 2),
+            _ => signed(Func::Cos, quarter == 3),
+        },
+        Func::Cos => match quarter {
+            0 | 2 => signed(Func::Cos, quarter == 2),
+            _ => signed(Func::Sin, quarter == 1),
+        },
+        Func::Tan => match quarter % 2 {
+            0 => by(Func::Tan),
+            _ => match by(Func::Tan) {
+                Some(t) => Some(-Expr::one().checked_div(&t)?),
+                None => None,
+            },
+        },
+        Func::Abs | Func::Acos | Func::Atan => by(f),
     })
 }

@@ -111,7 +111,7 @@ impl Analyser<'_> {
 }
 
 /// The equation a residual of this dimension comes from, about `axis`: `ΣM_G = Ḣ_G (x)`.
-fn equation_named(scene: &Scene, dimension: Option<Dimension>, axis: Axis) -> String {
+pub(super) fn equation_named(scene: &Scene, dimension: Option<Dimension>, axis: Axis) -> String {
     let linear_impulse = Dimension::new(1, 1, -1);
     let angular_impulse = Dimension::new(1, 2, -1);
     let name = match dimension {

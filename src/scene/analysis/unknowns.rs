@@ -6,6 +6,8 @@
 use super::super::kinematic_constraints;
 use super::super::model::{Quantity, Request, Scene, Span};
 use super::super::stated_kinematics::at_reducing_angle;
+use super::super::units::dimension_with;
+use super::motion_obeys_loads::equation_named;
 use super::scene_solve::{sine_and_cosine_of, solve_scene};
 use super::{zero_vector, Analyser, Value};
 use crate::algebra::polynomial_solve::{Solutions, SolveError};
@@ -18,11 +20,40 @@ use crate::mechanics::resultant::{resultant_force, resultant_moment, AppliedForc
 use crate::parse::Diagnostic;
 use std::collections::HashMap;
 
+/// Where an equation the unknowns are solved from comes from: an equation of motion (its
+/// name on the page) or a constraint (its line).
+enum Origin {
+    Motion(String),
+    Constraint(Span),
+}
+
 impl Analyser<'_> {
     /// The solver's error at `at`, its help naming what `equations` need.
-    fn solve_error(&self, at: Span, e: SolveError, equations: &[Expr]) -> Diagnostic {
+    fn solve_error(
+        &self,
+        at: Span,
+        e: SolveError,
+        equations: &[Expr],
+        origins: &[Origin],
+    ) -> Diagnostic {
         if matches!(e, SolveError::Inconsistent { .. }) && pivot_without_reaction(self.scene) {
             return self.scene.error_at(at, e.to_string(), PIVOT_REACTION);
+        }
+        if let SolveError::Inconsistent { equation, residual } = &e {
+            if let Some(origin) = origins.get(*equation) {
+                let (named, at) = match origin {
+                    Origin::Motion(name) => (name.clone(), at),
+                    Origin::Constraint(span) => {
+                        let line = self.scene.line_of(*span);
+                        (format!("the constraint on line {line}"), *span)
+                    }
+                };
+                return self.scene.error_at(
+                    at,
+                    format!("over-determined: {named} contradicts the others (with them it reduces to 0 = {residual})"),
+                    "the givens, the constraints and the loads state more than one motion allows: make one of the givens in it an unknown, drop a constraint, or add the load that drives the motion",
+                );
+            }
         }
         if let SolveError::UnderDetermined(open) = &e {
             let scene = self.scene;
@@ -54,6 +85,21 @@ impl Analyser<'_> {
         kinematic_constraints::solve_error(self.scene, at, e, equations)
     }
 
+    /// Where each equation of motion comes from, named as on the page (`ΣM_G = Ḣ_G about x`).
+    fn motion_origin(&self, relation: &Relation) -> Origin {
+        let scene = self.scene;
+        // The side that holds no number put in from a unit (ṁā, Ḣ in the givens), else the
+        // other, else the residual.
+        let of = |e: &Expr| match e.is_zero() {
+            true => None,
+            false => dimension_with(e, &|s| scene.dimension(s)).ok(),
+        };
+        let dimension = of(&relation.rhs)
+            .or_else(|| of(&relation.lhs))
+            .or_else(|| of(&relation.residual()));
+        Origin::Motion(equation_named(scene, dimension, relation.axis))
+    }
+
     pub(super) fn unknown(&mut self, at: Span, s: Symbol) -> Result<Expr, Diagnostic> {
         if let Some(v) = self.kinematics(at)?.solved.iter().find(|(u, _)| *u == s) {
             return Ok(v.1.clone());
@@ -65,17 +111,22 @@ impl Analyser<'_> {
                 self.impulse_momentum(at)?
             };
             let constraints = self.kinematics(at)?.with_equations_of_motion.clone();
-            let equations: Vec<Expr> = derivation
+            let motion = derivation
                 .result()
                 .iter()
-                .map(|r| r.residual())
-                .chain(constraints)
-                .map(|e| self.known(&e))
-                .collect::<Result<Vec<_>, _>>()
-                .map_err(self.algebra(at))?
+                .map(|r| (r.residual(), self.motion_origin(r)));
+            let constraints = constraints
                 .into_iter()
-                .filter(|e| !e.is_zero())
-                .collect();
+                .map(|(e, span)| (e, Origin::Constraint(span)));
+            let mut equations: Vec<Expr> = Vec::new();
+            let mut origins: Vec<Origin> = Vec::new();
+            for (e, origin) in motion.chain(constraints) {
+                let e = self.known(&e).map_err(self.algebra(at))?;
+                if !e.is_zero() {
+                    equations.push(e);
+                    origins.push(origin);
+                }
+            }
             self.plan.extend(derivation.steps);
             let wanted: Vec<Symbol> = self
                 .scene
@@ -91,7 +142,7 @@ impl Analyser<'_> {
                 polynomial,
                 eliminated,
             } = solve_scene(self.scene, &equations, &wanted)
-                .map_err(|e| self.solve_error(at, e, &equations))?;
+                .map_err(|e| self.solve_error(at, e, &equations, &origins))?;
             if !eliminated.is_empty() {
                 let relations = eliminated
                     .into_iter()
@@ -216,7 +267,7 @@ impl Analyser<'_> {
         self.unknowns
             .as_ref()
             .and_then(|solutions| solutions.get(self.solution)?.get(&s).cloned())
-            .ok_or_else(|| self.solve_error(at, SolveError::UnderDetermined(vec![s]), &[]))
+            .ok_or_else(|| self.solve_error(at, SolveError::UnderDetermined(vec![s]), &[], &[]))
     }
 
     /// The request's value in each solution after the first (`raw` as derived, `first` its

@@ -8,7 +8,9 @@
 //!
 //! `omega_x`, `omega_y`, `omega_z` in a constraint are the components of the body's ω in the
 //! scene's frame (ω = φ̇ sin θ j + (ψ̇ + φ̇ cos θ) k with Eulerian angles), so a torque-free body
-//! is stated as the textbook states it: `constraint omega_y = w*sin(gamma)`.
+//! is stated as the textbook states it: `constraint omega_y = w*sin(gamma)`. `H_x`, `H_y`,
+//! `H_z` are those of H_G = [Ī]{ω}, which needs the body: such a constraint is always solved
+//! with the equations of motion (`analysis/unknowns.rs` puts H_G in).
 //!
 //! In an impact the constraints hold just after the blow, where the impulsive reactions that
 //! enforce them are unknown too: their equations are solved with those of impulse and
@@ -24,6 +26,19 @@ use crate::algebra::{AlgebraError, Axis, Expr, Symbol, Vector};
 use crate::mechanics::derivation::{Relation, Step};
 use crate::mechanics::kinematics::velocity_of_point;
 use crate::parse::Diagnostic;
+
+/// The names of ω's components in a constraint.
+pub const OMEGA_COMPONENTS: [&str; 3] = ["omega_x", "omega_y", "omega_z"];
+
+/// The names of H_G's components in a constraint.
+pub const H_COMPONENTS: [&str; 3] = ["H_x", "H_y", "H_z"];
+
+/// Whether `e` names a component of H_G that the scene does not declare as its own.
+pub fn names_angular_momentum(scene: &Scene, e: &Expr) -> bool {
+    e.symbols()
+        .into_iter()
+        .any(|s| H_COMPONENTS.contains(&s.name()) && scene.dimension(s).is_none())
+}
 
 /// ω, the rates of its components in the frame, and the frame's Ω, with the unknowns the
 /// constraints fixed substituted.
@@ -171,12 +186,21 @@ pub fn solve_constraints(
         && scene.forces.is_empty()
         && scene.couples.is_empty()
         && scene.impulses.is_empty();
+    let names_h = equations.iter().any(|e| names_angular_momentum(scene, e));
+    if names_h && !(scene.motion_follows_from_loads() || under_no_force) {
+        return Err(scene.error_at(
+            at,
+            "a constraint on H_G (H_x, H_y, H_z) is solved with the equations of motion, and this scene does not state the loads its motion follows from",
+            "state the loads (force, couple), or for a body under no force 'euler angles' with 'vbar = 0' and 'abar = 0'",
+        ));
+    }
     let with_the_loads = (scene.motion_follows_from_loads() || under_no_force)
-        && match &alone {
-            Some(Err(SolveError::Nonlinear { .. })) => true,
-            Some(Ok(Solution { free, .. })) => !free.is_empty(),
-            _ => false,
-        };
+        && (names_h
+            || match &alone {
+                Some(Err(SolveError::Nonlinear { .. })) => true,
+                Some(Ok(Solution { free, .. })) => !free.is_empty(),
+                _ => false,
+            });
     let solved = if equations.is_empty() {
         vec![]
     } else if impact || with_the_loads {
@@ -269,9 +293,7 @@ pub fn solve_constraints(
 /// by that name is ω's component already, and stays as it is).
 fn omega_components_put_in(e: &Expr, omega: &Vector) -> Result<Expr, AlgebraError> {
     let component = |s: Symbol| {
-        let k = ["omega_x", "omega_y", "omega_z"]
-            .iter()
-            .position(|n| *n == s.name())?;
+        let k = OMEGA_COMPONENTS.iter().position(|n| *n == s.name())?;
         Some(omega[k].clone())
     };
     e.subs(&component)

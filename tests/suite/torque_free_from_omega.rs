@@ -142,3 +142,43 @@ fn equal_moments_by_a_defined_given_are_decided_exactly() {
         kinetics::mechanics::torque_free_axisymmetric::PrecessionSense::EqualMoments
     );
 }
+
+/// The other textbook statement, H_G and θ: constraints on H_G's components (H_G = [Ī]{ω},
+/// put in with the body) solved with ΣM_G = 0. By hand: I'φ̇ sin θ = H sin θ, so φ̇ = H/I';
+/// I ω_z = H cos θ, so ψ̇ = H cos θ/I − φ̇ cos θ.
+#[test]
+fn a_disk_given_its_angular_momentum_and_theta() {
+    let text = "given m = 2 kg\ngiven r = 0.2 m\ngiven H = 0.5 kg*m^2/s\ngiven theta = 20 deg\n\
+                unknown phidot, psidot : rad/s\neuler angles steady\nbody disk(r) mass m along z\n\
+                vbar = 0\nabar = 0\nconstraint H_y = H*sin(theta)\n\
+                constraint H_z = H*cos(theta)\nfind phidot, psidot, precession\n";
+    let scene = kinetics::scene::parse_scene("h.scene", text).unwrap();
+    let analysis = kinetics::scene::analyse(&scene).unwrap();
+    let value = |name: &str| {
+        let Value::Scalar(e) = result(&analysis, name) else {
+            panic!("{name} is a scalar")
+        };
+        e.eval(&|s| scene.value(s)).unwrap()
+    };
+    let (m, r, h, theta) = (2.0, 0.2, 0.5, 20f64.to_radians());
+    let (i, i_prime) = (m * r * r / 2.0, m * r * r / 4.0);
+    let phidot = h / i_prime;
+    let psidot = h * theta.cos() / i - phidot * theta.cos();
+    assert!((value("phidot") - phidot).abs() < 1e-12 * phidot);
+    assert!((value("psidot") - psidot).abs() < 1e-12 * psidot.abs());
+}
+
+/// H_G in a constraint without the loads stated: refused saying what to state.
+#[test]
+fn a_constraint_on_h_needs_the_loads() {
+    let text = "given m = 2 kg\ngiven r = 0.2 m\ngiven H = 0.5 kg*m^2/s\n\
+                unknown w_z : rad/s\nbody disk(r) mass m along z\nomega = w_z*k\n\
+                constraint H_z = H\nfind w_z\n";
+    let scene = kinetics::scene::parse_scene("h.scene", text).unwrap();
+    let message = kinetics::scene::analyse(&scene).unwrap_err().render();
+    assert!(
+        message
+            .contains("a constraint on H_G (H_x, H_y, H_z) is solved with the equations of motion"),
+        "{message}"
+    );
+}

@@ -3,7 +3,7 @@
 //! solved in general but left undetermined by the givens' values (a zero pivot, L = 0) is
 //! refused at its find.
 
-use super::super::kinematic_constraints;
+use super::super::kinematic_constraints::{self, H_COMPONENTS};
 use super::super::model::{Quantity, Request, Scene, Span};
 use super::super::stated_kinematics::at_reducing_angle;
 use super::super::units::dimension_with;
@@ -110,7 +110,22 @@ impl Analyser<'_> {
             } else {
                 self.impulse_momentum(at)?
             };
-            let constraints = self.kinematics(at)?.with_equations_of_motion.clone();
+            let mut constraints = self.kinematics(at)?.with_equations_of_motion.clone();
+            // H_G's components named in a constraint: [Ī]{ω}, shown as its step.
+            let scene = self.scene;
+            if constraints
+                .iter()
+                .any(|(e, _)| kinematic_constraints::names_angular_momentum(scene, e))
+            {
+                let h = self.h_g(at)?;
+                let component = |s: Symbol| {
+                    let k = H_COMPONENTS.iter().position(|n| *n == s.name())?;
+                    scene.dimension(s).is_none().then(|| h[k].clone())
+                };
+                for (e, _) in constraints.iter_mut() {
+                    *e = e.subs(&component).map_err(self.algebra(at))?;
+                }
+            }
             let motion = derivation
                 .result()
                 .iter()

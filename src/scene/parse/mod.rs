@@ -2,6 +2,7 @@
 //! (file:line:column, a caret, a hint). The mathematics inside a statement goes through the
 //! expression parser; its diagnostics are moved to their place in the file.
 
+use super::kinematic_constraints::{H_COMPONENTS, OMEGA_COMPONENTS};
 use super::model::{Constraint, ConstraintKind, Force, Places, Quantity, Request, Scene, Span};
 use super::named_unit::NamedUnit;
 use super::unit_system::UnitSystem;
@@ -236,17 +237,23 @@ impl Reader<'_> {
                     }
                     _ => {
                         let sides: Vec<Pair<Rule>> = c.into_inner().collect();
-                        // ω's components may be named (`kinematic_constraints.rs`).
-                        let omega: Vec<Symbol> = ["omega_x", "omega_y", "omega_z"]
+                        // ω's and H_G's components may be named (`kinematic_constraints.rs`).
+                        let named: Vec<(Symbol, Dimension)> = OMEGA_COMPONENTS
                             .into_iter()
-                            .map(Symbol::new)
-                            .filter(|s| !self.dims.contains_key(s))
+                            .map(|n| (n, Dimension::ANGULAR_VELOCITY))
+                            .chain(
+                                H_COMPONENTS
+                                    .into_iter()
+                                    .map(|n| (n, Dimension::new(1, 2, -1))),
+                            )
+                            .map(|(n, d)| (Symbol::new(n), d))
+                            .filter(|(s, _)| !self.dims.contains_key(s))
                             .collect();
-                        for s in &omega {
-                            self.dims.insert(*s, Dimension::ANGULAR_VELOCITY);
+                        for (s, d) in &named {
+                            self.dims.insert(*s, *d);
                         }
                         let equation = self.constraint_equation(&sides);
-                        for s in &omega {
+                        for (s, _) in &named {
                             self.dims.remove(s);
                         }
                         equation?

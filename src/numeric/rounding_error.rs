@@ -150,8 +150,12 @@ fn function(f: Func, a: Bounded) -> Bounded {
         Func::Abs => a.error,
         // |acos'(a)| = 1/√(1 − a²)
         Func::Acos => (a.error + own) / (1.0 - a.value.to_f64().powi(2)).sqrt(),
-        // |atan'(a)| = 1/(1 + a²) ≤ 1
-        Func::Atan => a.error + own,
+        // |atan'(a)| = 1/(1 + a²); no argument reduction, so its own rounding is relative
+        // to its value, |atan| < π/2, whatever the size of a.
+        Func::Atan => {
+            let a2 = a.value.to_f64().powi(2);
+            a.error / (1.0 + a2) + ELEMENTARY * U * (1.0 + v.abs().to_f64())
+        }
     };
     Bounded { value: v, error }
 }
@@ -174,6 +178,15 @@ mod tests {
     fn at(text: &str, x: f64) -> Bounded {
         let e = parse_expression("test", text).expect("parses");
         bounded(&e, &|_| Some(DoubleDouble::from_f64(x))).expect("finite")
+    }
+
+    /// atan of a huge argument is near π/2 with a bound as small as its value's rounding
+    /// (a bound growing with the argument made atan(5e16) "zero within its bound").
+    #[test]
+    fn inverse_tangent_of_a_huge_argument() {
+        let b = at("atan(x)", 5e16);
+        assert!((b.value.to_f64() - std::f64::consts::FRAC_PI_2).abs() < 1e-16);
+        assert!(b.error < 1e-28, "{}", b.error);
     }
 
     /// The bound holds the actual error where the exact value is known, and is small

@@ -182,3 +182,31 @@ fn a_constraint_on_h_needs_the_loads() {
         "{message}"
     );
 }
+
+/// ω within 1e-30 of the right angle to the axis: θ is 90° to the same closeness (it printed
+/// θ = 0: atan of a huge tangent was taken for zero within a rounding bound that grew with
+/// its argument).
+#[test]
+fn omega_all_but_across_the_axis_tilts_it_all_but_ninety_degrees() {
+    let text = std::fs::read_to_string("examples/scenes/torque_free_disk_from_omega.scene")
+        .unwrap()
+        .replace("given gamma = 30 deg", "given gamma = atan(1e30)");
+    let scene = kinetics::scene::parse_scene("g.scene", &text).unwrap();
+    let analysis = kinetics::scene::analyse(&scene).unwrap();
+    let page = kinetics::solution::render_numbers(
+        &scene,
+        &analysis,
+        kinetics::solution::Format::Json,
+        false,
+    );
+    let page: serde_json::Value = serde_json::from_str(&page).unwrap();
+    let theta = page["results"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["name"] == "theta")
+        .unwrap()["value"]
+        .as_f64()
+        .unwrap();
+    assert!((theta - 90.0).abs() < 1e-9, "θ = {theta}°");
+}

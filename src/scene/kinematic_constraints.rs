@@ -179,22 +179,17 @@ pub fn solve_constraints(
         true => None,
         false => Some(solve_linear(&equations, &constrained)),
     };
-    // Constraints that do not fix their unknowns alone, where the loads fix the rest (a body
-    // stated by its Eulerian angles and ā with no load on it is under no force).
-    let under_no_force = scene.euler_angles.is_some()
-        && scene.abar.is_some()
-        && scene.forces.is_empty()
-        && scene.couples.is_empty()
-        && scene.impulses.is_empty();
+    // Constraints that do not fix their unknowns alone, where the loads fix the rest.
+    let loads_fix_the_rest = scene.motion_follows_from_loads() || scene.under_no_force();
     let names_h = equations.iter().any(|e| names_angular_momentum(scene, e));
-    if names_h && !(scene.motion_follows_from_loads() || under_no_force) {
+    if names_h && !loads_fix_the_rest {
         return Err(scene.error_at(
             at,
             "a constraint on H_G (H_x, H_y, H_z) is solved with the equations of motion, and this scene does not state the loads its motion follows from",
             "state the loads (force, couple), or for a body under no force 'euler angles' with 'vbar = 0' and 'abar = 0'",
         ));
     }
-    let with_the_loads = (scene.motion_follows_from_loads() || under_no_force)
+    let with_the_loads = loads_fix_the_rest
         && (names_h
             || match &alone {
                 Some(Err(SolveError::Nonlinear { .. })) => true,

@@ -526,6 +526,16 @@ impl Scene {
         (loaded || torque_free) && motion_stated && !self.parts.is_empty()
     }
 
+    /// Whether the scene states a body under no force by its Eulerian angles and ā, with no
+    /// load on it: its motion is what ΣM_G = Ḣ_G = 0 allows, `find precession` or not.
+    pub fn under_no_force(&self) -> bool {
+        self.euler_angles.is_some()
+            && self.abar.is_some()
+            && self.forces.is_empty()
+            && self.couples.is_empty()
+            && self.impulses.is_empty()
+    }
+
     /// Whether the solution works about the fixed point O with `[I_O]`, as §18.7–18.8 do: the
     /// scene has a fixed point and does not ask for the centroidal route (`about G`).
     pub fn about_fixed_point(&self) -> bool {

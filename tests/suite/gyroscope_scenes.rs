@@ -3,7 +3,7 @@
 //! analysis), their worked solutions as snapshots, and the plan of a steady precession, which
 //! pulls neither Euler's equations for a general body nor an integration.
 
-use crate::common::examples::{analysed_example, result};
+use crate::common::examples::{analysed_example, result, scalar_value};
 use kinetics::mechanics::torque_free_axisymmetric::PrecessionSense;
 use kinetics::scene::{Analysis, Scene, Value};
 use kinetics::solution::{render, Format};
@@ -17,14 +17,6 @@ const EXAMPLES: [&str; 6] = [
     "torque_free_disk",
     "torque_free_disk_from_omega",
 ];
-
-/// The value of a scalar request with the givens' values.
-fn number(scene: &Scene, analysis: &Analysis, name: &str) -> f64 {
-    match result(analysis, name) {
-        Value::Scalar(e) => e.eval(&|s| scene.value(s)).expect("a number"),
-        other => panic!("{name} is not a scalar: {other:?}"),
-    }
-}
 
 /// The components of a vector request with the givens' values.
 fn numbers(scene: &Scene, analysis: &Analysis, name: &str) -> [f64; 3] {
@@ -82,12 +74,15 @@ fn the_required_couple_is_that_of_steady_precession_less_the_weight() {
     let omega_z = psidot + phidot * theta.cos();
     let m_x = phidot * theta.sin() * (i * omega_z - i_prime * phidot * theta.cos())
         - m * g("g") * c * theta.sin();
-    close(number(&scene, &a, "M_x"), m_x, "M_x");
-    close(number(&scene, &a, "M_y"), 0.0, "M_y");
-    close(number(&scene, &a, "M_z"), 0.0, "M_z");
+    close(scalar_value(&scene, &a, "M_x"), m_x, "M_x");
+    close(scalar_value(&scene, &a, "M_y"), 0.0, "M_y");
+    close(scalar_value(&scene, &a, "M_z"), 0.0, "M_z");
     // G on a circle of radius c sin θ about the vertical: the pivot holds up the weight and
     // gives the centripetal force m c sin θ φ̇², horizontal, towards the vertical through O.
-    let (r_y, r_z) = (number(&scene, &a, "R_y"), number(&scene, &a, "R_z"));
+    let (r_y, r_z) = (
+        scalar_value(&scene, &a, "R_y"),
+        scalar_value(&scene, &a, "R_z"),
+    );
     let vertical = r_y * theta.sin() + r_z * theta.cos();
     let horizontal = r_y * theta.cos() - r_z * theta.sin();
     close(vertical, m * g("g"), "the vertical component of R");
@@ -105,9 +100,13 @@ fn the_wheel_precesses_at_its_weights_moment_over_its_spin_momentum() {
     let g = |n: &str| given(&scene, n);
     let (m, r, l, psidot) = (g("m"), g("r"), g("L"), g("psidot"));
     let phidot = m * g("g") * l / (m * r * r / 2.0 * psidot);
-    close(number(&scene, &a, "phidot"), phidot, "phidot");
-    close(number(&scene, &a, "R_y"), m * g("g"), "R_y");
-    close(number(&scene, &a, "R_z"), -m * l * phidot * phidot, "R_z");
+    close(scalar_value(&scene, &a, "phidot"), phidot, "phidot");
+    close(scalar_value(&scene, &a, "R_y"), m * g("g"), "R_y");
+    close(
+        scalar_value(&scene, &a, "R_z"),
+        -m * l * phidot * phidot,
+        "R_z",
+    );
 }
 
 /// The top (OG = r): `(I − I′) cos θ φ̇² + I ψ̇ φ̇ − m g r = 0`, solved here by the quadratic formula;
@@ -146,7 +145,7 @@ fn the_torque_free_cylinder_spins_and_precesses_as_eq_18_50_says() {
     let (m, r, h, phidot, theta) = (g("m"), g("r"), g("h"), g("phidot"), 30f64.to_radians());
     let (i, i_prime) = (m * r * r / 2.0, m * (3.0 * r * r + h * h) / 12.0);
     let psidot = (i_prime - i) * phidot * theta.cos() / i;
-    close(number(&scene, &a, "psidot"), psidot, "psidot");
+    close(scalar_value(&scene, &a, "psidot"), psidot, "psidot");
     assert!(psidot * phidot > 0.0, "a long body precesses directly");
     let omega = numbers(&scene, &a, "omega");
     close(omega[0], 0.0, "omega_x");
@@ -173,7 +172,7 @@ fn the_torque_free_disk_precesses_retrograde() {
     let (m, r, phidot, theta) = (g("m"), g("r"), g("phidot"), g("theta"));
     let (i, i_prime) = (m * r * r / 2.0, m * r * r / 4.0);
     let psidot = (i_prime - i) * phidot * theta.cos() / i;
-    close(number(&scene, &a, "psidot"), psidot, "psidot");
+    close(scalar_value(&scene, &a, "psidot"), psidot, "psidot");
     assert!(psidot * phidot < 0.0, "a flat body precesses retrograde");
     let tan_gamma = i / i_prime * theta.tan();
     let (derived, sense) = precession(&scene, &a);

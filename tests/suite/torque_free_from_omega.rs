@@ -2,16 +2,13 @@
 //! the angle γ of ω from its axis, its θ, φ̇ and ψ̇ derived by kinetics (the constraints on
 //! ω's components solved with ΣM_G = Ḣ_G = 0) against the hand derivation below in f64.
 
-use crate::common::examples::{analysed_example, result};
+use crate::common::examples::{analysed_example, result, scalar_value};
 use kinetics::scene::Value;
 
 /// The scalar result `name`'s value with the givens' values.
 fn number(name: &str) -> f64 {
     let (scene, analysis) = analysed_example("torque_free_disk_from_omega", "");
-    let Value::Scalar(e) = result(&analysis, name) else {
-        panic!("{name} is a scalar")
-    };
-    e.eval(&|s| scene.value(s)).unwrap()
+    scalar_value(&scene, &analysis, name)
 }
 
 #[test]
@@ -84,12 +81,7 @@ fn omega_along_the_axis_is_refused_naming_the_vertical_axis() {
 #[test]
 fn omega_across_the_axis_turns_the_disk_about_a_diameter() {
     let (scene, analysis) = with_gamma("90").unwrap();
-    let value = |name: &str| {
-        let Value::Scalar(e) = result(&analysis, name) else {
-            panic!("{name} is a scalar")
-        };
-        e.eval(&|s| scene.value(s)).unwrap()
-    };
+    let value = |name: &str| scalar_value(&scene, &analysis, name);
     assert!((value("theta") - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
     assert!((value("phidot") - 40.0).abs() < 1e-12);
     assert!(value("psidot").abs() < 1e-12);
@@ -99,10 +91,7 @@ fn omega_across_the_axis_turns_the_disk_about_a_diameter() {
 #[test]
 fn omega_beyond_a_right_angle_tilts_the_axis_past_ninety_degrees() {
     let (scene, analysis) = with_gamma("120").unwrap();
-    let Value::Scalar(theta) = result(&analysis, "theta") else {
-        panic!("θ is a scalar")
-    };
-    let theta = theta.eval(&|s| scene.value(s)).unwrap();
+    let theta = scalar_value(&scene, &analysis, "theta");
     let gamma = 120f64.to_radians();
     assert!((theta.tan() - gamma.tan() / 2.0).abs() < 1e-12);
     assert!(theta > std::f64::consts::FRAC_PI_2 && theta < std::f64::consts::PI);
@@ -117,10 +106,7 @@ fn the_rates_without_asking_for_the_precession() {
         .replace("find theta, phidot, psidot, precession", "find phidot");
     let scene = kinetics::scene::parse_scene("p.scene", &text).unwrap();
     let analysis = kinetics::scene::analyse(&scene).unwrap();
-    let Value::Scalar(phidot) = result(&analysis, "phidot") else {
-        panic!("φ̇ is a scalar")
-    };
-    let phidot = phidot.eval(&|s| scene.value(s)).unwrap();
+    let phidot = scalar_value(&scene, &analysis, "phidot");
     let gamma = 30f64.to_radians();
     assert!((phidot - 40.0 * (4.0 - 3.0 * gamma.sin().powi(2)).sqrt()).abs() < 1e-12);
 }
@@ -154,12 +140,7 @@ fn a_disk_given_its_angular_momentum_and_theta() {
                 constraint H_z = H*cos(theta)\nfind phidot, psidot, precession\n";
     let scene = kinetics::scene::parse_scene("h.scene", text).unwrap();
     let analysis = kinetics::scene::analyse(&scene).unwrap();
-    let value = |name: &str| {
-        let Value::Scalar(e) = result(&analysis, name) else {
-            panic!("{name} is a scalar")
-        };
-        e.eval(&|s| scene.value(s)).unwrap()
-    };
+    let value = |name: &str| scalar_value(&scene, &analysis, name);
     let (m, r, h, theta) = (2.0, 0.2, 0.5, 20f64.to_radians());
     let (i, i_prime) = (m * r * r / 2.0, m * r * r / 4.0);
     let phidot = h / i_prime;

@@ -3,7 +3,7 @@
 //! by bisection here in f64; the vertical axis (θ = 0, 180°) ruled out with its reason; and
 //! a precession too fast for any tilt refused naming why.
 
-use crate::common::examples::{analysed_example, result};
+use crate::common::examples::{analysed_example, scalar_value};
 use kinetics::scene::{analyse, parse_scene, Value};
 
 /// `ΣM_x − Ḣ_x` past its factor sin θ for the disk top about its pivot: W r − (I ω_z −
@@ -32,10 +32,7 @@ fn bisection(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
 #[test]
 fn a_top_s_steady_tilt_for_a_given_precession_and_spin() {
     let (scene, analysis) = analysed_example("top_steady_tilt", "");
-    let Value::Scalar(theta) = result(&analysis, "theta") else {
-        panic!("θ is a scalar")
-    };
-    let theta = theta.eval(&|s| scene.value(s)).unwrap();
+    let theta = scalar_value(&scene, &analysis, "theta");
     let psidot = 1800.0 * std::f64::consts::PI / 30.0;
     let by_bisection = bisection(
         |t| moment_balance(t, 2.65, psidot),
@@ -149,10 +146,7 @@ fn the_direction_of_omega_fixes_the_tilt_of_a_disk() {
                 constraint omega_y = omega_z*tan(gam)\nfind theta, psidot, precession\n";
     let scene = parse_scene("d.scene", text).unwrap();
     let analysis = analyse(&scene).unwrap();
-    let Value::Scalar(theta) = result(&analysis, "theta") else {
-        panic!("θ is a scalar")
-    };
-    let theta = theta.eval(&|s| scene.value(s)).unwrap();
+    let theta = scalar_value(&scene, &analysis, "theta");
     let by_hand = (30f64.to_radians().tan() / 2.0).atan();
     assert!((theta - by_hand).abs() < 1e-12, "{theta} against {by_hand}");
     let thetas = analysis

@@ -20,10 +20,10 @@ use crate::mechanics::resultant::{resultant_force, resultant_moment, AppliedForc
 use crate::parse::Diagnostic;
 use std::collections::HashMap;
 
-/// Where an equation the unknowns are solved from comes from: an equation of motion (its
-/// name on the page) or a constraint (its line).
+/// Where an equation the unknowns are solved from comes from: an equation of motion (named
+/// only when an error quotes it) or a constraint (its line).
 enum Origin {
-    Motion(String),
+    Motion(Relation),
     Constraint(Span),
 }
 
@@ -42,7 +42,7 @@ impl Analyser<'_> {
         if let SolveError::Inconsistent { equation, residual } = &e {
             if let Some(origin) = origins.get(*equation) {
                 let (named, at) = match origin {
-                    Origin::Motion(name) => (name.clone(), at),
+                    Origin::Motion(relation) => (self.motion_equation_named(relation), at),
                     Origin::Constraint(span) => {
                         let line = self.scene.line_of(*span);
                         (format!("the constraint on line {line}"), *span)
@@ -85,8 +85,8 @@ impl Analyser<'_> {
         kinematic_constraints::solve_error(self.scene, at, e, equations)
     }
 
-    /// Where each equation of motion comes from, named as on the page (`ΣM_G = Ḣ_G about x`).
-    fn motion_origin(&self, relation: &Relation) -> Origin {
+    /// An equation of motion named as on the page (`ΣM_G = Ḣ_G about x`).
+    fn motion_equation_named(&self, relation: &Relation) -> String {
         let scene = self.scene;
         // The side that holds no number put in from a unit (ṁā, Ḣ in the givens), else the
         // other, else the residual.
@@ -97,7 +97,7 @@ impl Analyser<'_> {
         let dimension = of(&relation.rhs)
             .or_else(|| of(&relation.lhs))
             .or_else(|| of(&relation.residual()));
-        Origin::Motion(equation_named(scene, dimension, relation.axis))
+        equation_named(scene, dimension, relation.axis)
     }
 
     pub(super) fn unknown(&mut self, at: Span, s: Symbol) -> Result<Expr, Diagnostic> {
@@ -129,7 +129,7 @@ impl Analyser<'_> {
             let motion = derivation
                 .result()
                 .iter()
-                .map(|r| (r.residual(), self.motion_origin(r)));
+                .map(|r| (r.residual(), Origin::Motion(r.clone())));
             let constraints = constraints
                 .into_iter()
                 .map(|(e, span)| (e, Origin::Constraint(span)));

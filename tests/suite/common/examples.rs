@@ -27,6 +27,14 @@ pub fn analysed_example(name: &str, extra: &str) -> (kinetics::Scene, kinetics::
     (scene, analysis)
 }
 
+/// The number of the scalar request named `name`, with the givens' values.
+pub fn scalar_value(scene: &kinetics::Scene, analysis: &kinetics::Analysis, name: &str) -> f64 {
+    match result(analysis, name) {
+        kinetics::Value::Scalar(e) => e.eval(&|s| scene.value(s)).expect("a number"),
+        other => panic!("{name} is not a scalar: {other:?}"),
+    }
+}
+
 /// The value of the request named `name` (as written in the scene's `find`).
 pub fn result<'a>(analysis: &'a kinetics::Analysis, name: &str) -> &'a kinetics::Value {
     &analysis

@@ -125,7 +125,7 @@ pub fn angle_alone(
     }
 }
 
-/// Whether u enters `e` only as the argument of sin, cos (u or 2u) and tan (u): a read of
+/// Whether u enters `e` only as the argument of sin, cos (u + kπ/2 or 2u) and tan (u + kπ/2): a read of
 /// `e` that builds nothing, so that a solver can ask it of every unknown of every equation
 /// before it rewrites one ([`in_sine_and_cosine`] may still decline, past its bounds).
 pub fn enters_only_through_trigonometry(e: &Expr, u: Symbol) -> bool {
@@ -196,12 +196,22 @@ fn replaced(
     })
 }
 
-/// k when `a` is u + k·π/2 (k whole), as `sin(beta - 90 deg)` is written.
+/// k when `a` is u + k·π/2 (k whole), as `sin(beta - 90 deg)` is written; read from the
+/// canonical sum, nothing built (asked of every function of every equation).
 fn quarter_turns(a: &Expr, u: Symbol) -> Option<i64> {
-    let shift = (a - &Expr::sym(u)).expand().ok()?;
-    if shift.is_zero() {
+    let angle = Expr::sym(u);
+    if *a == angle {
         return Some(0);
     }
+    let View::Add(terms) = a.view() else {
+        return None;
+    };
+    let [x, y] = terms else { return None };
+    let shift = match (*x == angle, *y == angle) {
+        (true, false) => y,
+        (false, true) => x,
+        _ => return None,
+    };
     let halves = shift.as_multiple_of_pi()? * &Q::int(2);
     halves.is_integer().then(|| halves.to_i64()).flatten()
 }

@@ -37,6 +37,9 @@ pub enum SolveError {
     NoSinglePolynomial {
         term: String,
     },
+    /// Several unknowns enter only through sin, cos and tan of themselves; one unknown angle
+    /// is solved at a time.
+    SeveralAngles(Vec<Symbol>),
     /// The roots of the polynomial in `unknown` are not written exactly by the solver.
     RootsNotExact {
         unknown: Symbol,
@@ -80,6 +83,16 @@ impl std::fmt::Display for SolveError {
                 f,
                 "the equations are not linear in the unknowns (term {term}), and no one unknown leaves the others linear, so they do not reduce to a polynomial in one unknown"
             ),
+            SolveError::SeveralAngles(angles) => {
+                let names: Vec<&str> = angles.iter().map(|s| s.name()).collect();
+                let (last, rest) = names.split_last().unwrap_or((&"", &[]));
+                let all = if rest.len() == 1 { "both" } else { "all" };
+                write!(
+                    f,
+                    "the unknowns {} and {last} {all} enter through sin and cos: kinetics solves for one unknown angle at a time",
+                    rest.join(", ")
+                )
+            }
             SolveError::RootsNotExact { unknown, reason } => write!(
                 f,
                 "the roots of the polynomial in {} are not written exactly: {reason}",
@@ -101,10 +114,21 @@ pub struct Solution {
 /// can decide whether that matters.
 pub fn solve_linear(equations: &[Expr], unknowns: &[Symbol]) -> Result<Solution, SolveError> {
     let reduced = eliminate(equations, unknowns)?;
-    if let Some((equation, residual)) = reduced.residuals().next() {
+    // A residual that holds an unknown (in sin θ, say) is an equation left in the unknowns,
+    // no contradiction: the system is not linear in them.
+    let (left_in_unknowns, contradictions): (Vec<_>, Vec<_>) = reduced
+        .residuals()
+        .partition(|(_, residual)| unknowns.iter().any(|u| residual.contains(*u)));
+    if let Some((equation, residual)) = contradictions.first() {
         return Err(SolveError::Inconsistent {
-            equation,
+            equation: *equation,
             residual: residual.to_string(),
+        });
+    }
+    if let Some((equation, residual)) = left_in_unknowns.first() {
+        return Err(SolveError::Nonlinear {
+            equation: *equation,
+            term: residual.to_string(),
         });
     }
     Ok(reduced.solution(unknowns)?)
@@ -121,7 +145,8 @@ pub(in crate::algebra) struct Reduced {
 }
 
 /// Eliminates the unknowns from `equations[i] = 0`, each linear in them: their coefficients
-/// may hold any other symbols (a parameter of the system, such as an unknown solved apart).
+/// may hold any other symbols (a parameter of the system, such as an unknown solved apart),
+/// and functions of the unknowns (`sin θ`), as parameters.
 pub(in crate::algebra) fn eliminate(
     equations: &[Expr],
     unknowns: &[Symbol],
@@ -257,6 +282,11 @@ mod tests {
         assert!(matches!(
             solve_linear(&[e("x y - 1")], &[x, y]),
             Err(SolveError::Nonlinear { .. })
+        ));
+        // An unknown inside sin is no coefficient: not a contradiction `0 = sin(x) - 1`.
+        assert!(matches!(
+            solve_linear(&[e("sin(x) - 1"), e("y - 2")], &[x, y]),
+            Err(SolveError::Nonlinear { equation: 0, .. })
         ));
     }
 }

@@ -91,6 +91,17 @@ pub fn solve_error(scene: &Scene, at: Span, e: SolveError, equations: &[Expr]) -
         SolveError::Inconsistent { .. } => {
             "remove a condition or an unknown that conflicts".to_string()
         }
+        SolveError::SeveralAngles(angles) => {
+            let rest: Vec<String> = angles[1..]
+                .iter()
+                .map(|s| format!("'given {} = …'", s.name()))
+                .collect();
+            format!(
+                "make all but one of them givens ({} in place of the unknown), and {} is solved for",
+                rest.join(", "),
+                angles[0].name()
+            )
+        }
         SolveError::RootsNotExact { .. } if !without_value.is_empty() => format!(
             "give {} a value, so that the sign deciding how many roots are real is known",
             without_value.join(", ")

@@ -191,3 +191,31 @@ fn omega_all_but_across_the_axis_tilts_it_all_but_ninety_degrees() {
         .unwrap();
     assert!((theta - 90.0).abs() < 1e-9, "θ = {theta}°");
 }
+
+/// θ and γ both unknown (φ̇ given in their place): each enters through sin and cos, and
+/// one unknown angle is solved at a time. Refused saying so and naming the angle to make a
+/// given, not "over-determined: this constraint contradicts the others" (it said that).
+#[test]
+fn two_unknown_angles_are_refused_naming_the_one_to_give() {
+    let text = std::fs::read_to_string("examples/scenes/torque_free_disk_from_omega.scene")
+        .unwrap()
+        .replace("given gamma = 30 deg", "given phidot = 72.11 rad/s")
+        .replace("unknown theta : deg", "unknown theta, gamma : deg")
+        .replace("unknown phidot, psidot", "unknown psidot")
+        .replace(
+            "find theta, phidot, psidot, precession",
+            "find theta, gamma",
+        );
+    let scene = kinetics::scene::parse_scene("two.scene", &text).unwrap();
+    let message = kinetics::scene::analyse(&scene).unwrap_err().render();
+    assert!(
+        message.contains(
+            "the unknowns theta and gamma both enter through sin and cos: kinetics solves for one unknown angle at a time"
+        ),
+        "{message}"
+    );
+    assert!(
+        message.contains("'given gamma = …' in place of the unknown"),
+        "{message}"
+    );
+}

@@ -51,21 +51,28 @@ pub(super) fn solve_scene(
         sign: &sign,
         positive: &positive,
     };
-    match angle_unknown(equations, wanted) {
-        Some(u) => solve_for_angle(scene, equations, wanted, u, &context),
+    let angles = angle_unknowns(equations, wanted);
+    let solved = match angles.first() {
+        Some(&u) => solve_for_angle(scene, equations, wanted, u, &context),
         None => solve_system(equations, wanted, &context),
+    };
+    match solved {
+        // The angles are solved one at a time: that, not the nonlinear term, is the cause.
+        Err(_) if angles.len() > 1 => Err(SolveError::SeveralAngles(angles)),
+        solved => solved,
     }
 }
 
-/// The first unknown that enters only through sin, cos and tan of itself (and does enter):
+/// The unknowns that enter only through sin, cos and tan of themselves (and do enter):
 /// decided by reading the equations, nothing rewritten (asked of every scene's unknowns).
-fn angle_unknown(equations: &[Expr], wanted: &[Symbol]) -> Option<Symbol> {
-    wanted.iter().copied().find(|&u| {
+fn angle_unknowns(equations: &[Expr], wanted: &[Symbol]) -> Vec<Symbol> {
+    let angle = |u: Symbol| {
         equations.iter().any(|e| e.contains(u))
             && equations
                 .iter()
                 .all(|e| enters_only_through_trigonometry(e, u))
-    })
+    };
+    wanted.iter().copied().filter(|&u| angle(u)).collect()
 }
 
 /// The sine and cosine of the angle `u` as unknowns of their own: `s_theta`, `c_theta`.

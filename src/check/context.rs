@@ -23,6 +23,7 @@ use crate::mechanics::slip::Slip;
 use crate::parse::claim::Name;
 use crate::scene::analysis::values_of;
 use crate::scene::model::{Quantity, Request, Span};
+use crate::scene::unit_system::UnitSystem;
 use crate::scene::units::{dimension_with, Dimension, Dimensions};
 use crate::scene::units_in_math::{marker, marker_dimension};
 use crate::scene::{Scene, Value};
@@ -55,8 +56,11 @@ pub struct Context {
     /// Whether a name the context does not know is a free symbol (no scene) or an error.
     free_symbols: bool,
     domains: Domains,
-    /// The exact values (in SI) of a scene's givens that have one.
+    /// The exact values (in the scene's unit system) of a scene's givens that have one.
     values: HashMap<Symbol, Expr>,
+    /// The unit system of the values, which a number written with a unit in a claim is
+    /// brought into: SI without a scene.
+    unit_system: UnitSystem,
     /// How close a claim written in numbers must come to the exact value, relative to it.
     relative_tolerance: f64,
     /// Where the meanings come from, to derive them again with a slip (none in a context
@@ -262,6 +266,7 @@ impl Context {
         let mut c = Context::empty(&format!("the scene {title}"), dimensions);
         c.free_symbols = false;
         c.domains = scene.domains();
+        c.unit_system = scene.unit_system;
         c.values = scene
             .givens
             .iter()
@@ -434,6 +439,7 @@ impl Context {
             free_symbols: true,
             domains: Domains::chapter_defaults(),
             values: HashMap::new(),
+            unit_system: UnitSystem::Si,
             relative_tolerance: DEFAULT_RELATIVE_TOLERANCE,
             source: None,
             slipped: Arc::new(std::array::from_fn(|_| OnceLock::new())),
@@ -488,9 +494,9 @@ impl Context {
     }
 
     /// `value` as a quantity of `dimension`: where a number written with its unit in the
-    /// scene (`at (150 mm, 0, 0)`) is a plain SI number in it (3/20), the expression's
+    /// scene (`at (150 mm, 0, 0)`) is a plain number in the scene's units (3/20), the expression's
     /// dimension is not the quantity's, and the difference is made up by unit markers of
-    /// factor one (`[kg]`, `[m]`, `[s]`, gone when the verdict takes the sides in SI), so that
+    /// factor one (`[kg]`, `[m]`, `[s]`, gone when the verdict takes the sides in the scene's units), so that
     /// a claim's terms are judged as the quantities they name.
     fn in_dimension(&self, value: Expr, dimension: Option<Dimension>) -> Expr {
         let (Some(wanted), Ok(has)) = (dimension, self.dimension_of(&value)) else {
@@ -690,7 +696,13 @@ impl Context {
         self.relative_tolerance
     }
 
-    /// The exact value in SI of a given the scene gives one (`beta = 60 deg` is π/3).
+    /// The unit system of the values: a claim's numbers with units are brought into it.
+    pub fn unit_system(&self) -> UnitSystem {
+        self.unit_system
+    }
+
+    /// The exact value, in the scene's unit system, of a given the scene gives one
+    /// (`beta = 60 deg` is π/3).
     pub fn value(&self, s: Symbol) -> Option<Expr> {
         self.values.get(&s).cloned()
     }

@@ -96,13 +96,9 @@ fn figures(n: &Numbers) -> usize {
     (1.0 - n.tolerance.log10()).ceil().clamp(4.0, 16.0) as usize
 }
 
-/// A number with the SI unit of its component.
+/// A number with the unit of its component (in the scene's unit system).
 fn number(x: f64, digits: usize, n: &Numbers) -> String {
-    let unit = n
-        .dimension
-        .filter(|d| *d != crate::scene::units::Dimension::NONE)
-        .map(|d| format!(" {}", d.si_unit()))
-        .unwrap_or_default();
+    let unit = n.unit.as_ref().map(|u| format!(" {u}")).unwrap_or_default();
     format!("{}{unit}", significant_figures(x, digits))
 }
 
@@ -498,7 +494,7 @@ pub fn json(report: &Report, domains: &Domains) -> Json {
                 "claimed": n.claimed,
                 "relative": n.relative.is_finite().then_some(n.relative),
                 "tolerance": n.tolerance,
-                "unit": n.dimension.map(|d| d.si_unit()),
+                "unit": n.unit.as_ref().map(ToString::to_string),
                 "sentence": numbers_sentence(n),
             })),
             "diagnosis": c.diagnosis.as_ref().map(|d| diagnosis_json(d, c.axis, domains)),

@@ -24,8 +24,9 @@ use crate::mechanics::slip::Slip;
 use crate::parse::claim::{Claim, ClaimSide};
 use crate::parse::parse_claim_with_units;
 use crate::parse::Diagnostic;
+use crate::scene::named_unit::NamedUnit;
 use crate::scene::units::{dimension_with, Dimension};
-use crate::scene::units_in_math::in_si;
+use crate::scene::units_in_math::in_system;
 
 /// What a check concludes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -85,8 +86,9 @@ pub struct Numbers {
     /// claimed one is not).
     pub relative: f64,
     pub tolerance: f64,
-    /// The component's dimension, for its SI unit (none when it cannot be told).
-    pub dimension: Option<Dimension>,
+    /// The unit of the numbers: the scene's unit system's for the component's dimension
+    /// (none when the dimension cannot be told or is a pure number).
+    pub unit: Option<NamedUnit>,
 }
 
 /// The check of one claim.
@@ -230,7 +232,7 @@ fn sides<'c>(context: &Context, claim: &'c Claim) -> (&'c ClaimSide, &'c ClaimSi
     }
 }
 
-/// One component's two sides as they are compared: in SI, and at the givens' values when
+/// One component's two sides as they are compared: in the scene's units, and at the givens' values when
 /// the claim is written with them (then in numbers when nothing else is left).
 struct Compared {
     axis: Option<Axis>,
@@ -258,7 +260,8 @@ fn compared(
         .map_err(algebra_error)?
         .into_iter()
         .map(|(axis, c, s)| {
-            let (c, s) = (in_si(&c).unwrap_or(c), in_si(&s).unwrap_or(s));
+            let in_units = |e: Expr| in_system(&e, context.unit_system()).unwrap_or(e);
+            let (c, s) = (in_units(c), in_units(s));
             if !evaluated_givens(context, &c, &s) {
                 return Compared {
                     axis,
@@ -269,10 +272,13 @@ fn compared(
                     numbers: None,
                 };
             }
-            let dimension = dimension_with(&c, &|s| context.dimension(s)).ok();
+            let unit = dimension_with(&c, &|s| context.dimension(s))
+                .ok()
+                .filter(|d| *d != Dimension::NONE)
+                .map(|d| context.unit_system().unit(d, false));
             let (values_c, values_s) = (in_values(context, &c), in_values(context, &s));
             let numbers = in_numbers(&values_c, &values_s)
-                .map(|values| Numbers::new(values, context.relative_tolerance(), dimension));
+                .map(|values| Numbers::new(values, context.relative_tolerance(), unit));
             Compared {
                 axis,
                 correct: values_c,
@@ -375,7 +381,7 @@ impl Numbers {
     fn new(
         (correct, claimed, scale): (f64, f64, f64),
         tolerance: f64,
-        dimension: Option<Dimension>,
+        unit: Option<NamedUnit>,
     ) -> Numbers {
         let off = (claimed - correct).abs();
         let relative = if off <= ROUND_OFF * scale.max(claimed.abs()) {
@@ -388,7 +394,7 @@ impl Numbers {
             claimed,
             relative,
             tolerance,
-            dimension,
+            unit,
         }
     }
 
@@ -437,15 +443,15 @@ fn evaluated_givens(context: &Context, correct: &Expr, claimed: &Expr) -> bool {
         .any(|s| context.value(s).is_some() && !claimed.contains(s))
 }
 
-/// `e` with every given that has a value replaced by it (exact, in SI).
+/// `e` with every given that has a value replaced by it (exact, in the scene's units).
 fn in_values(context: &Context, e: &Expr) -> Expr {
     e.subs(&|s| context.value(s)).unwrap_or_else(|_| e.clone())
 }
 
 /// Whether the dimension check passes over the odd term at `span`, because the claim is
-/// written in SI numbers in a scene whose givens have values: the term is a plain number
+/// written in plain numbers (the scene's units) in a scene whose givens have values: the term is a plain number
 /// (`A_y = 196.2`, not a term without a unit), or the claim holds a decimal number and no
-/// unit, and the number may stand for a quantity in SI (`0.3 B_y` with 0.3 the 300 mm arm).
+/// unit, and the number may stand for a quantity in the scene's units (`0.3 B_y` with 0.3 the 300 mm arm).
 /// Such a claim is decided by its values.
 fn written_in_si_numbers(
     context: &Context,

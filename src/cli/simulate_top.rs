@@ -19,6 +19,7 @@ use kinetics::numeric::rigid_body::heavy_top::HeavyTop;
 use kinetics::numeric::rigid_body::nutation_limits::{nutation_limits, NutationLimits};
 use kinetics::numeric::rigid_body::sample_sink::Sample;
 use kinetics::numeric::rigid_body::simulate::Sampling;
+use kinetics::scene::units::Dimension;
 use kinetics::scene::Scene;
 
 pub fn run(
@@ -73,10 +74,13 @@ pub fn run(
     if let Some(plot) = plot {
         plot.draw().map_err(CliError::Plot)?;
     }
-    // The angles in full, to set beside the samples; the constants in four figures.
+    // The angles in full, to set beside the samples; the constants in four figures, in the
+    // scene's unit system.
+    let energy = scene.unit_system.unit(Dimension::MOMENT, true);
+    let momentum = scene.unit_system.unit(Dimension::new(1, 2, -1), false);
     eprintln!(
         "nutation between theta = {:.10} and {:.10} deg (the roots of the energy cubic: \
-         E = {} J, p_phi = {} kg·m²/s, omega_z = {} rad/s)",
+         E = {} {energy}, p_phi = {} {momentum}, omega_z = {} rad/s)",
         limits.theta_min.to_degrees(),
         limits.theta_max.to_degrees(),
         four_significant_figures(limits.energy),

@@ -5,7 +5,7 @@
 use super::budget::Input;
 use super::error::CliError;
 use kinetics::scene::unit_system::UnitSystem;
-use kinetics::scene::{analyse, parse_scene, Analysis, Scene};
+use kinetics::scene::{analyse, parse_scene_in, Analysis, Scene};
 use kinetics::solution::numbers::{with_digits, DEFAULT_DIGITS};
 use kinetics::solution::{render, render_numbers, Format};
 
@@ -92,10 +92,7 @@ fn with_analysis<T>(
 ) -> Result<T, CliError> {
     let (name, text) = super::input::read_file(path)?;
     Input::scene(&name, &text).within(|| {
-        let mut scene = parse_scene(&name, &text)?;
-        if let Some(units) = units {
-            scene.unit_system = units.into();
-        }
+        let scene = parse_scene_in(&name, &text, units.map(Into::into))?;
         let analysis = analyse(&scene)?;
         kinetics::solution::numbers::check_numeric_requests(&scene, &analysis)?;
         work(&scene, &analysis)

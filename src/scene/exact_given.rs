@@ -1,7 +1,7 @@
 //! A given's value as an exact expression, for the algebra: the number as written is an
-//! exact decimal (`0.1` is 1/10), and each unit's factor to SI is exact too (the table in
-//! `units.rs`): the degree is π/180, the revolution per minute π/30, `ft` 3048/10000, `mm`
-//! 1/1000. So `given theta = 90 deg` is π/2, and `sin θ` there is 1. A given defined by
+//! exact decimal (`0.1` is 1/10), and each unit's factor into the scene's unit system is
+//! exact too (`unit_system.rs`): the degree is π/180, the revolution per minute π/30, `mm`
+//! 1/1000 in SI, `in` 1/12 in U.S. customary units. So `given theta = 90 deg` is π/2, and `sin θ` there is 1. A given defined by
 //! earlier givens (`given psidot = v/r_w`) is its definition with their exact values.
 
 use super::model::Scene;
@@ -20,7 +20,7 @@ impl Scene {
             Some(magnitude) => -&Q::parse_decimal(magnitude)?,
             None => Q::parse_decimal(&written.number)?,
         };
-        let (factor, pi_power) = written.unit.exact_factor()?;
+        let (factor, pi_power) = self.unit_system.exact_of_one(&written.unit)?;
         Some(Expr::num(&number * &factor) * Expr::pi().powi(pi_power))
     }
 }

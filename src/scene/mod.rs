@@ -17,5 +17,5 @@ pub(crate) mod units_in_math;
 
 pub use analysis::{analyse, Analysis, Value};
 pub use model::Scene;
-pub use parse::{parse_scene, parse_scene_to_simulate};
+pub use parse::{parse_scene, parse_scene_in, parse_scene_to_simulate};
 pub use quantity_dimension::derived_dimension;

@@ -124,12 +124,12 @@ impl std::fmt::Display for Written {
     }
 }
 
-/// A given quantity: symbolic, or with a value converted to SI.
+/// A given quantity: symbolic, or with a value converted to the scene's unit system.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Given {
     pub symbol: Symbol,
     pub dimension: Dimension,
-    /// The value in SI units, if the scene gives one.
+    /// The value in the scene's unit system (`unit_system.rs`), if the scene gives one.
     pub value: Option<f64>,
     /// The value as written (`20 kg`), for the worked solution.
     pub written: Option<Written>,
@@ -142,7 +142,7 @@ pub struct Given {
     pub span: Span,
 }
 
-/// A given defined by earlier givens: the expression in their names (in SI), and its exact
+/// A given defined by earlier givens: the expression in their names (in the scene's units), and its exact
 /// value when each of them has one (their exact values put in when it was read, so a chain of
 /// definitions is worked out once, not again at each use).
 #[derive(Debug, Clone, PartialEq)]
@@ -420,8 +420,10 @@ pub struct Scene {
     /// The unit each unknown was declared in, where one was written (`unknown C_x : lb`):
     /// its result's number is shown in it.
     pub unknown_units: Vec<(Symbol, NamedUnit)>,
-    /// The unit system the page shows values in: the givens' (`unit_system.rs`), unless
-    /// `--units` chose.
+    /// The unit system every value is in, and the page shows: the givens'
+    /// (`unit_system.rs`), unless `--units` chose it when the scene was read
+    /// ([`parse_scene_in`](super::parse_scene_in)). Set by reading; changing it after would
+    /// leave the values in the other system.
     pub unit_system: UnitSystem,
     pub requests: Vec<Request>,
     /// Where `find balance ...` puts the correction masses.
@@ -442,7 +444,7 @@ impl Scene {
             .or_else(|| self.unknowns.iter().find(|u| u.0 == s).map(|u| u.1))
     }
 
-    /// The SI value of a given, if it has one.
+    /// The value of a given in the scene's unit system, if it has one.
     pub fn value(&self, s: Symbol) -> Option<f64> {
         self.givens
             .iter()
@@ -450,7 +452,7 @@ impl Scene {
             .and_then(|g| g.value)
     }
 
-    /// The value of a given as the exact rational its SI value reads as in its shortest
+    /// The value of a given as the exact rational its value reads as in its shortest
     /// decimal form (`1e200`, `0.1`), for deciding exactly what the values make of a result.
     pub fn exact_value(&self, s: Symbol) -> Option<Q> {
         self.value(s).and_then(exact_decimal)

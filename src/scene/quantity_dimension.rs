@@ -1,5 +1,5 @@
 //! The dimension of each quantity a scene can ask for, known before its value: a number
-//! written with a unit inside the scene (`at (150 mm, 0, 0)`) is a plain number in SI in
+//! written with a unit inside the scene (`at (150 mm, 0, 0)`) is a plain number in the scene's units in
 //! the results (3/20), so a result's unit is not always readable from its expression
 //! (`5/12 m r² w²` is a force when the 5/12 came from 1/(8 · 150 mm)); and a zero result
 //! keeps its unit.
@@ -45,7 +45,7 @@ impl Quantity {
 /// velocity), `alpha_x` (angular acceleration), `vbar_x`, `v_Ax` (velocity), `abar_x`, `a_Ax`
 /// (acceleration), `rbar_x`, `l` (length), `m_body`, `m_1` (mass), `T`, `T_rot` (energy),
 /// `S_y`, `P_1`, `Q_1` (first moments, kg·m), `e_1` (a unit axis). It is what the relation's
-/// right-hand side is, whatever plain SI numbers (`150 mm` is 3/20) it holds. A declared
+/// right-hand side is, whatever plain numbers in the scene's units (`150 mm` is 3/20) it holds. A declared
 /// symbol's dimension is declared, and is looked up first by the caller.
 pub fn derived_dimension(name: &str) -> Option<Dimension> {
     let stem = name.split('_').next().unwrap_or(name);

@@ -13,6 +13,7 @@
 use super::analysis::centroidal_body;
 use super::model::{Scene, Span};
 use super::parse::TIME;
+use super::units::Dimension;
 use crate::algebra::{AlgebraError, Expr, Symbol, Vector};
 use crate::mechanics::composite_body::MassProperties;
 use crate::numeric::rigid_body::inertia::BodyInertia;
@@ -111,14 +112,14 @@ fn initial_magnitudes(
             body.kinetic_energy(omega),
             2.0 * w + i + inertia.kinetic_energy(&unit_omega).log10(),
             2.0 * w >= i,
-            "J",
+            scene.unit_system.unit(Dimension::MOMENT, true),
         ),
         (
             ANGULAR_MOMENTUM,
             body.angular_momentum_magnitude(omega),
             w + i + inertia.angular_momentum_magnitude(&unit_omega).log10(),
             w >= i,
-            "kg·m²/s",
+            scene.unit_system.unit(Dimension::new(1, 2, -1), false),
         ),
     ];
     for (quantity, value, exponent, omega_dominates, unit) in checks {

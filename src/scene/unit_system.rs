@@ -14,11 +14,16 @@
 //! impulse     N·s         lb·s
 //! ```
 //!
-//! (angles and rates are rad, rad/s, rad/s² in both). The values are computed in SI and
-//! converted by the unit's exact factor.
+//! (angles and rates are rad, rad/s, rad/s² in both). The values are computed in the
+//! system itself: every number a scene writes with a unit is brought to the system's unit of
+//! its dimension by the exact ratio of the two ([`UnitSystem::exact_of_one`]: `6 in` is 1/2
+//! in U.S. customary units, 381/2500 in SI), so that a step shows `1/2` (feet) where the
+//! user wrote inches, never metres. The table's units are coherent in either system (1 lb
+//! accelerates 1 slug at 1 ft/s²), so the equations of motion hold as written in both.
 
 use super::named_unit::NamedUnit;
 use super::units::Dimension;
+use crate::algebra::Q;
 
 /// SI or U.S. customary.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -74,6 +79,25 @@ impl UnitSystem {
         }
     }
 
+    /// One `unit` in this system's unit of its dimension, exactly: a rational and a power of
+    /// π (`in`: 1/12 in U.S. customary units, 127/5000 in SI; `rpm`: π/30 in both). None past
+    /// the bounds of exact numbers.
+    pub fn exact_of_one(self, unit: &NamedUnit) -> Option<(Q, i64)> {
+        let (q, pi) = unit.exact_factor()?;
+        let (base_q, base_pi) = self.unit(unit.unit().dimension, false).exact_factor()?;
+        Some((q.checked_div(&base_q)?, pi - base_pi))
+    }
+
+    /// [`exact_of_one`](Self::exact_of_one) as the nearest double: the factor that brings a
+    /// number written in `unit` into this system, and divides a value of the system to show it
+    /// in `unit`.
+    pub fn of_one(self, unit: &NamedUnit) -> f64 {
+        match self.exact_of_one(unit) {
+            Some((q, pi)) => q.to_f64() * std::f64::consts::PI.powi(pi as i32),
+            None => unit.unit().to_si / self.unit(unit.unit().dimension, false).unit().to_si,
+        }
+    }
+
     /// The unit a value of dimension `d` is shown in; `energy` when a moment's dimension is
     /// work (joules; foot-pounds).
     pub fn unit(self, d: Dimension, energy: bool) -> NamedUnit {
@@ -103,6 +127,23 @@ mod tests {
 
     fn read(text: &str) -> NamedUnit {
         NamedUnit::read(text).unwrap()
+    }
+
+    /// A number written in a unit comes into each system by the exact ratio of the units.
+    #[test]
+    fn one_unit_in_each_system() {
+        let exact = |system: UnitSystem, unit: &str| system.exact_of_one(&read(unit)).unwrap();
+        assert_eq!(exact(UnitSystem::Us, "in"), (Q::new(1, 12).unwrap(), 0));
+        assert_eq!(exact(UnitSystem::Us, "mi/h"), (Q::new(22, 15).unwrap(), 0));
+        assert_eq!(exact(UnitSystem::Us, "oz"), (Q::new(1, 16).unwrap(), 0));
+        assert_eq!(exact(UnitSystem::Us, "lb*s^2/ft"), (Q::ONE, 0));
+        assert_eq!(exact(UnitSystem::Us, "rpm"), (Q::new(1, 30).unwrap(), 1));
+        assert_eq!(exact(UnitSystem::Si, "in"), (Q::new(127, 5000).unwrap(), 0));
+        assert_eq!(exact(UnitSystem::Si, "km/h"), (Q::new(5, 18).unwrap(), 0));
+        // 1 kg in slugs: 0.3048 / 4.4482216152605.
+        let kg = UnitSystem::Us.of_one(&read("kg"));
+        assert!((kg - 0.3048 / 4.448_221_615_260_5).abs() < 1e-16);
+        assert_eq!(UnitSystem::Us.of_one(&read("ft")), 1.0);
     }
 
     #[test]

@@ -3,10 +3,13 @@
 //! (`parse/units_after_numbers.rs`) that the scene does not declare is that unit: while the
 //! expression's dimension is checked it is a marker symbol, `[mm]`, in the unit's dimension
 //! (no name a scene can write has brackets); then each marker is replaced by the unit's
-//! exact factor to SI (`units.rs`: `mm` 1/1000, `rpm` π/30, `deg` π/180), so that
-//! `300 mm` is 3/10 exactly, the same as a given `0.3 m`.
+//! exact factor into the scene's unit system (`unit_system.rs`: in SI `mm` 1/1000, in U.S.
+//! customary units `in` 1/12; `rpm` π/30 and `deg` π/180 in both), so that `300 mm` is 3/10
+//! exactly, the same as a given `0.3 m`.
 
-use super::units::{exact_factor, unit_named, Dimension};
+use super::named_unit::NamedUnit;
+use super::unit_system::UnitSystem;
+use super::units::{unit_named, Dimension};
 use crate::algebra::{AlgebraError, Expr, Symbol};
 
 /// The marker of the unit `name` (none when it is not a unit).
@@ -24,12 +27,11 @@ pub fn marker_dimension(s: Symbol) -> Option<Dimension> {
     Some(unit_named(unit_of(s)?)?.dimension)
 }
 
-/// `e` with each marker replaced by its unit's exact factor to SI.
-pub fn in_si(e: &Expr) -> Result<Expr, AlgebraError> {
+/// `e` with each marker replaced by its unit's exact factor into `system`.
+pub fn in_system(e: &Expr, system: UnitSystem) -> Result<Expr, AlgebraError> {
     e.subs(&|s| {
-        let factor = exact_factor(unit_of(s)?)?;
-        let rational = Expr::rational(factor.numerator, factor.denominator);
-        Some(rational * Expr::pi().powi(i64::from(factor.pi_power)))
+        let (q, pi_power) = system.exact_of_one(&NamedUnit::named(unit_of(s)?))?;
+        Some(Expr::num(q) * Expr::pi().powi(pi_power))
     })
 }
 
@@ -46,7 +48,12 @@ mod tests {
         assert_eq!(marker_dimension(s), Some(Dimension::LENGTH));
         assert_eq!(marker_dimension(Symbol::new("mm")), None);
         let e = Expr::int(300) * mm + Expr::int(30) * deg;
-        let si = in_si(&e).unwrap();
+        let si = in_system(&e, UnitSystem::Si).unwrap();
         assert_eq!(si, Expr::rational(3, 10) + Expr::pi() / Expr::int(6));
+        let inches = Expr::int(6) * marker("in").unwrap();
+        assert_eq!(
+            in_system(&inches, UnitSystem::Us).unwrap(),
+            Expr::rational(1, 2)
+        );
     }
 }

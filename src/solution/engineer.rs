@@ -82,7 +82,7 @@ pub(super) fn intermediate(
     dims: &Dimensions,
 ) -> Vec<StepValues> {
     // A derived name's unit is the chapter's (`I_xy`: kg·m²), a declared one's its own:
-    // the right-hand side may hold plain SI numbers (`150 mm` is 3/20) and tell nothing.
+    // the right-hand side may hold plain numbers in the scene's units (`150 mm` is 3/20) and tell nothing.
     let dimension_of = |lhs: &Expr, rhs: &Expr| {
         let symbol = lhs.as_symbol()?;
         let declared = dims.get(&symbol).copied();
@@ -113,8 +113,8 @@ pub(super) fn intermediate(
                 let unit = declared.or_else(|| {
                     dimension_of(&r.lhs, &rhs).map(|d| scene.unit_system.unit(d, energy))
                 });
-                let si = super::evaluation::value(scene, &rhs)?;
-                let value = si / unit.as_ref().map_or(1.0, |u| u.unit().to_si);
+                let in_system = super::evaluation::value(scene, &rhs)?;
+                let value = in_system / unit.as_ref().map_or(1.0, |u| scene.unit_system.of_one(u));
                 Some(Number {
                     name: r.lhs.clone(),
                     axis: r.axis,

@@ -26,7 +26,7 @@ use crate::scene::Scene;
 pub(super) fn tensor<'a>(scene: &Scene, name: Name, m: &'a Matrix) -> Line<'a> {
     let unit = scene.unit_system.unit(Dimension::INERTIA, false);
     let value = m.transpose().iter().map(|e| value(scene, e)).collect();
-    let value = in_unit(value, Some(&unit));
+    let value = in_unit(scene, value, Some(&unit));
     let numeric = m.iter().all(|e| e.as_num().is_some());
     Line {
         name,
@@ -51,7 +51,7 @@ pub(super) fn frame<'a>(scene: &Scene, name: Name, frame: &'a PrincipalFrame) ->
         .enumerate()
         .map(|(k, m)| {
             let unit = scene.unit_system.unit(Dimension::INERTIA, false);
-            let value = in_unit(value(scene, m).map(|x| vec![x]), Some(&unit));
+            let value = in_unit(scene, value(scene, m).map(|x| vec![x]), Some(&unit));
             Line {
                 name: named("I", k),
                 show: shown(value.is_some(), number(m)),

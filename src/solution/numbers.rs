@@ -1,4 +1,4 @@
-//! Values of results: evaluation with the scene's givens (in SI) and the unit of the result.
+//! Values of results: evaluation with the scene's givens (in its unit system) and the unit of the result.
 
 pub use super::evaluation::value;
 use crate::algebra::{vector, AlgebraError, Expr, Symbol, Q};
@@ -105,8 +105,11 @@ pub fn result_unit(request: &Request, dims: &Dimensions, system: UnitSystem) -> 
 /// `e`, every given of which has a value, is a finite number in the unit asked for; else
 /// the error at the request says why.
 fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Result<(), Diagnostic> {
-    let to_si = request.unit.as_ref().map_or(1.0, |u| u.unit().to_si);
-    let v = value(scene, e).map(|v| v / to_si);
+    let one = request
+        .unit
+        .as_ref()
+        .map_or(1.0, |u| scene.unit_system.of_one(u));
+    let v = value(scene, e).map(|v| v / one);
     // A zero that is not zero exactly has underflowed: it is not the answer either.
     let underflow = v == Some(0.0) && exact_value(scene, e).is_ok_and(|q| !q.is_zero());
     if v.is_some_and(f64::is_finite) && !underflow {
@@ -124,10 +127,10 @@ fn finite(scene: &Scene, request: &Request, e: &Expr, dims: &Dimensions) -> Resu
         Ok(q) => {
             let unit = match &request.unit {
                 Some(unit) => unit.clone(),
-                // The value below is in SI.
-                None => result_unit(request, dims, UnitSystem::Si).unwrap_or_default(),
+                // The value below is in the scene's unit system.
+                None => result_unit(request, dims, scene.unit_system).unwrap_or_default(),
             };
-            let q = &q * &exact_decimal(1.0 / to_si).unwrap_or(Q::ONE);
+            let q = &q * &exact_decimal(1.0 / one).unwrap_or(Q::ONE);
             let name = &request.name;
             let message = match q.to_f64() {
                 0.0 => format!("{name} = {} {unit} is below the range of numbers (magnitudes down to about 2.2e-308)", scientific(&q)),

@@ -133,7 +133,7 @@ impl<'a> Line<'a> {
         e: Cow<'a, Expr>,
         unit: Option<NamedUnit>,
     ) -> Self {
-        let value = in_unit(value(scene, &e).map(|x| vec![x]), unit.as_ref());
+        let value = in_unit(scene, value(scene, &e).map(|x| vec![x]), unit.as_ref());
         let integer = e.as_num().is_some_and(|q| q.is_integer());
         Line {
             name,
@@ -274,7 +274,11 @@ fn computed<'a>(
             Result::line(line)
         }
         Value::Vector(vec) => {
-            let value = in_unit(vec.iter().map(|c| value(scene, c)).collect(), unit.as_ref());
+            let value = in_unit(
+                scene,
+                vec.iter().map(|c| value(scene, c)).collect(),
+                unit.as_ref(),
+            );
             // A zero vector's value says all its form does.
             let zero = vec.iter().all(Expr::is_zero);
             Result::line(Line {
@@ -297,10 +301,15 @@ fn computed<'a>(
     vec![in_requested_unit(request, result)]
 }
 
-/// Values in SI given in `unit` (divided by its factor to SI; as they are without one).
-pub(super) fn in_unit(values: Option<Vec<f64>>, unit: Option<&NamedUnit>) -> Option<Vec<f64>> {
-    let to_si = unit.map_or(1.0, |u| u.unit().to_si);
-    values.map(|v| v.into_iter().map(|x| x / to_si).collect())
+/// Values in the scene's unit system given in `unit` (divided by one `unit` in the system;
+/// as they are without one).
+pub(super) fn in_unit(
+    scene: &Scene,
+    values: Option<Vec<f64>>,
+    unit: Option<&NamedUnit>,
+) -> Option<Vec<f64>> {
+    let one = unit.map_or(1.0, |u| scene.unit_system.of_one(u));
+    values.map(|v| v.into_iter().map(|x| x / one).collect())
 }
 
 /// A value asked for `in UNIT` (else an unknown's declared unit) is converted from the unit

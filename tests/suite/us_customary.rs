@@ -3,9 +3,10 @@
 //! slug·ft², lb·ft·s) without `find … in`, each against a hand computation in those units;
 //! the system chosen on the command line (`--units`) wins over the givens'.
 
-use crate::common::examples::analysed_example;
+use crate::common::examples::{analysed_example, scalar_value};
+use kinetics::check::verdict::Verdict;
 use kinetics::scene::unit_system::UnitSystem;
-use kinetics::scene::{Analysis, Scene};
+use kinetics::scene::{parse_scene_in, Analysis, Scene};
 use kinetics::solution::{render_numbers, Format};
 use serde_json::Value as Json;
 
@@ -76,13 +77,14 @@ fn a_shaft_in_pounds_and_feet_is_worked_in_pounds_and_feet() {
     assert!((b_y - 153.25).abs() < 0.01);
 }
 
-/// `--units si` (the scene's system set before the page is written) shows the same shaft in
-/// newtons and kg·m²: the pound is 4.4482216152605 N, the slug·ft² 1.3558179483314 kg·m².
+/// `--units si` (the scene read in SI, `parse_scene_in`) shows the same shaft in newtons and
+/// kg·m²: the pound is 4.4482216152605 N, the slug·ft² 1.3558179483314 kg·m².
 #[test]
 fn the_system_chosen_wins_over_the_givens() {
-    let (mut scene, analysis) = analysed_example("shaft_in_us_units", "");
+    let (scene, analysis) = analysed_example("shaft_in_us_units", "");
     let us = numbers(&scene, &analysis);
-    scene.unit_system = UnitSystem::Si;
+    let (scene, analysis) = in_system(&scene.source, UnitSystem::Si);
+    assert_eq!(scene.unit_system, UnitSystem::Si);
     let si = numbers(&scene, &analysis);
     let (unit, newtons) = first(&si, "B_y");
     assert_eq!(unit, "N");
@@ -91,4 +93,86 @@ fn the_system_chosen_wins_over_the_givens() {
     assert_eq!(unit, "kg·m²");
     let slug_ft2 = 4.4482216152605 / 0.3048 * 0.3048 * 0.3048;
     assert!((inertia - first(&us, "I_x").1 * slug_ft2).abs() < 1e-12);
+}
+
+/// `text` read in `system` and analysed.
+fn in_system(text: &str, system: UnitSystem) -> (Scene, Analysis) {
+    let scene = parse_scene_in("shaft.scene", text, Some(system)).unwrap();
+    let analysis = kinetics::analyse(&scene).unwrap();
+    (scene, analysis)
+}
+
+/// The shaft with its lengths written inside the mathematics (`at (0.625 ft, 2.5 in, 0)`).
+const INLINE: &str = "given W = 3 lb\ngiven w = 1200 rpm\ngiven g = 32.2 ft/s^2\n\
+    unknown A_y, A_z, B_y, B_z\n\
+    body rod(5 in) mass W/g at (0.625 ft, 2.5 in, 0) along y\n\
+    body rod(5 in) mass W/g at (1.875 ft, -2.5 in, 0) along y\n\
+    fixed point\nomega = w*i\n\
+    force A = A_y*j + A_z*k at (0, 0, 0)\nforce B = B_y*j + B_z*k at (2.5 ft, 0, 0)\n\
+    find A_y, B_y\n";
+
+/// The relation `lhs = rhs` of the step whose title holds `title`, as text.
+fn relation(analysis: &Analysis, title: &str, lhs: &str) -> String {
+    let step = analysis
+        .plan
+        .iter()
+        .find(|s| kinetics::print::markup::text(&s.title).contains(title))
+        .unwrap_or_else(|| panic!("a step {title}"));
+    let r = step
+        .relations
+        .iter()
+        .find(|r| r.lhs.to_string() == lhs)
+        .unwrap_or_else(|| panic!("{lhs} in {title}: {:?}", step.relations));
+    r.rhs.to_string()
+}
+
+/// Numbers written with units inside the mathematics are worked in the page's system: on a
+/// page in feet, 2.5 in is 5/24 and the rods' mass centre 5/4 ft along the shaft (it showed
+/// 381/1000, metres); the equation of moments has the arm 5/2 (ft). In SI the same scene
+/// shows metres (381/1000 = 1.25 × 0.3048), and B_y is the same force either way.
+#[test]
+fn numbers_with_units_in_the_mathematics_are_in_the_pages_units() {
+    let (scene, analysis) = in_system(INLINE, UnitSystem::Us);
+    assert_eq!(scene.unit_system, UnitSystem::Us);
+    assert_eq!(relation(&analysis, "mass centre", "rbar_x"), "5/4");
+    let moments = relation(&analysis, "equations of motion", "5/2*B_y");
+    assert!(moments.contains("W*w^2/"), "{moments}");
+    let us = scalar_value(&scene, &analysis, "B_y");
+    let (si_scene, si_analysis) = in_system(INLINE, UnitSystem::Si);
+    assert_eq!(relation(&si_analysis, "mass centre", "rbar_x"), "381/1000");
+    let si = scalar_value(&si_scene, &si_analysis, "B_y");
+    // By hand, in feet and slugs: B_y = W c w²/(4 g) with c = 5/12 ft.
+    let omega = 40.0 * std::f64::consts::PI;
+    let by_hand = 3.0 * (5.0 / 12.0) * omega * omega / (4.0 * 32.2);
+    assert!(
+        (us - by_hand).abs() < 1e-12 * by_hand,
+        "{us} against {by_hand}"
+    );
+    assert!((si - by_hand * 4.4482216152605).abs() < 1e-9 * si, "{si}");
+}
+
+/// A claim checked against a scene in U.S. customary units reads a plain number in the
+/// scene's units (pounds), a number with a unit in its unit, and reports in pounds.
+#[test]
+fn a_claim_on_a_us_scene_is_read_and_reported_in_pounds() {
+    let (scene, _) = analysed_example("shaft_in_us_units", "");
+    let context = kinetics::check::context::Context::scene(&scene);
+    let check = |claim: &str| kinetics::check::verdict::check(&context, "claim", claim).unwrap();
+    for claim in ["B_y = 153.3 lb", "B_y = 681.7 N", "B_y = 153.3"] {
+        let report = check(claim);
+        assert_eq!(report.verdict, Verdict::Holds, "{claim}: {report:?}");
+        let numbers = report.components[0].numbers.as_ref().unwrap();
+        assert_eq!(numbers.unit.as_ref().unwrap().to_string(), "lb");
+        assert!(
+            (numbers.correct - 153.25).abs() < 0.01,
+            "{}",
+            numbers.correct
+        );
+    }
+    let wrong = check("B_y = 681.7");
+    assert_eq!(
+        wrong.verdict,
+        Verdict::Differs,
+        "681.7 is newtons, not the page's pounds"
+    );
 }

@@ -1,6 +1,6 @@
 //! `find balance in planes z = a, z = b at radius r`: the planes across one shaft axis (the
 //! letter names it), apart from each other, and a positive radius; each refused at its text.
-//! Each length is read in its units and brought to SI (`z = 50 mm` is 1/20 m).
+//! Each length is read in its units and brought into the scene's unit system (`z = 50 mm` is 1/20 m).
 
 use super::super::model::BalancePlanes;
 use super::super::units::Dimension;

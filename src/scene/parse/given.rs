@@ -60,7 +60,7 @@ impl Reader<'_> {
                         None => NamedUnit::default(),
                     };
                     let unit = named.unit();
-                    value = Some(n * unit.to_si);
+                    value = Some(n * self.scene.unit_system.of_one(&named));
                     written = Some(Written {
                         number: number.as_str().to_string(),
                         unit: named,
@@ -139,7 +139,7 @@ impl Reader<'_> {
         Ok(())
     }
 
-    /// `given psidot = v/r_w`: the expression in SI and its dimension, from givens declared
+    /// `given psidot = v/r_w`: the expression in the scene's units and its dimension, from givens declared
     /// before it (an unknown or a name declared later is refused at the expression).
     fn definition(&self, p: &Pair<Rule>) -> Result<(Expr, Dimension), Diagnostic> {
         let e = self
@@ -162,7 +162,7 @@ impl Reader<'_> {
                 ));
         }
         let dimension = self.dimension(&e, span(p))?;
-        Ok((self.in_si(&e, span(p))?, dimension))
+        Ok((self.in_units(&e, span(p))?, dimension))
     }
 
     /// A value that is neither a number with its unit nor an expression (`2,5 kg`,

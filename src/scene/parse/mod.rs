@@ -35,7 +35,9 @@ struct SceneGrammar;
 
 /// Parses and checks a scene file.
 ///
-/// Values are kept in SI (`100 mm` is 0.1 m); an error says where it is and what to do.
+/// Values are kept in the scene's unit system (`unit_system.rs`): SI (`100 mm` is 0.1 m),
+/// or U.S. customary units (`6 in` is 0.5 ft) when the givens are written in them; an error
+/// says where it is and what to do.
 ///
 /// ```
 /// use kinetics::algebra::Symbol;
@@ -59,7 +61,17 @@ struct SceneGrammar;
 /// # Ok::<(), kinetics::Diagnostic>(())
 /// ```
 pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic> {
-    let scene = parse_scene_to_simulate(source_name, source)?;
+    parse_scene_in(source_name, source, None)
+}
+
+/// [`parse_scene`] in the unit system `units` (`kinetics solve --units us`), else the
+/// givens' ([`UnitSystem::of_units`]).
+pub fn parse_scene_in(
+    source_name: &str,
+    source: &str,
+    units: Option<UnitSystem>,
+) -> Result<Scene, Diagnostic> {
+    let scene = read_scene(source_name, source, units)?;
     if scene.requests.is_empty() {
         return Err(Diagnostic::at(
             source_name,
@@ -76,6 +88,14 @@ pub fn parse_scene(source_name: &str, source: &str) -> Result<Scene, Diagnostic>
 /// [`parse_scene`] for `kinetics simulate`, which asks for nothing but the motion: a scene
 /// without a `find` line is accepted (its body, ω and loads are what a simulation needs).
 pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene, Diagnostic> {
+    read_scene(source_name, source, None)
+}
+
+fn read_scene(
+    source_name: &str,
+    source: &str,
+    units: Option<UnitSystem>,
+) -> Result<Scene, Diagnostic> {
     before_grammar::check_before_grammar(source_name, source)?;
     // Error detail records the furthest place the grammar reached and what it expected there.
     pest::set_error_detail(true);
@@ -93,6 +113,12 @@ pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene,
             .unwrap_or_default();
         syntax_error(source_name, source, furthest, &expected)
     })?;
+    let statements: Vec<Pair<Rule>> = pairs
+        .next()
+        .map(Pair::into_inner)
+        .into_iter()
+        .flatten()
+        .collect();
     let mut reader = Reader {
         source_name,
         source,
@@ -121,7 +147,7 @@ pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene,
             constraints: vec![],
             unknowns: vec![],
             unknown_units: vec![],
-            unit_system: UnitSystem::Si,
+            unit_system: units.unwrap_or_else(|| units_of_givens(&statements)),
             requests: vec![],
             balance: None,
             places: Places::default(),
@@ -134,20 +160,27 @@ pub fn parse_scene_to_simulate(source_name: &str, source: &str) -> Result<Scene,
     }
     // `t` is the time, for loads that vary (`couple M0*sin(p*t)*i`), unless declared.
     reader.dims.insert(Symbol::new(TIME), Dimension::TIME);
-    let statements = pairs.next().map(Pair::into_inner).into_iter().flatten();
     for statement in statements {
         reader.statement(statement)?;
     }
     reader.euler_angles_complete()?;
     reader.resolve_requests()?;
     reader.impact_is_determined()?;
-    let scene = &mut reader.scene;
-    let written = scene.givens.iter().filter_map(|g| g.written.as_ref());
-    let units = written
-        .map(|w| &w.unit)
-        .chain(scene.unknown_units.iter().map(|(_, u)| u));
-    scene.unit_system = UnitSystem::of_units(units);
     Ok(reader.scene)
+}
+
+/// The unit system of the units the `given` and `unknown` statements write, read before any
+/// value is (a unit that does not read is left to the statement's own error).
+fn units_of_givens(statements: &[Pair<Rule>]) -> UnitSystem {
+    let declarations = statements
+        .iter()
+        .filter(|p| matches!(p.as_rule(), Rule::given | Rule::unknown));
+    let units: Vec<NamedUnit> = declarations
+        .flat_map(|p| p.clone().into_inner().flatten())
+        .filter(|p| p.as_rule() == Rule::unit)
+        .filter_map(|p| NamedUnit::read(p.as_str()).ok())
+        .collect();
+    UnitSystem::of_units(&units)
 }
 
 struct Reader<'a> {
@@ -462,20 +495,20 @@ impl Reader<'_> {
         Ok(())
     }
 
-    /// `lhs = rhs` of a constraint, in SI, its sides in the same kind of unit.
+    /// `lhs = rhs` of a constraint, in the scene's units, its sides in the same kind of unit.
     fn constraint_equation(&self, sides: &[Pair<Rule>]) -> Result<ConstraintKind, Diagnostic> {
         let lhs = self.math(&sides[0])?;
         let rhs = self.math(&sides[1])?;
         self.same_dimension(&lhs, &rhs, span(&sides[1]))?;
-        let lhs = self.in_si(&lhs, span(&sides[0]))?;
+        let lhs = self.in_units(&lhs, span(&sides[0]))?;
         Ok(ConstraintKind::Equation(
             lhs,
-            self.in_si(&rhs, span(&sides[1]))?,
+            self.in_units(&rhs, span(&sides[1]))?,
         ))
     }
 
     /// The mathematics as written, a unit after a number as its marker
-    /// (`units_in_math.rs`): for [`Reader::quantity`] to check and bring to SI.
+    /// (`units_in_math.rs`): for [`Reader::quantity`] to check and bring into the scene's units.
     fn math(&self, p: &Pair<Rule>) -> Result<Expr, Diagnostic> {
         let (start, _) = span(p);
         let unit = |name: &str| match self.dims.contains_key(&Symbol::new(name)) {
@@ -507,7 +540,7 @@ impl Reader<'_> {
                 .with_help(similar_name::undeclared_help(unknown.name(), declared)));
         }
         let e = self.vertical_in(e, span(p))?;
-        self.finite_with_values(&self.in_si(&e, span(p))?, span(p))?;
+        self.finite_with_values(&self.in_units(&e, span(p))?, span(p))?;
         Ok(e)
     }
 
@@ -605,7 +638,7 @@ impl Reader<'_> {
         }
         let mut si = Vec::with_capacity(3);
         for c in v.iter() {
-            si.push(self.in_si(c, span(p))?);
+            si.push(self.in_units(c, span(p))?);
         }
         Ok(Vector::from_iterator(si))
     }

@@ -65,7 +65,7 @@ impl Reader<'_> {
                 let first = *unit.get_or_insert(d);
                 self.expect_dimension(&e, first, span(&c))?;
             }
-            components.push(self.in_si(&e, span(&c))?);
+            components.push(self.in_units(&e, span(&c))?);
         }
         Ok(Vector::from_iterator(components))
     }

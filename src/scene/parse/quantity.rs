@@ -1,6 +1,6 @@
 //! Mathematics in its units: read as written (a unit after a number is its marker,
-//! `units_in_math.rs`; finite in SI with the givens' values), its dimension checked, then
-//! brought to SI exactly; and the help for a dimension error that a declared name which
+//! `units_in_math.rs`; finite with the givens' values), its dimension checked, then
+//! brought into the scene's unit system exactly (`unit_system.rs`); and the help for a dimension error that a declared name which
 //! is also a unit explains (`given m = 2 kg` makes `2 m` twice that mass, not two metres).
 
 use super::super::units::{unit_named, Dimension};
@@ -11,16 +11,16 @@ use crate::parse::Diagnostic;
 use pest::iterators::Pair;
 
 impl Reader<'_> {
-    /// The mathematics `p`, in the dimension `want`, in SI.
+    /// The mathematics `p`, in the dimension `want`, in the scene's unit system.
     pub(super) fn quantity(&self, p: &Pair<Rule>, want: Dimension) -> Result<Expr, Diagnostic> {
         let e = self.math(p)?;
         self.expect_dimension(&e, want, span(p))?;
-        self.in_si(&e, span(p))
+        self.in_units(&e, span(p))
     }
 
-    /// `e` with its units' exact factors to SI.
-    pub(super) fn in_si(&self, e: &Expr, at: (usize, usize)) -> Result<Expr, Diagnostic> {
-        units_in_math::in_si(e).map_err(|err| {
+    /// `e` with its units' exact factors into the scene's unit system.
+    pub(super) fn in_units(&self, e: &Expr, at: (usize, usize)) -> Result<Expr, Diagnostic> {
+        units_in_math::in_system(e, self.scene.unit_system).map_err(|err| {
             self.error(at, err.to_string())
                 .with_help("write the number in another unit")
         })

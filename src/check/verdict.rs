@@ -179,7 +179,7 @@ fn check_in_solution(
     if report
         .odd_term
         .as_ref()
-        .is_some_and(|odd| !written_in_si_numbers(context, &claim, text, wrote_unit, odd.span))
+        .is_some_and(|odd| !written_in_plain_numbers(context, &claim, text, wrote_unit, odd.span))
     {
         return Ok(report);
     }
@@ -453,7 +453,7 @@ fn in_values(context: &Context, e: &Expr) -> Expr {
 /// (`A_y = 196.2`, not a term without a unit), or the claim holds a decimal number and no
 /// unit, and the number may stand for a quantity in the scene's units (`0.3 B_y` with 0.3 the 300 mm arm).
 /// Such a claim is decided by its values.
-fn written_in_si_numbers(
+fn written_in_plain_numbers(
     context: &Context,
     claim: &Claim,
     text: &str,

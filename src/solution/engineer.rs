@@ -15,14 +15,15 @@
 use super::page::{Block, Heading, Page, Section};
 use super::result::Result;
 use super::shown_value::ShownValue;
-use crate::algebra::{Axis, Expr};
+use crate::algebra::{Axis, Expr, Symbol};
 use crate::mechanics::derivation::Step;
 use crate::print::{self, Notation};
 use crate::scene::derived_dimension;
 use crate::scene::named_unit::{NamedUnit, NO_UNIT};
 use crate::scene::units::dimension_of;
-use crate::scene::units::Dimensions;
+use crate::scene::units::{Dimension, Dimensions};
 use crate::scene::{Analysis, Scene};
+use std::collections::HashMap;
 
 /// The numbers of one step of the plan.
 pub(super) struct StepValues {
@@ -90,49 +91,79 @@ pub(super) fn intermediate(
             .or_else(|| derived_dimension(symbol.name()))
             .or_else(|| dimension_of(rhs, dims).ok().filter(|_| !rhs.is_zero()))
     };
-    let values = |step: &Step| -> Vec<Number> {
-        if step.relations.iter().any(|r| r.lhs.as_symbol().is_none()) {
-            return Vec::new();
-        }
-        // A name for a long radicand is no quantity; a value is computed from the whole
-        // expression the names stand for.
-        let named = &analysis.abbreviations;
-        step.relations
-            .iter()
-            .filter(|r| !r.lhs.as_symbol().is_some_and(|s| named.is_name(s)))
-            .filter_map(|r| {
-                let shown_name = print::render(&r.lhs, Notation::Text, r.axis);
-                let rhs = named.whole(&r.rhs);
-                // The kinetic energy is work: joules (foot-pounds), as in the results.
-                let energy = stem(&shown_name) == "T";
-                // An unknown's declared unit (`unknown theta : deg`), as in the results.
-                let declared = r.lhs.as_symbol().and_then(|s| {
-                    let (_, unit) = scene.unknown_units.iter().find(|(u, _)| *u == s)?;
-                    Some(unit.clone())
-                });
-                let unit = declared.or_else(|| {
-                    dimension_of(&r.lhs, &rhs).map(|d| scene.unit_system.unit(d, energy))
-                });
-                let in_system = super::evaluation::value(scene, &rhs)?;
-                let value = in_system / unit.as_ref().map_or(1.0, |u| scene.unit_system.of_one(u));
-                Some(Number {
-                    name: r.lhs.clone(),
-                    axis: r.axis,
-                    value,
-                    unit,
+    // With the givens, else with the unknowns of `solution` put in; with `needing_it`, only
+    // the values that need the solution.
+    let values =
+        |step: &Step, solution: Option<&HashMap<Symbol, Expr>>, needing_it: bool| -> Vec<Number> {
+            if step.relations.iter().any(|r| r.lhs.as_symbol().is_none()) {
+                return Vec::new();
+            }
+            // A name for a long radicand is no quantity; a value is computed from the whole
+            // expression the names stand for.
+            let named = &analysis.abbreviations;
+            step.relations
+                .iter()
+                .filter(|r| !r.lhs.as_symbol().is_some_and(|s| named.is_name(s)))
+                .filter_map(|r| {
+                    let shown_name = print::render(&r.lhs, Notation::Text, r.axis);
+                    let rhs = named.whole(&r.rhs);
+                    // The kinetic energy is work: joules (foot-pounds), as in the results.
+                    let energy = stem(&shown_name) == "T";
+                    // An unknown's declared unit (`unknown theta : deg`), as in the results.
+                    let declared = r.lhs.as_symbol().and_then(|s| {
+                        let (_, unit) = scene.unknown_units.iter().find(|(u, _)| *u == s)?;
+                        Some(unit.clone())
+                    });
+                    // A pure number has no unit (K_y as K_x).
+                    let unit = declared.or_else(|| {
+                        dimension_of(&r.lhs, &rhs)
+                            .filter(|d| *d != Dimension::NONE)
+                            .map(|d| scene.unit_system.unit(d, energy))
+                    });
+                    let in_system = match super::evaluation::value(scene, &rhs) {
+                        Some(_) if needing_it => return None,
+                        Some(v) => v,
+                        None => {
+                            let unknowns = solution?;
+                            let with_unknowns = rhs.subs(&|u| unknowns.get(&u).cloned()).ok()?;
+                            super::evaluation::value(scene, &with_unknowns)?
+                        }
+                    };
+                    let value =
+                        in_system / unit.as_ref().map_or(1.0, |u| scene.unit_system.of_one(u));
+                    Some(Number {
+                        name: r.lhs.clone(),
+                        axis: r.axis,
+                        value,
+                        unit,
+                    })
                 })
-            })
-            .collect()
-    };
-    analysis
-        .plan
-        .iter()
-        .map(|step| StepValues {
+                .collect()
+        };
+    // A value that holds an unknown is shown with it solved: in its place with one solution;
+    // with several, after the step under its title and `(solution k)`, once per solution.
+    let mut steps = Vec::new();
+    for step in &analysis.plan {
+        let [single] = analysis.solutions.as_slice() else {
+            steps.push(StepValues {
+                title: step.title.clone(),
+                values: values(step, None, false),
+            });
+            for (k, solution) in analysis.solutions.iter().enumerate() {
+                steps.push(StepValues {
+                    title: format!("{} (solution {})", step.title, k + 1),
+                    values: values(step, Some(solution), true),
+                });
+            }
+            continue;
+        };
+        steps.push(StepValues {
             title: step.title.clone(),
-            values: values(step),
-        })
-        .filter(|s| !s.values.is_empty())
-        .collect()
+            values: values(step, Some(single), false),
+        });
+    }
+    steps.retain(|s| !s.values.is_empty());
+    steps
 }
 
 /// A derived name without its subscript: `I` of `I_xy`, `Hdot` of `Hdot_z`.

@@ -172,3 +172,80 @@ fn digits_set_the_significant_figures() {
     assert_eq!(code, 2);
     assert!(err.contains("0 is not in 1..=17"), "{err}");
 }
+
+/// The values of `--numbers` in JSON: (step title, name, value) of every intermediate value.
+fn intermediate_values(example: &str) -> Vec<(String, String, f64)> {
+    let out = solve(&["solve", &scene(example), "--numbers", "--format", "json"]);
+    let page: Value = serde_json::from_str(&out).unwrap();
+    let mut all = Vec::new();
+    for step in page["intermediate"].as_array().unwrap() {
+        let title = step["step"].as_str().unwrap().to_string();
+        for v in step["values"].as_array().unwrap() {
+            let name = v["name"].as_str().unwrap().to_string();
+            all.push((title.clone(), name, v["value"].as_f64().unwrap()));
+        }
+    }
+    all
+}
+
+/// A value of a step that holds a solved unknown (θ of a top's steady tilt) is shown with
+/// the unknown put in (it was left off the page): K_y = sin θ, ω_z = ψ̇ + φ̇ cos θ and
+/// Ḣ_x = m g r sin θ (ΣM_x = Ḣ_x, the weight's moment about O), θ from the hand
+/// derivation in the scene: cos θ = 2 (r φ̇ ψ̇ − 2 g)/(3 r φ̇²).
+#[test]
+fn values_that_hold_a_solved_unknown_are_on_the_numbers_page() {
+    let (m, r, g, phidot, psidot) = (0.5f64, 0.04, 9.81, 2.65, 60.0 * std::f64::consts::PI);
+    let theta = (2.0 * (r * phidot * psidot - 2.0 * g) / (3.0 * r * phidot * phidot)).acos();
+    let all = intermediate_values("top_steady_tilt");
+    let value = |name: &str| {
+        let found = all.iter().find(|(_, n, _)| n == name);
+        found
+            .unwrap_or_else(|| panic!("{name} on the page: {all:?}"))
+            .2
+    };
+    let close = |got: f64, want: f64| {
+        assert!(
+            (got - want).abs() <= 1e-9 * want.abs(),
+            "{got} against {want}"
+        )
+    };
+    close(value("K_y"), theta.sin());
+    close(value("omega_z"), psidot + phidot * theta.cos());
+    close(value("Hdot_x"), m * g * r * theta.sin());
+}
+
+/// With two solutions (a top's slow and fast precession), each value that holds the
+/// unknown is shown once per solution under `(solution k)`: ω_y = φ̇ₖ sin θ with each φ̇ₖ
+/// of I' φ̇² cos θ − I ψ̇ φ̇ + m g r = 0 for the disk (I = m r²/2, I' = 5/4 m r² about O)
+/// after the factor sin θ.
+#[test]
+fn values_of_each_solution_under_its_number() {
+    let (m, r, g, theta, psidot) = (
+        0.5f64,
+        0.04,
+        9.81,
+        30f64.to_radians(),
+        60.0 * std::f64::consts::PI,
+    );
+    let (i, i_prime) = (m * r * r / 2.0, 1.25 * m * r * r);
+    // I ω_z φ̇ − I' φ̇² cos θ = m g r with ω_z = ψ̇ + φ̇ cos θ: (I − I') cos θ φ̇² + I ψ̇ φ̇ − m g r = 0.
+    let (a, b, c) = ((i - i_prime) * theta.cos(), i * psidot, -m * g * r);
+    let roots = [
+        (-b + (b * b - 4.0 * a * c).sqrt()) / (2.0 * a),
+        (-b - (b * b - 4.0 * a * c).sqrt()) / (2.0 * a),
+    ];
+    let all = intermediate_values("top_slow_and_fast_precession");
+    for k in [1, 2] {
+        let omega_y = all
+            .iter()
+            .find(|(t, n, _)| t.ends_with(&format!("(solution {k})")) && n == "omega_y")
+            .unwrap_or_else(|| panic!("omega_y of solution {k}: {all:?}"))
+            .2;
+        assert!(
+            roots
+                .iter()
+                .any(|p| (omega_y - p * theta.sin()).abs() <= 1e-9 * omega_y.abs()),
+            "omega_y = {omega_y} against the roots {roots:?}"
+        );
+    }
+}

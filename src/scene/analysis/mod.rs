@@ -86,6 +86,9 @@ pub struct Analysis {
     /// Names of the long radicands the plan is written with; a page shows the results
     /// with them too.
     pub abbreviations: Abbreviations,
+    /// Each solution of the scene's equations: its unknowns' values in the givens (empty
+    /// when the scene solves for none), for the values of the steps that hold unknowns.
+    pub solutions: Vec<HashMap<Symbol, Expr>>,
 }
 
 /// Lazily computed pieces; `plan` records the steps of each derivation as it is done.
@@ -168,6 +171,7 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
             .map(|(request, value)| (request, value.presented(&domains)))
             .collect(),
         abbreviations: Abbreviations::default(),
+        solutions: a.unknowns.clone().unwrap_or_default(),
     };
     Abbreviations::name_in(&mut analysis, &|s| scene.dimension(s).is_some());
     Ok(analysis)

@@ -27,7 +27,7 @@
 //! nothing is bounded (the library's own callers and tests).
 
 use super::error::AlgebraError;
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 
 /// Operations every input may spend, however short.
 pub const FLOOR: u64 = 5_000_000;
@@ -39,6 +39,57 @@ thread_local! {
     static SPENT: Cell<u64> = const { Cell::new(0) };
     /// The operations this thread may spend; `u64::MAX` outside a budget.
     static LIMIT: Cell<u64> = const { Cell::new(u64::MAX) };
+    /// What the budgeted work is doing, innermost last ([`doing`]).
+    static DOING: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+    /// What it was doing when the budget was first found spent.
+    static RAN_OUT_IN: RefCell<Option<String>> = const { RefCell::new(None) };
+    /// What the last [`Budget::run`] on this thread that ran out was doing then.
+    static LAST_RAN_OUT_IN: RefCell<Option<String>> = const { RefCell::new(None) };
+}
+
+/// Runs `work` named by `what` (a step's title, a solve: words that finish "it ran out …"),
+/// so that a refusal for work says where the work went. Named only within a budget (the
+/// name is not built otherwise).
+pub fn doing<T>(what: impl FnOnce() -> String, work: impl FnOnce() -> T) -> T {
+    if LIMIT.with(Cell::get) == u64::MAX {
+        return work();
+    }
+    DOING.with(|d| d.borrow_mut().push(what()));
+    let _done = Done;
+    work()
+}
+
+/// Ends the innermost [`doing`] however its work ends (a panic caught further up too).
+struct Done;
+
+impl Drop for Done {
+    fn drop(&mut self) {
+        let what = DOING.with(|d| d.borrow_mut().pop());
+        // Work that only counts (never asks `check`) is found spent as it ends.
+        if SPENT.with(Cell::get) > LIMIT.with(Cell::get) {
+            RAN_OUT_IN.with(|r| {
+                r.borrow_mut()
+                    .get_or_insert_with(|| what.unwrap_or_default());
+            });
+        }
+    }
+}
+
+/// What the last budgeted run on this thread that ran out of work was doing when it did
+/// (the innermost [`doing`]), once: for the refusal's words.
+pub fn ran_out_in() -> Option<String> {
+    LAST_RAN_OUT_IN.with(|l| l.borrow_mut().take())
+}
+
+/// Notes what the work is doing as the budget is found spent (the first time only).
+#[cold]
+fn note_running_out() {
+    RAN_OUT_IN.with(|r| {
+        let mut r = r.borrow_mut();
+        if r.is_none() {
+            *r = DOING.with(|d| d.borrow().last().cloned());
+        }
+    });
 }
 
 /// Counts `operations` against this thread's budget (never fails; see [`check`]).
@@ -68,6 +119,7 @@ pub fn count_and_spent(operations: u64) -> bool {
 pub fn check() -> Result<(), AlgebraError> {
     let limit = LIMIT.with(Cell::get);
     if SPENT.with(Cell::get) > limit {
+        note_running_out();
         return Err(AlgebraError::OutOfWork { limit });
     }
     Ok(())
@@ -114,11 +166,14 @@ impl Budget {
         let outer = Suspended {
             spent: SPENT.with(|s| s.replace(0)),
             limit: LIMIT.with(|l| l.replace(self.limit)),
+            ran_out_in: RAN_OUT_IN.with(|r| r.borrow_mut().take()),
         };
         let outcome = work();
         let spent = SPENT.with(Cell::get);
+        let ran_out_in = RAN_OUT_IN.with(|r| r.borrow_mut().take());
         drop(outer);
         if spent > self.limit {
+            LAST_RAN_OUT_IN.with(|l| *l.borrow_mut() = ran_out_in);
             return Err(AlgebraError::OutOfWork { limit: self.limit });
         }
         Ok((outcome, spent))
@@ -159,6 +214,7 @@ impl Drop for Apart {
 struct Suspended {
     spent: u64,
     limit: u64,
+    ran_out_in: Option<String>,
 }
 
 impl Drop for Suspended {
@@ -166,6 +222,7 @@ impl Drop for Suspended {
         let inner = SPENT.with(Cell::get);
         SPENT.with(|s| s.set(self.spent.saturating_add(inner)));
         LIMIT.with(|l| l.set(self.limit));
+        RAN_OUT_IN.with(|r| *r.borrow_mut() = self.ran_out_in.take());
     }
 }
 
@@ -210,6 +267,24 @@ mod tests {
         assert_eq!(inner, outer_spent);
         // Outside every budget nothing is refused.
         assert!(spend(u64::MAX).is_ok());
+    }
+
+    /// A refusal names the innermost work it ran out in; work outside a budget is not named.
+    #[test]
+    fn a_refusal_names_what_the_work_was_doing() {
+        let (_, needed) = Budget::of(u64::MAX).run(polynomial_work).unwrap();
+        let named = || doing(|| "multiplying out (a + b)^12".into(), polynomial_work);
+        let outcome = Budget::of(needed / 2).run(|| doing(|| "the whole".into(), named));
+        assert!(outcome.is_err());
+        assert_eq!(ran_out_in().as_deref(), Some("multiplying out (a + b)^12"));
+        // Taken once; a run that does not run out leaves nothing.
+        assert_eq!(ran_out_in(), None);
+        assert!(Budget::of(needed * 2).run(named).is_ok());
+        assert_eq!(ran_out_in(), None);
+        assert_eq!(
+            doing(|| unreachable!("not named outside a budget"), || 1),
+            1
+        );
     }
 
     #[test]

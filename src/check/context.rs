@@ -496,25 +496,59 @@ impl Context {
     /// `value` as a quantity of `dimension`: where a number written with its unit in the
     /// scene (`at (150 mm, 0, 0)`) is a plain number in the scene's units (3/20), the expression's
     /// dimension is not the quantity's, and the difference is made up by unit markers of
-    /// factor one (`[kg]`, `[m]`, `[s]`, gone when the verdict takes the sides in the scene's units), so that
+    /// factor one (`[kg]`, `[m]`, `[s]`; `[slug]`, `[ft]`, `[s]` in U.S. units; gone when the verdict takes the sides in the scene's units), so that
     /// a claim's terms are judged as the quantities they name.
     fn in_dimension(&self, value: Expr, dimension: Option<Dimension>) -> Expr {
-        let (Some(wanted), Ok(has)) = (dimension, self.dimension_of(&value)) else {
+        let Some(wanted) = dimension else {
             return value;
         };
-        if wanted == has || value.is_zero() {
+        if value.is_zero() {
             return value;
         }
+        match self.dimension_of(&value) {
+            Ok(has) if has == wanted => value,
+            Ok(has) => value * self.markers(wanted, has),
+            // Hidden lengths of different powers in different terms (`192 M W_1 g + 48 W_1
+            // W_2 g` with 1/2 ft and 1/4 ft put in): each term made up apart.
+            Err(_) => self.homogeneous(&value, wanted).unwrap_or(value),
+        }
+    }
+
+    /// `value` as one fraction, multiplied out, whose denominator's terms each take the
+    /// first's dimension and whose numerator's terms each take `wanted` times it, by unit
+    /// markers of factor one; none where a term has no dimension at all (an inhomogeneous
+    /// sum under a root or inside a sine).
+    fn homogeneous(&self, value: &Expr, wanted: Dimension) -> Option<Expr> {
+        let (numerator, denominator) = value.together_parts().ok()?;
+        let (numerator, denominator) = (numerator.expand().ok()?, denominator.expand().ok()?);
+        let each_in = |sum: &Expr, want: Dimension| -> Option<Expr> {
+            let terms = sum.terms().iter().map(|t| {
+                let has = self.dimension_of(t).ok()?;
+                Some(t * &self.markers(want, has))
+            });
+            Some(Expr::add_all(terms.collect::<Option<Vec<_>>>()?))
+        };
+        let first = denominator.terms().first()?.clone();
+        let of_denominator = self.dimension_of(&first).ok()?;
+        let denominator = each_in(&denominator, of_denominator)?;
+        let numerator = each_in(&numerator, wanted.checked_times(of_denominator)?)?;
+        numerator.checked_div(&denominator).ok()
+    }
+
+    /// The unit markers (of the system's base units) that make `has` up to `wanted`.
+    fn markers(&self, wanted: Dimension, has: Dimension) -> Expr {
+        // The markers of the system's base units (slug, ft, s in U.S. units), of factor one.
+        let [mass, length, time] = self.unit_system.base_units();
         let missing = [
-            ("kg", wanted.mass - has.mass),
-            ("m", wanted.length - has.length),
-            ("s", wanted.time - has.time),
+            (mass, wanted.mass - has.mass),
+            (length, wanted.length - has.length),
+            (time, wanted.time - has.time),
         ];
         let markers = missing
             .iter()
             .filter(|(_, power)| *power != 0)
             .filter_map(|(unit, power)| Some(marker(unit)?.powi(i64::from(*power))));
-        value * Expr::mul_all(markers)
+        Expr::mul_all(markers)
     }
 
     /// The dimension of an expression of this context's symbols and unit markers.

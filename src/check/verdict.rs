@@ -26,7 +26,7 @@ use crate::parse::parse_claim_with_units;
 use crate::parse::Diagnostic;
 use crate::scene::named_unit::NamedUnit;
 use crate::scene::units::{dimension_with, Dimension};
-use crate::scene::units_in_math::in_system;
+use crate::scene::units_in_math::{in_system, marker_dimension};
 
 /// What a check concludes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -244,6 +244,9 @@ struct Compared {
     numbers: Option<Numbers>,
 }
 
+/// The names of kinetic energies, whose unit is work's (ft·lb, J).
+const KINETIC_ENERGIES: [&str; 6] = ["T", "T_1", "T_2", "T_lost", "T_trans", "T_rot"];
+
 /// The components of a claim as they are compared ([`Compared`]).
 fn compared(
     context: &Context,
@@ -252,6 +255,10 @@ fn compared(
     text: &str,
 ) -> Result<Vec<Compared>, Diagnostic> {
     let (correct, claimed) = sides(context, claim);
+    let energy = correct
+        .resolved
+        .iter()
+        .any(|n| KINETIC_ENERGIES.contains(&n.as_str()));
     let algebra_error = |e: AlgebraError| {
         Diagnostic::at(source_name, text, 0, text.len(), e.to_string())
             .with_help("the claim is beyond the bounds of the algebra; write it in parts")
@@ -260,6 +267,13 @@ fn compared(
         .map_err(algebra_error)?
         .into_iter()
         .map(|(axis, c, s)| {
+            // The unit from the correct side as marked (`context.rs`, `in_dimension`): its
+            // hidden lengths made up; a kinetic energy's is work (ft·lb, J).
+            let marked = |s: Symbol| context.dimension(s).or_else(|| marker_dimension(s));
+            let unit = dimension_with(&c, &marked)
+                .ok()
+                .filter(|d| *d != Dimension::NONE)
+                .map(|d| context.unit_system().unit(d, energy));
             let in_units = |e: Expr| in_system(&e, context.unit_system()).unwrap_or(e);
             let (c, s) = (in_units(c), in_units(s));
             if !evaluated_givens(context, &c, &s) {
@@ -272,10 +286,6 @@ fn compared(
                     numbers: None,
                 };
             }
-            let unit = dimension_with(&c, &|s| context.dimension(s))
-                .ok()
-                .filter(|d| *d != Dimension::NONE)
-                .map(|d| context.unit_system().unit(d, false));
             let (values_c, values_s) = (in_values(context, &c), in_values(context, &s));
             let numbers = in_numbers(&values_c, &values_s)
                 .map(|values| Numbers::new(values, context.relative_tolerance(), unit));

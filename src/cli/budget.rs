@@ -6,9 +6,10 @@
 //! writes `work: SPENT of LIMIT operations` to standard error (a refusal as `LIMIT + 1`):
 //! the tests measure the work of hostile inputs by it, not by the wall clock.
 
-use kinetics::algebra::work::Budget;
+use kinetics::algebra::work::{self, Budget};
 use kinetics::algebra::AlgebraError;
 use kinetics::parse::Diagnostic;
+use kinetics::print::markup;
 use std::ops::Range;
 
 /// An input a command works on: its name in diagnostics, its text, and the place a refusal
@@ -79,10 +80,15 @@ impl<'a> Input<'a> {
         }
     }
 
-    /// The refusal for a spent budget, located at [`Input::place`].
+    /// The refusal for a spent budget, located at [`Input::place`], with what the work was
+    /// doing when it ran out (`work::doing`: a step's title in the markup of titles).
     fn refusal(&self, out_of_work: AlgebraError) -> Diagnostic {
         let Range { start, end } = self.place;
-        Diagnostic::at(self.name, self.source, start, end, out_of_work.to_string())
+        let message = match work::ran_out_in() {
+            Some(doing) => format!("{out_of_work}: it ran out {}", markup::text(&doing)),
+            None => out_of_work.to_string(),
+        };
+        Diagnostic::at(self.name, self.source, start, end, message)
             .with_help("simplify the input or split it into smaller parts")
     }
 }

@@ -70,6 +70,14 @@ impl UnitSystem {
         }
     }
 
+    /// The units of mass, length and time the system's values are in: kg, m, s; slug, ft, s.
+    pub fn base_units(self) -> [&'static str; 3] {
+        match self {
+            UnitSystem::Si => ["kg", "m", "s"],
+            UnitSystem::Us => ["slug", "ft", "s"],
+        }
+    }
+
     /// The system named on the command line: `si` or `us`.
     pub fn named(name: &str) -> Option<UnitSystem> {
         match name {

@@ -176,3 +176,61 @@ fn a_claim_on_a_us_scene_is_read_and_reported_in_pounds() {
         "681.7 is newtons, not the page's pounds"
     );
 }
+
+/// A shaft whose point weights stand at lengths written inside the mathematics (a U.S.
+/// instructor's problem): the solved reactions hold hidden lengths of different powers in
+/// different terms (`192 M W_1 g + 48 W_1 W_2 g`), which `check` took for a unit mismatch and
+/// refused every claim written with a unit; and it reported I_xy in `slug` (the metre's
+/// markers put into a scene in feet gave 0.01393 for 0.001294).
+const WEIGHTS_AT_INCHES: &str = "given W1 = 4 oz\ngiven W2 = 8 oz\ngiven g = 32.2 ft/s^2\n\
+    given L = 2 ft\ngiven w = 600 rpm\ngiven M = 12 in*lb\n\
+    unknown alpha : rad/s^2\nunknown A_y, A_z, B_y, B_z : lb\n\
+    body point() mass W1/g at (6 in, 4 in, 0)\nbody point() mass W2/g at (18 in, 0, 3 in)\n\
+    fixed point\nomega = w*i\nomegadot = alpha*i\n\
+    force G1 = -W1*j at (6 in, 4 in, 0)\nforce G2 = -W2*j at (18 in, 0, 3 in)\n\
+    force A = A_y*j + A_z*k at (0, 0, 0)\nforce B = B_y*j + B_z*k at (L, 0, 0)\n\
+    couple M*i\nfind alpha, A_y, A_z, B_y, B_z, I_O, T\n";
+
+#[test]
+fn claims_on_a_scene_with_lengths_in_its_mathematics_are_read_in_its_units() {
+    let scene = kinetics::parse_scene("weights.scene", WEIGHTS_AT_INCHES).unwrap();
+    assert_eq!(scene.unit_system, UnitSystem::Us);
+    let (_, analysis) = in_system(WEIGHTS_AT_INCHES, UnitSystem::Us);
+    let b_z = scalar_value(&scene, &analysis, "B_z");
+    let context = kinetics::check::context::Context::scene(&scene);
+    let check = |claim: &str| kinetics::check::verdict::check(&context, "claim", claim).unwrap();
+    let numbers = |claim: &str| {
+        let report = check(claim);
+        assert_eq!(report.verdict, Verdict::Holds, "{claim}: {report:?}");
+        let n = report.components[0].numbers.clone().unwrap();
+        (n.correct, n.unit.map(|u| u.to_string()))
+    };
+    // By hand, in slugs and feet: the weights W/g at (1/2, 1/3, 0) and (3/2, 0, 1/4) ft.
+    let (m1, m2) = (0.25 / 32.2, 0.5 / 32.2);
+    let i_xy = m1 * 0.5 / 3.0;
+    let i_x = m1 / 9.0 + m2 / 16.0;
+    let omega = 20.0 * std::f64::consts::PI;
+    let (correct, unit) = numbers("I_xy = 0.001294");
+    assert!(
+        (correct - i_xy).abs() < 1e-12 * i_xy,
+        "{correct} against {i_xy}"
+    );
+    assert_eq!(unit.as_deref(), Some("slug·ft²"));
+    let (correct, unit) = numbers("T = 3.619 ft*lb");
+    let t = 0.5 * i_x * omega * omega;
+    assert!((correct - t).abs() < 1e-12 * t, "{correct} against {t}");
+    assert_eq!(unit.as_deref(), Some("ft·lb"));
+    // A reaction written in pounds, in newtons, and in ounces: each the solved B_z.
+    let newtons = format!("B_z = {:.2} N", b_z * 4.4482216152605);
+    let ounces = format!("B_z = {:.1} oz", b_z * 16.0);
+    for claim in [format!("B_z = {b_z:.2} lb"), newtons, ounces] {
+        let (correct, unit) = numbers(&claim);
+        assert!((correct - b_z).abs() < 1e-12 * b_z.abs());
+        assert_eq!(unit.as_deref(), Some("lb"), "{claim}");
+    }
+    // A wrong plain number is decided by its value, not refused as inhomogeneous.
+    let wrong = check(&format!("B_z = {:.2}", b_z * 0.7));
+    assert_eq!(wrong.verdict, Verdict::Differs);
+    assert!(wrong.odd_term.is_none(), "{wrong:?}");
+    assert!(wrong.components[0].numbers.is_some());
+}

@@ -41,6 +41,7 @@ mod unknowns;
 
 use super::kinematic_constraints::{solve_constraints, SolvedConstraints};
 use super::model::{ConstraintKind, Part, Quantity, Request, Scene, Span};
+use crate::algebra::work;
 use crate::algebra::{AlgebraError, Expr, Matrix, Symbol, Vector};
 use crate::mechanics::angular_momentum::{angular_momentum, angular_momentum_about_point};
 use crate::mechanics::composite_body::{composite_body, MassProperties};
@@ -165,10 +166,23 @@ pub fn analyse(scene: &Scene) -> Result<Analysis, Diagnostic> {
     a.motion_obeys_loads()?;
     let domains = scene.domains();
     let mut analysis = Analysis {
-        plan: a.plan.iter().map(|s| s.simplified(&domains)).collect(),
+        plan: a
+            .plan
+            .iter()
+            .map(|s| {
+                work::doing(
+                    || format!("writing the step “{}”", s.title),
+                    || s.simplified(&domains),
+                )
+            })
+            .collect(),
         results: results
             .into_iter()
-            .map(|(request, value)| (request, value.presented(&domains)))
+            .map(|(request, value)| {
+                let what = || format!("writing the result {}", request.as_written());
+                let presented = work::doing(what, || value.presented(&domains));
+                (request, presented)
+            })
             .collect(),
         abbreviations: Abbreviations::default(),
         solutions: a.unknowns.clone().unwrap_or_default(),

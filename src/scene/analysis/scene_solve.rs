@@ -13,7 +13,7 @@ use crate::algebra::polynomial_solve::unknown_angle::{
 use crate::algebra::polynomial_solve::{
     solve_system, Condition, DroppedRoot, Solutions, SolveContext, SolveError,
 };
-use crate::algebra::{AlgebraError, Expr, Func, Symbol};
+use crate::algebra::{work, AlgebraError, Expr, Func, Symbol};
 use crate::numeric::rounding_error::{bounded, Bounded};
 use std::cmp::Ordering;
 
@@ -52,10 +52,12 @@ pub(super) fn solve_scene(
         positive: &positive,
     };
     let angles = angle_unknowns(equations, wanted);
-    let solved = match angles.first() {
+    let names: Vec<&str> = wanted.iter().map(|u| u.name()).collect();
+    let what = || format!("solving the equations for {}", names.join(", "));
+    let solved = work::doing(what, || match angles.first() {
         Some(&u) => solve_for_angle(scene, equations, wanted, u, &context),
         None => solve_system(equations, wanted, &context),
-    };
+    });
     match solved {
         // The angles are solved one at a time: that, not the nonlinear term, is the cause.
         Err(_) if angles.len() > 1 => Err(SolveError::SeveralAngles(angles)),

@@ -17,7 +17,7 @@
 //! catalogue, or the scene's analysis), never from a copy.
 
 use crate::algebra::work::Budget;
-use crate::algebra::{AlgebraError, Domains, Expr, Symbol, Vector};
+use crate::algebra::{AlgebraError, Domains, Expr, Symbol, Vector, View};
 use crate::mechanics::catalogue::derive_general;
 use crate::mechanics::slip::Slip;
 use crate::parse::claim::Name;
@@ -514,25 +514,45 @@ impl Context {
         }
     }
 
-    /// `value` as one fraction, multiplied out, whose denominator's terms each take the
-    /// first's dimension and whose numerator's terms each take `wanted` times it, by unit
-    /// markers of factor one; none where a term has no dimension at all (an inhomogeneous
-    /// sum under a root or inside a sine).
+    /// `value` in `wanted`: each sum in it, inside out, with every term made up to its
+    /// first term's dimension and a function's argument and a root's base to none, by unit
+    /// markers of factor one (any choice keeps the value), then the whole to `wanted`; none
+    /// where a part has no dimension at all.
     fn homogeneous(&self, value: &Expr, wanted: Dimension) -> Option<Expr> {
-        let (numerator, denominator) = value.together_parts().ok()?;
-        let (numerator, denominator) = (numerator.expand().ok()?, denominator.expand().ok()?);
-        let each_in = |sum: &Expr, want: Dimension| -> Option<Expr> {
-            let terms = sum.terms().iter().map(|t| {
-                let has = self.dimension_of(t).ok()?;
-                Some(t * &self.markers(want, has))
-            });
-            Some(Expr::add_all(terms.collect::<Option<Vec<_>>>()?))
+        let made_up = self.made_up(value)?;
+        let has = self.dimension_of(&made_up).ok()?;
+        Some(made_up * self.markers(wanted, has))
+    }
+
+    /// `e` with each of its sums' terms in the dimension of the first ([`Context::homogeneous`]).
+    fn made_up(&self, e: &Expr) -> Option<Expr> {
+        let each = |xs: &[Expr]| {
+            xs.iter()
+                .map(|x| self.made_up(x))
+                .collect::<Option<Vec<_>>>()
         };
-        let first = denominator.terms().first()?.clone();
-        let of_denominator = self.dimension_of(&first).ok()?;
-        let denominator = each_in(&denominator, of_denominator)?;
-        let numerator = each_in(&numerator, wanted.checked_times(of_denominator)?)?;
-        numerator.checked_div(&denominator).ok()
+        let to = |x: Expr, wanted: Dimension| -> Option<Expr> {
+            let has = self.dimension_of(&x).ok()?;
+            Some(x * self.markers(wanted, has))
+        };
+        Some(match e.view() {
+            View::Num(_) | View::Sym(_) => e.clone(),
+            View::Add(terms) => {
+                let terms = each(terms)?;
+                let first = self.dimension_of(terms.first()?).ok()?;
+                let marked = terms.into_iter().map(|t| to(t, first));
+                Expr::add_all(marked.collect::<Option<Vec<_>>>()?)
+            }
+            View::Mul(factors) => Expr::mul_all(each(factors)?),
+            // A root's base is made a pure number: its dimension need be no square.
+            View::Pow(base, exponent) if exponent.as_num().is_some_and(|q| !q.is_integer()) => {
+                to(self.made_up(base)?, Dimension::NONE)?
+                    .checked_pow(exponent)
+                    .ok()?
+            }
+            View::Pow(base, exponent) => self.made_up(base)?.checked_pow(exponent).ok()?,
+            View::Func(f, argument) => f.apply(to(self.made_up(argument)?, Dimension::NONE)?),
+        })
     }
 
     /// The unit markers (of the system's base units) that make `has` up to `wanted`.

@@ -234,3 +234,41 @@ fn claims_on_a_scene_with_lengths_in_its_mathematics_are_read_in_its_units() {
     assert!(wrong.odd_term.is_none(), "{wrong:?}");
     assert!(wrong.components[0].numbers.is_some());
 }
+
+/// A cone top stated in ounces and inches, two steady precessions: φ̇ holds a root of a sum
+/// whose terms hide different powers of the foot (`sqrt(81 ψ̇² − 26400 g cos θ)`), which
+/// `check` refused as inhomogeneous. By hand about the apex O (the cone 1.5 in by 2 in, G at
+/// ¾h = 1.5 in): I = 3/10 m r², I' = 3/5 m (r²/4 + h²), and W c sin θ = φ̇ sin θ (I ψ̇ +
+/// (I − I') φ̇ cos θ), a quadratic in φ̇ whose two roots each hold in their solution.
+#[test]
+fn both_precessions_of_a_cone_in_inches_are_checked_by_value() {
+    let text = "given W = 4 oz\ngiven g = 32.2 ft/s^2\ngiven theta = 30 deg\n\
+        given psidot = 1800 rpm\nunknown phidot : rad/s\nunknown R_x, R_y, R_z : lb\n\
+        euler angles steady\nfixed point\n\
+        body cone(1.5 in, 2 in) mass W/g at (0, 0, 1.5 in) along z\n\
+        force Wt = -W*K at (0, 0, 1.5 in)\nforce R = R_x*i + R_y*j + R_z*k at (0, 0, 0)\n\
+        find phidot\n";
+    let scene = kinetics::parse_scene("cone.scene", text).unwrap();
+    let context = kinetics::check::context::Context::scene(&scene);
+    let (w, g, r, h) = (0.25_f64, 32.2, 1.5 / 12.0, 2.0 / 12.0);
+    let (m, c, theta, psidot) = (
+        w / g,
+        0.75 * h,
+        30f64.to_radians(),
+        60.0 * std::f64::consts::PI,
+    );
+    let (i, i_prime) = (0.3 * m * r * r, 0.6 * m * (r * r / 4.0 + h * h));
+    let (a, b, k) = ((i - i_prime) * theta.cos(), i * psidot, -w * c);
+    let root = |sign: f64| (-b + sign * (b * b - 4.0 * a * k).sqrt()) / (2.0 * a);
+    for phidot in [root(1.0), root(-1.0)] {
+        let claim = format!("phidot = {phidot:.4} rad/s");
+        let report = kinetics::check::verdict::check(&context, "claim", &claim).unwrap();
+        assert_eq!(report.verdict, Verdict::Holds, "{claim}: {report:?}");
+        let n = report.components[0].numbers.as_ref().unwrap();
+        assert!(
+            (n.correct - phidot).abs() < 1e-9 * phidot,
+            "{} against {phidot}",
+            n.correct
+        );
+    }
+}

@@ -492,10 +492,18 @@ impl<'a> Analyser<'a> {
         let v = match (&self.scene.vbar, self.scene.fixed_point) {
             (Some(given), _) => {
                 let v = self.known_vector(given, at)?;
+                // Stated in unknowns (solved by impulse and momentum, say), it is not given.
+                let title = match given
+                    .iter()
+                    .any(|c| c.has_symbol_where(&|s| self.scene.is_unknown(s)))
+                {
+                    true => "velocity of the mass centre (as stated, in the unknowns)",
+                    false => "velocity of the mass centre (given)",
+                };
                 self.plan.push(Step {
                     vectors: Vec::new(),
                     table: None,
-                    title: "velocity of the mass centre (given)".into(),
+                    title: title.into(),
                     relations: Relation::components("vbar", &v),
                 });
                 v

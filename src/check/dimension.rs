@@ -11,6 +11,7 @@
 
 use crate::algebra::{Expr, Func, Role, Symbol, View};
 use crate::parse::claim::{Claim, ClaimSide, WrittenTerm};
+use crate::scene::unit_system::UnitSystem;
 use crate::scene::units::{dimension_with, Dimension, DimensionError};
 use std::collections::HashMap;
 
@@ -49,6 +50,21 @@ pub fn odd_term(
     source: &str,
     dimension_of_symbol: &dyn Fn(Symbol) -> Option<Dimension>,
 ) -> Option<OddTerm> {
+    odd_term_in(claim, source, dimension_of_symbol, UnitSystem::Si)
+}
+
+/// [`odd_term`] with the dimensions in its reason named in `system`'s units (lb, lb·ft on a
+/// scene in U.S. units).
+pub fn odd_term_in(
+    claim: &Claim,
+    source: &str,
+    dimension_of_symbol: &dyn Fn(Symbol) -> Option<Dimension>,
+    system: UnitSystem,
+) -> Option<OddTerm> {
+    let unit = |d: Dimension| match system.unit(d, false).to_string() {
+        named if named.is_empty() => "no unit".to_string(),
+        named => named,
+    };
     let known = |s: Symbol| {
         if s.role() == Role::UnitVector || s.is_pi() {
             Some(Dimension::NONE)
@@ -75,9 +91,13 @@ pub fn odd_term(
             Judgement::Has(d) if Some(*d) == expected => return None,
             Judgement::Has(d) => (
                 Some(*d),
-                format!("is in {d} where {others} in {expected_or_none}"),
+                format!(
+                    "is in {} where {others} in {}",
+                    unit(*d),
+                    unit(expected_or_none)
+                ),
             ),
-            Judgement::Inconsistent(error) => (None, inconsistency(&term.value, error)),
+            Judgement::Inconsistent(error) => (None, inconsistency(&term.value, error, &unit)),
         };
         let (text, span) = written_text(term, source);
         Some(OddTerm {
@@ -173,16 +193,21 @@ fn written_text(term: &WrittenTerm, source: &str) -> (String, (usize, usize)) {
 
 /// Why a term has no dimension, in words: a function named with its argument, else the
 /// error's own sentence.
-fn inconsistency(term: &Expr, error: &DimensionError) -> String {
+fn inconsistency(
+    term: &Expr,
+    error: &DimensionError,
+    unit: &dyn Fn(Dimension) -> String,
+) -> String {
     if let DimensionError::FunctionOfDimensioned(argument, d) = error {
         if let Some(f) = function_taking(term, argument) {
             return format!(
-                "the argument of {} must have no unit, but {argument} is in {d}",
-                f.name()
+                "the argument of {} must have no unit, but {argument} is in {}",
+                f.name(),
+                unit(*d)
             );
         }
     }
-    error.to_string()
+    error.in_words(unit)
 }
 
 /// The first function in `e` (outermost first) whose argument prints as `argument`.

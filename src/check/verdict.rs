@@ -15,7 +15,7 @@
 
 use super::context::Context;
 use super::diagnosis::{diagnose, Diagnosis};
-use super::dimension::{odd_term, OddTerm};
+use super::dimension::{odd_term_in, OddTerm};
 use super::second_opinion::{second_opinion, Opinion};
 use crate::algebra::vector::{components, has_unit_vectors};
 use crate::algebra::{AlgebraError, Axis, Domains, Expr, Vector};
@@ -171,7 +171,12 @@ fn check_in_solution(
         correct_is_derived: is_derived(context, correct),
         verdict: Verdict::Differs,
         components: Vec::new(),
-        odd_term: odd_term(&claim, text, &|s| context.dimension(s)),
+        odd_term: odd_term_in(
+            &claim,
+            text,
+            &|s| context.dimension(s),
+            context.unit_system(),
+        ),
         slip: None,
         solution: k,
         solutions,

@@ -212,28 +212,38 @@ pub enum DimensionError {
     ExponentRange(String),
 }
 
-impl fmt::Display for DimensionError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl DimensionError {
+    /// The error in words, each dimension named by `unit` (its SI unit in `Display`; a
+    /// scene's unit system's in a report on it).
+    pub fn in_words(&self, unit: &dyn Fn(Dimension) -> String) -> String {
         match self {
             DimensionError::Mismatch(a, da, b, db) => {
-                write!(f, "unit mismatch: cannot add {a} ({da}) to {b} ({db})")
-            }
-            DimensionError::Undeclared(s) => write!(f, "unknown symbol {}", s.name()),
-            DimensionError::FunctionOfDimensioned(e, d) => {
-                write!(
-                    f,
-                    "the argument {e} of a function must have no unit, but it is in {d}"
+                format!(
+                    "unit mismatch: cannot add {a} ({}) to {b} ({})",
+                    unit(*da),
+                    unit(*db)
                 )
             }
+            DimensionError::Undeclared(s) => format!("unknown symbol {}", s.name()),
+            DimensionError::FunctionOfDimensioned(e, d) => format!(
+                "the argument {e} of a function must have no unit, but it is in {}",
+                unit(*d)
+            ),
             DimensionError::ExponentRange(e) => {
-                write!(f, "the unit of {e} has an exponent beyond ±127")
+                format!("the unit of {e} has an exponent beyond ±127")
             }
-            DimensionError::FractionalPower(e, d) => write!(
-                f,
-                "{e} has no unit: its base is in {d}, and this power of it would not be a \
-                 whole power of a unit"
+            DimensionError::FractionalPower(e, d) => format!(
+                "{e} has no unit: its base is in {}, and this power of it would not be a \
+                 whole power of a unit",
+                unit(*d)
             ),
         }
+    }
+}
+
+impl fmt::Display for DimensionError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.in_words(&|d| d.to_string()))
     }
 }
 

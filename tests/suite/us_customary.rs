@@ -272,3 +272,14 @@ fn both_precessions_of_a_cone_in_inches_are_checked_by_value() {
         );
     }
 }
+
+/// A term of the wrong dimension in a claim on a scene in U.S. units is named in its units
+/// (it said "N·m where the other term is in N").
+#[test]
+fn an_odd_term_on_a_us_scene_is_named_in_pounds_and_feet() {
+    let (scene, _) = analysed_example("shaft_in_us_units", "");
+    let context = kinetics::check::context::Context::scene(&scene);
+    let report = kinetics::check::verdict::check(&context, "claim", "B_y = W*c").unwrap();
+    let odd = report.odd_term.expect("W*c is a moment, B_y a force");
+    assert_eq!(odd.reason, "is in lb·ft where the other term is in lb");
+}

@@ -78,6 +78,18 @@ impl UnitSystem {
         }
     }
 
+    /// The system a unit belongs to alone: `lb·ft` U.S. customary, `N·m` SI; none for a unit
+    /// of both (`deg`, `rad/s`, `s`) or of both mixed.
+    pub fn of_unit(unit: &NamedUnit) -> Option<UnitSystem> {
+        let si = unit.names().any(|n| SI_UNITS.contains(&n));
+        let us = unit.names().any(|n| US_UNITS.contains(&n));
+        match (si, us) {
+            (true, false) => Some(UnitSystem::Si),
+            (false, true) => Some(UnitSystem::Us),
+            _ => None,
+        }
+    }
+
     /// The system named on the command line: `si` or `us`.
     pub fn named(name: &str) -> Option<UnitSystem> {
         match name {

@@ -283,3 +283,24 @@ fn an_odd_term_on_a_us_scene_is_named_in_pounds_and_feet() {
     let odd = report.odd_term.expect("W*c is a moment, B_y a force");
     assert_eq!(odd.reason, "is in lb·ft where the other term is in lb");
 }
+
+/// `--units si` wins over an unknown's unit of the other system (`: lb` shows newtons, as
+/// the rest of the page), and not over a unit of both (`: deg`).
+#[test]
+fn the_system_chosen_wins_over_an_unknowns_unit_of_the_other_system() {
+    let text = "given W = 3 lb\ngiven c = 5 in\ngiven L = 2.5 ft\ngiven w = 1200 rpm\n\
+        given g = 32.2 ft/s^2\nunknown A_y, A_z, B_y, B_z : lb\nunknown beta : deg\n\
+        body rod(c) mass W/g at (L/4, c/2, 0) along y\n\
+        body rod(c) mass W/g at (3*L/4, -c/2, 0) along y\n\
+        fixed point\nomega = w*i\nforce A = A_y*j + A_z*k at (0, 0, 0)\n\
+        force B = B_y*j + B_z*k at (L, 0, 0)\nconstraint beta = 30 deg\nfind B_y, beta\n";
+    let (us, _) = in_system(text, UnitSystem::Us);
+    let (si, _) = in_system(text, UnitSystem::Si);
+    let unit_of = |scene: &Scene, name: &str| {
+        let request = scene.requests.iter().find(|r| r.name == name).unwrap();
+        request.shown_in.as_ref().map(ToString::to_string)
+    };
+    assert_eq!(unit_of(&us, "B_y").as_deref(), Some("lb"));
+    assert_eq!(unit_of(&si, "B_y"), None, "N, the system's unit");
+    assert_eq!(unit_of(&si, "beta").as_deref(), Some("deg"));
+}

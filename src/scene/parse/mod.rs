@@ -164,6 +164,12 @@ fn read_scene(
         reader.statement(statement)?;
     }
     reader.euler_angles_complete()?;
+    // A system chosen (`--units`) wins over an unknown's unit of the other system (`: lb`
+    // under `--units si`); a unit of both (`: deg`) stays.
+    if let Some(system) = units {
+        let other = |unit: &NamedUnit| UnitSystem::of_unit(unit).is_some_and(|s| s != system);
+        reader.scene.unknown_units.retain(|(_, unit)| !other(unit));
+    }
     reader.resolve_requests()?;
     reader.impact_is_determined()?;
     Ok(reader.scene)

@@ -134,7 +134,10 @@ impl Reader<'_> {
             return Err(self
                 .error(
                     at,
-                    format!("K is sin(theta)*j + cos(theta)*k, and theta is in {d}, not an angle"),
+                    format!(
+                        "K is sin(theta)*j + cos(theta)*k, and theta is in {}, not an angle",
+                        self.unit_of(*d)
+                    ),
                 )
                 .with_help("declare theta in deg (or rad): 'given theta = 30 deg'"));
         }
@@ -184,7 +187,7 @@ impl Reader<'_> {
                     let given = self.scene.givens.iter().find(|g| g.symbol == s);
                     let place = given.map_or(at, |g| (g.span.start, g.span.end));
                     return Err(self
-                        .error(place, format!("{name} is in {d}, and an Eulerian {} is in {want}", what(s)))
+                        .error(place, format!("{name} is in {}, and an Eulerian {} is in {}", self.unit_of(d), what(s), self.unit_of(want)))
                         .with_help(format!("declare {name} in {unit}")));
                 }
                 Some(_) => {}

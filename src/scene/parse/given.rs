@@ -75,8 +75,9 @@ impl Reader<'_> {
                                 .error(
                                     span(p),
                                     format!(
-                                        "unit mismatch: the value is in {d} but the unit is {}",
-                                        unit.dimension
+                                        "unit mismatch: the value is in {} but the unit is {}",
+                                        self.unit_of(d),
+                                        self.unit_of(unit.dimension)
                                     ),
                                 )
                                 .with_help("give the value in a unit of the declared kind"));

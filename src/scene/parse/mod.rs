@@ -585,9 +585,18 @@ impl Reader<'_> {
                 }
                 _ => "check the units of the symbols",
             };
-            self.error(at, err.to_string())
+            self.error(at, err.in_words(&|d| self.unit_of(d)))
                 .with_help(self.given_named_as_unit(e, help))
         })
+    }
+
+    /// The scene's unit of the dimension `d`, for a message (`lb·ft` in U.S. units;
+    /// `no unit` for a pure number).
+    fn unit_of(&self, d: Dimension) -> String {
+        match self.scene.unit_system.unit(d, false).to_string() {
+            named if named.is_empty() => "no unit".to_string(),
+            named => named,
+        }
     }
 
     fn expect_dimension(
@@ -600,7 +609,11 @@ impl Reader<'_> {
         if d != want && !e.is_zero() {
             let error = self.error(
                 at,
-                format!("unit mismatch: expected a quantity in {want}, found {d}"),
+                format!(
+                    "unit mismatch: expected a quantity in {}, found {}",
+                    self.unit_of(want),
+                    self.unit_of(d)
+                ),
             );
             // A weight (lb, N) where a mass is wanted: its mass is W/g.
             if want == Dimension::MASS && d == Dimension::FORCE {
@@ -622,7 +635,11 @@ impl Reader<'_> {
             return Err(self
                 .error(
                     at,
-                    format!("unit mismatch: the left side is in {da}, the right side in {db}"),
+                    format!(
+                        "unit mismatch: the left side is in {}, the right side in {}",
+                        self.unit_of(da),
+                        self.unit_of(db)
+                    ),
                 )
                 .with_help(self.given_named_as_unit(
                     &(a.clone() + b.clone()),
@@ -642,11 +659,11 @@ impl Reader<'_> {
         for c in v.iter() {
             self.expect_dimension(c, want, span(p))?;
         }
-        let mut si = Vec::with_capacity(3);
+        let mut in_units = Vec::with_capacity(3);
         for c in v.iter() {
-            si.push(self.in_units(c, span(p))?);
+            in_units.push(self.in_units(c, span(p))?);
         }
-        Ok(Vector::from_iterator(si))
+        Ok(Vector::from_iterator(in_units))
     }
 
     fn point(&self, p: &Pair<Rule>) -> Result<Vector, Diagnostic> {

@@ -55,18 +55,29 @@ const US_NAMES: [(Dimension, &[(&str, i8)]); 13] = [
     (Dimension::new(1, 2, -1), &[("lb", 1), ("ft", 1), ("s", 1)]),
 ];
 
+/// The system units of these names belong to alone; none when they are of both (s, deg,
+/// rpm) or mixed.
+fn of_names<'a>(names: impl IntoIterator<Item = &'a str>) -> Option<UnitSystem> {
+    let (mut si, mut us) = (false, false);
+    for name in names {
+        si |= SI_UNITS.contains(&name);
+        us |= US_UNITS.contains(&name);
+    }
+    match (si, us) {
+        (true, false) => Some(UnitSystem::Si),
+        (false, true) => Some(UnitSystem::Us),
+        _ => None,
+    }
+}
+
 impl UnitSystem {
     /// The system the units a scene is written in belong to: U.S. customary when one of them
     /// is (ft, in, lb, slug, …) and none is SI's (kg, m, N, …); else SI.
     pub fn of_units<'a>(units: impl IntoIterator<Item = &'a NamedUnit>) -> UnitSystem {
-        let (mut si, mut us) = (false, false);
-        for name in units.into_iter().flat_map(NamedUnit::names) {
-            si |= SI_UNITS.contains(&name);
-            us |= US_UNITS.contains(&name);
-        }
-        match us && !si {
-            true => UnitSystem::Us,
-            false => UnitSystem::Si,
+        let names = units.into_iter().flat_map(NamedUnit::names);
+        match of_names(names) {
+            Some(UnitSystem::Us) => UnitSystem::Us,
+            _ => UnitSystem::Si,
         }
     }
 
@@ -81,13 +92,7 @@ impl UnitSystem {
     /// The system a unit belongs to alone: `lb·ft` U.S. customary, `N·m` SI; none for a unit
     /// of both (`deg`, `rad/s`, `s`) or of both mixed.
     pub fn of_unit(unit: &NamedUnit) -> Option<UnitSystem> {
-        let si = unit.names().any(|n| SI_UNITS.contains(&n));
-        let us = unit.names().any(|n| US_UNITS.contains(&n));
-        match (si, us) {
-            (true, false) => Some(UnitSystem::Si),
-            (false, true) => Some(UnitSystem::Us),
-            _ => None,
-        }
+        of_names(unit.names())
     }
 
     /// The system named on the command line: `si` or `us`.

@@ -2,7 +2,7 @@
 //! the angle γ of ω from its axis, its θ, φ̇ and ψ̇ derived by kinetics (the constraints on
 //! ω's components solved with ΣM_G = Ḣ_G = 0) against the hand derivation below in f64.
 
-use crate::common::examples::{analysed_example, result, scalar_value};
+use crate::common::examples::{analysed_example, edited_example, result, scalar_value};
 use kinetics::scene::Value;
 
 /// The scalar result `name`'s value with the givens' values.
@@ -53,10 +53,10 @@ fn the_angle_comes_from_its_tangent_on_the_page() {
 fn with_gamma(
     degrees: &str,
 ) -> Result<(kinetics::scene::Scene, kinetics::scene::Analysis), String> {
-    let text = std::fs::read_to_string("examples/scenes/torque_free_disk_from_omega.scene")
-        .unwrap()
-        .replace("gamma = 30 deg", &format!("gamma = {degrees} deg"));
-    let scene = kinetics::scene::parse_scene("g.scene", &text).unwrap();
+    let scene = edited_example(
+        "torque_free_disk_from_omega",
+        &[("gamma = 30 deg", format!("gamma = {degrees} deg").as_str())],
+    );
     let analysis = kinetics::scene::analyse(&scene).map_err(|d| d.render())?;
     Ok((scene, analysis))
 }
@@ -101,10 +101,10 @@ fn omega_beyond_a_right_angle_tilts_the_axis_past_ninety_degrees() {
 /// its constraints are solved with ΣM_G = Ḣ_G = 0 all the same.
 #[test]
 fn the_rates_without_asking_for_the_precession() {
-    let text = std::fs::read_to_string("examples/scenes/torque_free_disk_from_omega.scene")
-        .unwrap()
-        .replace("find theta, phidot, psidot, precession", "find phidot");
-    let scene = kinetics::scene::parse_scene("p.scene", &text).unwrap();
+    let scene = edited_example(
+        "torque_free_disk_from_omega",
+        &[("find theta, phidot, psidot, precession", "find phidot")],
+    );
     let analysis = kinetics::scene::analyse(&scene).unwrap();
     let phidot = scalar_value(&scene, &analysis, "phidot");
     let gamma = 30f64.to_radians();
@@ -115,10 +115,10 @@ fn the_rates_without_asking_for_the_precession() {
 /// "retrograde" from the round-off of √3 beside ψ̇ = 0).
 #[test]
 fn equal_moments_by_a_defined_given_are_decided_exactly() {
-    let text = std::fs::read_to_string("examples/scenes/torque_free_cylinder.scene")
-        .unwrap()
-        .replace("given h = 2 m", "given h = sqrt(3)*r");
-    let scene = kinetics::scene::parse_scene("c.scene", &text).unwrap();
+    let scene = edited_example(
+        "torque_free_cylinder",
+        &[("given h = 2 m", "given h = sqrt(3)*r")],
+    );
     let analysis = kinetics::scene::analyse(&scene).unwrap();
     let Value::Precession(p) = result(&analysis, "precession") else {
         panic!("a precession")
@@ -169,10 +169,10 @@ fn a_constraint_on_h_needs_the_loads() {
 /// its argument).
 #[test]
 fn omega_all_but_across_the_axis_tilts_it_all_but_ninety_degrees() {
-    let text = std::fs::read_to_string("examples/scenes/torque_free_disk_from_omega.scene")
-        .unwrap()
-        .replace("given gamma = 30 deg", "given gamma = atan(1e30)");
-    let scene = kinetics::scene::parse_scene("g.scene", &text).unwrap();
+    let scene = edited_example(
+        "torque_free_disk_from_omega",
+        &[("given gamma = 30 deg", "given gamma = atan(1e30)")],
+    );
     let analysis = kinetics::scene::analyse(&scene).unwrap();
     let page = kinetics::solution::render_numbers(
         &scene,
@@ -197,16 +197,18 @@ fn omega_all_but_across_the_axis_tilts_it_all_but_ninety_degrees() {
 /// given, not "over-determined: this constraint contradicts the others" (it said that).
 #[test]
 fn two_unknown_angles_are_refused_naming_the_one_to_give() {
-    let text = std::fs::read_to_string("examples/scenes/torque_free_disk_from_omega.scene")
-        .unwrap()
-        .replace("given gamma = 30 deg", "given phidot = 72.11 rad/s")
-        .replace("unknown theta : deg", "unknown theta, gamma : deg")
-        .replace("unknown phidot, psidot", "unknown psidot")
-        .replace(
-            "find theta, phidot, psidot, precession",
-            "find theta, gamma",
-        );
-    let scene = kinetics::scene::parse_scene("two.scene", &text).unwrap();
+    let scene = edited_example(
+        "torque_free_disk_from_omega",
+        &[
+            ("given gamma = 30 deg", "given phidot = 72.11 rad/s"),
+            ("unknown theta : deg", "unknown theta, gamma : deg"),
+            ("unknown phidot, psidot", "unknown psidot"),
+            (
+                "find theta, phidot, psidot, precession",
+                "find theta, gamma",
+            ),
+        ],
+    );
     let message = kinetics::scene::analyse(&scene).unwrap_err().render();
     assert!(
         message.contains(

@@ -3,7 +3,7 @@
 //! by bisection here in f64; the vertical axis (θ = 0, 180°) ruled out with its reason; and
 //! a precession too fast for any tilt refused naming why.
 
-use crate::common::examples::{analysed_example, scalar_value};
+use crate::common::examples::{analysed_example, edited_example, scalar_value};
 use kinetics::scene::{analyse, parse_scene, Value};
 
 /// `ΣM_x − Ḣ_x` past its factor sin θ for the disk top about its pivot: W r − (I ω_z −
@@ -63,10 +63,10 @@ fn a_top_s_steady_tilt_for_a_given_precession_and_spin() {
 #[test]
 fn a_precession_no_tilt_can_hold_is_refused_naming_why() {
     // φ̇ = 2.5 rad/s: cos θ = 2(r φ̇ ψ̇ − 2g)/(3 r φ̇²) = −2.05, beyond −1.
-    let text = std::fs::read_to_string("examples/scenes/top_steady_tilt.scene")
-        .unwrap()
-        .replace("phidot = 2.65 rad/s", "phidot = 2.5 rad/s");
-    let scene = parse_scene("t.scene", &text).unwrap();
+    let scene = edited_example(
+        "top_steady_tilt",
+        &[("phidot = 2.65 rad/s", "phidot = 2.5 rad/s")],
+    );
     let message = analyse(&scene).unwrap_err().render();
     assert!(
         message.contains(
@@ -99,16 +99,7 @@ fn a_tilt_held_by_a_couple_has_each_root_of_its_double_angle() {
         -half_turn / 2.0 - beta0,
     ];
     by_hand.sort_by(f64::total_cmp);
-    let mut derived: Vec<f64> = analysis
-        .results
-        .iter()
-        .map(|(_, v)| {
-            let Value::Scalar(e) = v else {
-                panic!("β is a scalar")
-            };
-            e.eval(&|s| scene.value(s)).unwrap()
-        })
-        .collect();
+    let mut derived = each_solution(&scene, &analysis);
     derived.sort_by(f64::total_cmp);
     assert_eq!(derived.len(), 4, "{derived:?}");
     for (d, h) in derived.iter().zip(by_hand) {
@@ -120,10 +111,10 @@ fn a_tilt_held_by_a_couple_has_each_root_of_its_double_angle() {
 /// said as that, with the statement to add, not as "no polynomial in theta".
 #[test]
 fn too_few_equations_for_an_angle_say_so() {
-    let text = std::fs::read_to_string("examples/scenes/torque_free_disk_from_omega.scene")
-        .unwrap()
-        .replace("constraint omega_y = w*sin(gamma)\n", "");
-    let scene = parse_scene("t.scene", &text).unwrap();
+    let scene = edited_example(
+        "torque_free_disk_from_omega",
+        &[("constraint omega_y = w*sin(gamma)\n", "")],
+    );
     let message = analyse(&scene).unwrap_err().render();
     assert!(
         message.contains("under-determined: 2 equations (the constraints and the equations of motion that hold an unknown) for the 3 unknowns theta, phidot, psidot"),
@@ -170,19 +161,21 @@ fn an_angle_written_a_quarter_turn_off_is_still_the_angle() {
                 find beta\n";
     let scene = parse_scene("rod.scene", text).unwrap();
     let analysis = analyse(&scene).unwrap();
-    let betas: Vec<f64> = analysis
-        .results
-        .iter()
-        .map(|(_, v)| {
-            let Value::Scalar(e) = v else {
-                panic!("β is a scalar")
-            };
-            e.eval(&|s| scene.value(s)).unwrap()
-        })
-        .collect();
+    let betas = each_solution(&scene, &analysis);
     let by_hand = (3.0 * 9.81 / (2.0 * 0.6 * 100.0f64)).acos();
     assert!(
         betas.iter().any(|b| (b - by_hand).abs() < 1e-12),
         "{betas:?} against {by_hand}"
     );
+}
+
+/// The value of every result, a scalar in each solution (one row per solution).
+fn each_solution(scene: &kinetics::Scene, analysis: &kinetics::Analysis) -> Vec<f64> {
+    let value = |(_, v): &(kinetics::scene::model::Request, Value)| {
+        let Value::Scalar(e) = v else {
+            panic!("a scalar result")
+        };
+        e.eval(&|s| scene.value(s)).unwrap()
+    };
+    analysis.results.iter().map(value).collect()
 }

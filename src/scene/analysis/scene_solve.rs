@@ -52,8 +52,10 @@ pub(super) fn solve_scene(
         positive: &positive,
     };
     let angles = angle_unknowns(equations, wanted);
-    let names: Vec<&str> = wanted.iter().map(|u| u.name()).collect();
-    let what = || format!("solving the equations for {}", names.join(", "));
+    let what = || {
+        let names: Vec<&str> = wanted.iter().map(|u| u.name()).collect();
+        format!("solving the equations for {}", names.join(", "))
+    };
     let solved = work::doing(what, || match angles.first() {
         Some(&u) => solve_for_angle(scene, equations, wanted, u, &context),
         None => solve_system(equations, wanted, &context),

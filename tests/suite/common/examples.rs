@@ -44,3 +44,19 @@ pub fn result<'a>(analysis: &'a kinetics::Analysis, name: &str) -> &'a kinetics:
         .unwrap_or_else(|| panic!("{name} requested"))
         .1
 }
+
+/// The example `examples/scenes/<name>.scene` with each `(from, to)` edit made, parsed; an
+/// edit whose `from` is not in the text is a panic (else the test would check the example
+/// unedited).
+pub fn edited_example(name: &str, edits: &[(&str, &str)]) -> kinetics::Scene {
+    let path = format!(
+        "{}/examples/scenes/{name}.scene",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let mut text = std::fs::read_to_string(&path).expect("the example exists");
+    for (from, to) in edits {
+        assert!(text.contains(from), "{name}.scene has no '{from}'");
+        text = text.replace(from, to);
+    }
+    kinetics::parse_scene(&path, &text).unwrap_or_else(|d| panic!("{}", d.render()))
+}

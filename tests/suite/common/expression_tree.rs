@@ -125,7 +125,8 @@ pub fn point(n: usize) -> impl Strategy<Value = Vec<f64>> {
 
 impl Tree {
     /// The expression, built with the algebra's operators (`+ - * /`, `checked_pow`,
-    /// `Expr::func`); none when it divides by an expression that is exactly zero.
+    /// `Func::checked_apply`); none when it divides by an expression that is exactly zero
+    /// or takes the tangent at its pole (`tan(6 atan(1))`, 3π/2), as the parser refuses.
     pub fn build(&self, names: &[&str]) -> Option<Expr> {
         Some(match self {
             Tree::Num(p, q) => Expr::rational(*p, *q),
@@ -136,7 +137,7 @@ impl Tree {
             Tree::Div(a, b) => a.build(names)?.checked_div(&b.build(names)?).ok()?,
             Tree::Pow(a, p, q) => a.build(names)?.checked_pow(&Expr::rational(*p, *q)).ok()?,
             Tree::Neg(a) => -a.build(names)?,
-            Tree::Func(f, a) => Expr::func(*f, a.build(names)?),
+            Tree::Func(f, a) => f.checked_apply(a.build(names)?).ok()?,
         })
     }
 

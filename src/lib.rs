@@ -80,6 +80,7 @@
 
 pub mod algebra;
 pub mod check;
+pub mod figure;
 pub mod mechanics;
 pub mod numeric;
 pub mod parse;

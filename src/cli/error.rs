@@ -38,6 +38,9 @@ pub enum CliError {
         name: Option<String>,
         source: NumericError,
     },
+    /// The scene's figure could not be drawn (a size without a number).
+    #[error("error: {0}")]
+    Figure(kinetics::figure::FigureError),
     /// The plot could not be drawn.
     #[cfg(feature = "plot")]
     #[error("{0}")]

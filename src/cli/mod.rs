@@ -5,6 +5,7 @@ mod budget;
 mod check;
 mod derive;
 mod error;
+mod figure;
 mod input;
 #[cfg(feature = "plot")]
 mod plot;
@@ -51,6 +52,8 @@ enum Command {
     Check(check::Args),
     /// Show which derivations a scene's requests pull, in order.
     Plan(solve::PlanArgs),
+    /// Draw a scene's figure: the body, its axes and loads (SVG or TikZ).
+    Figure(figure::Args),
     /// Integrate Euler's equations and the orientation for a scene's body.
     Simulate(simulate::Args),
     /// Benchmarks that print tables.
@@ -108,6 +111,7 @@ fn execute(command: Command) -> Result<ExitCode, CliError> {
         Command::Derive(args) => derive::run(args),
         Command::Solve(args) => solve::run(args),
         Command::Plan(args) => solve::plan(args),
+        Command::Figure(args) => figure::run(args),
         Command::Simulate(args) => simulate::run(args),
         Command::Bench(b) => bench::run(b),
     }?;

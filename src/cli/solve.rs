@@ -1,13 +1,15 @@
 //! `kinetics solve SCENE [--format text|latex|markdown|json|html] [--standalone] [--numbers]
-//! [--digits N] [--units si|us]` and
+//! [--digits N] [--units si|us] [-o FILE]` and
 //! `kinetics plan SCENE`: a scene file (or `-` for standard input) analysed on demand.
 
 use super::budget::Input;
 use super::error::CliError;
+use kinetics::figure::{figure, svg::svg};
 use kinetics::scene::unit_system::UnitSystem;
 use kinetics::scene::{analyse, parse_scene_in, Analysis, Scene};
 use kinetics::solution::numbers::{with_digits, DEFAULT_DIGITS};
-use kinetics::solution::{render, render_numbers, Format};
+use kinetics::solution::{render_beside, render_numbers, Format};
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 #[command(after_help = "Example:\n  kinetics solve examples/scenes/sp18_4_shaft_reactions.scene")]
@@ -32,6 +34,10 @@ pub struct Args {
     /// are written in. A `find … in UNIT` or an unknown's declared unit still wins.
     #[arg(long, value_enum)]
     pub units: Option<Units>,
+    /// Write the page to this file instead of standard output; a Markdown page's figure is
+    /// written beside it, as the same name with `.svg`.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
 }
 
 /// The unit systems as the command line spells them.
@@ -112,11 +118,49 @@ fn page(args: &Args, scene: &Scene, analysis: &Analysis) -> Result<String, CliEr
             "--standalone goes with --format latex".into(),
         ));
     }
+    let beside = match (&args.output, format, args.numbers) {
+        (Some(path), Format::Markdown, false) => Some(figure_path(path)),
+        _ => None,
+    };
+    let figure_file = beside
+        .as_deref()
+        .and_then(Path::file_name)
+        .map(|name| name.to_string_lossy().into_owned());
     let page = with_digits(usize::from(args.digits), || match args.numbers {
         true => render_numbers(scene, analysis, format, args.standalone),
-        false => render(scene, analysis, format, args.standalone),
+        false => render_beside(
+            scene,
+            analysis,
+            format,
+            args.standalone,
+            figure_file.as_deref(),
+        ),
     });
-    Ok(page.trim_end().to_string())
+    let page = page.trim_end().to_string();
+    let Some(path) = &args.output else {
+        return Ok(page);
+    };
+    if let Some(svg_path) = &beside {
+        if svg_path == path {
+            return Err(CliError::Usage(format!(
+                "-o {}: the Markdown page's figure goes beside it as a .svg of the same name; name the page .md",
+                path.display()
+            )));
+        }
+        // The page names the image only when it can be drawn: then it is written.
+        if let Ok(drawn) = figure(scene) {
+            std::fs::write(svg_path, format!("{}\n", svg(&drawn)))
+                .map_err(CliError::io(format!("write {}", svg_path.display())))?;
+        }
+    }
+    std::fs::write(path, format!("{page}\n"))
+        .map_err(CliError::io(format!("write {}", path.display())))?;
+    Ok(String::new())
+}
+
+/// Where a Markdown page's figure goes: beside it, its name with `.svg`.
+fn figure_path(page: &Path) -> PathBuf {
+    page.with_extension("svg")
 }
 
 pub fn plan(args: PlanArgs) -> Result<String, CliError> {

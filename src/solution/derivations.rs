@@ -79,6 +79,7 @@ fn page<'a>(
         title: None,
         untitled: "Derivations",
         sections,
+        figure_file: None,
     }
 }
 

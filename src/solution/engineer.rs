@@ -62,6 +62,7 @@ pub(super) fn numbers_page<'a>(
         title: scene.title.as_deref(),
         untitled: "Numbers",
         sections,
+        figure_file: None,
     }
 }
 

@@ -34,6 +34,7 @@ mtd.rhs { text-align: left; text-align: -webkit-left; }
 h2 { font-size: 1.1em; margin: 1.4em 0 0.4em; }
 h2 .step { margin-right: 0.5em; }
 h3 { font-size: 1em; margin: 1em 0 0.3em; }
+figure { margin: 1em 0; } figure svg { max-width: 100%; height: auto; }
 table.parts { border-collapse: collapse; margin: 0.5em 0; }
 table.parts th, table.parts td { border-bottom: 1px solid #bbb; padding: 0.2em 0.8em; }
 ";
@@ -119,6 +120,12 @@ fn block(block: &Block) -> String {
                 let lines = row.right_lines(Notation::MathMl, first_em, width_em);
                 self::rows(&row.left(Notation::MathMl), &lines)
             }))
+        }
+        Block::Figure(drawn) => {
+            format!(
+                "<figure>\n{}\n</figure>\n",
+                crate::figure::svg::inline(drawn)
+            )
         }
         Block::Results(results) => self::results(results, false),
         Block::Answers(results) => self::results(results, true),

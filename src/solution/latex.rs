@@ -16,11 +16,11 @@ use crate::print::{self, markup, width::RELATION_EM, Notation};
 use crate::scene::model::Given;
 
 /// The preamble of a standalone LaTeX document: article class on A4 at 11 pt with 25 mm
-/// margins, amsmath and amssymb; a block of relations may break across pages
+/// margins, amsmath and amssymb, TikZ for the figure; a block of relations may break across pages
 /// (`\\allowdisplaybreaks`), so a page is not left half empty before a long one; `\\sloppy`,
 /// so a paragraph of long givens or a long title breaks between words rather than run past
 /// the margin.
-pub(super) const LATEX_PREAMBLE: &str = "\\documentclass[a4paper,11pt]{article}\n\\usepackage[margin=25mm]{geometry}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\allowdisplaybreaks\n\\sloppy\n\\begin{document}\n";
+pub(super) const LATEX_PREAMBLE: &str = "\\documentclass[a4paper,11pt]{article}\n\\usepackage[margin=25mm]{geometry}\n\\usepackage{amsmath}\n\\usepackage{amssymb}\n\\usepackage{tikz}\n\\allowdisplaybreaks\n\\sloppy\n\\begin{document}\n";
 
 /// The page in LaTeX; `standalone`, a whole document.
 pub(super) fn page(page: &Page, standalone: bool) -> String {
@@ -70,11 +70,20 @@ fn section(out: &mut String, section: &Section) {
             Block::Results(results) => self::results(results, false),
             Block::Answers(results) => self::results(results, true),
             Block::Values(steps) => values(steps),
+            Block::Figure(drawn) => figure(drawn),
         });
     }
     for sub in &section.subsections {
         self::section(out, sub);
     }
+}
+
+/// The figure centred, its TikZ picture no wider than the text.
+pub(super) fn figure(drawn: &crate::figure::Figure) -> String {
+    format!(
+        "\\begin{{center}}\n{}\n\\end{{center}}\n\n",
+        crate::figure::tikz::tikz(drawn)
+    )
 }
 
 /// Items of inline maths as a sentence: `$a$, $b$.` and a blank line.

@@ -1,4 +1,4 @@
-//! A [`Page`] in Markdown: headings `#` (the title), `##` (a step, the results, a
+//! A [`Page`] in Markdown (its figure an image beside it, [`Page::figure_file`]): headings `#` (the title), `##` (a step, the results, a
 //! derivation), `###` (a derivation's step); the givens and requests a bold lead-in and
 //! inline maths; the mathematics the LaTeX page's blocks between `$$` (`latex.rs`). As in
 //! LaTeX, the answers section (numbers first) is left to the text page.
@@ -10,17 +10,18 @@ use crate::print::markup;
 
 /// The page in Markdown.
 pub(super) fn page(page: &Page) -> String {
+    let figure_file = page.figure_file;
     let mut out = String::new();
     if let Some(title) = page.title {
         out.push_str(&format!("# {}\n\n", markup::markdown(title)));
     }
     for s in &page.sections {
-        section(&mut out, s);
+        section(&mut out, s, figure_file);
     }
     out
 }
 
-fn section(out: &mut String, section: &Section) {
+fn section(out: &mut String, section: &Section, figure_file: Option<&str>) {
     match &section.heading {
         Heading::Answers => return,
         Heading::Statement => {}
@@ -51,6 +52,13 @@ fn section(out: &mut String, section: &Section) {
             Block::Relations(rows) => format!("$$\n{}$$\n\n", latex::relations(rows)),
             Block::Results(results) => format!("$$\n{}$$\n", latex::results(results, false)),
             Block::Answers(results) => format!("$$\n{}$$\n", latex::results(results, true)),
+            Block::Figure(_) => match figure_file {
+                Some(file) => format!("![The figure of the problem]({})\n\n", markdown_link(file)),
+                None => {
+                    "*The figure is written beside the page with `-o FILE.md` (as `FILE.svg`).*\n\n"
+                        .into()
+                }
+            },
             Block::Values(steps) => steps
                 .iter()
                 .map(|step| {
@@ -61,7 +69,17 @@ fn section(out: &mut String, section: &Section) {
         });
     }
     for sub in &section.subsections {
-        self::section(out, sub);
+        self::section(out, sub, figure_file);
+    }
+}
+
+/// A file name as a Markdown link target: `<…>` around it when it holds a space or a
+/// parenthesis, `<` and `>` escaped.
+fn markdown_link(file: &str) -> String {
+    let escaped = file.replace('<', "%3C").replace('>', "%3E");
+    match escaped.contains([' ', '(', ')']) {
+        true => format!("<{escaped}>"),
+        false => escaped,
     }
 }
 

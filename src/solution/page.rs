@@ -11,6 +11,7 @@
 use super::engineer::StepValues;
 use super::result::{Form, Result};
 use crate::algebra::{Symbol, Vector};
+use crate::figure::Figure;
 use crate::mechanics::derivation::{Relation, Step, Table};
 use crate::print::grouped_vector::grouped;
 use crate::print::markup;
@@ -24,6 +25,8 @@ pub struct Page<'a> {
     /// What the page is called where it has no title (an HTML page's `<title>`).
     pub untitled: &'static str,
     pub sections: Vec<Section<'a>>,
+    /// Where a Markdown page's figure is written (an SVG beside the page), when it is.
+    pub figure_file: Option<&'a str>,
 }
 
 /// A heading, what stands under it, and the sections under that (a derivation's steps).
@@ -46,7 +49,8 @@ impl<'a> Section<'a> {
 
 /// What a section is, which each notation heads in its own way.
 pub enum Heading<'a> {
-    /// What the problem says (a scene's `statement` lines), under the title, unheaded.
+    /// What the problem says (a scene's `statement` lines) and its figure, under the title,
+    /// unheaded.
     Statement,
     Given,
     Find,
@@ -88,6 +92,9 @@ pub enum Block<'a> {
     Answers(&'a [Result<'a>]),
     /// The intermediate values of the plan's steps, each under its step's title.
     Values(&'a [StepValues]),
+    /// The scene's figure (after the statement, before Given): TikZ in LaTeX, inline SVG in
+    /// HTML, an image beside a Markdown page ([`Page::figure_file`]); none in text.
+    Figure(&'a Figure),
 }
 
 /// A quantity's name in text (`H_G`) and in LaTeX (`\mathbf{H}_G`).

@@ -64,10 +64,27 @@ pub fn relation(r: &Relation, notation: Notation) -> (String, String) {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn render(scene: &Scene, analysis: &Analysis, format: Format, standalone: bool) -> String {
+    render_beside(scene, analysis, format, standalone, None)
+}
+
+/// [`render`], a Markdown page showing its figure as the image `figure_file` (an SVG the
+/// caller writes beside the page: [`crate::figure::svg::svg`]); without one, a Markdown page
+/// says how to have it.
+pub fn render_beside(
+    scene: &Scene,
+    analysis: &Analysis,
+    format: Format,
+    standalone: bool,
+    figure_file: Option<&str>,
+) -> String {
     on_the_page(scene, analysis, || {
         let dims = scene_dimensions(scene);
         let results = results(scene, analysis, &dims);
-        let page = solution_page(scene, analysis, &results);
+        // A scene the figure cannot be drawn for (a size without a number) has its page
+        // without one; `kinetics figure` says why.
+        let drawn = crate::figure::figure(scene).ok();
+        let mut page = solution_page(scene, analysis, &results, drawn.as_ref());
+        page.figure_file = figure_file;
         match format {
             Format::Text => super::text::page(&page),
             Format::Latex => super::latex::page(&page, standalone),

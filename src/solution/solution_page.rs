@@ -1,10 +1,12 @@
-//! A scene's worked solution as a [`Page`]: what the problem says (its `statement` lines),
+//! A scene's worked solution as a [`Page`]: what the problem says (its `statement` lines) and
+//! its figure,
 //! the givens, the quantities asked for, the answers as numbers when every given has a value,
 //! each step of the plan that has something to say (its table of parts, its relations), then
 //! the results (a last step that only states them is left to Results).
 
 use super::page::{step_rows, Block, Heading, Name, Page, Section};
 use super::result::{quantity_latex, shown_name, Body, Form, Result};
+use crate::figure::Figure;
 use crate::mechanics::derivation::Relation;
 use crate::mechanics::Step;
 use crate::scene::{Analysis, Scene};
@@ -15,11 +17,16 @@ pub(super) fn solution_page<'a>(
     scene: &'a Scene,
     analysis: &'a Analysis,
     results: &'a [Result<'a>],
+    figure: Option<&'a Figure>,
 ) -> Page<'a> {
     let mut sections = Vec::new();
+    let mut statement = Vec::new();
     if !scene.statement.is_empty() {
-        let words = Cow::Owned(scene.statement.join(" "));
-        sections.push(Section::new(Heading::Statement, vec![Block::Words(words)]));
+        statement.push(Block::Words(Cow::Owned(scene.statement.join(" "))));
+    }
+    statement.extend(figure.map(Block::Figure));
+    if !statement.is_empty() {
+        sections.push(Section::new(Heading::Statement, statement));
     }
     sections.push(Section::new(
         Heading::Given,
@@ -70,6 +77,7 @@ pub(super) fn solution_page<'a>(
         title: scene.title.as_deref(),
         untitled: "Worked solution",
         sections,
+        figure_file: None,
     }
 }
 

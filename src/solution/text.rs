@@ -18,7 +18,8 @@ pub(super) fn page(page: &Page) -> String {
     if let Some(title) = page.title {
         parts.push(format!("{}\n", markup::text(title)));
     }
-    parts.extend(page.sections.iter().map(section));
+    // A section with nothing to say in text (the statement section of a figure alone).
+    parts.extend(page.sections.iter().map(section).filter(|s| !s.is_empty()));
     parts.join("\n")
 }
 
@@ -53,6 +54,8 @@ fn section(section: &Section) -> String {
             Block::Results(results) => results.iter().map(|r| result(r, false)).collect(),
             Block::Answers(results) => answers(results),
             Block::Values(steps) => values(steps),
+            // Text has no figure: `kinetics figure` draws it.
+            Block::Figure(_) => String::new(),
         });
     }
     for sub in &section.subsections {

@@ -6,7 +6,7 @@
 use std::path::Path;
 
 /// Each folder of `src/` and the folders it may use, lowest first.
-const LAYERS: [(&str, &[&str]); 9] = [
+const LAYERS: [(&str, &[&str]); 10] = [
     ("algebra", &[]),
     ("parse", &["algebra"]),
     ("print", &["algebra"]),
@@ -14,8 +14,20 @@ const LAYERS: [(&str, &[&str]); 9] = [
     ("numeric", &["algebra", "mechanics"]),
     ("scene", &["algebra", "parse", "mechanics", "numeric"]),
     (
-        "solution",
+        "figure",
         &["algebra", "parse", "print", "mechanics", "numeric", "scene"],
+    ),
+    (
+        "solution",
+        &[
+            "algebra",
+            "parse",
+            "print",
+            "mechanics",
+            "numeric",
+            "scene",
+            "figure",
+        ],
     ),
     (
         "check",
@@ -30,6 +42,7 @@ const LAYERS: [(&str, &[&str]); 9] = [
             "mechanics",
             "numeric",
             "scene",
+            "figure",
             "solution",
             "check",
         ],

@@ -23,6 +23,7 @@ mod html;
 mod latex;
 mod markdown;
 mod parse;
+mod svg;
 mod text;
 
 pub use parse::{MarkupError, MarkupErrorKind};
@@ -72,6 +73,40 @@ pub fn html(title: &str) -> String {
 /// mathematics an `<mrow>`.
 pub fn mathml(title: &str) -> String {
     render(title, html::words_in_maths, html::maths_in_maths)
+}
+
+/// The text of an SVG `<text>` element (a figure's label), and its width in ems: words and
+/// mathematics as text, a script a smaller `<tspan>` off the baseline.
+pub fn svg(title: &str) -> (String, f64) {
+    let mut out = String::new();
+    let mut width = 0.0;
+    match parse::parse(title) {
+        Ok(segments) => {
+            for segment in &segments {
+                match segment {
+                    Segment::Words(w) => {
+                        let mut plain = String::new();
+                        text::words(&mut plain, w);
+                        svg::escaped(&mut out, &plain);
+                        width += svg::words_em(&plain);
+                    }
+                    Segment::Maths(nodes) => width += svg::maths(&mut out, nodes),
+                }
+            }
+        }
+        Err(_) => {
+            let plain = visible_words(title);
+            svg::escaped(&mut out, &plain);
+            width = svg::words_em(&plain);
+        }
+    }
+    (out, width)
+}
+
+fn visible_words(words: &str) -> String {
+    let mut plain = String::new();
+    text::words(&mut plain, words);
+    plain
 }
 
 /// Whether the title is well formed: the first unknown command, unbalanced brace or `$`,

@@ -1,0 +1,355 @@
+//! The body part by part, each in its own axes turned into the frame's (`frame = R · own`)
+//! and placed by its mass centre: a rod a thick segment along x', a plate a parallelogram,
+//! a disk or ring the ellipse its circle projects to, a cylinder, tube or cone the outline of
+//! its ends (the convex hull of the projected circles, the apex) with the near end on it, a
+//! sphere or shell its silhouette circle with an equator, a prism its faces toward the eye, a
+//! point mass a dot; a body given only by its inertia a dashed sphere. Each part fills white,
+//! nearer parts over farther ones.
+
+use super::canvas::Canvas;
+use super::view::{self, across, add, scaled, sub, P2, P3};
+use super::{FigureError, Mark, Stroke};
+use crate::mechanics::shapes::Shape;
+use crate::scene::model::{Part, Scene};
+
+/// Points on a drawn circle.
+const CIRCLE_POINTS: usize = 48;
+/// A point mass's dot radius, in figure units.
+const POINT_MASS_RADIUS: f64 = 3.5;
+
+/// Where the body is: points on its outline, its mass centre G and its reach (the farthest
+/// outline point from O or G, the length every arrow is drawn in proportion to).
+pub struct Extent {
+    pub samples: Vec<P3>,
+    pub centre: P3,
+    pub reach: f64,
+}
+
+impl Extent {
+    /// How far the body goes along the unit vector `d` from the origin (0 if it lies behind).
+    pub fn along(&self, d: P3) -> f64 {
+        self.samples
+            .iter()
+            .map(|p| view::dot(*p, d))
+            .fold(0.0, f64::max)
+    }
+}
+
+/// Draws every part; the body's extent.
+pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
+    let mut samples = Vec::new();
+    let (mut mass, mut moment) = (0.0, [0.0; 3]);
+    for (k, part) in scene.parts.iter().enumerate() {
+        let what = format!("body {}", k + 1);
+        let placed = Placed::of(canvas, part, &what)?;
+        let m = canvas.value(&part.mass, &what)?;
+        mass += m;
+        moment = add(moment, scaled(placed.centre, m));
+        let (outline, marks) = placed.outline(canvas, &part.shape, &what)?;
+        samples.extend(outline);
+        canvas.part(placed.centre, marks);
+    }
+    let centre = match mass > 0.0 {
+        true => scaled(moment, 1.0 / mass),
+        false => [0.0; 3],
+    };
+    let reach = samples
+        .iter()
+        .flat_map(|p| [view::norm(*p), view::norm(sub(*p, centre))])
+        .fold(0.0, f64::max);
+    Ok(Extent {
+        samples,
+        centre,
+        reach: if reach > 0.0 { reach } else { 1.0 },
+    })
+}
+
+/// A part's mass centre and its own axes in the frame.
+struct Placed {
+    centre: P3,
+    axes: [P3; 3],
+}
+
+impl Placed {
+    fn of(canvas: &Canvas, part: &Part, what: &str) -> Result<Placed, FigureError> {
+        let centre = canvas.vector(&part.position, what)?;
+        let mut axes = [[0.0; 3]; 3];
+        for (j, axis) in axes.iter_mut().enumerate() {
+            for (i, c) in axis.iter_mut().enumerate() {
+                *c = canvas.value(&part.rotation[(i, j)], what)?;
+            }
+        }
+        Ok(Placed { centre, axes })
+    }
+
+    /// The point at own coordinates `(a, b, c)`.
+    fn at(&self, a: f64, b: f64, c: f64) -> P3 {
+        let [x, y, z] = self.axes;
+        add(
+            self.centre,
+            add(scaled(x, a), add(scaled(y, b), scaled(z, c))),
+        )
+    }
+
+    /// The outline points of the part and its marks.
+    fn outline(
+        &self,
+        canvas: &Canvas,
+        shape: &Shape,
+        what: &str,
+    ) -> Result<(Vec<P3>, Vec<Mark>), FigureError> {
+        let len = |e| canvas.value(e, what);
+        let x = self.axes[0];
+        let end = |h: f64| add(self.centre, scaled(x, h));
+        Ok(match shape {
+            Shape::SlenderRod { length } => {
+                let l = len(length)? / 2.0;
+                let ends = vec![self.at(-l, 0.0, 0.0), self.at(l, 0.0, 0.0)];
+                let mark = open_path(canvas, &ends, Stroke::ROD);
+                (ends, vec![mark])
+            }
+            Shape::ThinPlate { a, b } => {
+                let (a, b) = (len(a)? / 2.0, len(b)? / 2.0);
+                let corners = vec![
+                    self.at(-a, -b, 0.0),
+                    self.at(a, -b, 0.0),
+                    self.at(a, b, 0.0),
+                    self.at(-a, b, 0.0),
+                ];
+                let mark = face(canvas, &corners);
+                (corners, vec![mark])
+            }
+            Shape::ThinDisk { radius } => {
+                let c = circle(self.centre, x, len(radius)?);
+                let mark = face(canvas, &c);
+                (c, vec![mark])
+            }
+            Shape::ThinRing { radius } => {
+                let c = circle(self.centre, x, len(radius)?);
+                let mark = closed_path(canvas, &c, Stroke::ROD);
+                (c, vec![mark])
+            }
+            Shape::SolidCylinder { radius, length } => {
+                let (r, h) = (len(radius)?, len(length)? / 2.0);
+                let ends = [circle(end(-h), x, r), circle(end(h), x, r)];
+                solid_of(canvas, &ends, x)
+            }
+            Shape::Tube {
+                outer,
+                inner,
+                length,
+            } => {
+                let (r, ri, h) = (len(outer)?, len(inner)?, len(length)? / 2.0);
+                let ends = [circle(end(-h), x, r), circle(end(h), x, r)];
+                let (points, mut marks) = solid_of(canvas, &ends, x);
+                let near = near_end(canvas, x, h);
+                marks.push(closed_path(
+                    canvas,
+                    &circle(end(near), x, ri),
+                    Stroke::OUTLINE,
+                ));
+                (points, marks)
+            }
+            Shape::SolidCone { radius, height } => {
+                // G is a quarter of the height from the base: the apex ¾h behind it.
+                let (r, h) = (len(radius)?, len(height)?);
+                let apex = end(-0.75 * h);
+                let base = circle(end(0.25 * h), x, r);
+                let mut points = base.clone();
+                points.push(apex);
+                let hull = hull(canvas, &points);
+                let base_mark = closed_path(canvas, &base, Stroke::OUTLINE);
+                (points, vec![hull, base_mark])
+            }
+            Shape::SolidSphere { radius } | Shape::SphericalShell { radius } => {
+                sphere(canvas, self.centre, len(radius)?, false)
+            }
+            Shape::RectangularPrism { a, b, c } => {
+                let half = [len(a)? / 2.0, len(b)? / 2.0, len(c)? / 2.0];
+                self.prism(canvas, half)
+            }
+            Shape::Gyration { radii } => {
+                let r = radii
+                    .iter()
+                    .map(len)
+                    .try_fold(0.0, |m, k| k.map(|k| f64::max(m, k)))?;
+                sphere(canvas, self.centre, r, true)
+            }
+            Shape::Explicit(_) => {
+                let r = 0.25 * canvas.base_length();
+                sphere(canvas, self.centre, r, true)
+            }
+            Shape::PointMass => (
+                vec![self.centre],
+                vec![Mark::Dot {
+                    at: canvas.project(self.centre),
+                    radius: POINT_MASS_RADIUS,
+                }],
+            ),
+        })
+    }
+
+    /// A box's faces that look toward the eye, each filled.
+    fn prism(&self, canvas: &Canvas, half: [f64; 3]) -> (Vec<P3>, Vec<Mark>) {
+        let eye = canvas.view().toward_eye();
+        let corner = |s: [f64; 3]| self.at(s[0] * half[0], s[1] * half[1], s[2] * half[2]);
+        let mut corners = Vec::new();
+        let mut marks = Vec::new();
+        for axis in 0..3 {
+            for side in [-1.0, 1.0] {
+                let outward = scaled(self.axes[axis], side);
+                let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+                let face_corners: Vec<P3> = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+                    .iter()
+                    .map(|(a, b)| {
+                        let mut s = [0.0; 3];
+                        s[axis] = side;
+                        s[u] = *a;
+                        s[v] = *b;
+                        corner(s)
+                    })
+                    .collect();
+                corners.extend(face_corners.iter().copied());
+                if view::dot(outward, eye) > 1e-9 {
+                    marks.push(face(canvas, &face_corners));
+                }
+            }
+        }
+        (corners, marks)
+    }
+}
+
+/// Which end (−h or +h along the axis `x`) faces the eye.
+fn near_end(canvas: &Canvas, x: P3, h: f64) -> f64 {
+    match view::dot(x, canvas.view().toward_eye()) >= 0.0 {
+        true => h,
+        false => -h,
+    }
+}
+
+/// A solid of revolution's two end circles: their hull filled, the near end drawn on it.
+fn solid_of(canvas: &Canvas, ends: &[Vec<P3>; 2], x: P3) -> (Vec<P3>, Vec<Mark>) {
+    let points: Vec<P3> = ends.iter().flatten().copied().collect();
+    let hull = hull(canvas, &points);
+    let near = match view::dot(x, canvas.view().toward_eye()) >= 0.0 {
+        true => &ends[1],
+        false => &ends[0],
+    };
+    let near = closed_path(canvas, near, Stroke::OUTLINE);
+    (points, vec![hull, near])
+}
+
+/// A sphere's silhouette (the circle across the line of sight) filled, and its equator.
+fn sphere(canvas: &Canvas, centre: P3, r: f64, dashed: bool) -> (Vec<P3>, Vec<Mark>) {
+    let outline = circle(centre, canvas.view().toward_eye(), r);
+    let stroke = Stroke {
+        dashed,
+        ..Stroke::OUTLINE
+    };
+    let mut silhouette = face(canvas, &outline);
+    if let Mark::Path { stroke: s, .. } = &mut silhouette {
+        *s = stroke;
+    }
+    let equator = closed_path(canvas, &circle(centre, [0.0, 0.0, 1.0], r), Stroke::AXIS);
+    let mut points = outline;
+    points.extend(circle(centre, [1.0, 0.0, 0.0], r));
+    points.extend(circle(centre, [0.0, 1.0, 0.0], r));
+    (points, vec![silhouette, equator])
+}
+
+/// The circle of radius `r` about `centre` across the unit `axis`.
+pub(super) fn circle(centre: P3, axis: P3, r: f64) -> Vec<P3> {
+    let (u, v) = across(view::unit(axis));
+    (0..CIRCLE_POINTS)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / CIRCLE_POINTS as f64;
+            add(centre, add(scaled(u, r * t.cos()), scaled(v, r * t.sin())))
+        })
+        .collect()
+}
+
+fn open_path(canvas: &Canvas, points: &[P3], stroke: Stroke) -> Mark {
+    Mark::Path {
+        points: points.iter().map(|p| canvas.project(*p)).collect(),
+        closed: false,
+        filled: false,
+        stroke,
+    }
+}
+
+fn closed_path(canvas: &Canvas, points: &[P3], stroke: Stroke) -> Mark {
+    Mark::Path {
+        points: points.iter().map(|p| canvas.project(*p)).collect(),
+        closed: true,
+        filled: false,
+        stroke,
+    }
+}
+
+/// A polygon filled white with the outline's stroke.
+fn face(canvas: &Canvas, points: &[P3]) -> Mark {
+    Mark::Path {
+        points: points.iter().map(|p| canvas.project(*p)).collect(),
+        closed: true,
+        filled: true,
+        stroke: Stroke::OUTLINE,
+    }
+}
+
+/// The convex hull of the projected points, filled.
+pub(super) fn hull(canvas: &Canvas, points: &[P3]) -> Mark {
+    let projected: Vec<P2> = points.iter().map(|p| canvas.project(*p)).collect();
+    Mark::Path {
+        points: convex_hull(projected),
+        closed: true,
+        filled: true,
+        stroke: Stroke::OUTLINE,
+    }
+}
+
+/// Andrew's monotone chain: the hull counter-clockwise.
+fn convex_hull(mut p: Vec<P2>) -> Vec<P2> {
+    p.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    p.dedup_by(|a, b| (a.x - b.x).abs() < 1e-12 && (a.y - b.y).abs() < 1e-12);
+    if p.len() < 3 {
+        return p;
+    }
+    let turn = |o: P2, a: P2, b: P2| (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    let mut hull: Vec<P2> = Vec::with_capacity(2 * p.len());
+    for pass in 0..2 {
+        let start = hull.len();
+        let points: Box<dyn Iterator<Item = &P2>> = match pass {
+            0 => Box::new(p.iter()),
+            _ => Box::new(p.iter().rev()),
+        };
+        for &q in points {
+            while hull.len() >= start + 2
+                && turn(hull[hull.len() - 2], hull[hull.len() - 1], q) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(q);
+        }
+        hull.pop();
+    }
+    hull
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_hull_of_a_square_and_its_centre_is_the_square() {
+        let p = |x, y| P2::new(x, y);
+        let hull = convex_hull(vec![
+            p(0.0, 0.0),
+            p(1.0, 0.0),
+            p(0.5, 0.5),
+            p(1.0, 1.0),
+            p(0.0, 1.0),
+        ]);
+        assert_eq!(hull.len(), 4);
+        assert!(!hull.contains(&p(0.5, 0.5)));
+    }
+}

@@ -1,0 +1,355 @@
+//! The axes, the motion and the loads, each drawn at a length in proportion to the body's
+//! reach (a drawing shows where and which way, not how much):
+//!
+//! - the axes x, y, z from O, past the body; O and G marked (G alone where they coincide
+//!   without a fixed point);
+//! - ω a double arrow from the fixed point (else G); a vector holding an unknown is drawn
+//!   by its components (`C_y`, `C_z`), each labelled, as a textbook draws reactions;
+//! - a force an arrow from its point, labelled with its name; a couple a double arrow past
+//!   the body along it; an impulse an arrow into its point, its head open;
+//! - with a fixed point and ω along a fixed direction: the fixed axis, and where forces
+//!   holding unknowns act on it, the bearings (short tubes) and the shaft between them;
+//! - named points as dots.
+
+use super::body::{circle, Extent};
+use super::canvas::{Canvas, Layer};
+use super::view::{self, add, scaled, sub, P3};
+use super::{FigureError, Mark, Role, Stroke};
+use crate::algebra::{Expr, Symbol, Vector};
+use crate::print;
+use crate::scene::model::Scene;
+use crate::scene::units::Dimension;
+
+/// Lengths in proportion to the body's reach.
+const FORCE_LENGTH: f64 = 0.45;
+const COUPLE_LENGTH: f64 = 0.4;
+/// A couple's gap from the body along it.
+const COUPLE_GAP: f64 = 0.1;
+const OMEGA_LENGTH: f64 = 0.55;
+const AXIS_BEYOND: f64 = 0.55;
+const BEARING_RADIUS: f64 = 0.07;
+const BEARING_LENGTH: f64 = 0.1;
+
+const UNIT: [P3; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+
+/// The axes x, y, z from O past the body, O and G.
+pub fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
+    let mut couples = Vec::new();
+    for (k, c) in scene.couples.iter().enumerate() {
+        couples.push(view::unit(canvas.vector(c, &format!("couple {}", k + 1))?));
+    }
+    for (e, name) in UNIT.iter().zip(["x", "y", "z"]) {
+        // Past a couple drawn along the axis, so its head is not lost on the axis line.
+        let beyond = match couples.iter().any(|c| view::dot(*c, *e) > 0.99) {
+            true => COUPLE_GAP + COUPLE_LENGTH + AXIS_BEYOND / 2.0,
+            false => AXIS_BEYOND,
+        };
+        let tip = scaled(*e, body.along(*e) + beyond * body.reach);
+        canvas.arrow(
+            Layer::Behind,
+            [0.0; 3],
+            tip,
+            false,
+            Stroke::AXIS,
+            Role::Axis,
+        );
+        canvas.label(format!("${name}$"), tip, *e);
+    }
+    let apart = view::norm(body.centre) > 1e-9 * body.reach;
+    let away = |p: P3| match view::norm(sub(p, body.centre)) > 1e-12 {
+        true => sub(p, body.centre),
+        false => [-1.0, -1.0, -1.0],
+    };
+    if scene.fixed_point || apart {
+        canvas.label("$O$".into(), [0.0; 3], away([0.0; 3]));
+    }
+    if apart || !scene.fixed_point {
+        canvas.dot(body.centre, 2.5);
+        canvas.label("$G$".into(), body.centre, [-1.0, -1.0, -1.0]);
+    }
+    Ok(())
+}
+
+/// ω (unless the Eulerian angles give it) and the named points.
+pub fn motion(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
+    let unknowns = magnitudes(scene);
+    if let (Some(omega), None) = (&scene.omega, &scene.euler_angles) {
+        let from = match scene.fixed_point {
+            true => [0.0; 3],
+            false => body.centre,
+        };
+        let drawn = Drawn {
+            from,
+            length: OMEGA_LENGTH * body.reach,
+            double: true,
+            stroke: Stroke::MOTION,
+            role: Role::AngularVelocity,
+            into_point: false,
+        };
+        drawn.vector(canvas, omega, Some(r"\omega"), &unknowns, "omega")?;
+    }
+    for p in &scene.points {
+        let at = canvas.vector(&p.position, &p.name)?;
+        canvas.dot(at, 2.5);
+        canvas.label(
+            format!("${}$", name_latex(&p.name)),
+            at,
+            sub(at, body.centre),
+        );
+    }
+    Ok(())
+}
+
+/// The forces, couples and impulses; the fixed axis, its bearings and shaft.
+pub fn loads(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
+    let unknowns = magnitudes(scene);
+    let reach = body.reach;
+    let shaft_end = fixed_axis(canvas, scene, body, &unknowns)?;
+    for f in &scene.forces {
+        let at = canvas.vector(&f.point, &f.name)?;
+        let drawn = Drawn {
+            from: at,
+            length: FORCE_LENGTH * reach,
+            double: false,
+            stroke: Stroke::LOAD,
+            role: Role::Force(f.name.clone()),
+            into_point: false,
+        };
+        let whole = drawn.vector(
+            canvas,
+            &f.value,
+            Some(&name_latex(&f.name)),
+            &unknowns,
+            &f.name,
+        )?;
+        if !whole {
+            canvas.label(
+                format!("${}$", name_latex(&f.name)),
+                at,
+                sub(at, body.centre),
+            );
+        }
+    }
+    for (k, c) in scene.couples.iter().enumerate() {
+        let what = format!("couple {}", k + 1);
+        let d = view::unit(canvas.vector(c, &what)?);
+        let beyond = body.along(d).max(shaft_end(d)) + COUPLE_GAP * reach;
+        let drawn = Drawn {
+            from: scaled(d, beyond),
+            length: COUPLE_LENGTH * reach,
+            double: true,
+            stroke: Stroke::LOAD,
+            role: Role::Couple,
+            into_point: false,
+        };
+        drawn.vector(canvas, c, None, &unknowns, &what)?;
+    }
+    for (k, i) in scene.impulses.iter().enumerate() {
+        let what = format!("impulse {}", k + 1);
+        let at = canvas.vector(&i.point, &what)?;
+        let drawn = Drawn {
+            from: at,
+            length: FORCE_LENGTH * reach,
+            double: false,
+            stroke: Stroke {
+                width: 2.0,
+                ..Stroke::LOAD
+            },
+            role: Role::Impulse,
+            into_point: true,
+        };
+        let name = i.name.map(|s| print::latex(&Expr::sym(s)));
+        drawn.vector(canvas, &i.value, name.as_deref(), &unknowns, &what)?;
+    }
+    Ok(())
+}
+
+/// With a fixed point and ω along a fixed direction: the axis through O as a centre line,
+/// the bearings where forces holding unknowns act on it, and the shaft between the outermost
+/// of them (O among them). Returns how far the shaft goes along a direction.
+fn fixed_axis(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    body: &Extent,
+    unknowns: &[Symbol],
+) -> Result<impl Fn(P3) -> f64, FigureError> {
+    let mut ends: Vec<P3> = Vec::new();
+    let axis = match (&scene.omega, scene.fixed_point, &scene.euler_angles) {
+        (Some(omega), true, None) if !holds_any(omega, unknowns) => {
+            Some(view::unit(canvas.vector(omega, "omega")?))
+        }
+        _ => None,
+    };
+    if let Some(a) = axis.filter(|a| view::norm(*a) > 0.0) {
+        let reach = body.reach;
+        let on_axis = |p: P3| view::norm(sub(p, scaled(a, view::dot(p, a)))) < 1e-9 * reach;
+        let mut bearings = Vec::new();
+        for f in &scene.forces {
+            let at = canvas.vector(&f.point, &f.name)?;
+            if on_axis(at) && holds_any(&f.value, unknowns) {
+                bearings.push(at);
+            }
+        }
+        let (lo, hi) = (
+            -body.along(scaled(a, -1.0)) - 0.3 * reach,
+            body.along(a) + 0.3 * reach,
+        );
+        canvas.path(
+            Layer::Behind,
+            &[scaled(a, lo), scaled(a, hi)],
+            false,
+            Stroke::CENTRE_LINE,
+        );
+        if bearings.len() >= 2 {
+            let along: Vec<f64> = bearings
+                .iter()
+                .map(|p| view::dot(*p, a))
+                .chain([0.0])
+                .collect();
+            let (s0, s1) = along
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), s| {
+                    (l.min(*s), h.max(*s))
+                });
+            let (p0, p1) = (scaled(a, s0), scaled(a, s1));
+            let shaft = Mark::Path {
+                points: vec![canvas.project(p0), canvas.project(p1)],
+                closed: false,
+                filled: false,
+                stroke: Stroke::SHAFT,
+            };
+            canvas.part(scaled(add(p0, p1), 0.5), vec![shaft]);
+            ends = vec![p0, p1];
+        }
+        for b in bearings {
+            let h = BEARING_LENGTH * reach / 2.0;
+            let r = BEARING_RADIUS * reach;
+            let rims = [
+                circle(sub(b, scaled(a, h)), a, r),
+                circle(add(b, scaled(a, h)), a, r),
+            ];
+            let points: Vec<P3> = rims.iter().flatten().copied().collect();
+            let outline = super::body::hull(canvas, &points);
+            canvas.part(b, vec![outline]);
+        }
+    }
+    Ok(move |d: P3| ends.iter().map(|p| view::dot(*p, d)).fold(0.0, f64::max))
+}
+
+/// The unknowns that are magnitudes (an unknown angle only turns a vector, which is drawn
+/// at the angle's size): a vector holding one is drawn by its components.
+fn magnitudes(scene: &Scene) -> Vec<Symbol> {
+    scene
+        .unknowns
+        .iter()
+        .filter(|(_, d)| *d != Dimension::NONE)
+        .map(|u| u.0)
+        .collect()
+}
+
+/// Whether a vector's components hold one of the unknowns.
+fn holds_any(v: &Vector, unknowns: &[Symbol]) -> bool {
+    v.iter()
+        .any(|c| c.symbols().iter().any(|s| unknowns.contains(s)))
+}
+
+/// A name as written (`C`, `P1`) in the LaTeX of a symbol of that name.
+fn name_latex(name: &str) -> String {
+    print::latex(&Expr::sym(Symbol::new(name)))
+}
+
+/// How a vector is drawn: from a point (or into it), at a length, single or double.
+struct Drawn {
+    from: P3,
+    length: f64,
+    double: bool,
+    stroke: Stroke,
+    role: Role,
+    /// The head at the point (an impulse striking it), else the tail.
+    into_point: bool,
+}
+
+impl Drawn {
+    /// Draws `v`: one arrow labelled `name` (else its magnitude along an axis, else the
+    /// vector written) when no unknown is in it, else an arrow per component that is not
+    /// zero, each labelled with the component when it is one symbol (`C_y`), else by the
+    /// name and the axis (`ω_x`). Whether it was drawn whole.
+    fn vector(
+        &self,
+        canvas: &mut Canvas,
+        v: &Vector,
+        name: Option<&str>,
+        unknowns: &[Symbol],
+        what: &str,
+    ) -> Result<bool, FigureError> {
+        let value = canvas.vector(v, what)?;
+        if !holds_any(v, unknowns) {
+            let nonzero: Vec<usize> = (0..3).filter(|k| !v[*k].is_zero()).collect();
+            let label = match (name, nonzero.as_slice()) {
+                (Some(n), _) => n.to_string(),
+                (None, [k]) => magnitude(&v[*k], value[*k]),
+                (None, _) => {
+                    let units = crate::algebra::vector::unit_vectors();
+                    let written = (0..3)
+                        .map(|k| &v[k] * &units[k])
+                        .fold(Expr::zero(), |a, b| a + b);
+                    print::latex(&written)
+                }
+            };
+            self.arrow(canvas, value, label);
+            return Ok(true);
+        }
+        for k in 0..3 {
+            if v[k].is_zero() {
+                continue;
+            }
+            let mut d = [0.0; 3];
+            d[k] = value[k].signum();
+            if d[k] == 0.0 {
+                d[k] = 1.0;
+            }
+            let label = match (v[k].as_symbol().or_else(|| (-&v[k]).as_symbol()), name) {
+                (Some(_), _) | (None, None) => magnitude(&v[k], value[k]),
+                // A component that is not one symbol is named by the vector's name.
+                (None, Some(n)) => format!("{n}_{}", ["x", "y", "z"][k]),
+            };
+            self.arrow(canvas, d, label);
+        }
+        Ok(false)
+    }
+
+    /// One arrow along `direction`, its label at its free end.
+    fn arrow(&self, canvas: &mut Canvas, direction: P3, label: String) {
+        let u = view::unit(direction);
+        if view::norm(u) == 0.0 {
+            return;
+        }
+        let span = scaled(u, self.length);
+        let (from, to, free, outward) = match self.into_point {
+            true => (
+                sub(self.from, span),
+                self.from,
+                sub(self.from, span),
+                scaled(u, -1.0),
+            ),
+            false => (self.from, add(self.from, span), add(self.from, span), u),
+        };
+        canvas.arrow(
+            Layer::Front,
+            from,
+            to,
+            self.double,
+            self.stroke,
+            self.role.clone(),
+        );
+        canvas.label(format!("${label}$"), free, outward);
+    }
+}
+
+/// A component's LaTeX without its sign where the value is negative (the arrow shows it).
+fn magnitude(c: &Expr, value: f64) -> String {
+    match value < 0.0 {
+        true => print::latex(&-c),
+        false => print::latex(c),
+    }
+}

@@ -1,0 +1,77 @@
+//! The numbers a figure is drawn with: each given's value; a symbolic length a default, the
+//! same wherever the symbol stands (the first symbolic length four times the largest length
+//! given, or 1 without one, the next ones in other proportions, so `a × b` is no square); any
+//! other symbol (a mass, a force's magnitude, an unknown) 1, and an angle without a value 30°.
+//! Only directions and sizes matter to a drawing: a force is drawn at one length whatever its
+//! magnitude.
+
+use super::view::P3;
+use crate::algebra::{AlgebraError, Expr, Symbol, Vector};
+use crate::mechanics::eulerian_angles::EulerianAngles;
+use crate::scene::model::Scene;
+use crate::scene::units::Dimension;
+use std::collections::HashMap;
+
+/// The proportions of the symbolic lengths, in the order they are given.
+const PROPORTIONS: [f64; 5] = [1.0, 0.6, 0.8, 1.3, 0.45];
+
+/// The value of every symbol a scene's figure evaluates.
+pub struct Sizes {
+    values: HashMap<Symbol, f64>,
+    /// The length the first symbolic length is drawn at: a body given by its inertia alone
+    /// is drawn a quarter of it across.
+    pub base: f64,
+}
+
+impl Sizes {
+    pub fn of(scene: &Scene) -> Sizes {
+        let largest_given = scene
+            .givens
+            .iter()
+            .filter(|g| g.dimension == Dimension::LENGTH)
+            .filter_map(|g| g.value)
+            .map(f64::abs)
+            .fold(0.0, f64::max);
+        let base = if largest_given > 0.0 {
+            4.0 * largest_given
+        } else {
+            1.0
+        };
+        let theta = EulerianAngles::chapter().nutation;
+        let mut values = HashMap::new();
+        let mut symbolic_lengths = 0;
+        let declared = scene
+            .givens
+            .iter()
+            .map(|g| (g.symbol, g.dimension, g.value))
+            .chain(scene.unknowns.iter().map(|(s, d)| (*s, *d, None)));
+        for (symbol, dimension, value) in declared {
+            let value = value.unwrap_or_else(|| {
+                if dimension == Dimension::LENGTH {
+                    symbolic_lengths += 1;
+                    base * PROPORTIONS[(symbolic_lengths - 1) % PROPORTIONS.len()]
+                } else if dimension == Dimension::NONE || symbol == theta {
+                    30f64.to_radians()
+                } else {
+                    1.0
+                }
+            });
+            values.insert(symbol, value);
+        }
+        Sizes { values, base }
+    }
+
+    /// The value of `e` with the scene's symbols at their sizes.
+    pub fn of_expr(&self, e: &Expr) -> Result<f64, AlgebraError> {
+        e.eval::<f64>(&|s| self.values.get(&s).copied())
+    }
+
+    /// A vector's components at the sizes.
+    pub fn of_vector(&self, v: &Vector) -> Result<P3, AlgebraError> {
+        Ok([
+            self.of_expr(&v[0])?,
+            self.of_expr(&v[1])?,
+            self.of_expr(&v[2])?,
+        ])
+    }
+}

@@ -1,0 +1,132 @@
+//! A figure as an SVG element (inline in an HTML page, or a file beside a Markdown page):
+//! y turned down, strokes black or the accent colour, faces white, an impulse's head open,
+//! each label a `<text>` centred on its box, in a serif italic.
+
+use super::{heads, Figure, Mark, Role, Stroke, FONT_SIZE};
+use crate::print::markup;
+use std::fmt::Write;
+
+/// The accent colour of the loads.
+pub const ACCENT: &str = "#0b5cad";
+
+/// The figure as an SVG file's one `<svg>` element, as wide as its drawing.
+pub fn svg(figure: &Figure) -> String {
+    element(figure, " xmlns=\"http://www.w3.org/2000/svg\"")
+}
+
+/// The figure as an `<svg>` element inside an HTML page (which needs no namespace, and so
+/// names no address).
+pub fn inline(figure: &Figure) -> String {
+    element(figure, "")
+}
+
+fn element(figure: &Figure, namespace: &str) -> String {
+    let (w, h) = (figure.max.x - figure.min.x, figure.max.y - figure.min.y);
+    let mut out = format!(
+        "<svg{namespace} class=\"figure\" width=\"{w:.0}\" height=\"{h:.0}\" viewBox=\"{:.2} {:.2} {w:.2} {h:.2}\" role=\"img\" aria-label=\"figure of the problem\">\n",
+        figure.min.x, -figure.max.y
+    );
+    out.push_str("<g fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n");
+    for mark in &figure.marks {
+        self::mark(&mut out, mark);
+    }
+    out.push_str("</g>\n");
+    let _ = writeln!(
+        out,
+        "<g font-family=\"'Latin Modern Roman', 'Times New Roman', serif\" font-style=\"italic\" font-size=\"{FONT_SIZE}\" text-anchor=\"middle\" dominant-baseline=\"central\">"
+    );
+    for label in &figure.labels {
+        let (text, _) = markup::svg(&label.markup);
+        let _ = writeln!(
+            out,
+            "<text x=\"{:.2}\" y=\"{:.2}\">{text}</text>",
+            label.centre.x, -label.centre.y
+        );
+    }
+    out.push_str("</g>\n</svg>");
+    out
+}
+
+fn colour(stroke: &Stroke) -> &'static str {
+    match stroke.accent {
+        true => ACCENT,
+        false => "black",
+    }
+}
+
+/// `stroke`, its width and its dashes as attributes.
+fn stroke_attributes(stroke: &Stroke) -> String {
+    let dashes = match stroke.dashed {
+        true => " stroke-dasharray=\"6 3 1.5 3\"",
+        false => "",
+    };
+    format!(
+        "stroke=\"{}\" stroke-width=\"{}\"{dashes}",
+        colour(stroke),
+        stroke.width
+    )
+}
+
+fn points(points: impl Iterator<Item = super::P2>) -> String {
+    points
+        .map(|p| format!("{:.2},{:.2}", p.x, -p.y))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+fn mark(out: &mut String, mark: &Mark) {
+    match mark {
+        Mark::Path {
+            points: p,
+            closed,
+            filled,
+            stroke,
+        } => {
+            let element = if *closed { "polygon" } else { "polyline" };
+            let fill = if *filled { " fill=\"white\"" } else { "" };
+            let _ = writeln!(
+                out,
+                "<{element} points=\"{}\"{fill} {}/>",
+                points(p.iter().copied()),
+                stroke_attributes(stroke)
+            );
+        }
+        Mark::Arrow {
+            from,
+            via,
+            to,
+            double,
+            stroke,
+            role,
+        } => {
+            let line = std::iter::once(*from)
+                .chain(via.iter().copied())
+                .chain([*to]);
+            let _ = writeln!(
+                out,
+                "<polyline points=\"{}\" {}/>",
+                points(line),
+                stroke_attributes(stroke)
+            );
+            let fill = match role {
+                Role::Impulse => "white",
+                _ => colour(stroke),
+            };
+            for head in heads(*from, via, *to, *double) {
+                let _ = writeln!(
+                    out,
+                    "<polygon points=\"{}\" fill=\"{fill}\" stroke=\"{}\" stroke-width=\"1\"/>",
+                    points(head.into_iter()),
+                    colour(stroke)
+                );
+            }
+        }
+        Mark::Dot { at, radius } => {
+            let _ = writeln!(
+                out,
+                "<circle cx=\"{:.2}\" cy=\"{:.2}\" r=\"{radius}\" fill=\"black\"/>",
+                at.x, -at.y
+            );
+        }
+    }
+}

@@ -1,0 +1,112 @@
+//! A figure as a `tikzpicture` (TikZ, Debian's `texlive-pictures`), in the coordinates of the
+//! SVG: a figure unit is ¾ pt, so the figure is as wide on paper as on screen and its labels
+//! stand where they were placed; each label a node centred on its box.
+
+use super::{heads, Figure, Mark, Role, Stroke, P2};
+use crate::print::markup;
+use std::fmt::Write;
+
+/// The accent colour of the loads, as xcolor spells it (the SVG's `#0b5cad`).
+const ACCENT: &str = "{rgb,255:red,11;green,92;blue,173}";
+
+/// The figure as a `tikzpicture` environment.
+pub fn tikz(figure: &Figure) -> String {
+    let mut out =
+        String::from("\\begin{tikzpicture}[x=0.75pt,y=0.75pt,line cap=round,line join=round]\n");
+    for mark in &figure.marks {
+        self::mark(&mut out, mark);
+    }
+    for label in &figure.labels {
+        let _ = writeln!(
+            out,
+            "\\node[inner sep=0pt] at {} {{{}}};",
+            point(label.centre),
+            markup::latex(&label.markup)
+        );
+    }
+    // The picture's bounding box is the figure's, labels and margin included.
+    let _ = writeln!(
+        out,
+        "\\useasboundingbox {} rectangle {};",
+        point(figure.min),
+        point(figure.max)
+    );
+    out.push_str("\\end{tikzpicture}");
+    out
+}
+
+fn point(p: P2) -> String {
+    format!("({:.2},{:.2})", p.x, p.y)
+}
+
+fn colour(stroke: &Stroke) -> &'static str {
+    match stroke.accent {
+        true => ACCENT,
+        false => "black",
+    }
+}
+
+/// A stroke's options: its colour, its width in points, its dashes.
+fn options(stroke: &Stroke) -> String {
+    let dashes = match stroke.dashed {
+        true => ",dash pattern=on 4.5pt off 2.25pt on 1pt off 2.25pt",
+        false => "",
+    };
+    format!(
+        "draw={},line width={:.2}pt{dashes}",
+        colour(stroke),
+        stroke.width * 0.75
+    )
+}
+
+fn chain(points: impl Iterator<Item = P2>) -> String {
+    points.map(point).collect::<Vec<_>>().join(" -- ")
+}
+
+fn mark(out: &mut String, mark: &Mark) {
+    match mark {
+        Mark::Path {
+            points,
+            closed,
+            filled,
+            stroke,
+        } => {
+            let fill = if *filled { ",fill=white" } else { "" };
+            let cycle = if *closed { " -- cycle" } else { "" };
+            let _ = writeln!(
+                out,
+                "\\path[{}{fill}] {}{cycle};",
+                options(stroke),
+                chain(points.iter().copied())
+            );
+        }
+        Mark::Arrow {
+            from,
+            via,
+            to,
+            double,
+            stroke,
+            role,
+        } => {
+            let line = std::iter::once(*from)
+                .chain(via.iter().copied())
+                .chain([*to]);
+            let _ = writeln!(out, "\\path[{}] {};", options(stroke), chain(line));
+            let fill = match role {
+                Role::Impulse => "white",
+                _ => colour(stroke),
+            };
+            for head in heads(*from, via, *to, *double) {
+                let _ = writeln!(
+                    out,
+                    "\\path[draw={},fill={fill},line width=0.75pt] {} -- cycle;",
+                    colour(stroke),
+                    chain(head.into_iter())
+                );
+            }
+        }
+        Mark::Dot { at, radius } => {
+            let _ = writeln!(out, "\\fill {} circle ({radius});", point(*at));
+        }
+    }
+}

@@ -1,0 +1,200 @@
+//! The one projection of every figure: an orthographic view from in front, to the right and
+//! above, the textbook's near-isometric one. With z up, x comes toward the reader (drawn down
+//! and to the left), y goes to the right and z straight up; a circle is drawn as the ellipse
+//! it projects to and a sphere as a circle.
+//!
+//! The scene's "up" is z unless its axes say otherwise: the fixed vertical K of the Eulerian
+//! angles (`K = sin θ j + cos θ k`), or the direction a weight (a force holding `g`) points
+//! against. The view turns that direction up: `p ↦ (R·p) projected`, R the rotation that takes
+//! `up` to z by the shortest turn.
+
+/// A point or direction in the scene's frame, in its length unit.
+pub type P3 = [f64; 3];
+
+/// A point or direction in the plane of the figure, y up.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct P2 {
+    pub x: f64,
+    pub y: f64,
+}
+
+impl P2 {
+    pub fn new(x: f64, y: f64) -> P2 {
+        P2 { x, y }
+    }
+    pub fn plus(self, o: P2) -> P2 {
+        P2::new(self.x + o.x, self.y + o.y)
+    }
+    pub fn minus(self, o: P2) -> P2 {
+        P2::new(self.x - o.x, self.y - o.y)
+    }
+    pub fn times(self, k: f64) -> P2 {
+        P2::new(self.x * k, self.y * k)
+    }
+    pub fn length(self) -> f64 {
+        self.x.hypot(self.y)
+    }
+    /// The direction of `self`, or none for a (nearly) zero vector.
+    pub fn unit(self) -> Option<P2> {
+        let l = self.length();
+        (l > 1e-12).then(|| self.times(1.0 / l))
+    }
+    /// Turned a quarter turn counter-clockwise.
+    pub fn normal(self) -> P2 {
+        P2::new(-self.y, self.x)
+    }
+}
+
+/// Azimuth of the eye from the x axis toward y, and its elevation above the horizontal.
+const AZIMUTH_DEG: f64 = 35.0;
+const ELEVATION_DEG: f64 = 25.0;
+
+/// The view: the turn that brings the scene's up to z, then the projection onto the screen.
+#[derive(Debug, Clone, Copy)]
+pub struct View {
+    turn: [[f64; 3]; 3],
+    eye: P3,
+    right: P3,
+    screen_up: P3,
+}
+
+impl View {
+    /// The view with `up` (a direction of the scene's frame) drawn straight up.
+    pub fn with_up(up: P3) -> View {
+        let (a, e) = (AZIMUTH_DEG.to_radians(), ELEVATION_DEG.to_radians());
+        let eye = [e.cos() * a.cos(), e.cos() * a.sin(), e.sin()];
+        let right = unit(cross([0.0, 0.0, 1.0], eye));
+        let screen_up = cross(eye, right);
+        View {
+            turn: turn_to_z(unit(up)),
+            eye,
+            right,
+            screen_up,
+        }
+    }
+
+    /// Where the scene's point `p` is drawn (scene length units, y up).
+    pub fn project(&self, p: P3) -> P2 {
+        let q = apply(&self.turn, p);
+        P2::new(dot(q, self.right), dot(q, self.screen_up))
+    }
+
+    /// How far toward the eye `p` stands (larger is nearer), for what hides what.
+    pub fn depth(&self, p: P3) -> f64 {
+        dot(apply(&self.turn, p), self.eye)
+    }
+
+    /// The direction toward the eye in the scene's frame (the turn undone).
+    pub fn toward_eye(&self) -> P3 {
+        let t = &self.turn;
+        [0, 1, 2].map(|j| (0..3).map(|i| t[i][j] * self.eye[i]).sum())
+    }
+}
+
+/// The rotation taking the unit vector `u` to z (Rodrigues about u × z); the half turn about
+/// x when u is −z.
+fn turn_to_z(u: P3) -> [[f64; 3]; 3] {
+    let c = u[2];
+    if c < -1.0 + 1e-12 {
+        return [[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]];
+    }
+    // v = u × z, R = I + [v]× + [v]×² / (1 + c).
+    let v = [u[1], -u[0], 0.0];
+    let k = 1.0 / (1.0 + c);
+    let vx = [[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]];
+    let mut r = [[0.0; 3]; 3];
+    for (i, row) in r.iter_mut().enumerate() {
+        for (j, cell) in row.iter_mut().enumerate() {
+            let square: f64 = (0..3).map(|m| vx[i][m] * vx[m][j]).sum();
+            *cell = f64::from(u8::from(i == j)) + vx[i][j] + square * k;
+        }
+    }
+    r
+}
+
+pub fn dot(a: P3, b: P3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+pub fn cross(a: P3, b: P3) -> P3 {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+pub fn norm(a: P3) -> f64 {
+    dot(a, a).sqrt()
+}
+
+/// `a / |a|` (zero stays zero).
+pub fn unit(a: P3) -> P3 {
+    let n = norm(a);
+    if n == 0.0 {
+        a
+    } else {
+        scaled(a, 1.0 / n)
+    }
+}
+
+pub fn scaled(a: P3, k: f64) -> P3 {
+    [a[0] * k, a[1] * k, a[2] * k]
+}
+
+pub fn add(a: P3, b: P3) -> P3 {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+pub fn sub(a: P3, b: P3) -> P3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+/// `m · p` for a 3 × 3 matrix by rows.
+pub fn apply(m: &[[f64; 3]; 3], p: P3) -> P3 {
+    [dot(m[0], p), dot(m[1], p), dot(m[2], p)]
+}
+
+/// Two unit vectors across `axis` (a unit vector), with `axis` a right-handed triple.
+pub fn across(axis: P3) -> (P3, P3) {
+    let helper = if axis[0].abs() < 0.9 {
+        [1.0, 0.0, 0.0]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
+    let u = unit(cross(axis, helper));
+    let v = cross(axis, u);
+    (u, v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn z_up_x_toward_the_reader_y_to_the_right() {
+        let view = View::with_up([0.0, 0.0, 1.0]);
+        let (x, y, z) = (
+            view.project([1.0, 0.0, 0.0]),
+            view.project([0.0, 1.0, 0.0]),
+            view.project([0.0, 0.0, 1.0]),
+        );
+        assert!(x.x < 0.0 && x.y < 0.0, "x down and to the left: {x:?}");
+        assert!(y.x > 0.5, "y to the right: {y:?}");
+        assert!(z.x.abs() < 1e-12 && z.y > 0.9, "z straight up: {z:?}");
+        assert!(view.depth([1.0, 0.0, 0.0]) > 0.0, "x toward the eye");
+    }
+
+    #[test]
+    fn the_stated_up_is_drawn_up() {
+        for up in [
+            [0.0, 1.0, 0.0],
+            [0.0, 0.5, 0.8],
+            [0.0, 0.0, -1.0],
+            [1.0, 0.0, 0.0],
+        ] {
+            let p = View::with_up(up).project(unit(up));
+            assert!(p.x.abs() < 1e-12 && p.y > 0.9, "{up:?} -> {p:?}");
+        }
+    }
+}

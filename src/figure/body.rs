@@ -45,7 +45,13 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
         let m = canvas.value(&part.mass, &what)?;
         mass += m;
         moment = add(moment, scaled(placed.centre, m));
-        let (outline, marks) = placed.outline(canvas, &part.shape, &what)?;
+        let (outline, mut marks) = placed.outline(canvas, &part.shape, &what)?;
+        for size in placed.named_sizes(canvas, &part.shape, &what)? {
+            if let Some([a, b]) = size.radius {
+                marks.push(open_path(canvas, &[a, b], Stroke::AXIS));
+            }
+            canvas.label(size.label, size.at, size.outward);
+        }
         samples.extend(outline);
         canvas.part(placed.centre, marks);
     }
@@ -62,6 +68,15 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
         centre,
         reach: if reach > 0.0 { reach } else { 1.0 },
     })
+}
+
+/// A length of a shape written as one symbol, labelled with it where it shows: a rod's or a
+/// side's by its middle, a radius by a thin line from the centre to the rim.
+struct NamedSize {
+    label: String,
+    at: P3,
+    outward: P3,
+    radius: Option<[P3; 2]>,
 }
 
 /// A part's mass centre and its own axes in the frame.
@@ -187,6 +202,71 @@ impl Placed {
                 }],
             ),
         })
+    }
+
+    /// The shape's lengths that are one symbol (`rod(c)`, `plate(a, b)`, `disk(r)`), each
+    /// labelled with it.
+    fn named_sizes(
+        &self,
+        canvas: &Canvas,
+        shape: &Shape,
+        what: &str,
+    ) -> Result<Vec<NamedSize>, FigureError> {
+        let [x, y, _] = self.axes;
+        let (u, _) = across(x);
+        let mut out = Vec::new();
+        let mut name = |e: &crate::algebra::Expr, at: P3, outward: P3, radius: Option<[P3; 2]>| {
+            if e.as_symbol().is_some() {
+                out.push(NamedSize {
+                    label: super::loads::label(e),
+                    at,
+                    outward,
+                    radius,
+                });
+            }
+        };
+        let len = |e| canvas.value(e, what);
+        match shape {
+            Shape::SlenderRod { length } => name(length, self.centre, u, None),
+            Shape::ThinPlate { a, b } | Shape::RectangularPrism { a, b, .. } => {
+                let (ha, hb) = (len(a)? / 2.0, len(b)? / 2.0);
+                name(a, self.at(0.0, -hb, 0.0), scaled(y, -1.0), None);
+                name(b, self.at(ha, 0.0, 0.0), x, None);
+            }
+            Shape::ThinDisk { radius }
+            | Shape::ThinRing { radius }
+            | Shape::SolidSphere { radius }
+            | Shape::SphericalShell { radius } => {
+                let rim = add(self.centre, scaled(u, len(radius)?));
+                let middle = add(self.centre, scaled(u, len(radius)? / 2.0));
+                name(radius, middle, u, Some([self.centre, rim]));
+            }
+            Shape::SolidCylinder { radius, length }
+            | Shape::Tube {
+                outer: radius,
+                length,
+                ..
+            } => {
+                let (r, h) = (len(radius)?, len(length)? / 2.0);
+                let near = add(self.centre, scaled(x, near_end(canvas, x, h)));
+                let rim = add(near, scaled(u, r));
+                name(radius, add(near, scaled(u, r / 2.0)), u, Some([near, rim]));
+                name(length, add(self.centre, scaled(u, r)), u, None);
+            }
+            Shape::SolidCone { radius, height } => {
+                let (r, h) = (len(radius)?, len(height)?);
+                let base = add(self.centre, scaled(x, 0.25 * h));
+                name(
+                    radius,
+                    add(base, scaled(u, r / 2.0)),
+                    u,
+                    Some([base, add(base, scaled(u, r))]),
+                );
+                name(height, add(self.centre, scaled(u, r / 2.0)), u, None);
+            }
+            Shape::Gyration { .. } | Shape::Explicit(_) | Shape::PointMass => {}
+        }
+        Ok(out)
     }
 
     /// A box's faces that look toward the eye, each filled.

@@ -9,7 +9,7 @@ use super::{heads, Label, Mark, FONT_SIZE};
 use crate::print::markup;
 
 /// Room between a label's box and its text, and between its box and its anchor.
-const PADDING: f64 = 1.5;
+const PADDING: f64 = 2.5;
 const GAPS: [f64; 6] = [2.0, 6.0, 11.0, 17.0, 25.0, 36.0];
 const SHIFTS: [f64; 5] = [0.0, 1.0, -1.0, 2.0, -2.0];
 

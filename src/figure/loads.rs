@@ -16,7 +16,7 @@ use super::canvas::{Canvas, Layer};
 use super::view::{self, add, scaled, sub, P3};
 use super::{FigureError, Mark, Role, Stroke};
 use crate::algebra::{Expr, Symbol, Vector};
-use crate::print;
+use crate::print::{self, markup};
 use crate::scene::model::Scene;
 use crate::scene::units::Dimension;
 
@@ -86,16 +86,12 @@ pub fn motion(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), F
             role: Role::AngularVelocity,
             into_point: false,
         };
-        drawn.vector(canvas, omega, Some(r"\omega"), &unknowns, "omega")?;
+        drawn.vector(canvas, omega, Some("omega"), &unknowns, "omega")?;
     }
     for p in &scene.points {
         let at = canvas.vector(&p.position, &p.name)?;
         canvas.dot(at, 2.5);
-        canvas.label(
-            format!("${}$", name_latex(&p.name)),
-            at,
-            sub(at, body.centre),
-        );
+        canvas.label(named(&p.name), at, sub(at, body.centre));
     }
     Ok(())
 }
@@ -115,19 +111,9 @@ pub fn loads(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fi
             role: Role::Force(f.name.clone()),
             into_point: false,
         };
-        let whole = drawn.vector(
-            canvas,
-            &f.value,
-            Some(&name_latex(&f.name)),
-            &unknowns,
-            &f.name,
-        )?;
+        let whole = drawn.vector(canvas, &f.value, Some(&f.name), &unknowns, &f.name)?;
         if !whole {
-            canvas.label(
-                format!("${}$", name_latex(&f.name)),
-                at,
-                sub(at, body.centre),
-            );
+            canvas.label(named(&f.name), at, sub(at, body.centre));
         }
     }
     for (k, c) in scene.couples.iter().enumerate() {
@@ -158,8 +144,12 @@ pub fn loads(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fi
             role: Role::Impulse,
             into_point: true,
         };
-        let name = i.name.map(|s| print::latex(&Expr::sym(s)));
-        drawn.vector(canvas, &i.value, name.as_deref(), &unknowns, &what)?;
+        let name = i.name.map(|s| s.name().to_string());
+        let whole = drawn.vector(canvas, &i.value, name.as_deref(), &unknowns, &what)?;
+        // Drawn by its components, a named impulse is named at its point (as a force is).
+        if let (false, Some(name)) = (whole, &name) {
+            canvas.label(named(name), at, sub(at, body.centre));
+        }
     }
     Ok(())
 }
@@ -253,11 +243,6 @@ fn holds_any(v: &Vector, unknowns: &[Symbol]) -> bool {
         .any(|c| c.symbols().iter().any(|s| unknowns.contains(s)))
 }
 
-/// A name as written (`C`, `P1`) in the LaTeX of a symbol of that name.
-fn name_latex(name: &str) -> String {
-    print::latex(&Expr::sym(Symbol::new(name)))
-}
-
 /// How a vector is drawn: from a point (or into it), at a length, single or double.
 struct Drawn {
     from: P3,
@@ -286,14 +271,14 @@ impl Drawn {
         if !holds_any(v, unknowns) {
             let nonzero: Vec<usize> = (0..3).filter(|k| !v[*k].is_zero()).collect();
             let label = match (name, nonzero.as_slice()) {
-                (Some(n), _) => n.to_string(),
+                (Some(n), _) => named(n),
                 (None, [k]) => magnitude(&v[*k], value[*k]),
                 (None, _) => {
                     let units = crate::algebra::vector::unit_vectors();
                     let written = (0..3)
                         .map(|k| &v[k] * &units[k])
                         .fold(Expr::zero(), |a, b| a + b);
-                    print::latex(&written)
+                    label(&written)
                 }
             };
             self.arrow(canvas, value, label);
@@ -311,7 +296,7 @@ impl Drawn {
             let label = match (v[k].as_symbol().or_else(|| (-&v[k]).as_symbol()), name) {
                 (Some(_), _) | (None, None) => magnitude(&v[k], value[k]),
                 // A component that is not one symbol is named by the vector's name.
-                (None, Some(n)) => format!("{n}_{}", ["x", "y", "z"][k]),
+                (None, Some(n)) => named(&format!("{n}_{}", ["x", "y", "z"][k])),
             };
             self.arrow(canvas, d, label);
         }
@@ -342,14 +327,29 @@ impl Drawn {
             self.stroke,
             self.role.clone(),
         );
-        canvas.label(format!("${label}$"), free, outward);
+        canvas.label(label, free, outward);
     }
 }
 
-/// A component's LaTeX without its sign where the value is negative (the arrow shows it).
+/// A component's label without its sign where the value is negative (the arrow shows it).
 fn magnitude(c: &Expr, value: f64) -> String {
     match value < 0.0 {
-        true => print::latex(&-c),
-        false => print::latex(c),
+        true => label(&-c),
+        false => label(c),
+    }
+}
+
+/// A label for a name as written (`C`, `P1`, `omega_x`, `weight`): the symbol of that name.
+fn named(name: &str) -> String {
+    label(&Expr::sym(Symbol::new(name)))
+}
+
+/// A label for `e`: its LaTeX as the mathematics of a label where the markup of titles
+/// reads it, else its text as words (`weight`, `m g sin(θ)`).
+pub(super) fn label(e: &Expr) -> String {
+    let maths = format!("${}$", print::latex(e));
+    match markup::validate(&maths) {
+        Ok(()) => maths,
+        Err(_) => print::text(e).replace('$', ""),
     }
 }

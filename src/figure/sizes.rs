@@ -1,7 +1,9 @@
 //! The numbers a figure is drawn with: each given's value; a symbolic length a default, the
 //! same wherever the symbol stands (the first symbolic length four times the largest length
-//! given, or 1 without one, the next ones in other proportions, so `a × b` is no square); any
-//! other symbol (a mass, a force's magnitude, an unknown) 1, and an angle without a value 30°.
+//! given, or 1 without one, the next ones in other proportions, so `a × b` is no square; a
+//! round shape's radius smaller, so a disk on an axle of length L is no wheel of radius L); any
+//! other symbol (a mass, a force's magnitude, an unknown, the time t) 1, and an angle
+//! without a value 30°.
 //! Only directions and sizes matter to a drawing: a force is drawn at one length whatever its
 //! magnitude.
 
@@ -12,8 +14,10 @@ use crate::scene::model::Scene;
 use crate::scene::units::Dimension;
 use std::collections::HashMap;
 
-/// The proportions of the symbolic lengths, in the order they are given.
-const PROPORTIONS: [f64; 5] = [1.0, 0.6, 0.8, 1.3, 0.45];
+/// The proportions of the symbolic lengths, in the order they are given: the radii of the
+/// round shapes among them, and the others (a rod's length, a side, a position).
+const RADII: [f64; 3] = [0.4, 0.25, 0.3];
+const LENGTHS: [f64; 5] = [1.0, 0.6, 0.8, 1.3, 0.45];
 
 /// The value of every symbol a scene's figure evaluates.
 pub struct Sizes {
@@ -39,7 +43,13 @@ impl Sizes {
         };
         let theta = EulerianAngles::chapter().nutation;
         let mut values = HashMap::new();
-        let mut symbolic_lengths = 0;
+        let radii: Vec<Symbol> = scene
+            .parts
+            .iter()
+            .filter_map(|p| p.shape.radius())
+            .filter_map(Expr::as_symbol)
+            .collect();
+        let (mut radius_count, mut length_count) = (0, 0);
         let declared = scene
             .givens
             .iter()
@@ -48,8 +58,12 @@ impl Sizes {
         for (symbol, dimension, value) in declared {
             let value = value.unwrap_or_else(|| {
                 if dimension == Dimension::LENGTH {
-                    symbolic_lengths += 1;
-                    base * PROPORTIONS[(symbolic_lengths - 1) % PROPORTIONS.len()]
+                    let (count, proportions) = match radii.contains(&symbol) {
+                        true => (&mut radius_count, &RADII[..]),
+                        false => (&mut length_count, &LENGTHS[..]),
+                    };
+                    *count += 1;
+                    base * proportions[(*count - 1) % proportions.len()]
                 } else if dimension == Dimension::NONE || symbol == theta {
                     30f64.to_radians()
                 } else {
@@ -58,6 +72,11 @@ impl Sizes {
             });
             values.insert(symbol, value);
         }
+        // A load that varies with the time t is drawn as it is at t = 1 (at t = 0 a sine
+        // would leave nothing to draw).
+        values
+            .entry(Symbol::new(crate::scene::parse::TIME))
+            .or_insert(1.0);
         Sizes { values, base }
     }
 

@@ -81,6 +81,20 @@ pub enum Shape {
 }
 
 impl Shape {
+    /// The radius of a round shape (its outer radius for a tube), none for the others.
+    pub fn radius(&self) -> Option<&Expr> {
+        match self {
+            Shape::ThinDisk { radius }
+            | Shape::SolidCylinder { radius, .. }
+            | Shape::SolidSphere { radius }
+            | Shape::SolidCone { radius, .. }
+            | Shape::SphericalShell { radius }
+            | Shape::ThinRing { radius }
+            | Shape::Tube { outer: radius, .. } => Some(radius),
+            _ => None,
+        }
+    }
+
     /// The lengths that define the shape, in the order they are written, each with what it
     /// is (`radius`, `length`, `side`): all of them must be positive.
     pub fn lengths(&self) -> Vec<(&'static str, &Expr)> {

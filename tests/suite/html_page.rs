@@ -7,11 +7,7 @@
 //! `.ci/run` installs Debian's `chromium` when it is missing, so the test never skips.
 
 use crate::common::binary::{kinetics, scene};
-use std::path::Path;
-use std::process::Command;
-
-/// The browser, as Debian installs it.
-const CHROMIUM: &str = "chromium";
+use crate::common::chromium::chromium;
 
 /// The test's checks, run in the page once it is laid out; the verdict is `ok`, the number
 /// of formulas and of fractions, or the first failure with the formula's markup.
@@ -88,27 +84,6 @@ fn verdict(page: &str, name: &str) -> (usize, usize) {
     });
     let mut counts = counts.split(' ').map(|n| n.parse::<usize>().unwrap_or(0));
     (counts.next().unwrap_or(0), counts.next().unwrap_or(0))
-}
-
-/// Runs headless Chromium on `file` with `flags` (its own profile in `dir`, so that runs in
-/// parallel never share one), within a minute; its standard output.
-fn chromium(dir: &Path, file: &Path, flags: &[&str]) -> String {
-    let profile = dir.join("profile");
-    let run = Command::new("timeout")
-        .arg("60")
-        .arg(CHROMIUM)
-        .args(["--headless", "--no-sandbox", "--disable-gpu"])
-        .arg(format!("--user-data-dir={}", profile.display()))
-        .args(flags)
-        .arg(format!("file://{}", file.display()))
-        .output()
-        .expect("timeout runs");
-    assert!(
-        run.status.success(),
-        "install chromium (.ci/run does): `{CHROMIUM}` failed: {}",
-        String::from_utf8_lossy(&run.stderr)
-    );
-    String::from_utf8_lossy(&run.stdout).into_owned()
 }
 
 #[test]

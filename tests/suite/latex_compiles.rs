@@ -1,4 +1,5 @@
-//! Every example's `--standalone` LaTeX compiles with pdflatex (amsmath only), and so does
+//! Every example's `--standalone` LaTeX, its figure (TikZ) before Given, compiles with pdflatex
+//! (amsmath and TikZ), and so does
 //! `kinetics check --format latex` in a minimal document. `.ci/run` installs pdflatex from
 //! Debian's packages when it is missing, so these tests never skip.
 
@@ -27,6 +28,13 @@ fn every_example_compiles_with_pdflatex() {
             latex.status.success(),
             "{stem}: {}",
             String::from_utf8_lossy(&latex.stderr)
+        );
+        let page = String::from_utf8_lossy(&latex.stdout);
+        let figure = page.find("\\begin{tikzpicture}");
+        let given = page.find("\\paragraph{Given}");
+        assert!(
+            figure.is_some_and(|f| given.is_some_and(|g| f < g)),
+            "{stem}: the figure before Given"
         );
         let tex = out_dir.join(format!("{stem}.tex"));
         std::fs::write(&tex, &latex.stdout).expect("the .tex is written");

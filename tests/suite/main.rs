@@ -39,6 +39,7 @@ mod engineer_numbers;
 mod engineer_tensor_lines;
 mod exact_numbers;
 mod expression_generator;
+mod figure;
 mod general_body_print;
 mod gyroscope_numeric;
 mod gyroscope_scenes;

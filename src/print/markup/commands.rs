@@ -2,7 +2,7 @@
 //! Greek letters (`\omega` → ω), operators (`\times` → ×, `\cdot` → ·, `\int` → ∫,
 //! `\neq` → ≠, `\circ` → ∘), the thin space `\,`, the braces `\{ \}`, and the commands that
 //! take arguments (`\mathbf`, `\boldsymbol`, `\mathrm`, `\text`, `\bar`, `\dot`, `\ddot`,
-//! `\frac`, `\tfrac`).
+//! `\frac`, `\tfrac`), and the functions `\sin \cos \tan \arccos \arctan`.
 
 /// An accent over its argument.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -82,7 +82,12 @@ pub enum Command {
     Fraction {
         small: bool,
     },
+    /// A function's name set upright: `\sin`, `\cos`, `\tan`, `\arccos`, `\arctan`.
+    Function(&'static str),
 }
+
+/// The functions' names, as commands.
+const FUNCTIONS: [&str; 5] = ["sin", "cos", "tan", "arccos", "arctan"];
 
 /// The Greek letters, by command name (ϵ-, ϑ- and other variants are not in the subset).
 const GREEK: [(&str, char); 35] = [
@@ -154,6 +159,7 @@ pub fn command(name: &str) -> Option<Command> {
         "ddot" => Command::Accent(Accent::DoubleDot),
         "frac" => Command::Fraction { small: false },
         "tfrac" => Command::Fraction { small: true },
+        f if FUNCTIONS.contains(&f) => Command::Function(FUNCTIONS.iter().find(|n| **n == f)?),
         _ => return None,
     })
 }

@@ -71,6 +71,8 @@ fn one(out: &mut String, node: &Node, face: Option<Face>) {
         Node::ThinSpace => out.push_str(r#"<mspace width="0.1667em"/>"#),
         Node::Face(face, body) => row(out, body, Some(*face)),
         Node::Text(text) => element(out, "mtext", text),
+        // An identifier of several letters is upright.
+        Node::Function(name) => element(out, "mi", name),
         Node::Group(body) => row(out, body, face),
         Node::Accent(accent, body) => {
             out.push_str(r#"<mover accent="true">"#);

@@ -157,6 +157,7 @@ fn one(out: &mut String, node: &Node, notation: Notation) {
             None => word(out, c.encode_utf8(&mut [0; 4])),
         },
         Node::Number(digits) => out.push_str(digits),
+        Node::Function(name) => word(out, &format!("\\{name}")),
         Node::Blank => out.push(' '),
         Node::ThinSpace => out.push_str(r"\,"),
         Node::Face(face, body) => command(out, face.name(), &[body], notation),

@@ -1,5 +1,5 @@
 //! Titles with mathematics: words, and mathematics between `$…$` in a small LaTeX subset,
-//! rendered in four notations from one tree ([`parse`]):
+//! rendered in four notations from one tree ([`parse`]), and as a figure's SVG label ([`svg`]):
 //!
 //! ```
 //! use kinetics::print::markup;
@@ -10,6 +10,7 @@
 //!     r"products of inertia positive, $\int xy\,dm$ (I\_xy)"
 //! );
 //! assert_eq!(markup::markdown("about $O$, [I_O]"), r"about $O$, \[I\_O\]");
+//! assert_eq!(markup::text(r"$M_0 \sin\theta$"), "M₀ sin θ");
 //! assert_eq!(markup::html("$T$ & more"), "<math><mi>T</mi></math> &amp; more");
 //! assert!(markup::validate(r"$\foo$").is_err());
 //! ```

@@ -40,6 +40,8 @@ pub enum Node {
     Face(Face, Vec<Node>),
     /// `\text{…}`: its words.
     Text(String),
+    /// A function's name, upright (`\sin`).
+    Function(&'static str),
     Accent(Accent, Vec<Node>),
     Fraction {
         small: bool,
@@ -267,6 +269,7 @@ impl Reader<'_> {
             Command::Face(face) => Node::Face(face, self.argument()?),
             Command::Accent(accent) => Node::Accent(accent, self.argument()?),
             Command::Text => Node::Text(self.text_argument()?),
+            Command::Function(name) => Node::Function(name),
             Command::Fraction { small } => Node::Fraction {
                 small,
                 numerator: self.argument()?,

@@ -6,10 +6,11 @@
 use super::parse::Node;
 use super::text;
 
-/// The widths, in ems, of a serif italic's letter, digit, operator and space, and the size
+/// The widths, in ems, of a serif italic's letter, digit, operator and space (generous: the
+/// widest of Latin Modern and DejaVu Serif, the fallback a browser may use), and the size
 /// of a script.
-const LETTER_EM: f64 = 0.55;
-const DIGIT_EM: f64 = 0.5;
+const LETTER_EM: f64 = 0.62;
+const DIGIT_EM: f64 = 0.6;
 const OPERATOR_EM: f64 = 0.7;
 const SPACE_EM: f64 = 0.25;
 const SCRIPT_SIZE: f64 = 0.7;
@@ -36,6 +37,12 @@ fn one(out: &mut String, node: &Node) -> f64 {
             width
         }
         Node::Group(body) | Node::Face(_, body) => maths(out, body),
+        Node::Function(name) => {
+            out.push_str("<tspan font-style=\"normal\">");
+            out.push_str(name);
+            out.push_str("</tspan> ");
+            (name.len() as f64 + 0.5) * DIGIT_EM
+        }
         other => {
             let plain = text::maths(std::slice::from_ref(other));
             escaped(out, &plain);

@@ -64,6 +64,10 @@ fn one(out: &mut String, node: &Node) {
         Node::Blank | Node::ThinSpace => space(out),
         Node::Face(_, body) | Node::Group(body) => out.push_str(&maths(body)),
         Node::Text(text) => words(out, text),
+        Node::Function(name) => {
+            out.push_str(name);
+            out.push(' ');
+        }
         Node::Accent(accent, body) => accented(out, *accent, &maths(body)),
         Node::Fraction {
             numerator,

@@ -2,6 +2,7 @@
 
 pub mod binary;
 pub mod check;
+pub mod chromium;
 pub mod counting_allocator;
 pub mod examples;
 pub mod expression_tree;

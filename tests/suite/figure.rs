@@ -1,0 +1,439 @@
+//! The figure of every worked solution (issue 33), tested as a reader sees it: drawn where
+//! the scene's points project, with the loads, axes and angles the scene states labelled,
+//! its labels apart from each other and inside the picture (the model's boxes, and the boxes
+//! headless Chromium lays the SVG out with), the SVG well-formed XML, the TikZ in a page
+//! that compiles (`latex_compiles.rs`), a Markdown page's SVG written beside it.
+
+use crate::common::binary::{kinetics, scene};
+use crate::common::chromium::chromium;
+use crate::common::examples::example_scenes;
+use kinetics::figure::sizes::Sizes;
+use kinetics::figure::{figure, Figure, Label, Mark, Role, Stroke, P2};
+use kinetics::{Expr, Scene, Symbol};
+
+/// Every example scene, parsed, with its file stem.
+fn examples() -> Vec<(String, Scene)> {
+    example_scenes()
+        .into_iter()
+        .map(|path| {
+            let name = path.file_stem().unwrap().to_string_lossy().into_owned();
+            let text = std::fs::read_to_string(&path).expect("the example reads");
+            let scene = kinetics::parse_scene(&name, &text).expect("the example parses");
+            (name, scene)
+        })
+        .collect()
+}
+
+fn near(a: P2, b: P2) -> bool {
+    (a.x - b.x).hypot(a.y - b.y) < 1e-6
+}
+
+/// Where the scene's point `p` (its vector of expressions) stands in the figure, its symbols
+/// at the figure's sizes.
+fn drawn_at(drawn: &Figure, scene: &Scene, p: &kinetics::Vector) -> P2 {
+    let sizes = Sizes::of(scene);
+    drawn.at(sizes.of_vector(p).expect("the point has a size"))
+}
+
+fn overlap(a: &Label, b: &Label) -> bool {
+    (a.centre.x - b.centre.x).abs() < a.half_width + b.half_width
+        && (a.centre.y - b.centre.y).abs() < a.half_height + b.half_height
+}
+
+#[test]
+fn every_example_has_a_figure_whose_labels_are_apart_and_inside_it() {
+    let mut failures = Vec::new();
+    for (name, scene) in examples() {
+        let drawn = figure(&scene).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(!drawn.labels.is_empty(), "{name}: labels");
+        for (k, a) in drawn.labels.iter().enumerate() {
+            for b in &drawn.labels[k + 1..] {
+                if overlap(a, b) {
+                    failures.push(format!("{name}: {} over {}", a.markup, b.markup));
+                }
+            }
+            let inside = a.centre.x - a.half_width >= drawn.min.x
+                && a.centre.x + a.half_width <= drawn.max.x
+                && a.centre.y - a.half_height >= drawn.min.y
+                && a.centre.y + a.half_height <= drawn.max.y;
+            if !inside {
+                failures.push(format!("{name}: {} outside the picture", a.markup));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// A force's arrows start at its point, an impulse's end at its point (the blow), O is the
+/// origin of the figure and G a dot where the body's mass centre projects.
+#[test]
+fn arrows_start_where_the_scene_puts_their_points() {
+    for (name, scene) in examples() {
+        let drawn = figure(&scene).unwrap();
+        assert!(near(drawn.at([0.0; 3]), P2::new(0.0, 0.0)), "{name}: O");
+        for f in &scene.forces {
+            let at = drawn_at(&drawn, &scene, &f.point);
+            let arrows: Vec<&Mark> = drawn
+                .marks
+                .iter()
+                .filter(|m| matches!(m, Mark::Arrow { role: Role::Force(n), .. } if *n == f.name))
+                .collect();
+            assert!(!arrows.is_empty(), "{name}: force {} drawn", f.name);
+            for arrow in arrows {
+                let Mark::Arrow { from, .. } = arrow else {
+                    unreachable!()
+                };
+                assert!(
+                    near(*from, at),
+                    "{name}: force {} starts at its point",
+                    f.name
+                );
+            }
+        }
+        for i in &scene.impulses {
+            let at = drawn_at(&drawn, &scene, &i.point);
+            let strikes = drawn
+                .marks
+                .iter()
+                .any(|m| matches!(m, Mark::Arrow { role: Role::Impulse, to, .. } if near(*to, at)));
+            assert!(strikes, "{name}: an impulse's head at its point");
+        }
+        // G: the mass-weighted centre of the parts at the figure's sizes, by hand.
+        let sizes = Sizes::of(&scene);
+        let (mut m, mut moment) = (0.0, [0.0; 3]);
+        for p in &scene.parts {
+            let mass = sizes.of_expr(&p.mass).unwrap();
+            let at = sizes.of_vector(&p.position).unwrap();
+            m += mass;
+            for k in 0..3 {
+                moment[k] += mass * at[k];
+            }
+        }
+        let g = drawn.at(moment.map(|c| c / m));
+        let dot_at_g = drawn
+            .marks
+            .iter()
+            .any(|mark| matches!(mark, Mark::Dot { at, .. } if near(*at, g)));
+        let labelled_g = drawn.labels.iter().any(|l| l.markup == "$G$");
+        assert_eq!(
+            dot_at_g, labelled_g,
+            "{name}: G marked and labelled together"
+        );
+    }
+}
+
+/// SP 18.4: the shaft CD between its bearings, the two rods, the couple M and ω.
+#[test]
+fn the_shaft_of_sample_problem_18_4() {
+    let (_, scene) = examples()
+        .into_iter()
+        .find(|(n, _)| n == "sp18_4_shaft_reactions")
+        .unwrap();
+    let drawn = figure(&scene).unwrap();
+    let point = |name: &str| {
+        let f = scene.forces.iter().find(|f| f.name == name).unwrap();
+        drawn_at(&drawn, &scene, &f.point)
+    };
+    let (c, d) = (point("C"), point("D"));
+    let shaft = drawn.marks.iter().any(|m| matches!(m, Mark::Path { points, stroke, .. }
+        if *stroke == Stroke::SHAFT && points.len() == 2
+            && ((near(points[0], c) && near(points[1], d)) || (near(points[0], d) && near(points[1], c)))));
+    assert!(shaft, "the shaft from C to D");
+    let rods = drawn
+        .marks
+        .iter()
+        .filter(|m| matches!(m, Mark::Path { stroke, .. } if *stroke == Stroke::ROD))
+        .count();
+    assert_eq!(rods, 2, "two rods");
+    // A bearing: a filled outline about the bearing's point.
+    let bearing_at = |p: P2| {
+        drawn.marks.iter().any(|m| match m {
+            Mark::Path {
+                points,
+                filled: true,
+                ..
+            } if points.len() > 8 => {
+                let n = points.len() as f64;
+                let centre = points
+                    .iter()
+                    .fold(P2::new(0.0, 0.0), |s, q| s.plus(*q))
+                    .times(1.0 / n);
+                (centre.x - p.x).hypot(centre.y - p.y) < 3.0
+            }
+            _ => false,
+        })
+    };
+    assert!(bearing_at(c) && bearing_at(d), "bearings at C and D");
+    let roles = |r: Role| {
+        drawn
+            .marks
+            .iter()
+            .any(|m| matches!(m, Mark::Arrow { role, double: true, .. } if *role == r))
+    };
+    assert!(
+        roles(Role::Couple) && roles(Role::AngularVelocity),
+        "M and ω, double arrows"
+    );
+    for label in [
+        "$C$",
+        "$D$",
+        "$M$",
+        r"$\omega$",
+        "$C_y$",
+        "$C_z$",
+        "$D_y$",
+        "$D_z$",
+        "$c$",
+    ] {
+        assert!(
+            drawn.labels.iter().any(|l| l.markup == label),
+            "label {label}"
+        );
+    }
+}
+
+/// SP 18.1: the plate a × b and the blow F Δt at its corner (−a/2, −b/2, 0).
+#[test]
+fn the_plate_and_the_blow_of_sample_problem_18_1() {
+    let (_, scene) = examples()
+        .into_iter()
+        .find(|(n, _)| n == "sp18_1_plate_impact")
+        .unwrap();
+    let drawn = figure(&scene).unwrap();
+    let sizes = Sizes::of(&scene);
+    let size = |s: &str| sizes.of_expr(&Expr::sym(Symbol::new(s))).unwrap();
+    let (a, b) = (size("a") / 2.0, size("b") / 2.0);
+    let corners = [[-a, -b, 0.0], [a, -b, 0.0], [a, b, 0.0], [-a, b, 0.0]].map(|p| drawn.at(p));
+    let plate = drawn.marks.iter().any(|m| {
+        matches!(m, Mark::Path { points, filled: true, .. }
+        if points.len() == 4 && corners.iter().all(|c| points.iter().any(|p| near(*p, *c))))
+    });
+    assert!(plate, "the plate's four corners");
+    let blow = drawn
+        .marks
+        .iter()
+        .any(|m| matches!(m, Mark::Arrow { role: Role::Impulse, to, .. } if near(*to, corners[0])));
+    assert!(blow, "the blow at the corner");
+    assert!(
+        drawn.labels.iter().any(|l| l.markup.contains(r"\Delta t")),
+        "F Δt labelled"
+    );
+    for label in ["$a$", "$b$", r"$\omega_x$", r"$\omega_y$"] {
+        assert!(
+            drawn.labels.iter().any(|l| l.markup == label),
+            "label {label}"
+        );
+    }
+}
+
+/// The top: the vertical, θ, and the rates φ̇ and ψ̇ as curved arrows.
+#[test]
+fn the_eulerian_angles_of_a_top() {
+    let (_, scene) = examples()
+        .into_iter()
+        .find(|(n, _)| n == "top_steady_tilt")
+        .unwrap();
+    let drawn = figure(&scene).unwrap();
+    for label in [r"$\theta$", r"$\dot\phi$", r"$\dot\psi$", "$Z$", "$W$"] {
+        assert!(
+            drawn.labels.iter().any(|l| l.markup == label),
+            "label {label}"
+        );
+    }
+    let rates = drawn
+        .marks
+        .iter()
+        .filter(|m| matches!(m, Mark::Arrow { role: Role::Rate, via, .. } if via.len() > 10))
+        .count();
+    assert_eq!(rates, 2, "φ̇ and ψ̇ curved");
+    // The vertical K is drawn up: the weight, along −K, straight down.
+    let down = drawn.marks.iter().any(|m| {
+        matches!(m, Mark::Arrow { role: Role::Force(n), from, to, .. }
+        if n == "W" && (to.x - from.x).abs() < 1e-9 && to.y < from.y)
+    });
+    assert!(down, "the weight straight down");
+}
+
+/// The text content of an SVG `<text>` element, its `<tspan>`s joined.
+fn text_of(node: roxmltree::Node) -> String {
+    node.descendants()
+        .filter(|n| n.is_text())
+        .map(|n| n.text().unwrap_or(""))
+        .collect()
+}
+
+/// A symbol as the figure writes it: its Unicode text, its scripts on the line (`F₂` is
+/// `F2`, `ω_x` is `ωx`).
+fn written(s: Symbol) -> String {
+    let latex = kinetics::print::latex(&Expr::sym(s));
+    kinetics::print::markup::text(&format!("${latex}$"))
+        .chars()
+        .filter(|c| !matches!(c, '_' | '^' | ' '))
+        .map(|c| match c {
+            '₀'..='₉' => char::from(b'0' + (c as u32 - '₀' as u32) as u8),
+            c => c,
+        })
+        .collect()
+}
+
+/// Each example's HTML page holds one inline `<svg>`, well-formed XML, with a `<text>` for
+/// every force, couple and impulse (by name, or the symbols of its components) and each axis.
+#[test]
+fn each_html_page_holds_one_svg_with_the_loads_and_axes_labelled() {
+    for (name, scene) in examples() {
+        let path = scene_path(&name);
+        let (code, html, err) = kinetics(&["solve", "--format", "html", &path]);
+        assert_eq!(code, 0, "{name}: {err}");
+        assert_eq!(html.matches("<svg").count(), 1, "{name}: one figure");
+        let start = html.find("<svg").unwrap();
+        let end = html.find("</svg>").unwrap() + "</svg>".len();
+        let doc = roxmltree::Document::parse(&html[start..end])
+            .unwrap_or_else(|e| panic!("{name}: the SVG is not XML: {e}"));
+        let texts: Vec<String> = doc
+            .descendants()
+            .filter(|n| n.has_tag_name("text"))
+            .map(text_of)
+            .collect();
+        let has = |t: &str| texts.iter().any(|x| x == t);
+        for axis in ["x", "y", "z"] {
+            assert!(has(axis), "{name}: axis {axis} in {texts:?}");
+        }
+        for f in &scene.forces {
+            // A name of several letters (`push`) is written as the word.
+            let shown = has(&written(Symbol::new(&f.name))) || has(&f.name);
+            assert!(shown, "{name}: force {} in {texts:?}", f.name);
+        }
+        let all = texts.join(" ");
+        let symbols_shown = |v: &kinetics::Vector| {
+            v.iter()
+                .flat_map(|c| c.symbols())
+                .filter(|s| !s.is_pi())
+                .all(|s| all.contains(&written(s)))
+        };
+        for c in &scene.couples {
+            assert!(symbols_shown(c), "{name}: a couple's symbols in {texts:?}");
+        }
+        for i in &scene.impulses {
+            let shown = match i.name {
+                Some(s) => has(&written(s)),
+                None => symbols_shown(&i.value),
+            };
+            assert!(shown, "{name}: an impulse in {texts:?}");
+        }
+    }
+}
+
+fn scene_path(name: &str) -> String {
+    scene(name)
+}
+
+/// In headless Chromium, every label of every example's figure lies inside its picture and
+/// apart from the others, by the boxes the browser lays them out in.
+#[test]
+fn in_a_browser_the_labels_are_inside_the_picture_and_apart() {
+    let mut page = String::from("<!DOCTYPE html>\n<html><body>\n");
+    for (name, scene) in examples() {
+        let drawn = figure(&scene).unwrap();
+        page.push_str(&format!(
+            "<div data-name=\"{name}\">{}</div>\n",
+            kinetics::figure::svg::inline(&drawn)
+        ));
+    }
+    page.push_str(CHECK);
+    page.push_str("</body></html>\n");
+    let dir = std::env::temp_dir().join(format!("kinetics-figures-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("figures.html");
+    std::fs::write(&file, page).unwrap();
+    let dom = chromium(&dir, &file, &["--dump-dom"]);
+    let _ = std::fs::remove_dir_all(&dir);
+    let verdict = dom
+        .split("<pre id=\"verdict\">")
+        .nth(1)
+        .and_then(|rest| rest.split("</pre>").next())
+        .unwrap_or_else(|| panic!("no verdict in the DOM:\n{dom}"));
+    assert!(verdict.starts_with("ok "), "{verdict}");
+    let checked: usize = verdict["ok ".len()..].trim().parse().unwrap();
+    assert!(
+        checked >= 5 * example_scenes().len(),
+        "labels checked: {checked}"
+    );
+}
+
+/// The check run in the page: each `<text>`'s box inside its `<svg>`'s and clear of the
+/// others' (a pixel's tolerance: glyphs' boxes carry their side bearings).
+const CHECK: &str = r#"<script>
+(function () {
+  const problems = [];
+  let labels = 0;
+  for (const div of document.querySelectorAll('div[data-name]')) {
+    const svg = div.querySelector('svg').getBoundingClientRect();
+    const boxes = [...div.querySelectorAll('text')].map(t => [t.textContent, t.getBoundingClientRect()]);
+    labels += boxes.length;
+    boxes.forEach(([t, b], i) => {
+      if (b.left < svg.left - 0.5 || b.right > svg.right + 0.5 || b.top < svg.top - 0.5 || b.bottom > svg.bottom + 0.5)
+        problems.push(div.dataset.name + ': ' + t + ' outside');
+      for (const [u, c] of boxes.slice(i + 1)) {
+        const w = Math.min(b.right, c.right) - Math.max(b.left, c.left);
+        const h = Math.min(b.bottom, c.bottom) - Math.max(b.top, c.top);
+        if (w > 1 && h > 1) problems.push(div.dataset.name + ': ' + t + ' over ' + u);
+      }
+    });
+  }
+  const verdict = document.createElement('pre');
+  verdict.id = 'verdict';
+  verdict.textContent = problems.length ? problems.join('\n') : 'ok ' + labels;
+  document.body.appendChild(verdict);
+})();
+</script>
+"#;
+
+/// `solve --format markdown -o page.md` writes the page and its figure beside it, the page
+/// naming the figure; without `-o` the page says how to have it.
+#[test]
+fn a_markdown_page_has_its_figure_beside_it() {
+    let dir = std::env::temp_dir().join(format!("kinetics-md-figure-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let page = dir.join("shaft.md");
+    let path = scene("sp18_4_shaft_reactions");
+    let (code, out, err) = kinetics(&[
+        "solve",
+        "--format",
+        "markdown",
+        "-o",
+        page.to_str().unwrap(),
+        &path,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.trim().is_empty(), "the page went to the file");
+    let md = std::fs::read_to_string(&page).unwrap();
+    assert!(md.contains("](shaft.svg)"), "{md}");
+    let svg = std::fs::read_to_string(dir.join("shaft.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&svg).expect("the SVG file is XML");
+    assert_eq!(doc.root_element().tag_name().name(), "svg");
+    assert_eq!(
+        doc.root_element().tag_name().namespace(),
+        Some("http://www.w3.org/2000/svg")
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    let (_, md, _) = kinetics(&["solve", "--format", "markdown", &path]);
+    assert!(md.contains("with `-o FILE.md`"), "{md}");
+    let (_, text, _) = kinetics(&["solve", &path]);
+    assert!(
+        !text.contains("svg") && !text.contains("tikz"),
+        "text has no figure"
+    );
+}
+
+/// `kinetics figure` writes SVG, or TikZ with its picture's bounding box.
+#[test]
+fn the_figure_command_writes_svg_and_tikz() {
+    let path = scene("top_steady_tilt");
+    let (code, svg, err) = kinetics(&["figure", &path]);
+    assert_eq!(code, 0, "{err}");
+    roxmltree::Document::parse(&svg).expect("XML");
+    let (code, tikz, err) = kinetics(&["figure", "--format", "tikz", &path]);
+    assert_eq!(code, 0, "{err}");
+    assert!(tikz.starts_with("\\begin{tikzpicture}") && tikz.contains("\\useasboundingbox"));
+    assert!(tikz.contains(r"{$\dot{\psi}$}"), "{tikz}");
+}

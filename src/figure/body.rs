@@ -50,7 +50,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
             if let Some([a, b]) = size.radius {
                 marks.push(open_path(canvas, &[a, b], Stroke::AXIS));
             }
-            canvas.label(size.label, size.at, size.outward);
+            canvas.label_on_body(size.label, size.at, size.outward);
         }
         samples.extend(outline);
         canvas.part(placed.centre, marks);

@@ -33,7 +33,8 @@ pub enum Layer {
 
 impl<'s> Canvas<'s> {
     /// The canvas of `scene` with its up drawn up: the fixed vertical K of the Eulerian
-    /// angles, else against the weight (a force holding `g`), else z.
+    /// angles, else against the weight (a force holding `g`, or named `W`, `W_1`, `weight`),
+    /// else z.
     pub fn new(scene: &Scene, sizes: &'s Sizes) -> Result<Canvas<'s>, FigureError> {
         let mut canvas = Canvas {
             sizes,
@@ -48,10 +49,9 @@ impl<'s> Canvas<'s> {
             [0.0, theta.sin(), theta.cos()]
         } else {
             let g = crate::algebra::Symbol::new("g");
-            let weight = scene
-                .forces
-                .iter()
-                .find(|f| f.value.iter().any(|c| c.symbols().contains(&g)));
+            let weight = scene.forces.iter().find(|f| {
+                f.value.iter().any(|c| c.symbols().contains(&g)) || is_weight_name(&f.name)
+            });
             match weight {
                 Some(w) => {
                     let down = canvas.vector(&w.value, &w.name)?;
@@ -167,12 +167,23 @@ impl<'s> Canvas<'s> {
     /// A label for the scene's point `anchor`, wanted on the side `direction` (the scene's
     /// frame) points to.
     pub fn label(&mut self, markup: String, anchor: P3, direction: P3) {
+        self.want(markup, anchor, direction, false);
+    }
+
+    /// A label of something on the body (G, a named point, a part's size), which may stand
+    /// on the body's faces.
+    pub fn label_on_body(&mut self, markup: String, anchor: P3, direction: P3) {
+        self.want(markup, anchor, direction, true);
+    }
+
+    fn want(&mut self, markup: String, anchor: P3, direction: P3, on_body: bool) {
         let at = self.project(anchor);
         let toward = self.project(view::add(anchor, direction)).minus(at);
         self.wanted.push(Wanted {
             markup,
             anchor: at,
             direction: toward.unit().unwrap_or(P2::new(1.0, 0.0)),
+            on_body,
         });
     }
 
@@ -219,6 +230,12 @@ impl<'s> Canvas<'s> {
             scale,
         }
     }
+}
+
+/// Whether a force's name says it is a weight: `W`, `W_1`, `W2`, `weight`.
+fn is_weight_name(name: &str) -> bool {
+    let stem = name.trim_end_matches(|c: char| c.is_ascii_digit() || c == '_');
+    stem == "W" || stem.eq_ignore_ascii_case("weight")
 }
 
 /// The points a mark passes through, its arrow heads and a dot's extent included.

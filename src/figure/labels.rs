@@ -1,62 +1,84 @@
-//! Where each label stands: tried beyond its anchor on the side it wants (an arrow's label
-//! past its head), farther out and to either side step by step, then all round; the first
-//! box that overlaps no label placed before it, no part of the body and no stroke wins, else
-//! the one that overlaps least (another label weighs most, the body next, a stroke least).
+//! Where each label stands: near its anchor (an arrow's head, a point, an edge's middle), on
+//! the side it wants if that is free. Every candidate round the anchor, ring by ring, is
+//! scored — overlapping a label placed before it weighs most, then standing on the body,
+//! then crossing a stroke, then standing nearer another label's anchor than its own (a reader
+//! would give it to the wrong arrow), then its distance and its turn from the wanted side —
+//! and the cheapest wins: a label crosses a thin line before it drifts away from its arrow.
 
 use super::canvas::points_of;
 use super::view::P2;
 use super::{heads, Label, Mark, FONT_SIZE};
 use crate::print::markup;
 
-/// Room between a label's box and its text, and between its box and its anchor.
-const PADDING: f64 = 2.5;
-const GAPS: [f64; 6] = [2.0, 6.0, 11.0, 17.0, 25.0, 36.0];
-const SHIFTS: [f64; 5] = [0.0, 1.0, -1.0, 2.0, -2.0];
+/// Room between a label's box and its text.
+const PADDING: f64 = 2.0;
+/// The gaps tried between the anchor and the box, and the turns from the wanted side.
+const GAPS: [f64; 7] = [1.5, 4.0, 8.0, 13.0, 19.0, 27.0, 38.0];
+const TURNS_DEG: [f64; 10] = [
+    0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0, 135.0, -135.0, 180.0,
+];
+/// What each fault costs, in figure units of distance.
+const OVER_LABEL: f64 = 1000.0;
+const ON_BODY: f64 = 40.0;
+const CROSSING: f64 = 12.0;
+const NEARER_ANOTHER: f64 = 25.0;
+const PER_DEGREE: f64 = 0.08;
 
 /// A label asked for: its markup, the point it names and the side it would stand on.
 pub struct Wanted {
     pub markup: String,
     pub anchor: P2,
     pub direction: P2,
+    /// Names something on the body (G, a point, a size): it may stand on a face.
+    pub on_body: bool,
 }
 
-/// The size of a label's box: its text's width and a line's height, padded.
+/// The size of a label's box: its text's width and a line's height (1.5 em: a serif's
+/// ascent and descent with a subscript's drop), padded.
 pub fn half_size(markup_text: &str) -> (f64, f64) {
     let (_, em) = markup::svg(markup_text);
-    (em * FONT_SIZE / 2.0 + PADDING, 0.62 * FONT_SIZE + PADDING)
+    (em * FONT_SIZE / 2.0 + PADDING, 0.75 * FONT_SIZE + PADDING)
+}
+
+/// What a label is placed among: the strokes, the body's faces and every label's anchor.
+struct Scene2<'a> {
+    strokes: Vec<(P2, P2)>,
+    faces: Vec<&'a [P2]>,
+    anchors: Vec<P2>,
 }
 
 /// Every wanted label placed among `marks`, in order.
 pub fn place(wanted: &[Wanted], marks: &[Mark]) -> Vec<Label> {
-    let strokes: Vec<(P2, P2)> = marks.iter().flat_map(segments).collect();
-    let faces: Vec<&[P2]> = marks
-        .iter()
-        .filter_map(|m| match m {
-            Mark::Path {
-                points,
-                filled: true,
-                ..
-            } => Some(&points[..]),
-            _ => None,
-        })
-        .collect();
+    let around = Scene2 {
+        strokes: marks.iter().flat_map(segments).collect(),
+        faces: marks
+            .iter()
+            .filter_map(|m| match m {
+                Mark::Path {
+                    points,
+                    filled: true,
+                    ..
+                } => Some(&points[..]),
+                _ => None,
+            })
+            .collect(),
+        anchors: wanted.iter().map(|w| w.anchor).collect(),
+    };
     let mut placed: Vec<Label> = Vec::new();
-    for w in wanted {
+    for (k, w) in wanted.iter().enumerate() {
         let (hw, hh) = half_size(&w.markup);
-        let mut best: Option<(f64, P2)> = None;
-        for centre in candidates(w, hw, hh) {
-            let cost = overlap(centre, hw, hh, &placed, &faces, &strokes);
-            if best.is_none_or(|(c, _)| cost < c) {
-                best = Some((cost, centre));
-            }
-            if cost == 0.0 {
-                break;
+        let mut best = (f64::INFINITY, w.anchor);
+        for (centre, distance, turn) in candidates(w, hw, hh) {
+            let cost = distance
+                + PER_DEGREE * turn.abs()
+                + faults(centre, (hw, hh), &placed, &around, (k, w));
+            if cost < best.0 {
+                best = (cost, centre);
             }
         }
-        let centre = best.map_or(w.anchor, |(_, c)| c);
         placed.push(Label {
             markup: w.markup.clone(),
-            centre,
+            centre: best.1,
             half_width: hw,
             half_height: hh,
         });
@@ -64,33 +86,56 @@ pub fn place(wanted: &[Wanted], marks: &[Mark]) -> Vec<Label> {
     placed
 }
 
-/// The centres tried, in order: along the wanted side, then the eight directions round.
-fn candidates(w: &Wanted, hw: f64, hh: f64) -> Vec<P2> {
-    let mut directions = vec![w.direction];
-    directions.extend((0..8).map(|k| {
-        let t = std::f64::consts::FRAC_PI_4 * f64::from(k);
-        P2::new(t.cos(), t.sin())
-    }));
+/// The centres tried round the anchor, with their gap and turn from the wanted side.
+fn candidates(w: &Wanted, hw: f64, hh: f64) -> Vec<(P2, f64, f64)> {
     let mut out = Vec::new();
-    for d in directions {
-        let across = d.normal();
-        // How far the box reaches along d from its centre.
-        let reach = d.x.abs() * hw + d.y.abs() * hh;
-        let step = across.x.abs() * hw + across.y.abs() * hh;
-        for gap in GAPS {
-            for shift in SHIFTS {
-                out.push(
-                    w.anchor
-                        .plus(d.times(gap + reach))
-                        .plus(across.times(shift * step)),
-                );
-            }
+    for gap in GAPS {
+        for turn in TURNS_DEG {
+            let t = turn.to_radians();
+            let (c, s) = (t.cos(), t.sin());
+            let d = P2::new(
+                w.direction.x * c - w.direction.y * s,
+                w.direction.x * s + w.direction.y * c,
+            );
+            // How far the box reaches along d from its centre.
+            let reach = d.x.abs() * hw + d.y.abs() * hh;
+            out.push((w.anchor.plus(d.times(gap + reach)), gap, turn));
         }
     }
     out
 }
 
-/// How badly a box overlaps what is there: 100 a label, 10 a body's face, 1 a stroke.
+/// The cost of a box's faults: labels it overlaps, faces it stands on, strokes it crosses,
+/// (unless it names something on the body) and standing nearer another label's anchor than
+/// label `own`'s.
+fn faults(
+    c: P2,
+    (hw, hh): (f64, f64),
+    placed: &[Label],
+    around: &Scene2,
+    (own, w): (usize, &Wanted),
+) -> f64 {
+    let mine = around.anchors[own];
+    let distance_to_box = |p: P2| {
+        let dx = ((p.x - c.x).abs() - hw).max(0.0);
+        let dy = ((p.y - c.y).abs() - hh).max(0.0);
+        dx.hypot(dy)
+    };
+    let own_distance = distance_to_box(mine);
+    let nearer_another = around.anchors.iter().enumerate().any(|(k, a)| {
+        k != own
+            && (a.x - mine.x).hypot(a.y - mine.y) > 1.0
+            && distance_to_box(*a) + 2.0 < own_distance
+    });
+    let faces: &[&[P2]] = match w.on_body {
+        true => &[],
+        false => &around.faces,
+    };
+    overlap(c, hw, hh, placed, faces, &around.strokes)
+        + if nearer_another { NEARER_ANOTHER } else { 0.0 }
+}
+
+/// How badly a box overlaps what is there: a label, a body's face, a stroke.
 fn overlap(
     c: P2,
     hw: f64,
@@ -121,7 +166,7 @@ fn overlap(
         .iter()
         .filter(|(a, b)| crosses_box(*a, *b, c, hw, hh))
         .count();
-    100.0 * labels as f64 + 10.0 * inside_faces as f64 + crossed as f64
+    OVER_LABEL * labels as f64 + ON_BODY * inside_faces as f64 + CROSSING * crossed as f64
 }
 
 /// The segments a mark draws: its path, its arrow's line and heads, a dot's box diagonal.

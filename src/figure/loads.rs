@@ -23,8 +23,10 @@ use crate::scene::units::Dimension;
 /// Lengths in proportion to the body's reach.
 const FORCE_LENGTH: f64 = 0.45;
 const COUPLE_LENGTH: f64 = 0.4;
-/// A couple's gap from the body along it.
-const COUPLE_GAP: f64 = 0.1;
+/// The gap before a vector drawn past the body along a ray from O.
+const RAY_GAP: f64 = 0.1;
+/// The least share of its length a vector is drawn at, however the view foreshortens it.
+const SHORTEST_DRAWN: f64 = 0.6;
 const OMEGA_LENGTH: f64 = 0.55;
 const AXIS_BEYOND: f64 = 0.55;
 const BEARING_RADIUS: f64 = 0.07;
@@ -32,19 +34,64 @@ const BEARING_LENGTH: f64 = 0.1;
 
 const UNIT: [P3; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 
-/// The axes x, y, z from O past the body, O and G.
-pub fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
-    let mut couples = Vec::new();
-    for (k, c) in scene.couples.iter().enumerate() {
-        couples.push(view::unit(canvas.vector(c, &format!("couple {}", k + 1))?));
+/// Everything drawn besides the body: the fixed axis with its shaft and bearings, ω, the
+/// named points, the forces, couples and impulses, then the axes past all of it.
+pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
+    let unknowns = magnitudes(scene);
+    let shaft = fixed_axis(canvas, scene, body, &unknowns)?;
+    let mut rays = Rays {
+        body,
+        ends: shaft,
+        claimed: Vec::new(),
+    };
+    omega(canvas, scene, body, &unknowns, &mut rays)?;
+    for p in &scene.points {
+        let at = canvas.vector(&p.position, &p.name)?;
+        canvas.dot(at, 2.5);
+        canvas.label_on_body(named(&p.name), at, sub(at, body.centre));
     }
+    loads(canvas, scene, body, &unknowns, &mut rays)?;
+    axes(canvas, scene, body, &rays);
+    Ok(())
+}
+
+/// The rays out of O along which vectors are drawn past the body (ω along a fixed axis, a
+/// couple): each claim starts past the body, the shaft and the claims before it.
+struct Rays<'b> {
+    body: &'b Extent,
+    ends: Vec<P3>,
+    claimed: Vec<(P3, f64)>,
+}
+
+impl Rays<'_> {
+    /// How far the body, the shaft and the claims go along the unit vector `d`.
+    fn end(&self, d: P3) -> f64 {
+        let shaft = self
+            .ends
+            .iter()
+            .map(|p| view::dot(*p, d))
+            .fold(0.0, f64::max);
+        let claims = self
+            .claimed
+            .iter()
+            .filter(|(c, _)| view::dot(*c, d) > 0.99)
+            .map(|(_, end)| *end)
+            .fold(0.0, f64::max);
+        self.body.along(d).max(shaft).max(claims)
+    }
+
+    /// The start, from O along `d`, of a vector `length` long drawn past everything there.
+    fn claim(&mut self, d: P3, length: f64) -> f64 {
+        let start = self.end(d) + RAY_GAP * self.body.reach;
+        self.claimed.push((d, start + length));
+        start
+    }
+}
+
+/// The axes x, y, z from O past the body and whatever is drawn along them, O and G.
+fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays) {
     for (e, name) in UNIT.iter().zip(["x", "y", "z"]) {
-        // Past a couple drawn along the axis, so its head is not lost on the axis line.
-        let beyond = match couples.iter().any(|c| view::dot(*c, *e) > 0.99) {
-            true => COUPLE_GAP + COUPLE_LENGTH + AXIS_BEYOND / 2.0,
-            false => AXIS_BEYOND,
-        };
-        let tip = scaled(*e, body.along(*e) + beyond * body.reach);
+        let tip = scaled(*e, rays.end(*e) + AXIS_BEYOND * body.reach);
         canvas.arrow(
             Layer::Behind,
             [0.0; 3],
@@ -65,42 +112,52 @@ pub fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
     }
     if apart || !scene.fixed_point {
         canvas.dot(body.centre, 2.5);
-        canvas.label("$G$".into(), body.centre, [-1.0, -1.0, -1.0]);
+        canvas.label_on_body("$G$".into(), body.centre, [-1.0, -1.0, -1.0]);
     }
+}
+
+/// ω (unless the Eulerian angles give it): along a fixed axis past the shaft and the body, so
+/// it is not lost on the shaft; else from the fixed point, or from G.
+fn omega(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    body: &Extent,
+    unknowns: &[Symbol],
+    rays: &mut Rays,
+) -> Result<(), FigureError> {
+    let (Some(omega), None) = (&scene.omega, &scene.euler_angles) else {
+        return Ok(());
+    };
+    let length = OMEGA_LENGTH * body.reach;
+    let from = match (scene.fixed_point, holds_any(omega, unknowns)) {
+        (true, false) if !rays.ends.is_empty() => {
+            let d = view::unit(canvas.vector(omega, "omega")?);
+            scaled(d, rays.claim(d, stretched(canvas, d, length)))
+        }
+        (true, _) => [0.0; 3],
+        (false, _) => body.centre,
+    };
+    let drawn = Drawn {
+        from,
+        length,
+        double: true,
+        stroke: Stroke::MOTION,
+        role: Role::AngularVelocity,
+        into_point: false,
+    };
+    drawn.vector(canvas, omega, Some("omega"), unknowns, "omega")?;
     Ok(())
 }
 
-/// ω (unless the Eulerian angles give it) and the named points.
-pub fn motion(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
-    let unknowns = magnitudes(scene);
-    if let (Some(omega), None) = (&scene.omega, &scene.euler_angles) {
-        let from = match scene.fixed_point {
-            true => [0.0; 3],
-            false => body.centre,
-        };
-        let drawn = Drawn {
-            from,
-            length: OMEGA_LENGTH * body.reach,
-            double: true,
-            stroke: Stroke::MOTION,
-            role: Role::AngularVelocity,
-            into_point: false,
-        };
-        drawn.vector(canvas, omega, Some("omega"), &unknowns, "omega")?;
-    }
-    for p in &scene.points {
-        let at = canvas.vector(&p.position, &p.name)?;
-        canvas.dot(at, 2.5);
-        canvas.label(named(&p.name), at, sub(at, body.centre));
-    }
-    Ok(())
-}
-
-/// The forces, couples and impulses; the fixed axis, its bearings and shaft.
-pub fn loads(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
-    let unknowns = magnitudes(scene);
+/// The forces, couples and impulses.
+fn loads(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    body: &Extent,
+    unknowns: &[Symbol],
+    rays: &mut Rays,
+) -> Result<(), FigureError> {
     let reach = body.reach;
-    let shaft_end = fixed_axis(canvas, scene, body, &unknowns)?;
     for f in &scene.forces {
         let at = canvas.vector(&f.point, &f.name)?;
         let drawn = Drawn {
@@ -111,7 +168,7 @@ pub fn loads(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fi
             role: Role::Force(f.name.clone()),
             into_point: false,
         };
-        let whole = drawn.vector(canvas, &f.value, Some(&f.name), &unknowns, &f.name)?;
+        let whole = drawn.vector(canvas, &f.value, Some(&f.name), unknowns, &f.name)?;
         if !whole {
             canvas.label(named(&f.name), at, sub(at, body.centre));
         }
@@ -119,16 +176,16 @@ pub fn loads(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fi
     for (k, c) in scene.couples.iter().enumerate() {
         let what = format!("couple {}", k + 1);
         let d = view::unit(canvas.vector(c, &what)?);
-        let beyond = body.along(d).max(shaft_end(d)) + COUPLE_GAP * reach;
+        let length = COUPLE_LENGTH * reach;
         let drawn = Drawn {
-            from: scaled(d, beyond),
-            length: COUPLE_LENGTH * reach,
+            from: scaled(d, rays.claim(d, stretched(canvas, d, length))),
+            length,
             double: true,
             stroke: Stroke::LOAD,
             role: Role::Couple,
             into_point: false,
         };
-        drawn.vector(canvas, c, None, &unknowns, &what)?;
+        drawn.vector(canvas, c, None, unknowns, &what)?;
     }
     for (k, i) in scene.impulses.iter().enumerate() {
         let what = format!("impulse {}", k + 1);
@@ -145,7 +202,7 @@ pub fn loads(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fi
             into_point: true,
         };
         let name = i.name.map(|s| s.name().to_string());
-        let whole = drawn.vector(canvas, &i.value, name.as_deref(), &unknowns, &what)?;
+        let whole = drawn.vector(canvas, &i.value, name.as_deref(), unknowns, &what)?;
         // Drawn by its components, a named impulse is named at its point (as a force is).
         if let (false, Some(name)) = (whole, &name) {
             canvas.label(named(name), at, sub(at, body.centre));
@@ -154,15 +211,22 @@ pub fn loads(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fi
     Ok(())
 }
 
+/// A vector's length along the unit `d`, stretched where the view foreshortens `d` (toward
+/// the reader), so that it is drawn at least [`SHORTEST_DRAWN`] of its length long.
+fn stretched(canvas: &Canvas, d: P3, length: f64) -> f64 {
+    let drawn = canvas.project(d).minus(canvas.project([0.0; 3])).length();
+    length * (SHORTEST_DRAWN / drawn.max(1e-9)).clamp(1.0, 2.5)
+}
+
 /// With a fixed point and ω along a fixed direction: the axis through O as a centre line,
 /// the bearings where forces holding unknowns act on it, and the shaft between the outermost
-/// of them (O among them). Returns how far the shaft goes along a direction.
+/// of them (O among them). Returns the shaft's ends (none without a shaft).
 fn fixed_axis(
     canvas: &mut Canvas,
     scene: &Scene,
     body: &Extent,
     unknowns: &[Symbol],
-) -> Result<impl Fn(P3) -> f64, FigureError> {
+) -> Result<Vec<P3>, FigureError> {
     let mut ends: Vec<P3> = Vec::new();
     let axis = match (&scene.omega, scene.fixed_point, &scene.euler_angles) {
         (Some(omega), true, None) if !holds_any(omega, unknowns) => {
@@ -223,7 +287,7 @@ fn fixed_axis(
             canvas.part(b, vec![outline]);
         }
     }
-    Ok(move |d: P3| ends.iter().map(|p| view::dot(*p, d)).fold(0.0, f64::max))
+    Ok(ends)
 }
 
 /// The unknowns that are magnitudes (an unknown angle only turns a vector, which is drawn
@@ -309,7 +373,7 @@ impl Drawn {
         if view::norm(u) == 0.0 {
             return;
         }
-        let span = scaled(u, self.length);
+        let span = scaled(u, stretched(canvas, u, self.length));
         let (from, to, free, outward) = match self.into_point {
             true => (
                 sub(self.from, span),

@@ -28,6 +28,8 @@ pub const MARKS_WIDTH: f64 = 260.0;
 pub const MARKS_HEIGHT: f64 = 180.0;
 /// The labels' font size, in figure units.
 pub const FONT_SIZE: f64 = 14.0;
+/// How much a face hides what is behind it: the axes and parts behind a body show faintly.
+pub const FACE_OPACITY: f64 = 0.82;
 /// An arrow head's length and half width.
 pub const HEAD_LENGTH: f64 = 8.0;
 pub const HEAD_HALF_WIDTH: f64 = 3.0;
@@ -85,7 +87,7 @@ pub enum Role {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Mark {
     /// A polyline, or with `closed` a polygon, filled with the paper's white when `filled` (so
-    /// it hides what was drawn before it).
+    /// it mostly hides what was drawn before it: [`FACE_OPACITY`]).
     Path {
         points: Vec<P2>,
         closed: bool,
@@ -166,9 +168,7 @@ pub fn figure(scene: &Scene) -> Result<Figure, FigureError> {
     let sizes = sizes::Sizes::of(scene);
     let mut canvas = Canvas::new(scene, &sizes)?;
     let body = body::draw(&mut canvas, scene)?;
-    loads::axes(&mut canvas, scene, &body)?;
-    loads::motion(&mut canvas, scene, &body)?;
-    loads::loads(&mut canvas, scene, &body)?;
+    loads::draw(&mut canvas, scene, &body)?;
     if scene.euler_angles.is_some() {
         euler::angles(&mut canvas, &body)?;
     }

@@ -2,7 +2,7 @@
 //! y turned down, strokes black or the accent colour, faces white, an impulse's head open,
 //! each label a `<text>` centred on its box, in a serif italic.
 
-use super::{heads, Figure, Mark, Role, Stroke, FONT_SIZE};
+use super::{heads, Figure, Mark, Role, Stroke, FACE_OPACITY, FONT_SIZE};
 use crate::print::markup;
 use std::fmt::Write;
 
@@ -83,7 +83,10 @@ fn mark(out: &mut String, mark: &Mark) {
             stroke,
         } => {
             let element = if *closed { "polygon" } else { "polyline" };
-            let fill = if *filled { " fill=\"white\"" } else { "" };
+            let fill = match filled {
+                true => format!(" fill=\"white\" fill-opacity=\"{FACE_OPACITY}\""),
+                false => String::new(),
+            };
             let _ = writeln!(
                 out,
                 "<{element} points=\"{}\"{fill} {}/>",

@@ -2,7 +2,7 @@
 //! SVG: a figure unit is ¾ pt, so the figure is as wide on paper as on screen and its labels
 //! stand where they were placed; each label a node centred on its box.
 
-use super::{heads, Figure, Mark, Role, Stroke, P2};
+use super::{heads, Figure, Mark, Role, Stroke, FACE_OPACITY, P2};
 use crate::print::markup;
 use std::fmt::Write;
 
@@ -71,7 +71,10 @@ fn mark(out: &mut String, mark: &Mark) {
             filled,
             stroke,
         } => {
-            let fill = if *filled { ",fill=white" } else { "" };
+            let fill = match filled {
+                true => format!(",fill=white,fill opacity={FACE_OPACITY}"),
+                false => String::new(),
+            };
             let cycle = if *closed { " -- cycle" } else { "" };
             let _ = writeln!(
                 out,

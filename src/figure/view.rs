@@ -5,8 +5,9 @@
 //!
 //! The scene's "up" is z unless its axes say otherwise: the fixed vertical K of the Eulerian
 //! angles (`K = sin θ j + cos θ k`), or the direction a weight (a force holding `g`) points
-//! against. The view turns that direction up: `p ↦ (R·p) projected`, R the rotation that takes
-//! `up` to z by the shortest turn.
+//! against. The view turns that direction up: `p ↦ (R·p) projected`, R the cyclic turn of
+//! the axes when y (or x) is up — a y-up problem in the textbook's layout, z toward the
+//! reader, x to the right — else the rotation that takes `up` to z by the shortest turn.
 
 /// A point or direction in the scene's frame, in its length unit.
 pub type P3 = [f64; 3];
@@ -66,7 +67,7 @@ impl View {
         let right = unit(cross([0.0, 0.0, 1.0], eye));
         let screen_up = cross(eye, right);
         View {
-            turn: turn_to_z(unit(up)),
+            turn: turn_up(unit(up)),
             eye,
             right,
             screen_up,
@@ -89,6 +90,21 @@ impl View {
         let t = &self.turn;
         [0, 1, 2].map(|j| (0..3).map(|i| t[i][j] * self.eye[i]).sum())
     }
+}
+
+/// The rotation that draws `u` up: for y or x up the cyclic turn of the axes, so the
+/// textbook's layout of a y-up problem (z toward the reader, x to the right, y up) follows;
+/// else the shortest turn to z.
+fn turn_up(u: P3) -> [[f64; 3]; 3] {
+    let close = |a: P3| dot(u, a) > 1.0 - 1e-12;
+    if close([0.0, 1.0, 0.0]) {
+        // (x, y, z) drawn as (z, x, y): z toward the reader, x right, y up.
+        return [[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    }
+    if close([1.0, 0.0, 0.0]) {
+        return [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]];
+    }
+    turn_to_z(u)
 }
 
 /// The rotation taking the unit vector `u` to z (Rodrigues about u × z); the half turn about

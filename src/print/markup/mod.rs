@@ -86,9 +86,12 @@ pub fn svg(title: &str) -> (String, f64) {
             for segment in &segments {
                 match segment {
                     Segment::Words(w) => {
+                        // Words upright in a label set in italics.
                         let mut plain = String::new();
                         text::words(&mut plain, w);
+                        out.push_str("<tspan font-style=\"normal\">");
                         svg::escaped(&mut out, &plain);
+                        out.push_str("</tspan>");
                         width += svg::words_em(&plain);
                     }
                     Segment::Maths(nodes) => width += svg::maths(&mut out, nodes),

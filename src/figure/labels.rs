@@ -7,7 +7,7 @@
 
 use super::canvas::points_of;
 use super::view::P2;
-use super::{heads, Label, Mark, FONT_SIZE};
+use super::{heads, Label, Mark, Stroke, FONT_SIZE};
 use crate::print::markup;
 
 /// Room between a label's box and its text.
@@ -42,7 +42,8 @@ pub fn half_size(markup_text: &str) -> (f64, f64) {
 
 /// What a label is placed among: the strokes, the body's faces and every label's anchor.
 struct Scene2<'a> {
-    strokes: Vec<(P2, P2)>,
+    /// Each drawn segment, with what crossing it costs (a rod more than a hairline).
+    strokes: Vec<(P2, P2, f64)>,
     faces: Vec<&'a [P2]>,
     anchors: Vec<P2>,
 }
@@ -142,7 +143,7 @@ fn overlap(
     hh: f64,
     placed: &[Label],
     faces: &[&[P2]],
-    strokes: &[(P2, P2)],
+    strokes: &[(P2, P2, f64)],
 ) -> f64 {
     let labels = placed
         .iter()
@@ -162,43 +163,52 @@ fn overlap(
         .iter()
         .filter(|f| corners.iter().any(|p| inside(*p, f)))
         .count();
-    let crossed = strokes
+    let crossed: f64 = strokes
         .iter()
-        .filter(|(a, b)| crosses_box(*a, *b, c, hw, hh))
-        .count();
-    OVER_LABEL * labels as f64 + ON_BODY * inside_faces as f64 + CROSSING * crossed as f64
+        .filter(|(a, b, _)| crosses_box(*a, *b, c, hw, hh))
+        .map(|(_, _, weight)| weight)
+        .sum();
+    OVER_LABEL * labels as f64 + ON_BODY * inside_faces as f64 + CROSSING * crossed
 }
 
-/// The segments a mark draws: its path, its arrow's line and heads, a dot's box diagonal.
-fn segments(mark: &Mark) -> Vec<(P2, P2)> {
-    let chain = |points: &[P2], closed: bool| {
-        let mut s: Vec<(P2, P2)> = points.windows(2).map(|w| (w[0], w[1])).collect();
+/// The segments a mark draws (its path, its arrow's line and heads, a dot's box diagonal),
+/// each weighted by its stroke's width against an outline's.
+fn segments(mark: &Mark) -> Vec<(P2, P2, f64)> {
+    let chain = |points: &[P2], closed: bool, weight: f64| {
+        let mut s: Vec<(P2, P2, f64)> = points.windows(2).map(|w| (w[0], w[1], weight)).collect();
         if closed && points.len() > 2 {
-            s.push((points[points.len() - 1], points[0]));
+            s.push((points[points.len() - 1], points[0], weight));
         }
         s
     };
+    let weight = |stroke: &Stroke| (stroke.width / Stroke::OUTLINE.width).max(1.0);
     match mark {
-        Mark::Path { points, closed, .. } => chain(points, *closed),
+        Mark::Path {
+            points,
+            closed,
+            stroke,
+            ..
+        } => chain(points, *closed, weight(stroke)),
         Mark::Arrow {
             from,
             via,
             to,
             double,
+            stroke,
             ..
         } => {
             let mut line = vec![*from];
             line.extend(via);
             line.push(*to);
-            let mut s = chain(&line, false);
+            let mut s = chain(&line, false, weight(stroke));
             for head in heads(*from, via, *to, *double) {
-                s.extend(chain(&head, true));
+                s.extend(chain(&head, true, 1.0));
             }
             s
         }
         Mark::Dot { .. } => {
             let p = points_of(mark);
-            vec![(p[0], p[1])]
+            vec![(p[0], p[1], 2.0)]
         }
     }
 }

@@ -2,7 +2,8 @@
 //! reach (a drawing shows where and which way, not how much):
 //!
 //! - the axes x, y, z from O, past the body; O and G marked (G alone where they coincide
-//!   without a fixed point);
+//!   without a fixed point), and the axes Gx'y'z' dashed when the page works about G away
+//!   from O;
 //! - ω a double arrow from the fixed point (else G); a vector holding an unknown is drawn
 //!   by its components (`C_y`, `C_z`), each labelled, as a textbook draws reactions;
 //! - a force an arrow from its point, labelled with its name; a couple a double arrow past
@@ -29,6 +30,8 @@ const RAY_GAP: f64 = 0.1;
 const SHORTEST_DRAWN: f64 = 0.6;
 const OMEGA_LENGTH: f64 = 0.55;
 const AXIS_BEYOND: f64 = 0.55;
+/// The length of the axes Gx'y'z' drawn when the page works about G away from O.
+const G_AXIS: f64 = 0.5;
 const BEARING_RADIUS: f64 = 0.07;
 const BEARING_LENGTH: f64 = 0.1;
 
@@ -109,6 +112,20 @@ fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays) {
     };
     if scene.fixed_point || apart {
         canvas.label("$O$".into(), [0.0; 3], away([0.0; 3]));
+    }
+    // A page that works about G away from O: the axes Gx'y'z' too, dashed.
+    let about_g = !scene.fixed_point || scene.about_mass_centre;
+    if apart && about_g {
+        for (e, name) in UNIT.iter().zip(["x", "y", "z"]) {
+            let tip = add(body.centre, scaled(*e, G_AXIS * body.reach));
+            canvas.path(
+                Layer::Behind,
+                &[body.centre, tip],
+                false,
+                Stroke::CENTRE_LINE,
+            );
+            canvas.label(format!("${name}'$"), tip, *e);
+        }
     }
     if apart || !scene.fixed_point {
         canvas.dot(body.centre, 2.5);

@@ -63,7 +63,22 @@ impl<'s> Canvas<'s> {
                 None => [0.0, 0.0, 1.0],
             }
         };
-        canvas.view = View::with_up(up);
+        let mut directions = vec![[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        if let (Some(omega), None) = (&scene.omega, &scene.euler_angles) {
+            let w = canvas.vector(omega, "omega")?;
+            if view::norm(w) > 0.0 {
+                directions.push(w);
+            }
+        }
+        for (k, part) in scene.parts.iter().enumerate() {
+            for j in 0..3 {
+                let axis = (0..3)
+                    .map(|i| canvas.value(&part.rotation[(i, j)], &format!("body {}", k + 1)))
+                    .collect::<Result<Vec<f64>, _>>()?;
+                directions.push([axis[0], axis[1], axis[2]]);
+            }
+        }
+        canvas.view = View::choose(up, &directions);
         Ok(canvas)
     }
 

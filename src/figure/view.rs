@@ -1,5 +1,6 @@
-//! The one projection of every figure: an orthographic view from in front, to the right and
-//! above, the textbook's near-isometric one. With z up, x comes toward the reader (drawn down
+//! The projection of a figure: an orthographic view from in front, to the right and above,
+//! the textbook's near-isometric one, turned a little (of a few azimuths and elevations) where
+//! it would see a direction that matters end-on or draw two along one line. With z up, x comes toward the reader (drawn down
 //! and to the left), y goes to the right and z straight up; a circle is drawn as the ellipse
 //! it projects to and a sphere as a circle.
 //!
@@ -46,9 +47,14 @@ impl P2 {
     }
 }
 
-/// Azimuth of the eye from the x axis toward y, and its elevation above the horizontal.
-const AZIMUTH_DEG: f64 = 35.0;
-const ELEVATION_DEG: f64 = 25.0;
+/// Azimuths of the eye from the x axis toward y and elevations above the horizontal, the
+/// textbook's first: x toward the reader and down to the left, y to the right, z up in all.
+const AZIMUTHS_DEG: [f64; 4] = [35.0, 50.0, 22.0, 65.0];
+const ELEVATIONS_DEG: [f64; 2] = [25.0, 35.0];
+/// Seen within this of end-on (its drawn length as a share of its length), a direction is
+/// lost; two directions drawn within this angle of each other read as one.
+const END_ON: f64 = 0.45;
+const COLLINEAR_DEG: f64 = 10.0;
 
 /// The view: the turn that brings the scene's up to z, then the projection onto the screen.
 #[derive(Debug, Clone, Copy)]
@@ -60,9 +66,57 @@ pub struct View {
 }
 
 impl View {
-    /// The view with `up` (a direction of the scene's frame) drawn straight up.
+    /// The textbook's view with `up` (a direction of the scene's frame) drawn straight up.
     pub fn with_up(up: P3) -> View {
-        let (a, e) = (AZIMUTH_DEG.to_radians(), ELEVATION_DEG.to_radians());
+        View::from(up, AZIMUTHS_DEG[0], ELEVATIONS_DEG[0])
+    }
+
+    /// Of the textbook-like views with `up` drawn up, the first in which none of the
+    /// `directions` that matter (the axes, ω, each part's axes) is seen end-on and no two of
+    /// them are drawn along one line; else the one with the fewest such faults.
+    pub fn choose(up: P3, directions: &[P3]) -> View {
+        let mut best: Option<(usize, View)> = None;
+        for e in ELEVATIONS_DEG {
+            for a in AZIMUTHS_DEG {
+                let view = View::from(up, a, e);
+                let faults = view.faults(directions);
+                if best.as_ref().is_none_or(|(f, _)| faults < *f) {
+                    best = Some((faults, view));
+                }
+                if faults == 0 {
+                    return view;
+                }
+            }
+        }
+        best.map_or_else(|| View::with_up(up), |(_, v)| v)
+    }
+
+    /// The directions seen end-on, and the pairs of distinct directions drawn along one line.
+    fn faults(&self, directions: &[P3]) -> usize {
+        let drawn: Vec<(P3, P2)> = directions
+            .iter()
+            .map(|d| unit(*d))
+            .map(|d| (d, self.project(d)))
+            .collect();
+        let end_on = drawn.iter().filter(|(_, p)| p.length() < END_ON).count();
+        let mut along_one_line = 0;
+        for (k, (d1, p1)) in drawn.iter().enumerate() {
+            for (d2, p2) in &drawn[k + 1..] {
+                let same = dot(*d1, *d2).abs() > 0.999;
+                let (Some(u1), Some(u2)) = (p1.unit(), p2.unit()) else {
+                    continue;
+                };
+                let sine = (u1.x * u2.y - u1.y * u2.x).abs();
+                if !same && sine < COLLINEAR_DEG.to_radians().sin() {
+                    along_one_line += 1;
+                }
+            }
+        }
+        end_on + along_one_line
+    }
+
+    fn from(up: P3, azimuth_deg: f64, elevation_deg: f64) -> View {
+        let (a, e) = (azimuth_deg.to_radians(), elevation_deg.to_radians());
         let eye = [e.cos() * a.cos(), e.cos() * a.sin(), e.sin()];
         let right = unit(cross([0.0, 0.0, 1.0], eye));
         let screen_up = cross(eye, right);
@@ -199,6 +253,25 @@ mod tests {
         assert!(y.x > 0.5, "y to the right: {y:?}");
         assert!(z.x.abs() < 1e-12 && z.y > 0.9, "z straight up: {z:?}");
         assert!(view.depth([1.0, 0.0, 0.0]) > 0.0, "x toward the eye");
+    }
+
+    #[test]
+    fn a_direction_the_first_view_sees_end_on_is_seen_from_another() {
+        let first = View::with_up([0.0, 0.0, 1.0]);
+        let toward_eye = first.toward_eye();
+        assert!(
+            first.project(toward_eye).length() < 1e-9,
+            "end-on in the first view"
+        );
+        let chosen = View::choose([0.0, 0.0, 1.0], &[toward_eye, [0.0, 0.0, 1.0]]);
+        assert!(
+            chosen.project(toward_eye).length() >= END_ON,
+            "seen side-on"
+        );
+        assert!(
+            chosen.project([0.0, 0.0, 1.0]).x.abs() < 1e-12,
+            "z still up"
+        );
     }
 
     #[test]

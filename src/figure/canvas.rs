@@ -34,7 +34,7 @@ pub enum Layer {
 impl<'s> Canvas<'s> {
     /// The canvas of `scene` with its up drawn up: the fixed vertical K of the Eulerian
     /// angles, else against the weight (a force holding `g`, or named `W`, `W_1`, `weight`),
-    /// else z.
+    /// else the axis the frame turns about (a precession about the vertical), else z.
     pub fn new(scene: &Scene, sizes: &'s Sizes) -> Result<Canvas<'s>, FigureError> {
         let mut canvas = Canvas {
             sizes,
@@ -52,15 +52,19 @@ impl<'s> Canvas<'s> {
             let weight = scene.forces.iter().find(|f| {
                 f.value.iter().any(|c| c.symbols().contains(&g)) || is_weight_name(&f.name)
             });
-            match weight {
-                Some(w) => {
+            match (weight, &scene.frame_rate) {
+                (Some(w), _) => {
                     let down = canvas.vector(&w.value, &w.name)?;
                     match view::norm(down) > 0.0 {
                         true => view::scaled(down, -1.0),
                         false => [0.0, 0.0, 1.0],
                     }
                 }
-                None => [0.0, 0.0, 1.0],
+                // A frame turning about one axis precesses about the vertical: that axis up.
+                (None, Some(rate)) => {
+                    along_one_axis(&canvas.vector(rate, "frame rate")?).unwrap_or([0.0, 0.0, 1.0])
+                }
+                (None, None) => [0.0, 0.0, 1.0],
             }
         };
         let mut directions = vec![[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
@@ -244,6 +248,19 @@ impl<'s> Canvas<'s> {
             view: self.view,
             scale,
         }
+    }
+}
+
+/// The positive axis a vector lies along (either way), if it lies along one.
+fn along_one_axis(v: &P3) -> Option<P3> {
+    let nonzero: Vec<usize> = (0..3).filter(|k| v[*k] != 0.0).collect();
+    match nonzero.as_slice() {
+        [k] => {
+            let mut axis = [0.0; 3];
+            axis[*k] = 1.0;
+            Some(axis)
+        }
+        _ => None,
     }
 }
 

@@ -13,7 +13,7 @@ use crate::print::markup;
 /// Room between a label's box and its text.
 const PADDING: f64 = 2.0;
 /// The gaps tried between the anchor and the box, and the turns from the wanted side.
-const GAPS: [f64; 7] = [1.5, 4.0, 8.0, 13.0, 19.0, 27.0, 38.0];
+const GAPS: [f64; 7] = [1.5, 4.0, 7.0, 10.0, 14.0, 19.0, 26.0];
 const TURNS_DEG: [f64; 10] = [
     0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0, 135.0, -135.0, 180.0,
 ];
@@ -23,6 +23,7 @@ const ON_BODY: f64 = 40.0;
 const CROSSING: f64 = 12.0;
 const NEARER_ANOTHER: f64 = 25.0;
 const PER_DEGREE: f64 = 0.08;
+const PER_UNIT: f64 = 1.5;
 
 /// A label asked for: its markup, the point it names and the side it would stand on.
 pub struct Wanted {
@@ -70,7 +71,7 @@ pub fn place(wanted: &[Wanted], marks: &[Mark]) -> Vec<Label> {
         let (hw, hh) = half_size(&w.markup);
         let mut best = (f64::INFINITY, w.anchor);
         for (centre, distance, turn) in candidates(w, hw, hh) {
-            let cost = distance
+            let cost = PER_UNIT * distance
                 + PER_DEGREE * turn.abs()
                 + faults(centre, (hw, hh), &placed, &around, (k, w));
             if cost < best.0 {

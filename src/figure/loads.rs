@@ -4,7 +4,8 @@
 //! - the axes x, y, z from O, past the body; O and G marked (G alone where they coincide
 //!   without a fixed point), and the axes Gx'y'z' dashed when the page works about G away
 //!   from O;
-//! - ω a double arrow from the fixed point (else G); a vector holding an unknown is drawn
+//! - ω (and Ω where the frame does not turn with the body) a double arrow from the fixed
+//!   point (else G); a vector holding an unknown is drawn
 //!   by its components (`C_y`, `C_z`), each labelled, as a textbook draws reactions;
 //! - a force an arrow from its point, labelled with its name; a couple a double arrow past
 //!   the body along it; an impulse an arrow into its point, its head open;
@@ -46,6 +47,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         body,
         ends: shaft,
         claimed: Vec::new(),
+        arrows: Vec::new(),
     };
     omega(canvas, scene, body, &unknowns, &mut rays)?;
     for p in &scene.points {
@@ -64,6 +66,8 @@ struct Rays<'b> {
     body: &'b Extent,
     ends: Vec<P3>,
     claimed: Vec<(P3, f64)>,
+    /// Arrows drawn from O itself (ω about a fixed point), each direction and length.
+    arrows: Vec<(P3, f64)>,
 }
 
 impl Rays<'_> {
@@ -81,6 +85,16 @@ impl Rays<'_> {
             .map(|(_, end)| *end)
             .fold(0.0, f64::max);
         self.body.along(d).max(shaft).max(claims)
+    }
+
+    /// Where, from O along `d`, a vector starts clear of the arrows already drawn from O
+    /// along it (at O when there are none).
+    fn past_arrows(&self, d: P3) -> f64 {
+        self.arrows
+            .iter()
+            .filter(|(a, _)| view::dot(*a, d) > 0.99)
+            .map(|(_, length)| length + RAY_GAP * self.body.reach)
+            .fold(0.0, f64::max)
     }
 
     /// The start, from O along `d`, of a vector `length` long drawn past everything there.
@@ -133,8 +147,9 @@ fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays) {
     }
 }
 
-/// ω (unless the Eulerian angles give it): along a fixed axis past the shaft and the body, so
-/// it is not lost on the shaft; else from the fixed point, or from G.
+/// ω (unless the Eulerian angles give it), and the frame's Ω where it differs: along a fixed
+/// axis past the shaft and the body, so it is not lost on the shaft; else from the fixed
+/// point, or from G.
 fn omega(
     canvas: &mut Canvas,
     scene: &Scene,
@@ -145,24 +160,42 @@ fn omega(
     let (Some(omega), None) = (&scene.omega, &scene.euler_angles) else {
         return Ok(());
     };
+    let rates = [
+        Some((omega, "omega", Role::AngularVelocity)),
+        // Ω where the frame does not turn with the body.
+        scene
+            .frame_rate
+            .as_ref()
+            .filter(|rate| *rate != omega)
+            .map(|rate| (rate, "Omega", Role::FrameRate)),
+    ];
     let length = OMEGA_LENGTH * body.reach;
-    let from = match (scene.fixed_point, holds_any(omega, unknowns)) {
-        (true, false) if !rays.ends.is_empty() => {
-            let d = view::unit(canvas.vector(omega, "omega")?);
-            scaled(d, rays.claim(d, stretched(canvas, d, length)))
+    for (vector, name, role) in rates.into_iter().flatten() {
+        let d = view::unit(canvas.vector(vector, name)?);
+        let from = match (scene.fixed_point, holds_any(vector, unknowns)) {
+            (true, false) if !rays.ends.is_empty() => {
+                scaled(d, rays.claim(d, stretched(canvas, d, length)))
+            }
+            // From O, past an arrow already drawn from O along the same line (Ω = −ω₂ j
+            // beside ω's component −ω₂ j).
+            (true, _) => scaled(d, rays.past_arrows(d)),
+            (false, _) => body.centre,
+        };
+        let drawn = Drawn {
+            from,
+            length,
+            double: true,
+            stroke: Stroke::MOTION,
+            role,
+            into_point: false,
+        };
+        let drew = drawn.vector(canvas, vector, Some(name), unknowns, name)?;
+        if from == [0.0; 3] {
+            for d in drew.directions {
+                rays.arrows.push((d, stretched(canvas, d, length)));
+            }
         }
-        (true, _) => [0.0; 3],
-        (false, _) => body.centre,
-    };
-    let drawn = Drawn {
-        from,
-        length,
-        double: true,
-        stroke: Stroke::MOTION,
-        role: Role::AngularVelocity,
-        into_point: false,
-    };
-    drawn.vector(canvas, omega, Some("omega"), unknowns, "omega")?;
+    }
     Ok(())
 }
 
@@ -185,8 +218,8 @@ fn loads(
             role: Role::Force(f.name.clone()),
             into_point: false,
         };
-        let whole = drawn.vector(canvas, &f.value, Some(&f.name), unknowns, &f.name)?;
-        if !whole {
+        let drew = drawn.vector(canvas, &f.value, Some(&f.name), unknowns, &f.name)?;
+        if !drew.whole {
             canvas.label(named(&f.name), at, sub(at, body.centre));
         }
     }
@@ -219,9 +252,9 @@ fn loads(
             into_point: true,
         };
         let name = i.name.map(|s| s.name().to_string());
-        let whole = drawn.vector(canvas, &i.value, name.as_deref(), unknowns, &what)?;
+        let drew = drawn.vector(canvas, &i.value, name.as_deref(), unknowns, &what)?;
         // Drawn by its components, a named impulse is named at its point (as a force is).
-        if let (false, Some(name)) = (whole, &name) {
+        if let (false, Some(name)) = (drew.whole, &name) {
             canvas.label(named(name), at, sub(at, body.centre));
         }
     }
@@ -324,6 +357,13 @@ fn holds_any(v: &Vector, unknowns: &[Symbol]) -> bool {
         .any(|c| c.symbols().iter().any(|s| unknowns.contains(s)))
 }
 
+/// What a vector's drawing came to: whether it was drawn whole (else by components), and the
+/// directions of its arrows.
+struct Drew {
+    whole: bool,
+    directions: Vec<P3>,
+}
+
 /// How a vector is drawn: from a point (or into it), at a length, single or double.
 struct Drawn {
     from: P3,
@@ -337,9 +377,10 @@ struct Drawn {
 
 impl Drawn {
     /// Draws `v`: one arrow labelled `name` (else its magnitude along an axis, else the
-    /// vector written) when no unknown is in it, else an arrow per component that is not
+    /// vector written) when no unknown is in it or it has one component, else an arrow per
+    /// component that is not
     /// zero, each labelled with the component when it is one symbol (`C_y`), else by the
-    /// name and the axis (`ω_x`). Whether it was drawn whole.
+    /// name and the axis (`ω_x`). What it drew.
     fn vector(
         &self,
         canvas: &mut Canvas,
@@ -347,10 +388,11 @@ impl Drawn {
         name: Option<&str>,
         unknowns: &[Symbol],
         what: &str,
-    ) -> Result<bool, FigureError> {
+    ) -> Result<Drew, FigureError> {
         let value = canvas.vector(v, what)?;
-        if !holds_any(v, unknowns) {
-            let nonzero: Vec<usize> = (0..3).filter(|k| !v[*k].is_zero()).collect();
+        let nonzero: Vec<usize> = (0..3).filter(|k| !v[*k].is_zero()).collect();
+        // One component: the vector's line is known whatever its unknown magnitude.
+        if !holds_any(v, unknowns) || nonzero.len() == 1 {
             let label = match (name, nonzero.as_slice()) {
                 (Some(n), _) => named(n),
                 (None, [k]) => magnitude(&v[*k], value[*k]),
@@ -363,8 +405,12 @@ impl Drawn {
                 }
             };
             self.arrow(canvas, value, label);
-            return Ok(true);
+            return Ok(Drew {
+                whole: true,
+                directions: vec![view::unit(value)],
+            });
         }
+        let mut directions = Vec::new();
         for k in 0..3 {
             if v[k].is_zero() {
                 continue;
@@ -380,8 +426,12 @@ impl Drawn {
                 (None, Some(n)) => named(&format!("{n}_{}", ["x", "y", "z"][k])),
             };
             self.arrow(canvas, d, label);
+            directions.push(d);
         }
-        Ok(false)
+        Ok(Drew {
+            whole: false,
+            directions,
+        })
     }
 
     /// One arrow along `direction`, its label at its free end.

@@ -79,6 +79,8 @@ pub enum Role {
     Impulse,
     Couple,
     AngularVelocity,
+    /// The frame's angular velocity Ω, where it differs from ω.
+    FrameRate,
     /// A rate of an Eulerian angle, drawn as a curved arrow.
     Rate,
 }

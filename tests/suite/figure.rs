@@ -437,3 +437,47 @@ fn the_figure_command_writes_svg_and_tikz() {
     assert!(tikz.starts_with("\\begin{tikzpicture}") && tikz.contains("\\useasboundingbox"));
     assert!(tikz.contains(r"{$\dot{\psi}$}"), "{tikz}");
 }
+
+/// SP 18.2: the frame turns at Ω = −ω₂ j, not with the disk (ω = ω₁ i − ω₂ j): both drawn,
+/// Ω along −y on the ray from the fixed point O (past ω's component along it).
+#[test]
+fn the_frame_rate_is_drawn_where_it_differs_from_omega() {
+    let (_, scene) = examples()
+        .into_iter()
+        .find(|(n, _)| n == "sp18_2_rolling_disk")
+        .unwrap();
+    let drawn = figure(&scene).unwrap();
+    let minus_y = drawn.at([0.0, -1.0, 0.0]);
+    let omega_frame = drawn.marks.iter().any(|m| match m {
+        Mark::Arrow {
+            role: Role::FrameRate,
+            from,
+            to,
+            double: true,
+            ..
+        } => {
+            let along = to.minus(*from);
+            let on_the_ray = (from.x * minus_y.y - from.y * minus_y.x).abs() < 1e-6
+                && from.x * minus_y.x + from.y * minus_y.y >= 0.0;
+            on_the_ray
+                && (along.x * minus_y.y - along.y * minus_y.x).abs() < 1e-6 * along.length()
+                && along.x * minus_y.x + along.y * minus_y.y > 0.0
+        }
+        _ => false,
+    });
+    assert!(omega_frame, "Ω on the ray from O along −y");
+    assert!(drawn.labels.iter().any(|l| l.markup == r"$\Omega$"));
+    // And where the frame turns with the body (SP 18.4), no Ω.
+    let (_, shaft) = examples()
+        .into_iter()
+        .find(|(n, _)| n == "sp18_4_shaft_reactions")
+        .unwrap();
+    let drawn = figure(&shaft).unwrap();
+    assert!(!drawn.marks.iter().any(|m| matches!(
+        m,
+        Mark::Arrow {
+            role: Role::FrameRate,
+            ..
+        }
+    )));
+}

@@ -38,10 +38,14 @@ fn one(out: &mut String, node: &Node) -> f64 {
         }
         Node::Group(body) | Node::Face(_, body) => maths(out, body),
         Node::Function(name) => {
+            // Apart from a factor before it (`M₀ sin pt`, not `M₀sin`).
+            if !out.is_empty() && !out.ends_with(' ') {
+                out.push(' ');
+            }
             out.push_str("<tspan font-style=\"normal\">");
             out.push_str(name);
             out.push_str("</tspan> ");
-            (name.len() as f64 + 0.5) * DIGIT_EM
+            (name.len() as f64 + 1.0) * DIGIT_EM
         }
         other => {
             let plain = text::maths(std::slice::from_ref(other));

@@ -46,6 +46,14 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
         mass += m;
         moment = add(moment, scaled(placed.centre, m));
         let (outline, mut marks) = placed.outline(canvas, &part.shape, &what)?;
+        // A point mass is named by its mass (m_1), as a figure names an unbalance.
+        if let (Shape::PointMass, Some(_)) = (&part.shape, part.mass.as_symbol()) {
+            canvas.label_on_body(
+                super::loads::label(&part.mass),
+                placed.centre,
+                placed.centre,
+            );
+        }
         for size in placed.named_sizes(canvas, &part.shape, &what)? {
             if let Some([a, b]) = size.radius {
                 marks.push(open_path(canvas, &[a, b], Stroke::AXIS));

@@ -34,6 +34,8 @@ const AXIS_BEYOND: f64 = 0.55;
 /// The length of the axes Gx'y'z' drawn when the page works about G away from O.
 const G_AXIS: f64 = 0.5;
 const BEARING_RADIUS: f64 = 0.07;
+/// The pieces a shaft is drawn in, each at its own depth among the parts.
+const SHAFT_PIECES: usize = 12;
 const BEARING_LENGTH: f64 = 0.1;
 
 const UNIT: [P3; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
@@ -316,13 +318,19 @@ fn fixed_axis(
                     (l.min(*s), h.max(*s))
                 });
             let (p0, p1) = (scaled(a, s0), scaled(a, s1));
-            let shaft = Mark::Path {
-                points: vec![canvas.project(p0), canvas.project(p1)],
-                closed: false,
-                filled: false,
-                stroke: Stroke::SHAFT,
-            };
-            canvas.part(scaled(add(p0, p1), 0.5), vec![shaft]);
+            // In pieces, each drawn by its own depth: the shaft passes behind a disk on it
+            // and in front of it where it comes out.
+            for k in 0..SHAFT_PIECES {
+                let at = |j: usize| scaled(a, s0 + (s1 - s0) * j as f64 / SHAFT_PIECES as f64);
+                let (q0, q1) = (at(k), at(k + 1));
+                let piece = Mark::Path {
+                    points: vec![canvas.project(q0), canvas.project(q1)],
+                    closed: false,
+                    filled: false,
+                    stroke: Stroke::SHAFT,
+                };
+                canvas.part(scaled(add(q0, q1), 0.5), vec![piece]);
+            }
             ends = vec![p0, p1];
         }
         for b in bearings {

@@ -135,10 +135,38 @@ fn the_shaft_of_sample_problem_18_4() {
         drawn_at(&drawn, &scene, &f.point)
     };
     let (c, d) = (point("C"), point("D"));
-    let shaft = drawn.marks.iter().any(|m| matches!(m, Mark::Path { points, stroke, .. }
-        if *stroke == Stroke::SHAFT && points.len() == 2
-            && ((near(points[0], c) && near(points[1], d)) || (near(points[0], d) && near(points[1], c)))));
-    assert!(shaft, "the shaft from C to D");
+    // The shaft, drawn in pieces (each at its depth), runs from C to D along CD and no farther.
+    let pieces: Vec<(P2, P2)> = drawn
+        .marks
+        .iter()
+        .filter_map(|m| match m {
+            Mark::Path { points, stroke, .. } if *stroke == Stroke::SHAFT => {
+                Some((points[0], points[1]))
+            }
+            _ => None,
+        })
+        .collect();
+    let cd = d.minus(c);
+    let along = |p: P2| (p.minus(c).x * cd.x + p.minus(c).y * cd.y) / (cd.x * cd.x + cd.y * cd.y);
+    let on_cd = |p: P2| (p.minus(c).x * cd.y - p.minus(c).y * cd.x).abs() < 1e-6 * cd.length();
+    assert!(
+        pieces.iter().all(|(a, b)| on_cd(*a) && on_cd(*b)),
+        "the shaft lies on CD"
+    );
+    let covered: f64 = pieces
+        .iter()
+        .map(|(a, b)| (along(*b) - along(*a)).abs())
+        .sum();
+    let (lo, hi) = pieces
+        .iter()
+        .flat_map(|(a, b)| [along(*a), along(*b)])
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), t| {
+            (l.min(t), h.max(t))
+        });
+    assert!(
+        (lo.abs() < 1e-9) && ((hi - 1.0).abs() < 1e-9) && ((covered - 1.0).abs() < 1e-9),
+        "the shaft from C to D"
+    );
     let rods = drawn
         .marks
         .iter()

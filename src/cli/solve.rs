@@ -8,7 +8,7 @@ use kinetics::figure::{figure, svg::svg};
 use kinetics::scene::unit_system::UnitSystem;
 use kinetics::scene::{analyse, parse_scene_in, Analysis, Scene};
 use kinetics::solution::numbers::{with_digits, DEFAULT_DIGITS};
-use kinetics::solution::{render_beside, render_numbers, Format};
+use kinetics::solution::{render_beside, render_numbers_beside, Format};
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
@@ -118,8 +118,8 @@ fn page(args: &Args, scene: &Scene, analysis: &Analysis) -> Result<String, CliEr
             "--standalone goes with --format latex".into(),
         ));
     }
-    let beside = match (&args.output, format, args.numbers) {
-        (Some(path), Format::Markdown, false) => Some(figure_path(path)),
+    let beside = match (&args.output, format) {
+        (Some(path), Format::Markdown) => Some(figure_path(path)),
         _ => None,
     };
     let figure_file = beside
@@ -127,7 +127,13 @@ fn page(args: &Args, scene: &Scene, analysis: &Analysis) -> Result<String, CliEr
         .and_then(Path::file_name)
         .map(|name| name.to_string_lossy().into_owned());
     let page = with_digits(usize::from(args.digits), || match args.numbers {
-        true => render_numbers(scene, analysis, format, args.standalone),
+        true => render_numbers_beside(
+            scene,
+            analysis,
+            format,
+            args.standalone,
+            figure_file.as_deref(),
+        ),
         false => render_beside(
             scene,
             analysis,

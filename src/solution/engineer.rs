@@ -16,6 +16,7 @@ use super::page::{Block, Heading, Page, Section};
 use super::result::Result;
 use super::shown_value::ShownValue;
 use crate::algebra::{Axis, Expr, Symbol};
+use crate::figure::Figure;
 use crate::mechanics::derivation::Step;
 use crate::print::{self, Notation};
 use crate::scene::derived_dimension;
@@ -41,17 +42,22 @@ pub(super) struct Number {
     pub unit: Option<NamedUnit>,
 }
 
-/// The engineer's page: the title, the givens, the results by their numbers (the answers),
-/// then the intermediate values step by step.
+/// The engineer's page: the title, the figure, the givens, the results by their numbers (the
+/// answers), then the intermediate values step by step.
 pub(super) fn numbers_page<'a>(
     scene: &'a Scene,
     results: &'a [Result<'a>],
     steps: &'a [StepValues],
+    figure: Option<&'a Figure>,
 ) -> Page<'a> {
-    let mut sections = vec![
+    let mut sections: Vec<Section> = figure
+        .map(|f| Section::new(Heading::Statement, vec![Block::Figure(f)]))
+        .into_iter()
+        .collect();
+    sections.extend([
         Section::new(Heading::Given, vec![Block::Givens(&scene.givens)]),
         Section::new(Heading::Results, vec![Block::Answers(results)]),
-    ];
+    ]);
     if !steps.is_empty() {
         sections.push(Section::new(
             Heading::Intermediate,

@@ -24,4 +24,4 @@ mod text;
 pub mod unit_latex;
 
 pub use derivations::{render_derivations, Shown};
-pub use render::{render, render_beside, render_numbers, Format};
+pub use render::{render, render_beside, render_numbers, render_numbers_beside, Format};

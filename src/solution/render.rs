@@ -119,11 +119,25 @@ pub fn render_numbers(
     format: Format,
     standalone: bool,
 ) -> String {
+    render_numbers_beside(scene, analysis, format, standalone, None)
+}
+
+/// [`render_numbers`], a Markdown page showing its figure as the image `figure_file` (as
+/// [`render_beside`]).
+pub fn render_numbers_beside(
+    scene: &Scene,
+    analysis: &Analysis,
+    format: Format,
+    standalone: bool,
+    figure_file: Option<&str>,
+) -> String {
     on_the_page(scene, analysis, || {
         let dims = scene_dimensions(scene);
         let results = results(scene, analysis, &dims);
         let steps = super::engineer::intermediate(scene, analysis, &dims);
-        let page = super::engineer::numbers_page(scene, &results, &steps);
+        let drawn = crate::figure::figure(scene).ok();
+        let mut page = super::engineer::numbers_page(scene, &results, &steps, drawn.as_ref());
+        page.figure_file = figure_file;
         match format {
             Format::Text => super::text::page(&page),
             Format::Latex => super::latex::page(&page, standalone),

@@ -509,3 +509,35 @@ fn the_frame_rate_is_drawn_where_it_differs_from_omega() {
         }
     )));
 }
+
+/// The engineer's page (`--numbers`) starts from the figure too: before Given in LaTeX (and
+/// the document compiles), inline in HTML, none in text.
+#[test]
+fn the_numbers_page_has_the_figure_too() {
+    let path = scene("sp18_4_shaft_reactions");
+    let (code, tex, err) = kinetics(&[
+        "solve",
+        "--numbers",
+        "--format",
+        "latex",
+        "--standalone",
+        &path,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let figure = tex.find("\\begin{tikzpicture}").expect("the figure");
+    assert!(
+        figure < tex.find("\\paragraph{Given}").expect("Given"),
+        "before Given"
+    );
+    let dir = std::env::temp_dir().join(format!("kinetics-numbers-figure-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("numbers.tex");
+    std::fs::write(&file, &tex).unwrap();
+    let error = crate::common::pdflatex::pdflatex(&dir, &file).first_error();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert_eq!(error, None);
+    let (_, html, _) = kinetics(&["solve", "--numbers", "--format", "html", &path]);
+    assert_eq!(html.matches("<svg").count(), 1);
+    let (_, text, _) = kinetics(&["solve", "--numbers", &path]);
+    assert!(!text.contains("svg") && !text.contains("tikz"));
+}

@@ -214,7 +214,8 @@ impl<'s> Canvas<'s> {
         parts.sort_by(|a, b| a.0.total_cmp(&b.0));
         marks.extend(parts.into_iter().flat_map(|(_, m)| m));
         marks.extend(self.front);
-        let (min, max) = bounds(marks.iter().flat_map(through));
+        // Without the heads, which are in figure units already.
+        let (min, max) = bounds(marks.iter().flat_map(Mark::line));
         let (w, h) = (max.x - min.x, max.y - min.y);
         let scale = match (w > 0.0, h > 0.0) {
             (true, true) => (MARKS_WIDTH / w).min(MARKS_HEIGHT / h),
@@ -273,37 +274,15 @@ fn is_weight_name(name: &str) -> bool {
 /// The points a mark passes through, its arrow heads and a dot's extent included.
 pub fn points_of(mark: &Mark) -> Vec<P2> {
     match mark {
-        Mark::Path { points, .. } => points.clone(),
-        Mark::Arrow {
-            from,
-            via,
-            to,
-            double,
-            ..
-        } => {
-            let mut out = vec![*from];
-            out.extend(via);
-            out.push(*to);
-            out.extend(super::heads(*from, via, *to, *double).into_iter().flatten());
-            out
-        }
         Mark::Dot { at, radius } => vec![
             at.minus(P2::new(*radius, *radius)),
             at.plus(P2::new(*radius, *radius)),
         ],
-    }
-}
-
-/// The points a mark passes through, without its heads (in the scene's units still).
-fn through(mark: &Mark) -> Vec<P2> {
-    match mark {
-        Mark::Path { points, .. } => points.clone(),
-        Mark::Arrow { from, via, to, .. } => [*from]
-            .into_iter()
-            .chain(via.iter().copied())
-            .chain([*to])
-            .collect(),
-        Mark::Dot { at, .. } => vec![*at],
+        _ => {
+            let mut out = mark.line();
+            out.extend(mark.heads().into_iter().flatten());
+            out
+        }
     }
 }
 

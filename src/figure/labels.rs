@@ -7,7 +7,7 @@
 
 use super::canvas::points_of;
 use super::view::P2;
-use super::{heads, Label, Mark, Stroke, FONT_SIZE};
+use super::{Label, Mark, Stroke, FONT_SIZE};
 use crate::print::markup;
 
 /// Room between a label's box and its text.
@@ -42,7 +42,7 @@ pub fn half_size(markup_text: &str) -> (f64, f64) {
 }
 
 /// What a label is placed among: the strokes, the body's faces and every label's anchor.
-struct Scene2<'a> {
+struct Surroundings<'a> {
     /// Each drawn segment, with what crossing it costs (a rod more than a hairline).
     strokes: Vec<(P2, P2, f64)>,
     faces: Vec<&'a [P2]>,
@@ -51,7 +51,7 @@ struct Scene2<'a> {
 
 /// Every wanted label placed among `marks`, in order.
 pub fn place(wanted: &[Wanted], marks: &[Mark]) -> Vec<Label> {
-    let around = Scene2 {
+    let around = Surroundings {
         strokes: marks.iter().flat_map(segments).collect(),
         faces: marks
             .iter()
@@ -114,7 +114,7 @@ fn faults(
     c: P2,
     (hw, hh): (f64, f64),
     placed: &[Label],
-    around: &Scene2,
+    around: &Surroundings,
     (own, w): (usize, &Wanted),
 ) -> f64 {
     let mine = around.anchors[own];
@@ -190,19 +190,9 @@ fn segments(mark: &Mark) -> Vec<(P2, P2, f64)> {
             stroke,
             ..
         } => chain(points, *closed, weight(stroke)),
-        Mark::Arrow {
-            from,
-            via,
-            to,
-            double,
-            stroke,
-            ..
-        } => {
-            let mut line = vec![*from];
-            line.extend(via);
-            line.push(*to);
-            let mut s = chain(&line, false, weight(stroke));
-            for head in heads(*from, via, *to, *double) {
+        Mark::Arrow { stroke, .. } => {
+            let mut s = chain(&mark.line(), false, weight(stroke));
+            for head in mark.heads() {
                 s.extend(chain(&head, true, 1.0));
             }
             s

@@ -177,8 +177,44 @@ pub fn figure(scene: &Scene) -> Result<Figure, FigureError> {
     Ok(canvas.finish())
 }
 
+impl Mark {
+    /// The points the mark's line runs through: a path's points, an arrow's from its tail
+    /// through its curve to its tip (no heads), a dot's centre.
+    pub fn line(&self) -> Vec<P2> {
+        match self {
+            Mark::Path { points, .. } => points.clone(),
+            Mark::Arrow { from, via, to, .. } => std::iter::once(*from)
+                .chain(via.iter().copied())
+                .chain([*to])
+                .collect(),
+            Mark::Dot { at, .. } => vec![*at],
+        }
+    }
+
+    /// An arrow's heads, each a triangle (tip, then the two back corners); none for the others.
+    pub fn heads(&self) -> Vec<[P2; 3]> {
+        match self {
+            Mark::Arrow {
+                from,
+                via,
+                to,
+                double,
+                ..
+            } => heads(*from, via, *to, *double),
+            _ => Vec::new(),
+        }
+    }
+}
+
+impl Role {
+    /// An impulse's head is drawn open (white inside), every other arrow's filled.
+    pub fn open_head(&self) -> bool {
+        matches!(self, Role::Impulse)
+    }
+}
+
 /// The heads of an arrow, each a triangle (tip, then the two back corners).
-pub fn heads(from: P2, via: &[P2], to: P2, double: bool) -> Vec<[P2; 3]> {
+fn heads(from: P2, via: &[P2], to: P2, double: bool) -> Vec<[P2; 3]> {
     let before = via.last().copied().unwrap_or(from);
     let Some(along) = to.minus(before).unit() else {
         return Vec::new();

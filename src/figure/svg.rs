@@ -2,7 +2,7 @@
 //! y turned down, strokes black or the accent colour, faces white, an impulse's head open,
 //! each label a `<text>` centred on its box, in a serif italic.
 
-use super::{heads, Figure, Mark, Role, Stroke, FACE_OPACITY, FONT_SIZE};
+use super::{Figure, Mark, Stroke, FACE_OPACITY, FONT_SIZE};
 use crate::print::markup;
 use std::fmt::Write;
 
@@ -94,28 +94,18 @@ fn mark(out: &mut String, mark: &Mark) {
                 stroke_attributes(stroke)
             );
         }
-        Mark::Arrow {
-            from,
-            via,
-            to,
-            double,
-            stroke,
-            role,
-        } => {
-            let line = std::iter::once(*from)
-                .chain(via.iter().copied())
-                .chain([*to]);
+        Mark::Arrow { stroke, role, .. } => {
             let _ = writeln!(
                 out,
                 "<polyline points=\"{}\" {}/>",
-                points(line),
+                points(mark.line().into_iter()),
                 stroke_attributes(stroke)
             );
-            let fill = match role {
-                Role::Impulse => "white",
-                _ => colour(stroke),
+            let fill = match role.open_head() {
+                true => "white",
+                false => colour(stroke),
             };
-            for head in heads(*from, via, *to, *double) {
+            for head in mark.heads() {
                 let _ = writeln!(
                     out,
                     "<polygon points=\"{}\" fill=\"{fill}\" stroke=\"{}\" stroke-width=\"1\"/>",

@@ -2,7 +2,7 @@
 //! SVG: a figure unit is ¾ pt, so the figure is as wide on paper as on screen and its labels
 //! stand where they were placed; each label a node centred on its box.
 
-use super::{heads, Figure, Mark, Role, Stroke, FACE_OPACITY, P2};
+use super::{Figure, Mark, Stroke, FACE_OPACITY, P2};
 use crate::print::markup;
 use std::fmt::Write;
 
@@ -83,23 +83,19 @@ fn mark(out: &mut String, mark: &Mark) {
                 chain(points.iter().copied())
             );
         }
-        Mark::Arrow {
-            from,
-            via,
-            to,
-            double,
-            stroke,
-            role,
-        } => {
-            let line = std::iter::once(*from)
-                .chain(via.iter().copied())
-                .chain([*to]);
-            let _ = writeln!(out, "\\path[{}] {};", options(stroke), chain(line));
-            let fill = match role {
-                Role::Impulse => "white",
-                _ => colour(stroke),
+        Mark::Arrow { stroke, role, .. } => {
+            let line = mark.line();
+            let _ = writeln!(
+                out,
+                "\\path[{}] {};",
+                options(stroke),
+                chain(line.into_iter())
+            );
+            let fill = match role.open_head() {
+                true => "white",
+                false => colour(stroke),
             };
-            for head in heads(*from, via, *to, *double) {
+            for head in mark.heads() {
                 let _ = writeln!(
                     out,
                     "\\path[draw={},fill={fill},line width=0.75pt] {} -- cycle;",

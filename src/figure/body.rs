@@ -23,6 +23,35 @@ pub struct Extent {
     pub samples: Vec<P3>,
     pub centre: P3,
     pub reach: f64,
+    solids: Vec<Solid>,
+}
+
+/// A part with room inside (not a rod or a point mass): its outline's points, its centre and
+/// its own axes.
+struct Solid {
+    samples: Vec<P3>,
+    centre: P3,
+    axes: [P3; 3],
+}
+
+impl Solid {
+    /// Whether `p` is within the part's box in its own axes (a flat part's plane within
+    /// `depth`), and the part goes on past it both ways along `d` by `depth` or more.
+    fn holds(&self, p: P3, d: P3, depth: f64) -> bool {
+        let span = |axis: P3, at: P3| {
+            self.samples
+                .iter()
+                .map(|s| view::dot(sub(*s, at), axis))
+                .fold((0.0f64, 0.0f64), |(lo, hi), x| (lo.min(x), hi.max(x)))
+        };
+        let within = self.axes.iter().all(|a| {
+            let (lo, hi) = span(*a, self.centre);
+            let x = view::dot(sub(p, self.centre), *a);
+            x >= lo - depth && x <= hi + depth
+        });
+        let (behind, ahead) = span(d, p);
+        within && ahead > depth && -behind > depth
+    }
 }
 
 impl Extent {
@@ -33,11 +62,37 @@ impl Extent {
             .map(|p| view::dot(*p, d))
             .fold(0.0, f64::max)
     }
+
+    /// Whether the point `p` is inside one of the solid parts (a plate, disk, box, …; not a
+    /// rod or a point mass) with the part on both sides of it along the unit vector `d` by
+    /// `depth` or more: a load there (a weight at G) is inside the body, not on its surface.
+    pub fn surrounds(&self, p: P3, d: P3, depth: f64) -> bool {
+        self.solids.iter().any(|solid| solid.holds(p, d, depth))
+    }
+
+    /// How far, as drawn, the body goes past the point `p` along the unit vector `d` (0 if
+    /// not at all), in lengths along `d`: a load at a point inside it is drawn out past it.
+    pub fn beyond(&self, canvas: &Canvas, p: P3, d: P3) -> f64 {
+        let at = canvas.project(p);
+        let along = canvas.project(add(p, d)).minus(at);
+        let Some(v) = along.unit() else {
+            return 0.0;
+        };
+        self.samples
+            .iter()
+            .map(|s| {
+                let q = canvas.project(*s).minus(at);
+                (q.x * v.x + q.y * v.y) / along.length()
+            })
+            .fold(0.0, f64::max)
+    }
 }
 
 /// Draws every part; the body's extent.
 pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
     let mut samples = Vec::new();
+    let mut solids = Vec::new();
+    let loaded = loaded_points(canvas, scene)?;
     let (mut mass, mut moment) = (0.0, [0.0; 3]);
     for (k, part) in scene.parts.iter().enumerate() {
         let what = format!("body {}", k + 1);
@@ -45,7 +100,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
         let m = canvas.value(&part.mass, &what)?;
         mass += m;
         moment = add(moment, scaled(placed.centre, m));
-        let (outline, mut marks) = placed.outline(canvas, &part.shape, &what)?;
+        let (outline, mut marks) = placed.outline(canvas, &part.shape, &loaded, &what)?;
         // A point mass is named by its mass (m_1), as a figure names an unbalance.
         if let (Shape::PointMass, Some(_)) = (&part.shape, part.mass.as_symbol()) {
             canvas.label_on_body(
@@ -59,6 +114,16 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
                 marks.push(open_path(canvas, &[a, b], Stroke::AXIS));
             }
             canvas.label_on_body(size.label, size.at, size.outward);
+        }
+        if let (Shape::SlenderRod { .. }, [a, b]) = (&part.shape, &outline[..]) {
+            canvas.keep_clear(*a, *b);
+        }
+        if !matches!(part.shape, Shape::SlenderRod { .. } | Shape::PointMass) {
+            solids.push(Solid {
+                samples: outline.clone(),
+                centre: placed.centre,
+                axes: placed.axes,
+            });
         }
         samples.extend(outline);
         canvas.part(placed.centre, marks);
@@ -75,6 +140,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
         samples,
         centre,
         reach: if reach > 0.0 { reach } else { 1.0 },
+        solids,
     })
 }
 
@@ -119,6 +185,7 @@ impl Placed {
         &self,
         canvas: &Canvas,
         shape: &Shape,
+        loaded: &[P3],
         what: &str,
     ) -> Result<(Vec<P3>, Vec<Mark>), FigureError> {
         let len = |e| canvas.value(e, what);
@@ -189,7 +256,9 @@ impl Placed {
             }
             Shape::RectangularPrism { a, b, c } => {
                 let half = [len(a)? / 2.0, len(b)? / 2.0, len(c)? / 2.0];
-                self.prism(canvas, half)
+                let (corners, mut marks) = self.prism(canvas, half);
+                marks.extend(self.hidden_edges(canvas, half, loaded));
+                (corners, marks)
             }
             Shape::Gyration { radii } => {
                 let r = radii
@@ -305,6 +374,48 @@ impl Placed {
         }
         (corners, marks)
     }
+
+    /// A box's corner out of sight (its three faces turned from the eye) where a load acts
+    /// or a point is named: its three edges dashed, as a textbook shows a hidden corner.
+    fn hidden_edges(&self, canvas: &Canvas, half: [f64; 3], loaded: &[P3]) -> Vec<Mark> {
+        let eye = canvas.view().toward_eye();
+        // The far corner's sides: each against its axis's side facing the eye.
+        let s = [0, 1, 2].map(|k| match view::dot(self.axes[k], eye) > 0.0 {
+            true => -1.0,
+            false => 1.0,
+        });
+        let at = |s: [f64; 3]| self.at(s[0] * half[0], s[1] * half[1], s[2] * half[2]);
+        let corner = at(s);
+        let size = view::norm(half);
+        if !loaded
+            .iter()
+            .any(|p| view::norm(sub(*p, corner)) < 1e-9 * size)
+        {
+            return Vec::new();
+        }
+        (0..3)
+            .map(|k| {
+                let mut next = s;
+                next[k] = -s[k];
+                open_path(canvas, &[corner, at(next)], Stroke::HIDDEN)
+            })
+            .collect()
+    }
+}
+
+/// The points a force, an impulse or a name is at.
+fn loaded_points(canvas: &Canvas, scene: &Scene) -> Result<Vec<P3>, FigureError> {
+    let mut out = Vec::new();
+    for f in &scene.forces {
+        out.push(canvas.vector(&f.point, &f.name)?);
+    }
+    for (k, i) in scene.impulses.iter().enumerate() {
+        out.push(canvas.vector(&i.point, &format!("impulse {}", k + 1))?);
+    }
+    for p in &scene.points {
+        out.push(canvas.vector(&p.position, &p.name)?);
+    }
+    Ok(out)
 }
 
 /// Which end (−h or +h along the axis `x`) faces the eye.

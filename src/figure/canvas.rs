@@ -6,13 +6,19 @@
 use super::labels::{self, Wanted};
 use super::sizes::Sizes;
 use super::view::{self, View, P2, P3};
-use super::{Figure, FigureError, Label, Mark, Role, Stroke, MARKS_HEIGHT, MARKS_WIDTH};
+use super::{Figure, FigureError, Label, Mark, Role, Stroke, BESIDE, MARKS_HEIGHT, MARKS_WIDTH};
 use crate::algebra::{Expr, Vector};
 use crate::mechanics::eulerian_angles::EulerianAngles;
+use crate::mechanics::shapes::Shape;
 use crate::scene::model::Scene;
 
 /// The room left around the drawing, in figure units.
 const MARGIN: f64 = 6.0;
+/// An arrow lies along a line when it is within this of parallel to it, its tail within
+/// this share of its length of the line, and it runs over this share of its length beside it.
+const ALONG_DEG: f64 = 6.0;
+const ON_LINE: f64 = 0.05;
+const OVERLAPPING: f64 = 0.2;
 
 pub struct Canvas<'s> {
     sizes: &'s Sizes,
@@ -20,8 +26,12 @@ pub struct Canvas<'s> {
     behind: Vec<Mark>,
     /// Each part's marks with the depth of its centre.
     parts: Vec<(f64, Vec<Mark>)>,
-    front: Vec<Mark>,
-    wanted: Vec<Wanted>,
+    /// The loads and the motion, each with the shift (in figure units, made after scaling)
+    /// that sets it beside a line it would lie along.
+    front: Vec<(Mark, P2)>,
+    wanted: Vec<(Wanted, P2)>,
+    /// The lines, as drawn, a load's arrow is kept off: the axes, the rods, the shaft.
+    clear: Vec<(P2, P2)>,
 }
 
 /// Where a mark goes.
@@ -43,6 +53,7 @@ impl<'s> Canvas<'s> {
             parts: Vec::new(),
             front: Vec::new(),
             wanted: Vec::new(),
+            clear: Vec::new(),
         };
         let up = if scene.euler_angles.is_some() {
             let theta = canvas.value(&Expr::sym(EulerianAngles::chapter().nutation), "theta")?;
@@ -74,15 +85,40 @@ impl<'s> Canvas<'s> {
                 directions.push(w);
             }
         }
+        // O, G and the points the scene names: drawn apart where they are apart.
+        let mut points = vec![[0.0; 3]];
+        let (mut mass, mut moment) = (0.0, [0.0; 3]);
         for (k, part) in scene.parts.iter().enumerate() {
-            for j in 0..3 {
-                let axis = (0..3)
-                    .map(|i| canvas.value(&part.rotation[(i, j)], &format!("body {}", k + 1)))
-                    .collect::<Result<Vec<f64>, _>>()?;
-                directions.push([axis[0], axis[1], axis[2]]);
+            let what = format!("body {}", k + 1);
+            let mut axes = [[0.0; 3]; 3];
+            for (j, axis) in axes.iter_mut().enumerate() {
+                for (i, c) in axis.iter_mut().enumerate() {
+                    *c = canvas.value(&part.rotation[(i, j)], &what)?;
+                }
+            }
+            directions.extend(axes);
+            let centre = canvas.vector(&part.position, &what)?;
+            let m = canvas.value(&part.mass, &what)?;
+            (mass, moment) = (mass + m, view::add(moment, view::scaled(centre, m)));
+            points.push(centre);
+            if let Shape::SlenderRod { length } = &part.shape {
+                let half = view::scaled(axes[0], canvas.value(length, &what)? / 2.0);
+                points.extend([view::add(centre, half), view::sub(centre, half)]);
             }
         }
-        canvas.view = View::choose(up, &directions);
+        if mass > 0.0 {
+            points.push(view::scaled(moment, 1.0 / mass));
+        }
+        for f in &scene.forces {
+            points.push(canvas.vector(&f.point, &f.name)?);
+        }
+        for (k, i) in scene.impulses.iter().enumerate() {
+            points.push(canvas.vector(&i.point, &format!("impulse {}", k + 1))?);
+        }
+        for p in &scene.points {
+            points.push(canvas.vector(&p.position, &p.name)?);
+        }
+        canvas.view = View::choose(up, &directions, &points);
         Ok(canvas)
     }
 
@@ -115,22 +151,61 @@ impl<'s> Canvas<'s> {
         &self.view
     }
 
-    fn layer(&mut self, layer: Layer) -> &mut Vec<Mark> {
+    fn push(&mut self, layer: Layer, mark: Mark, shift: P2) {
         match layer {
-            Layer::Behind => &mut self.behind,
-            Layer::Front => &mut self.front,
+            Layer::Behind => self.behind.push(mark),
+            Layer::Front => self.front.push((mark, shift)),
         }
     }
 
     /// A polyline (or polygon) through the scene's points.
     pub fn path(&mut self, layer: Layer, points: &[P3], closed: bool, stroke: Stroke) {
         let points = points.iter().map(|p| self.project(*p)).collect();
-        self.layer(layer).push(Mark::Path {
+        let mark = Mark::Path {
             points,
             closed,
             filled: false,
             stroke,
-        });
+        };
+        self.push(layer, mark, P2::new(0.0, 0.0));
+    }
+
+    /// The line from `a` to `b` (an axis, a rod, the shaft) is one a load is not drawn along.
+    pub fn keep_clear(&mut self, a: P3, b: P3) {
+        let line = (self.project(a), self.project(b));
+        self.clear.push(line);
+    }
+
+    /// Where an arrow from `from` to `to` would lie along a line kept clear (parallel to it,
+    /// on it, and over a fifth of its length): the unit normal to that line on the side away
+    /// from `away`, to draw it [`BESIDE`] the line; else zero.
+    pub fn beside(&self, from: P3, to: P3, away: P3) -> P2 {
+        let none = P2::new(0.0, 0.0);
+        let (p0, p1) = (self.project(from), self.project(to));
+        let length = p1.minus(p0).length();
+        let Some(u) = p1.minus(p0).unit() else {
+            return none;
+        };
+        let cross = |a: P2, b: P2| a.x * b.y - a.y * b.x;
+        let dot = |a: P2, b: P2| a.x * b.x + a.y * b.y;
+        for (a, b) in &self.clear {
+            let Some(v) = b.minus(*a).unit() else {
+                continue;
+            };
+            let parallel = cross(u, v).abs() < ALONG_DEG.to_radians().sin();
+            let on = cross(p0.minus(*a), v).abs() < ON_LINE * length;
+            let (t0, t1) = (dot(p0.minus(*a), v), dot(p1.minus(*a), v));
+            let shared = t0.max(t1).min(b.minus(*a).length()) - t0.min(t1).max(0.0);
+            if parallel && on && shared > OVERLAPPING * length {
+                let n = v.normal();
+                let side = dot(n, p0.minus(self.project(away)));
+                return match side < 0.0 || (side == 0.0 && n.x < 0.0) {
+                    true => n.times(-1.0),
+                    false => n,
+                };
+            }
+        }
+        none
     }
 
     /// A straight arrow between two of the scene's points.
@@ -143,15 +218,32 @@ impl<'s> Canvas<'s> {
         stroke: Stroke,
         role: Role,
     ) {
+        self.arrow_beside(layer, from, to, double, stroke, role, P2::new(0.0, 0.0));
+    }
+
+    /// A straight arrow between two of the scene's points, drawn `side` times [`BESIDE`]
+    /// figure units over (see [`Canvas::beside`]).
+    #[allow(clippy::too_many_arguments)]
+    pub fn arrow_beside(
+        &mut self,
+        layer: Layer,
+        from: P3,
+        to: P3,
+        double: bool,
+        stroke: Stroke,
+        role: Role,
+        side: P2,
+    ) {
         let (from, to) = (self.project(from), self.project(to));
-        self.layer(layer).push(Mark::Arrow {
+        let mark = Mark::Arrow {
             from,
             via: Vec::new(),
             to,
             double,
             stroke,
             role,
-        });
+        };
+        self.push(layer, mark, side.times(BESIDE));
     }
 
     /// An arrow along a curve through the scene's points, its head at the last.
@@ -161,20 +253,21 @@ impl<'s> Canvas<'s> {
             return;
         };
         let from = drawn.remove(0);
-        self.front.push(Mark::Arrow {
+        let mark = Mark::Arrow {
             from,
             via: drawn,
             to,
             double: false,
             stroke,
             role,
-        });
+        };
+        self.push(Layer::Front, mark, P2::new(0.0, 0.0));
     }
 
     /// A dot of `radius` figure units at a scene's point.
     pub fn dot(&mut self, p: P3, radius: f64) {
         let at = self.project(p);
-        self.front.push(Mark::Dot { at, radius });
+        self.push(Layer::Front, Mark::Dot { at, radius }, P2::new(0.0, 0.0));
     }
 
     /// A part's marks, drawn after the parts farther from the eye than `centre`.
@@ -186,36 +279,51 @@ impl<'s> Canvas<'s> {
     /// A label for the scene's point `anchor`, wanted on the side `direction` (the scene's
     /// frame) points to.
     pub fn label(&mut self, markup: String, anchor: P3, direction: P3) {
-        self.want(markup, anchor, direction, false);
+        self.want(markup, anchor, direction, false, P2::new(0.0, 0.0));
+    }
+
+    /// A label for an arrow drawn beside a line ([`Canvas::arrow_beside`]), shifted with it.
+    pub fn label_beside(&mut self, markup: String, anchor: P3, direction: P3, side: P2) {
+        self.want(markup, anchor, direction, false, side.times(BESIDE));
     }
 
     /// A label of something on the body (G, a named point, a part's size), which may stand
     /// on the body's faces.
     pub fn label_on_body(&mut self, markup: String, anchor: P3, direction: P3) {
-        self.want(markup, anchor, direction, true);
+        self.want(markup, anchor, direction, true, P2::new(0.0, 0.0));
     }
 
-    fn want(&mut self, markup: String, anchor: P3, direction: P3, on_body: bool) {
+    fn want(&mut self, markup: String, anchor: P3, direction: P3, on_body: bool, shift: P2) {
         let at = self.project(anchor);
         let toward = self.project(view::add(anchor, direction)).minus(at);
-        self.wanted.push(Wanted {
+        let wanted = Wanted {
             markup,
             anchor: at,
             direction: toward.unit().unwrap_or(P2::new(1.0, 0.0)),
             on_body,
-        });
+        };
+        self.wanted.push((wanted, shift));
     }
 
     /// The figure: every mark scaled so the drawing is [`MARKS_WIDTH`] wide (or
-    /// [`MARKS_HEIGHT`] high), then the labels placed.
+    /// [`MARKS_HEIGHT`] high) and those drawn beside a line shifted, then the labels placed.
     pub fn finish(self) -> Figure {
-        let mut marks = self.behind;
+        let mut marks: Vec<(Mark, P2)> = self
+            .behind
+            .into_iter()
+            .map(|m| (m, P2::new(0.0, 0.0)))
+            .collect();
         let mut parts = self.parts;
         parts.sort_by(|a, b| a.0.total_cmp(&b.0));
-        marks.extend(parts.into_iter().flat_map(|(_, m)| m));
+        marks.extend(
+            parts
+                .into_iter()
+                .flat_map(|(_, m)| m)
+                .map(|m| (m, P2::new(0.0, 0.0))),
+        );
         marks.extend(self.front);
         // Without the heads, which are in figure units already.
-        let (min, max) = bounds(marks.iter().flat_map(Mark::line));
+        let (min, max) = bounds(marks.iter().flat_map(|(m, _)| m.line()));
         let (w, h) = (max.x - min.x, max.y - min.y);
         let scale = match (w > 0.0, h > 0.0) {
             (true, true) => (MARKS_WIDTH / w).min(MARKS_HEIGHT / h),
@@ -223,12 +331,15 @@ impl<'s> Canvas<'s> {
             (false, true) => MARKS_HEIGHT / h,
             (false, false) => 1.0,
         };
-        let marks: Vec<Mark> = marks.into_iter().map(|m| scaled(m, scale)).collect();
+        let marks: Vec<Mark> = marks
+            .into_iter()
+            .map(|(m, shift)| moved(m, |p| p.times(scale).plus(shift)))
+            .collect();
         let wanted: Vec<Wanted> = self
             .wanted
             .into_iter()
-            .map(|w| Wanted {
-                anchor: w.anchor.times(scale),
+            .map(|(w, shift)| Wanted {
+                anchor: w.anchor.times(scale).plus(shift),
                 ..w
             })
             .collect();
@@ -304,9 +415,8 @@ fn bounds(points: impl Iterator<Item = P2>) -> (P2, P2) {
     (min, max)
 }
 
-/// A mark with its points times `k` (widths and dot radii are in figure units already).
-fn scaled(mark: Mark, k: f64) -> Mark {
-    let s = |p: P2| p.times(k);
+/// A mark with its points moved by `s` (widths and dot radii are in figure units already).
+fn moved(mark: Mark, s: impl Fn(P2) -> P2 + Copy) -> Mark {
     match mark {
         Mark::Path {
             points,

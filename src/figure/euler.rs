@@ -24,6 +24,7 @@ pub fn angles(canvas: &mut Canvas, body: &Extent) -> Result<(), FigureError> {
     let reach = body.reach;
     let top = scaled(k, VERTICAL * reach);
     canvas.path(Layer::Behind, &[[0.0; 3], top], false, Stroke::CENTRE_LINE);
+    canvas.keep_clear([0.0; 3], top);
     canvas.label("$Z$".into(), top, k);
     // θ: the arc from K to z, its label outside the middle.
     let arc: Vec<P3> = (0..=24)

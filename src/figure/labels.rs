@@ -129,7 +129,9 @@ fn faults(
             && (a.x - mine.x).hypot(a.y - mine.y) > 1.0
             && distance_to_box(*a) + 2.0 < own_distance
     });
-    let faces: &[&[P2]] = match w.on_body {
+    // What stands on the body (its anchor on a face) is named on the body.
+    let on_body = w.on_body || around.faces.iter().any(|f| inside(mine, f));
+    let faces: &[&[P2]] = match on_body {
         true => &[],
         false => &around.faces,
     };

@@ -15,7 +15,7 @@
 
 use super::body::{circle, Extent};
 use super::canvas::{Canvas, Layer};
-use super::view::{self, add, scaled, sub, P3};
+use super::view::{self, add, scaled, sub, P2, P3};
 use super::{FigureError, Mark, Role, Stroke};
 use crate::algebra::{Expr, Symbol, Vector};
 use crate::print::{self, markup};
@@ -24,6 +24,10 @@ use crate::scene::units::Dimension;
 
 /// Lengths in proportion to the body's reach.
 const FORCE_LENGTH: f64 = 0.45;
+/// How far a load at a point inside the body reaches past its outline, and how deep inside
+/// a point is for that.
+const PAST_BODY: f64 = 0.2;
+const INSIDE: f64 = 0.05;
 const COUPLE_LENGTH: f64 = 0.4;
 /// The gap before a vector drawn past the body along a ray from O.
 const RAY_GAP: f64 = 0.1;
@@ -52,6 +56,9 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         arrows: Vec::new(),
     };
     omega(canvas, scene, body, &unknowns, &mut rays)?;
+    for e in UNIT {
+        canvas.keep_clear([0.0; 3], scaled(e, rays.end(e) + AXIS_BEYOND * body.reach));
+    }
     for p in &scene.points {
         let at = canvas.vector(&p.position, &p.name)?;
         canvas.dot(at, 2.5);
@@ -68,12 +75,14 @@ struct Rays<'b> {
     body: &'b Extent,
     ends: Vec<P3>,
     claimed: Vec<(P3, f64)>,
-    /// Arrows drawn from O itself (ω about a fixed point), each direction and length.
+    /// Arrows drawn from O itself (ω about a fixed point, a reaction at O), each direction
+    /// and length.
     arrows: Vec<(P3, f64)>,
 }
 
 impl Rays<'_> {
-    /// How far the body, the shaft and the claims go along the unit vector `d`.
+    /// How far the body, the shaft, the claims and the arrows from O go along the unit
+    /// vector `d`.
     fn end(&self, d: P3) -> f64 {
         let shaft = self
             .ends
@@ -83,6 +92,7 @@ impl Rays<'_> {
         let claims = self
             .claimed
             .iter()
+            .chain(&self.arrows)
             .filter(|(c, _)| view::dot(*c, d) > 0.99)
             .map(|(_, end)| *end)
             .fold(0.0, f64::max);
@@ -190,12 +200,11 @@ fn omega(
             stroke: Stroke::MOTION,
             role,
             into_point: false,
+            body,
         };
         let drew = drawn.vector(canvas, vector, Some(name), unknowns, name)?;
         if from == [0.0; 3] {
-            for d in drew.directions {
-                rays.arrows.push((d, stretched(canvas, d, length)));
-            }
+            rays.arrows.extend(drew.arrows);
         }
     }
     Ok(())
@@ -219,25 +228,46 @@ fn loads(
             stroke: Stroke::LOAD,
             role: Role::Force(f.name.clone()),
             into_point: false,
+            body,
         };
         let drew = drawn.vector(canvas, &f.value, Some(&f.name), unknowns, &f.name)?;
+        // Drawn from O, a force's arrows push what is drawn along their rays past them.
+        if at == [0.0; 3] {
+            rays.arrows.extend(drew.arrows.iter().copied());
+        }
         if !drew.whole {
             canvas.label(named(&f.name), at, sub(at, body.centre));
         }
     }
     for (k, c) in scene.couples.iter().enumerate() {
         let what = format!("couple {}", k + 1);
-        let d = view::unit(canvas.vector(c, &what)?);
-        let length = COUPLE_LENGTH * reach;
-        let drawn = Drawn {
-            from: scaled(d, rays.claim(d, stretched(canvas, d, length))),
-            length,
-            double: true,
-            stroke: Stroke::LOAD,
-            role: Role::Couple,
-            into_point: false,
+        // A couple holding unknowns is drawn by its components, each along its own axis
+        // (M_x along x past the body), as a textbook draws it.
+        let parts: Vec<Vector> = match holds_any(c, unknowns) {
+            true => (0..3)
+                .filter(|k| !c[*k].is_zero())
+                .map(|k| {
+                    let mut part = Vector::from_element(Expr::zero());
+                    part[k] = c[k].clone();
+                    part
+                })
+                .collect(),
+            false => vec![c.clone()],
         };
-        drawn.vector(canvas, c, None, unknowns, &what)?;
+        for part in parts {
+            let d = view::unit(canvas.vector(&part, &what)?);
+            let length = COUPLE_LENGTH * reach;
+            let drawn = Drawn {
+                from: scaled(d, rays.claim(d, stretched(canvas, d, length))),
+                length,
+                double: true,
+                stroke: Stroke::LOAD,
+                role: Role::Couple,
+                into_point: false,
+                body,
+            };
+            drawn.vector(canvas, &part, None, unknowns, &what)?;
+        }
     }
     for (k, i) in scene.impulses.iter().enumerate() {
         let what = format!("impulse {}", k + 1);
@@ -252,6 +282,7 @@ fn loads(
             },
             role: Role::Impulse,
             into_point: true,
+            body,
         };
         let name = i.name.map(|s| s.name().to_string());
         let drew = drawn.vector(canvas, &i.value, name.as_deref(), unknowns, &what)?;
@@ -306,6 +337,7 @@ fn fixed_axis(
             false,
             Stroke::CENTRE_LINE,
         );
+        canvas.keep_clear(scaled(a, lo), scaled(a, hi));
         if bearings.len() >= 2 {
             let along: Vec<f64> = bearings
                 .iter()
@@ -365,15 +397,15 @@ fn holds_any(v: &Vector, unknowns: &[Symbol]) -> bool {
         .any(|c| c.symbols().iter().any(|s| unknowns.contains(s)))
 }
 
-/// What a vector's drawing came to: whether it was drawn whole (else by components), and the
-/// directions of its arrows.
+/// What a vector's drawing came to: whether it was drawn whole (else by components), and
+/// its arrows, each its direction and the length it was drawn at.
 struct Drew {
     whole: bool,
-    directions: Vec<P3>,
+    arrows: Vec<(P3, f64)>,
 }
 
 /// How a vector is drawn: from a point (or into it), at a length, single or double.
-struct Drawn {
+struct Drawn<'b> {
     from: P3,
     length: f64,
     double: bool,
@@ -381,9 +413,12 @@ struct Drawn {
     role: Role,
     /// The head at the point (an impulse striking it), else the tail.
     into_point: bool,
+    /// The body: a load at a point inside it reaches out past it, and one drawn beside a
+    /// line is drawn on the side away from its mass centre.
+    body: &'b Extent,
 }
 
-impl Drawn {
+impl Drawn<'_> {
     /// Draws `v`: one arrow labelled `name` (else its magnitude along an axis, else the
     /// vector written) when no unknown is in it or it has one component, else an arrow per
     /// component that is not
@@ -412,13 +447,12 @@ impl Drawn {
                     label(&written)
                 }
             };
-            self.arrow(canvas, value, label);
             return Ok(Drew {
                 whole: true,
-                directions: vec![view::unit(value)],
+                arrows: self.arrow(canvas, value, label).into_iter().collect(),
             });
         }
-        let mut directions = Vec::new();
+        let mut arrows = Vec::new();
         for k in 0..3 {
             if v[k].is_zero() {
                 continue;
@@ -433,40 +467,60 @@ impl Drawn {
                 // A component that is not one symbol is named by the vector's name.
                 (None, Some(n)) => named(&format!("{n}_{}", ["x", "y", "z"][k])),
             };
-            self.arrow(canvas, d, label);
-            directions.push(d);
+            arrows.extend(self.arrow(canvas, d, label));
         }
         Ok(Drew {
             whole: false,
-            directions,
+            arrows,
         })
     }
 
-    /// One arrow along `direction`, its label at its free end.
-    fn arrow(&self, canvas: &mut Canvas, direction: P3, label: String) {
+    /// One arrow along `direction`, its label at its free end; its unit direction and the
+    /// length it was drawn at.
+    fn arrow(&self, canvas: &mut Canvas, direction: P3, label: String) -> Option<(P3, f64)> {
         let u = view::unit(direction);
         if view::norm(u) == 0.0 {
-            return;
+            return None;
         }
-        let span = scaled(u, stretched(canvas, u, self.length));
-        let (from, to, free, outward) = match self.into_point {
-            true => (
-                sub(self.from, span),
-                self.from,
-                sub(self.from, span),
-                scaled(u, -1.0),
-            ),
-            false => (self.from, add(self.from, span), add(self.from, span), u),
+        let load = matches!(self.role, Role::Force(_) | Role::Impulse);
+        // The way from the point to the arrow's free end (an impulse's tail).
+        let outward = match self.into_point {
+            true => scaled(u, -1.0),
+            false => u,
         };
-        canvas.arrow(
+        // A load at a point inside the body (the body on both sides of it, as at G) reaches
+        // out past it, so its free end and its label stand clear of the body.
+        let inside = self
+            .body
+            .surrounds(self.from, outward, INSIDE * self.body.reach);
+        let length = match load && inside {
+            true => self
+                .length
+                .max(self.body.beyond(canvas, self.from, outward) + PAST_BODY * self.body.reach),
+            false => self.length,
+        };
+        let drawn = stretched(canvas, u, length);
+        let free = add(self.from, scaled(outward, drawn));
+        let (from, to) = match self.into_point {
+            true => (free, self.from),
+            false => (self.from, free),
+        };
+        // A load is not drawn along an axis, a rod or the shaft, but beside it.
+        let side = match load {
+            true => canvas.beside(from, to, self.body.centre),
+            false => P2::new(0.0, 0.0),
+        };
+        canvas.arrow_beside(
             Layer::Front,
             from,
             to,
             self.double,
             self.stroke,
             self.role.clone(),
+            side,
         );
-        canvas.label(label, free, outward);
+        canvas.label_beside(label, free, outward, side);
+        Some((u, drawn))
     }
 }
 

@@ -30,6 +30,9 @@ pub const MARKS_HEIGHT: f64 = 180.0;
 pub const FONT_SIZE: f64 = 14.0;
 /// How much a face hides what is behind it: the axes and parts behind a body show faintly.
 pub const FACE_OPACITY: f64 = 0.82;
+/// How far a load's arrow is drawn beside a line it would lie along (an axis, a rod, the
+/// shaft), in figure units: a reaction along the shaft, a weight along a rod.
+pub const BESIDE: f64 = 6.0;
 /// An arrow head's length and half width.
 pub const HEAD_LENGTH: f64 = 8.0;
 pub const HEAD_HALF_WIDTH: f64 = 3.0;
@@ -54,6 +57,12 @@ impl Stroke {
         width: 1.4,
         accent: true,
         dashed: false,
+    };
+    /// A hidden edge.
+    pub const HIDDEN: Stroke = Stroke {
+        width: 1.0,
+        accent: false,
+        dashed: true,
     };
     pub const CENTRE_LINE: Stroke = Stroke {
         width: 0.7,
@@ -170,10 +179,10 @@ pub fn figure(scene: &Scene) -> Result<Figure, FigureError> {
     let sizes = sizes::Sizes::of(scene);
     let mut canvas = Canvas::new(scene, &sizes)?;
     let body = body::draw(&mut canvas, scene)?;
-    loads::draw(&mut canvas, scene, &body)?;
     if scene.euler_angles.is_some() {
         euler::angles(&mut canvas, &body)?;
     }
+    loads::draw(&mut canvas, scene, &body)?;
     Ok(canvas.finish())
 }
 

@@ -55,6 +55,10 @@ const ELEVATIONS_DEG: [f64; 2] = [25.0, 35.0];
 /// lost; two directions drawn within this angle of each other read as one.
 const END_ON: f64 = 0.45;
 const COLLINEAR_DEG: f64 = 10.0;
+/// Two points this share of the points' spread apart read as one when drawn under
+/// [`COINCIDING`] of their distance apart.
+const APART: f64 = 0.2;
+const COINCIDING: f64 = 0.3;
 
 /// The view: the turn that brings the scene's up to z, then the projection onto the screen.
 #[derive(Debug, Clone, Copy)]
@@ -72,14 +76,16 @@ impl View {
     }
 
     /// Of the textbook-like views with `up` drawn up, the first in which none of the
-    /// `directions` that matter (the axes, ω, each part's axes) is seen end-on and no two of
-    /// them are drawn along one line; else the one with the fewest such faults.
-    pub fn choose(up: P3, directions: &[P3]) -> View {
+    /// `directions` that matter (the axes, ω, each part's axes) is seen end-on, no two of
+    /// them are drawn along one line and no two of the `points` that matter (O, G, a rod's
+    /// ends, a load's point) far apart are drawn on one another; else the one with the
+    /// fewest such faults.
+    pub fn choose(up: P3, directions: &[P3], points: &[P3]) -> View {
         let mut best: Option<(usize, View)> = None;
         for e in ELEVATIONS_DEG {
             for a in AZIMUTHS_DEG {
                 let view = View::from(up, a, e);
-                let faults = view.faults(directions);
+                let faults = view.faults(directions) + view.coinciding(points);
                 if best.as_ref().is_none_or(|(f, _)| faults < *f) {
                     best = Some((faults, view));
                 }
@@ -113,6 +119,26 @@ impl View {
             }
         }
         end_on + along_one_line
+    }
+
+    /// The pairs of `points` apart in the scene (by over [`APART`] of their spread) seen
+    /// nearly one behind the other: drawn under [`COINCIDING`] of their distance apart.
+    fn coinciding(&self, points: &[P3]) -> usize {
+        let spread = points
+            .iter()
+            .flat_map(|p| points.iter().map(move |q| norm(sub(*p, *q))))
+            .fold(0.0, f64::max);
+        let mut count = 0;
+        for (k, p) in points.iter().enumerate() {
+            for q in &points[k + 1..] {
+                let drawn = self.project(*p).minus(self.project(*q)).length();
+                let apart = norm(sub(*p, *q));
+                if apart > APART * spread && drawn < COINCIDING * apart {
+                    count += 1;
+                }
+            }
+        }
+        count
     }
 
     fn from(up: P3, azimuth_deg: f64, elevation_deg: f64) -> View {
@@ -263,7 +289,7 @@ mod tests {
             first.project(toward_eye).length() < 1e-9,
             "end-on in the first view"
         );
-        let chosen = View::choose([0.0, 0.0, 1.0], &[toward_eye, [0.0, 0.0, 1.0]]);
+        let chosen = View::choose([0.0, 0.0, 1.0], &[toward_eye, [0.0, 0.0, 1.0]], &[]);
         assert!(
             chosen.project(toward_eye).length() >= END_ON,
             "seen side-on"

@@ -8,7 +8,7 @@ use crate::common::binary::{kinetics, scene};
 use crate::common::chromium::chromium;
 use crate::common::examples::example_scenes;
 use kinetics::figure::sizes::Sizes;
-use kinetics::figure::{figure, Figure, Label, Mark, Role, Stroke, P2};
+use kinetics::figure::{figure, Figure, Label, Mark, Role, Stroke, BESIDE, P2};
 use kinetics::{Expr, Scene, Symbol};
 
 /// Every example scene, parsed, with its file stem.
@@ -64,6 +64,65 @@ fn every_example_has_a_figure_whose_labels_are_apart_and_inside_it() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
+/// Whether an arrow's end `end` (its other end `other`) is at the point `at`, or beside it:
+/// [`BESIDE`] from it square to the arrow, as a load is drawn beside a line it would lie on.
+fn at_or_beside(end: P2, other: P2, at: P2) -> bool {
+    let (off, along) = (end.minus(at), other.minus(end));
+    let square = (off.x * along.x + off.y * along.y).abs() < 1e-6 * along.length();
+    near(end, at) || ((off.length() - BESIDE).abs() < 1e-6 && square)
+}
+
+/// No load's arrow lies along an axis, a rod or the shaft, where the reader could not see it:
+/// every force's and impulse's line is off every such line it runs parallel to.
+#[test]
+fn loads_are_drawn_beside_the_axes_and_rods_they_run_along() {
+    let mut failures = Vec::new();
+    for (name, scene) in examples() {
+        let drawn = figure(&scene).unwrap();
+        let mut lines: Vec<(P2, P2)> = Vec::new();
+        for m in &drawn.marks {
+            match m {
+                Mark::Arrow {
+                    role: Role::Axis,
+                    from,
+                    to,
+                    ..
+                } => lines.push((*from, *to)),
+                Mark::Path { points, stroke, .. } if stroke.width >= Stroke::SHAFT.width => {
+                    lines.extend(points.windows(2).map(|w| (w[0], w[1])));
+                }
+                _ => {}
+            }
+        }
+        for m in &drawn.marks {
+            let Mark::Arrow {
+                role: Role::Force(_) | Role::Impulse,
+                from,
+                to,
+                ..
+            } = m
+            else {
+                continue;
+            };
+            let length = to.minus(*from).length();
+            for (a, b) in &lines {
+                let Some(v) = b.minus(*a).unit() else {
+                    continue;
+                };
+                let cross = |p: P2| (p.x - a.x) * v.y - (p.y - a.y) * v.x;
+                let t = |p: P2| (p.x - a.x) * v.x + (p.y - a.y) * v.y;
+                let on = cross(*from).abs() < 1.0 && cross(*to).abs() < 1.0;
+                let (t0, t1) = (t(*from).min(t(*to)), t(*from).max(t(*to)));
+                let shared = t1.min(b.minus(*a).length()) - t0.max(0.0);
+                if on && shared > 0.2 * length {
+                    failures.push(format!("{name}: a load's arrow lies along a line"));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
 /// A force's arrows start at its point, an impulse's end at its point (the blow), O is the
 /// origin of the figure and G a dot where the body's mass centre projects.
 #[test]
@@ -80,11 +139,11 @@ fn arrows_start_where_the_scene_puts_their_points() {
                 .collect();
             assert!(!arrows.is_empty(), "{name}: force {} drawn", f.name);
             for arrow in arrows {
-                let Mark::Arrow { from, .. } = arrow else {
+                let Mark::Arrow { from, to, .. } = arrow else {
                     unreachable!()
                 };
                 assert!(
-                    near(*from, at),
+                    at_or_beside(*from, *to, at),
                     "{name}: force {} starts at its point",
                     f.name
                 );
@@ -92,10 +151,10 @@ fn arrows_start_where_the_scene_puts_their_points() {
         }
         for i in &scene.impulses {
             let at = drawn_at(&drawn, &scene, &i.point);
-            let strikes = drawn
-                .marks
-                .iter()
-                .any(|m| matches!(m, Mark::Arrow { role: Role::Impulse, to, .. } if near(*to, at)));
+            let strikes = drawn.marks.iter().any(|m| {
+                matches!(m, Mark::Arrow { role: Role::Impulse, from, to, .. }
+                    if at_or_beside(*to, *from, at))
+            });
             assert!(strikes, "{name}: an impulse's head at its point");
         }
         // G: the mass-weighted centre of the parts at the figure's sizes, by hand.

@@ -49,6 +49,12 @@ const UNIT: [P3; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
     let unknowns = magnitudes(scene);
     let shaft = fixed_axis(canvas, scene, body, &unknowns)?;
+    if let [from, to] = shaft[..] {
+        let along = sub(to, from);
+        if view::norm(along) > 0.0 {
+            super::dimensions::along_shaft(canvas, scene, body, view::unit(along))?;
+        }
+    }
     let mut rays = Rays {
         body,
         ends: shaft,

@@ -10,12 +10,14 @@
 
 mod body;
 mod canvas;
+mod dimensions;
 mod euler;
 mod labels;
 mod loads;
 pub mod sizes;
 pub mod svg;
 pub mod tikz;
+mod turns;
 pub mod view;
 
 use crate::algebra::AlgebraError;
@@ -58,6 +60,8 @@ impl Stroke {
         accent: true,
         dashed: false,
     };
+    /// A dimension line and its extension lines.
+    pub const DIMENSION: Stroke = Stroke::black(0.6);
     /// A hidden edge.
     pub const HIDDEN: Stroke = Stroke {
         width: 1.0,
@@ -182,6 +186,7 @@ pub fn figure(scene: &Scene) -> Result<Figure, FigureError> {
     if scene.euler_angles.is_some() {
         euler::angles(&mut canvas, &body)?;
     }
+    turns::draw(&mut canvas, scene, &body)?;
     loads::draw(&mut canvas, scene, &body)?;
     Ok(canvas.finish())
 }

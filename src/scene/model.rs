@@ -152,13 +152,24 @@ pub struct Definition {
 }
 
 /// A part of the body: a standard shape with its mass, the position of its mass centre,
-/// and the rotation that takes its own axes to the frame's (`frame = R · own`).
+/// and the rotation that takes its own axes to the frame's (`frame = R · own`), with the
+/// turns about an axis the scene states it by (`rotated beta about z`), for the figure.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Part {
     pub shape: Shape,
     pub mass: Expr,
     pub position: Vector,
     pub rotation: crate::algebra::Matrix,
+    pub turns: Vec<Turn>,
+}
+
+/// A turn of a part through `angle` about the frame's direction `axis`, from the orientation
+/// `from` (the rotation before it): `rotation = R_axis(angle) · from`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Turn {
+    pub angle: Expr,
+    pub axis: Vector,
+    pub from: crate::algebra::Matrix,
 }
 
 impl Part {

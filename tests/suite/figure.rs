@@ -600,3 +600,59 @@ fn the_numbers_page_has_the_figure_too() {
     let (_, text, _) = kinetics(&["solve", "--numbers", &path]);
     assert!(!text.contains("svg") && !text.contains("tikz"));
 }
+
+/// A tilt the scene names is marked: the disk on its shaft turned β about z shows an arc from
+/// the shaft's line x to the disk's axis (cos β, sin β, 0), both through G, labelled β.
+#[test]
+fn the_tilt_of_the_disk_on_its_shaft_is_marked_with_beta() {
+    let (_, scene) = examples()
+        .into_iter()
+        .find(|(n, _)| n == "disk_tilted_on_shaft")
+        .unwrap();
+    let drawn = figure(&scene).unwrap();
+    let beta = Sizes::of(&scene)
+        .of_expr(&Expr::sym(Symbol::new("beta")))
+        .unwrap();
+    let g = drawn.at([0.0; 3]);
+    // A drawn point lies on the ray from G toward the scene's direction d.
+    let on_ray = |p: P2, d: [f64; 3]| {
+        let (u, v) = (drawn.at(d).minus(g), p.minus(g));
+        (u.x * v.y - u.y * v.x).abs() < 1e-6 * u.length() * v.length()
+            && u.x * v.x + u.y * v.y > 0.0
+    };
+    let axis = [beta.cos(), beta.sin(), 0.0];
+    let arc = drawn.marks.iter().any(|m| {
+        matches!(m, Mark::Path { points, .. } if points.len() > 10
+            && on_ray(points[0], [1.0, 0.0, 0.0])
+            && on_ray(*points.last().unwrap(), axis))
+    });
+    assert!(arc, "an arc from x to the disk's axis");
+    let label = format!(
+        "${}$",
+        kinetics::print::latex(&Expr::sym(Symbol::new("beta")))
+    );
+    assert!(drawn.labels.iter().any(|l| l.markup == label), "β labelled");
+}
+
+/// SP 18.4's shaft is dimensioned as the textbook's figure: C (at O), the rod at L/4, the rod
+/// at L/2 and D at L, the spans L/4, L/4 and L/2 labelled in the scene's symbols.
+#[test]
+fn the_shaft_of_sample_problem_18_4_is_dimensioned() {
+    let (_, scene) = examples()
+        .into_iter()
+        .find(|(n, _)| n == "sp18_4_shaft_reactions")
+        .unwrap();
+    let drawn = figure(&scene).unwrap();
+    let l = Expr::sym(Symbol::new("L"));
+    let written = |e: Expr| format!("${}$", kinetics::print::latex(&e));
+    let count = |e: Expr| {
+        let w = written(e);
+        drawn
+            .labels
+            .iter()
+            .filter(|label| label.markup == w)
+            .count()
+    };
+    assert_eq!(count(&l / &Expr::int(4)), 2, "two spans of L/4");
+    assert_eq!(count(&l / &Expr::int(2)), 1, "one span of L/2");
+}

@@ -65,10 +65,11 @@ impl Reader<'_> {
         self.total_mass_positive(&mass, at)?;
         let mut position = Vector::from_element(Expr::zero());
         let mut rotation = Matrix::identity();
+        let mut turns = Vec::new();
         for p in &inner[2..] {
             match p.as_rule() {
                 Rule::point => position = self.point(p)?,
-                _ => rotation = self.turned(p, rotation)?,
+                _ => rotation = self.turned(p, rotation, &mut turns)?,
             }
         }
         self.scene.parts.push(Part {
@@ -76,6 +77,7 @@ impl Reader<'_> {
             mass,
             position,
             rotation,
+            turns,
         });
         Ok(())
     }

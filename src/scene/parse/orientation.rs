@@ -12,31 +12,49 @@
 use super::super::units::Dimension;
 use super::{span, Reader, Rule};
 use crate::algebra::vector_products::dot;
-use crate::algebra::{Axis, Matrix, Vector};
+use crate::algebra::{Axis, Expr, Matrix, Vector};
 use crate::mechanics::rotation::{about_axis, about_direction, along, from_direction_cosines};
 use crate::parse::Diagnostic;
+use crate::scene::model::Turn;
 use pest::iterators::Pair;
 
 impl Reader<'_> {
-    /// `rotation` turned by the orientation `p` says (`along`, a rotation, direction cosines).
-    pub(super) fn turned(&self, p: &Pair<Rule>, rotation: Matrix) -> Result<Matrix, Diagnostic> {
+    /// `rotation` turned by the orientation `p` says (`along`, a rotation, direction cosines),
+    /// a rotation's turn added to `turns`.
+    pub(super) fn turned(
+        &self,
+        p: &Pair<Rule>,
+        rotation: Matrix,
+        turns: &mut Vec<Turn>,
+    ) -> Result<Matrix, Diagnostic> {
         Ok(match p.as_rule() {
             Rule::axis => along(frame_axis(p)),
-            Rule::rotation => self.rotation(p)? * rotation,
+            Rule::rotation => {
+                let (turn, angle, axis) = self.rotation(p)?;
+                turns.push(Turn {
+                    angle,
+                    axis,
+                    from: rotation.clone(),
+                });
+                turn * rotation
+            }
             Rule::axes => self.direction_cosines(p)?,
             _ => rotation,
         })
     }
 
-    /// `ANGLE about x|y|z` or `ANGLE about (a, b, c)`.
-    fn rotation(&self, p: &Pair<Rule>) -> Result<Matrix, Diagnostic> {
+    /// `ANGLE about x|y|z` or `ANGLE about (a, b, c)`: the rotation, the angle and the axis.
+    fn rotation(&self, p: &Pair<Rule>) -> Result<(Matrix, Expr, Vector), Diagnostic> {
         let mut inner = p.clone().into_inner();
         let (Some(angle), Some(about)) = (inner.next(), inner.next()) else {
             return Err(self.error(span(p), "expected an angle and an axis"));
         };
         let angle = self.quantity(&angle, Dimension::NONE)?;
         if about.as_rule() == Rule::axis {
-            return Ok(about_axis(frame_axis(&about), &angle));
+            let axis = frame_axis(&about);
+            let mut direction = Vector::from_element(Expr::zero());
+            direction[axis.index()] = Expr::one();
+            return Ok((about_axis(axis, &angle), angle, direction));
         }
         let direction = self.direction(&about)?;
         let zero = || {
@@ -51,7 +69,8 @@ impl Reader<'_> {
         if length.eval(&value).is_ok_and(|l: f64| l == 0.0) {
             return Err(zero());
         }
-        about_direction(&direction, &angle).ok_or_else(zero)
+        let turn = about_direction(&direction, &angle).ok_or_else(zero)?;
+        Ok((turn, angle, direction))
     }
 
     /// `(a, b, c)`: a direction, its three components in one unit (or none).

@@ -1,0 +1,121 @@
+//! The distances along a shaft, as a textbook dimensions its figure: where the bearings, the
+//! parts fixed on the shaft and the points on it stand along the axis (the stations, O among
+//! them), a chain of dimension lines below the body parallel to the shaft, each span between
+//! neighbouring stations labelled with its length as the scene writes it (`L/4`, `L/4`,
+//! `L/2`). Drawn only when every span is written in the scene's symbols: a span known only as
+//! a number has no name to show.
+
+use super::body::Extent;
+use super::canvas::{Canvas, Layer};
+use super::view::{self, add, scaled, sub, P3};
+use super::{FigureError, Stroke};
+use crate::algebra::{Expr, Vector};
+use crate::mechanics::shapes::Shape;
+use crate::scene::model::Scene;
+
+/// The chain's distance past the body, and how far the extension lines start from the axis
+/// and run past the chain, in proportion to the body's reach.
+const CHAIN_GAP: f64 = 0.3;
+const EXTENSION_GAP: f64 = 0.05;
+const EXTENSION_PAST: f64 = 0.06;
+
+/// The chain of spans along the shaft whose unit axis is `a` (along one of the frame's axes).
+pub fn along_shaft(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    body: &Extent,
+    a: P3,
+) -> Result<(), FigureError> {
+    let Some(k) = (0..3).find(|k| a[*k].abs() > 1.0 - 1e-12) else {
+        return Ok(());
+    };
+    let coordinate = |v: &Vector| match a[k] > 0.0 {
+        true => v[k].clone(),
+        false => -&v[k],
+    };
+    let reach = body.reach;
+    let on_axis = |p: P3| view::norm(sub(p, scaled(a, view::dot(p, a)))) < 1e-9 * reach;
+    let mut stations: Vec<(f64, Expr)> = vec![(0.0, Expr::zero())];
+    let mut station = |p: P3, at: &Vector| stations.push((view::dot(p, a), coordinate(at)));
+    for f in &scene.forces {
+        let p = canvas.vector(&f.point, &f.name)?;
+        if on_axis(p) {
+            station(p, &f.point);
+        }
+    }
+    for named in &scene.points {
+        let p = canvas.vector(&named.position, &named.name)?;
+        if on_axis(p) {
+            station(p, &named.position);
+        }
+    }
+    for (n, part) in scene.parts.iter().enumerate() {
+        let what = format!("body {}", n + 1);
+        let centre = canvas.vector(&part.position, &what)?;
+        if on_axis(centre) || fixed_across(canvas, part, centre, a, reach, &what)? {
+            station(centre, &part.position);
+        }
+    }
+    stations.sort_by(|p, q| p.0.total_cmp(&q.0));
+    stations.dedup_by(|p, q| (p.0 - q.0).abs() < 1e-9 * reach);
+    let spans: Vec<Expr> = stations.windows(2).map(|w| &w[1].1 - &w[0].1).collect();
+    if spans.is_empty() || spans.iter().any(|s| s.symbols().is_empty()) {
+        return Ok(());
+    }
+    // Below the body: the frame's direction square to the shaft drawn most nearly down.
+    let down = (0..3)
+        .filter(|j| *j != k)
+        .flat_map(|j| {
+            let mut e = [0.0; 3];
+            e[j] = 1.0;
+            [e, scaled(e, -1.0)]
+        })
+        .min_by(|p, q| canvas.project(*p).y.total_cmp(&canvas.project(*q).y))
+        .unwrap_or([0.0, 0.0, -1.0]);
+    let offset = body.along(down) + CHAIN_GAP * reach;
+    let foot = |s: f64| scaled(a, s);
+    for (s, _) in &stations {
+        let from = add(foot(*s), scaled(down, EXTENSION_GAP * reach));
+        let to = add(foot(*s), scaled(down, offset + EXTENSION_PAST * reach));
+        canvas.path(Layer::Behind, &[from, to], false, Stroke::DIMENSION);
+    }
+    let chain = |s: f64| add(foot(s), scaled(down, offset));
+    let (first, last) = (stations[0].0, stations[stations.len() - 1].0);
+    canvas.path(
+        Layer::Behind,
+        &[chain(first), chain(last)],
+        false,
+        Stroke::DIMENSION,
+    );
+    for (w, span) in stations.windows(2).zip(&spans) {
+        let middle = chain((w[0].0 + w[1].0) / 2.0);
+        canvas.label(super::loads::label(span), middle, down);
+    }
+    Ok(())
+}
+
+/// Whether the part is fixed across the shaft at its centre's station: a rod square to the
+/// axis with an end on it, or a point mass (an unbalance at its radius).
+fn fixed_across(
+    canvas: &Canvas,
+    part: &crate::scene::model::Part,
+    centre: P3,
+    a: P3,
+    reach: f64,
+    what: &str,
+) -> Result<bool, FigureError> {
+    Ok(match &part.shape {
+        Shape::PointMass => true,
+        Shape::SlenderRod { length } => {
+            let along: Vec<f64> = (0..3)
+                .map(|i| canvas.value(&part.rotation[(i, 0)], what))
+                .collect::<Result<_, _>>()?;
+            let along = [along[0], along[1], along[2]];
+            let half = scaled(along, canvas.value(length, what)? / 2.0);
+            let square = view::dot(along, a).abs() < 1e-9;
+            let on = |p: P3| view::norm(sub(p, scaled(a, view::dot(p, a)))) < 1e-9 * reach;
+            square && (on(add(centre, half)) || on(sub(centre, half)))
+        }
+        _ => false,
+    })
+}

@@ -1,0 +1,101 @@
+//! The angles a part is turned through, where the scene names them (`body disk(r) mass m
+//! rotated beta about z`): at the part's centre, a dashed line along one of its own axes as it
+//! stood before the turn, one along it after, and the arc between them labelled with the
+//! angle, as a textbook marks the tilt β of a disk on its shaft.
+//!
+//! The axis drawn is the part's own x' (a rod's length, a disk's axis, a box's edge a) unless
+//! the turn is about it, then y'. Its direction after the turn through θ about the unit `a` is
+//! Rodrigues' `v cos θ + (a × v) sin θ + a (a · v)(1 − cos θ)`; both lines are drawn square to
+//! `a`, so the arc between them is the angle θ itself.
+
+use super::body::Extent;
+use super::canvas::{Canvas, Layer};
+use super::view::{self, add, cross, dot, scaled, sub, P3};
+use super::{FigureError, Stroke};
+use crate::scene::model::Scene;
+
+/// The arc's radius and the lines' length, in proportion to the body's reach.
+const ARC_RADIUS: f64 = 0.55;
+const LINE_LENGTH: f64 = 0.8;
+/// Points on an arc.
+const ARC_POINTS: usize = 24;
+
+/// Each named angle a part is turned through, marked at the part's centre.
+pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
+    for (k, part) in scene.parts.iter().enumerate() {
+        let what = format!("body {}", k + 1);
+        let centre = canvas.vector(&part.position, &what)?;
+        for turn in &part.turns {
+            if turn.angle.as_symbol().is_none() {
+                continue;
+            }
+            let a = view::unit(canvas.vector(&turn.axis, &what)?);
+            let theta = canvas.value(&turn.angle, &what)?;
+            let column = |j: usize| -> Result<P3, FigureError> {
+                let c: Vec<f64> = (0..3)
+                    .map(|i| canvas.value(&turn.from[(i, j)], &what))
+                    .collect::<Result<_, _>>()?;
+                Ok([c[0], c[1], c[2]])
+            };
+            // The part's own x' as it stood, else y' when the turn is about x'.
+            let own_x = column(0)?;
+            let before = match view::norm(square_to(own_x, a)) > 0.5 {
+                true => own_x,
+                false => column(1)?,
+            };
+            let from = view::unit(square_to(before, a));
+            mark(canvas, centre, from, a, theta, body.reach);
+            let middle = turned(from, a, theta / 2.0);
+            canvas.label(
+                super::loads::label(&turn.angle),
+                add(centre, scaled(middle, ARC_RADIUS * body.reach)),
+                middle,
+            );
+        }
+    }
+    Ok(())
+}
+
+/// The lines from `centre` along `from` and along it turned through `theta` about `a`, and
+/// the arc between them.
+fn mark(canvas: &mut Canvas, centre: P3, from: P3, a: P3, theta: f64, reach: f64) {
+    for d in [from, turned(from, a, theta)] {
+        let tip = add(centre, scaled(d, LINE_LENGTH * reach));
+        canvas.path(Layer::Front, &[centre, tip], false, Stroke::CENTRE_LINE);
+    }
+    let arc: Vec<P3> = (0..=ARC_POINTS)
+        .map(|s| {
+            let t = theta * s as f64 / ARC_POINTS as f64;
+            add(centre, scaled(turned(from, a, t), ARC_RADIUS * reach))
+        })
+        .collect();
+    canvas.path(Layer::Front, &arc, false, Stroke::MOTION);
+}
+
+/// The part of `v` square to the unit `a`.
+fn square_to(v: P3, a: P3) -> P3 {
+    sub(v, scaled(a, dot(v, a)))
+}
+
+/// `v` turned through `theta` about the unit `a` (Rodrigues).
+fn turned(v: P3, a: P3, theta: f64) -> P3 {
+    let (c, s) = (theta.cos(), theta.sin());
+    add(
+        add(scaled(v, c), scaled(cross(a, v), s)),
+        scaled(a, dot(a, v) * (1.0 - c)),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_quarter_turn_about_z_takes_x_to_y_and_back() {
+        let (x, z) = ([1.0, 0.0, 0.0], [0.0, 0.0, 1.0]);
+        let y = turned(x, z, std::f64::consts::FRAC_PI_2);
+        assert!(y[0].abs() < 1e-12 && (y[1] - 1.0).abs() < 1e-12 && y[2].abs() < 1e-12);
+        let back = turned(y, z, -std::f64::consts::FRAC_PI_2);
+        assert!((back[0] - 1.0).abs() < 1e-12 && back[1].abs() < 1e-12);
+    }
+}

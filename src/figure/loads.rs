@@ -443,6 +443,9 @@ impl Drawn<'_> {
         // One component: the vector's line is known whatever its unknown magnitude.
         if !holds_any(v, unknowns) || nonzero.len() == 1 {
             let label = match (name, nonzero.as_slice()) {
+                // A force named by a word (`front`, `weight`) along one axis is labelled by
+                // its magnitude (N_A, m g), as a textbook labels it.
+                (Some(n), [k]) if is_word(n) => magnitude(&v[*k], value[*k]),
                 (Some(n), _) => named(n),
                 (None, [k]) => magnitude(&v[*k], value[*k]),
                 (None, _) => {
@@ -536,6 +539,14 @@ fn magnitude(c: &Expr, value: f64) -> String {
         true => label(&-c),
         false => label(c),
     }
+}
+
+/// Whether a name is a word (`push`, `front`, `weight`): three or more lower-case letters
+/// that are not a Greek letter's name.
+fn is_word(name: &str) -> bool {
+    name.len() >= 3
+        && name.chars().all(|c| c.is_ascii_lowercase())
+        && Symbol::new(name).latex().starts_with(r"\mathit")
 }
 
 /// A label for a name as written (`C`, `P1`, `omega_x`, `weight`): the symbol of that name.

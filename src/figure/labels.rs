@@ -10,10 +10,11 @@ use super::view::P2;
 use super::{Label, Mark, Stroke, FONT_SIZE};
 use crate::print::markup;
 
-/// Room between a label's box and its text.
+/// Room between a label's box and its text, and the least room between two labels' boxes.
 const PADDING: f64 = 2.0;
+const BETWEEN_LABELS: f64 = 3.0;
 /// The gaps tried between the anchor and the box, and the turns from the wanted side.
-const GAPS: [f64; 7] = [1.5, 4.0, 7.0, 10.0, 14.0, 19.0, 26.0];
+const GAPS: [f64; 10] = [1.5, 4.0, 7.0, 10.0, 14.0, 19.0, 26.0, 34.0, 44.0, 56.0];
 const TURNS_DEG: [f64; 10] = [
     0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0, 135.0, -135.0, 180.0,
 ];
@@ -21,7 +22,7 @@ const TURNS_DEG: [f64; 10] = [
 const OVER_LABEL: f64 = 1000.0;
 const ON_BODY: f64 = 40.0;
 const CROSSING: f64 = 12.0;
-const NEARER_ANOTHER: f64 = 25.0;
+const NEARER_ANOTHER: f64 = 80.0;
 const PER_DEGREE: f64 = 0.08;
 const PER_UNIT: f64 = 1.5;
 
@@ -151,8 +152,8 @@ fn overlap(
     let labels = placed
         .iter()
         .filter(|l| {
-            (l.centre.x - c.x).abs() < l.half_width + hw
-                && (l.centre.y - c.y).abs() < l.half_height + hh
+            (l.centre.x - c.x).abs() < l.half_width + hw + BETWEEN_LABELS
+                && (l.centre.y - c.y).abs() < l.half_height + hh + BETWEEN_LABELS
         })
         .count();
     let corners = [

@@ -15,7 +15,7 @@
 
 use super::body::{circle, Extent};
 use super::canvas::{Canvas, Layer};
-use super::view::{self, add, scaled, sub, P2, P3};
+use super::view::{self, add, scaled, sub, P3};
 use super::{FigureError, Mark, Role, Stroke};
 use crate::algebra::{Expr, Symbol, Vector};
 use crate::print::{self, markup};
@@ -35,6 +35,8 @@ const RAY_GAP: f64 = 0.1;
 const SHORTEST_DRAWN: f64 = 0.6;
 const OMEGA_LENGTH: f64 = 0.55;
 const AXIS_BEYOND: f64 = 0.55;
+/// How far along each axis from O nothing is drawn on it (past anything drawn along it).
+const AXES_KEPT_CLEAR: f64 = 10.0;
 /// The length of the axes Gx'y'z' drawn when the page works about G away from O.
 const G_AXIS: f64 = 0.5;
 const BEARING_RADIUS: f64 = 0.07;
@@ -49,28 +51,31 @@ const UNIT: [P3; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
     let unknowns = magnitudes(scene);
     let shaft = fixed_axis(canvas, scene, body, &unknowns)?;
-    if let [from, to] = shaft[..] {
-        let along = sub(to, from);
-        if view::norm(along) > 0.0 {
-            super::dimensions::along_shaft(canvas, scene, body, view::unit(along))?;
-        }
-    }
     let mut rays = Rays {
         body,
         ends: shaft,
         claimed: Vec::new(),
         arrows: Vec::new(),
     };
-    omega(canvas, scene, body, &unknowns, &mut rays)?;
+    // The axes run from O past everything drawn along them.
     for e in UNIT {
-        canvas.keep_clear([0.0; 3], scaled(e, rays.end(e) + AXIS_BEYOND * body.reach));
+        canvas.keep_clear([0.0; 3], scaled(e, AXES_KEPT_CLEAR * body.reach));
     }
+    omega(canvas, scene, body, &unknowns, &mut rays)?;
+    before_impact(canvas, scene, body, &unknowns, &mut rays)?;
     for p in &scene.points {
         let at = canvas.vector(&p.position, &p.name)?;
         canvas.dot(at, 2.5);
         canvas.label_on_body(named(&p.name), at, sub(at, body.centre));
     }
     loads(canvas, scene, body, &unknowns, &mut rays)?;
+    // The shaft's dimensions after the loads, so the loads' labels are placed first.
+    if let [from, to] = rays.ends[..] {
+        let along = sub(to, from);
+        if view::norm(along) > 0.0 {
+            super::dimensions::along_shaft(canvas, scene, body, view::unit(along))?;
+        }
+    }
     axes(canvas, scene, body, &rays);
     Ok(())
 }
@@ -210,6 +215,58 @@ fn omega(
         };
         let drew = drawn.vector(canvas, vector, Some(name), unknowns, name)?;
         if from == [0.0; 3] {
+            rays.arrows.extend(drew.arrows);
+        }
+    }
+    Ok(())
+}
+
+/// The motion just before an impact, as the scene states it (`before vbar = v0*i`, `before
+/// omega = w0*k`): v̄₀ an arrow from G, ω₀ a double arrow from G, each past the arrows
+/// already drawn along its line from G, labelled by its magnitude.
+fn before_impact(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    body: &Extent,
+    unknowns: &[Symbol],
+    rays: &mut Rays,
+) -> Result<(), FigureError> {
+    let motions = [
+        (
+            &scene.vbar_before,
+            false,
+            Role::Velocity,
+            "the velocity before",
+        ),
+        (
+            &scene.omega_before,
+            true,
+            Role::AngularVelocity,
+            "the angular velocity before",
+        ),
+    ];
+    for (vector, double, role, what) in motions {
+        let Some(v) = vector.as_ref().filter(|v| v.iter().any(|c| !c.is_zero())) else {
+            continue;
+        };
+        let d = view::unit(canvas.vector(v, what)?);
+        let length = OMEGA_LENGTH * body.reach;
+        // From G; at O, past what is drawn from O along the same line (ω after the blow).
+        let from = match view::norm(body.centre) > 1e-12 * body.reach {
+            true => body.centre,
+            false => scaled(d, rays.past_arrows(d)),
+        };
+        let drawn = Drawn {
+            from,
+            length,
+            double,
+            stroke: Stroke::MOTION,
+            role,
+            into_point: false,
+            body,
+        };
+        let drew = drawn.vector(canvas, v, None, unknowns, what)?;
+        if view::norm(body.centre) <= 1e-12 * body.reach {
             rays.arrows.extend(drew.arrows);
         }
     }
@@ -492,32 +549,22 @@ impl Drawn<'_> {
             return None;
         }
         let load = matches!(self.role, Role::Force(_) | Role::Impulse);
-        // The way from the point to the arrow's free end (an impulse's tail).
-        let outward = match self.into_point {
+        let length = self.length_from(canvas, u, self.into_point, load);
+        let mut into_point = self.into_point;
+        let (mut from, mut to, mut free) = self.ends(canvas, u, length, into_point);
+        // Nothing is drawn along an axis, a rod or the shaft, but beside it; a load along
+        // such a line toward the body (a bearing's thrust along the shaft) comes into its
+        // point from outside, as a textbook draws it, not across the body.
+        let mut side = canvas.beside(from, to, self.body.centre);
+        let toward_body = view::dot(u, sub(self.body.centre, self.from)) > 0.0;
+        if load && !into_point && toward_body && side.length() > 0.0 {
+            into_point = true;
+            (from, to, free) = self.ends(canvas, u, length, into_point);
+            side = canvas.beside(from, to, self.body.centre);
+        }
+        let outward = match into_point {
             true => scaled(u, -1.0),
             false => u,
-        };
-        // A load at a point inside the body (the body on both sides of it, as at G) reaches
-        // out past it, so its free end and its label stand clear of the body.
-        let inside = self
-            .body
-            .surrounds(self.from, outward, INSIDE * self.body.reach);
-        let length = match load && inside {
-            true => self
-                .length
-                .max(self.body.beyond(canvas, self.from, outward) + PAST_BODY * self.body.reach),
-            false => self.length,
-        };
-        let drawn = stretched(canvas, u, length);
-        let free = add(self.from, scaled(outward, drawn));
-        let (from, to) = match self.into_point {
-            true => (free, self.from),
-            false => (self.from, free),
-        };
-        // A load is not drawn along an axis, a rod or the shaft, but beside it.
-        let side = match load {
-            true => canvas.beside(from, to, self.body.centre),
-            false => P2::new(0.0, 0.0),
         };
         canvas.arrow_beside(
             Layer::Front,
@@ -529,7 +576,41 @@ impl Drawn<'_> {
             side,
         );
         canvas.label_beside(label, free, outward, side);
-        Some((u, drawn))
+        // A later load along this one's line is drawn beside it (a normal force under a
+        // weight), not over it.
+        if load {
+            canvas.keep_clear(from, to);
+        }
+        Some((u, stretched(canvas, u, length)))
+    }
+
+    /// The length of an arrow along the unit `u` from the point (into it when `into_point`):
+    /// a load at a point inside the body (the body on both sides of it, as at G) reaches out
+    /// past it, so its free end and its label stand clear of the body.
+    fn length_from(&self, canvas: &Canvas, u: P3, into_point: bool, load: bool) -> f64 {
+        let outward = match into_point {
+            true => scaled(u, -1.0),
+            false => u,
+        };
+        let inside = self
+            .body
+            .surrounds(self.from, outward, INSIDE * self.body.reach);
+        match load && inside {
+            true => self
+                .length
+                .max(self.body.beyond(canvas, self.from, outward) + PAST_BODY * self.body.reach),
+            false => self.length,
+        }
+    }
+
+    /// The tail, the head and the free end (the end away from the point) of an arrow along
+    /// the unit `u`, `length` long, from the point or (`into_point`) into it.
+    fn ends(&self, canvas: &Canvas, u: P3, length: f64, into_point: bool) -> (P3, P3, P3) {
+        let span = scaled(u, stretched(canvas, u, length));
+        match into_point {
+            true => (sub(self.from, span), self.from, sub(self.from, span)),
+            false => (self.from, add(self.from, span), add(self.from, span)),
+        }
     }
 }
 

@@ -92,6 +92,8 @@ pub enum Role {
     Impulse,
     Couple,
     AngularVelocity,
+    /// A velocity (the mass centre's just before an impact).
+    Velocity,
     /// The frame's angular velocity Ω, where it differs from ω.
     FrameRate,
     /// A rate of an Eulerian angle, drawn as a curved arrow.

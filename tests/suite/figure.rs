@@ -123,7 +123,7 @@ fn loads_are_drawn_beside_the_axes_and_rods_they_run_along() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
-/// A force's arrows start at its point, an impulse's end at its point (the blow), O is the
+/// A force's arrows start (or end) at its point, an impulse's end at its point (the blow), O is the
 /// origin of the figure and G a dot where the body's mass centre projects.
 #[test]
 fn arrows_start_where_the_scene_puts_their_points() {
@@ -138,13 +138,15 @@ fn arrows_start_where_the_scene_puts_their_points() {
                 .filter(|m| matches!(m, Mark::Arrow { role: Role::Force(n), .. } if *n == f.name))
                 .collect();
             assert!(!arrows.is_empty(), "{name}: force {} drawn", f.name);
+            // From its point, or into it where it runs along a line toward the body (a
+            // bearing's thrust along the shaft).
             for arrow in arrows {
                 let Mark::Arrow { from, to, .. } = arrow else {
                     unreachable!()
                 };
                 assert!(
-                    at_or_beside(*from, *to, at),
-                    "{name}: force {} starts at its point",
+                    at_or_beside(*from, *to, at) || at_or_beside(*to, *from, at),
+                    "{name}: force {} starts or ends at its point",
                     f.name
                 );
             }
@@ -661,4 +663,36 @@ fn the_shaft_of_sample_problem_18_4_is_dimensioned() {
     };
     assert_eq!(count(&l / &Expr::int(4)), 2, "two spans of L/4");
     assert_eq!(count(&l / &Expr::int(2)), 1, "one span of L/2");
+}
+
+/// The rod that strikes a post shows its motion just before the blow, as the statement gives
+/// it: v̄₀ = v₀ i an arrow from G along x and ω₀ = ω₀ k, each labelled by its magnitude.
+#[test]
+fn the_motion_before_an_impact_is_drawn() {
+    let (_, scene) = examples()
+        .into_iter()
+        .find(|(n, _)| n == "spinning_rod_strikes_a_post")
+        .unwrap();
+    let drawn = figure(&scene).unwrap();
+    let g = drawn.at([0.0; 3]);
+    let x = drawn.at([1.0, 0.0, 0.0]).minus(g);
+    let along_x = drawn.marks.iter().any(|m| {
+        matches!(m, Mark::Arrow { role: Role::Velocity, from, to, .. } if {
+            let d = to.minus(*from);
+            at_or_beside(*from, *to, g)
+                && (d.x * x.y - d.y * x.x).abs() < 1e-6 * d.length() * x.length()
+                && d.x * x.x + d.y * x.y > 0.0
+        })
+    });
+    assert!(along_x, "v̄₀ from G along x");
+    for name in ["v0", "w0"] {
+        let label = format!(
+            "${}$",
+            kinetics::print::latex(&Expr::sym(Symbol::new(name)))
+        );
+        assert!(
+            drawn.labels.iter().any(|l| l.markup == label),
+            "{label} labelled"
+        );
+    }
 }

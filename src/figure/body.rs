@@ -8,7 +8,7 @@
 
 use super::canvas::Canvas;
 use super::view::{self, across, add, scaled, sub, P2, P3};
-use super::{FigureError, Mark, Stroke};
+use super::{Dashes, FigureError, Mark, Stroke};
 use crate::mechanics::shapes::Shape;
 use crate::scene::model::{Part, Scene};
 
@@ -290,7 +290,18 @@ impl Placed {
         what: &str,
     ) -> Result<Vec<NamedSize>, FigureError> {
         let [x, y, _] = self.axes;
-        let (u, _) = across(x);
+        // A radius is drawn along a diagonal of the part's plane (off the frame's axes that
+        // often lie in it), the one drawn most nearly down and to the right.
+        let (a, b) = across(x);
+        let screen = |d: P3| canvas.project(d).minus(canvas.project([0.0; 3]));
+        let u = [add(a, b), sub(a, b), sub(b, a), scaled(add(a, b), -1.0)]
+            .map(view::unit)
+            .into_iter()
+            .max_by(|p, q| {
+                let (p, q) = (screen(*p), screen(*q));
+                (p.x - p.y).total_cmp(&(q.x - q.y))
+            })
+            .unwrap_or(a);
         let mut out = Vec::new();
         let mut name = |e: &crate::algebra::Expr, at: P3, outward: P3, radius: Option<[P3; 2]>| {
             if e.as_symbol().is_some() {
@@ -442,7 +453,10 @@ fn solid_of(canvas: &Canvas, ends: &[Vec<P3>; 2], x: P3) -> (Vec<P3>, Vec<Mark>)
 fn sphere(canvas: &Canvas, centre: P3, r: f64, dashed: bool) -> (Vec<P3>, Vec<Mark>) {
     let outline = circle(centre, canvas.view().toward_eye(), r);
     let stroke = Stroke {
-        dashed,
+        dashes: match dashed {
+            true => Dashes::Hidden,
+            false => Dashes::Solid,
+        },
         ..Stroke::OUTLINE
     };
     let mut silhouette = face(canvas, &outline);

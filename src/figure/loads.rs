@@ -298,7 +298,11 @@ fn loads(
         if at == [0.0; 3] {
             rays.arrows.extend(drew.arrows.iter().copied());
         }
-        if !drew.whole {
+        // Drawn by components (C_y, C_z), a force is named at its point (the bearing C),
+        // unless the name is a word (`pin`) or the point has its letter already (O, G) and
+        // is not a bearing of the shaft.
+        let bearing = on_shaft(at, &rays.ends, reach);
+        if !drew.whole && !is_word(&f.name) && (bearing || !lettered(at, body)) {
             canvas.label(named(&f.name), at, sub(at, body.centre));
         }
     }
@@ -350,7 +354,7 @@ fn loads(
         let name = i.name.map(|s| s.name().to_string());
         let drew = drawn.vector(canvas, &i.value, name.as_deref(), unknowns, &what)?;
         // Drawn by its components, a named impulse is named at its point (as a force is).
-        if let (false, Some(name)) = (drew.whole, &name) {
+        if let (false, Some(name), false) = (drew.whole, &name, lettered(at, body)) {
             canvas.label(named(name), at, sub(at, body.centre));
         }
     }
@@ -620,6 +624,23 @@ fn magnitude(c: &Expr, value: f64) -> String {
         true => label(&-c),
         false => label(c),
     }
+}
+
+/// Whether the point `p` is on the shaft drawn between `ends` (none without a shaft).
+fn on_shaft(p: P3, ends: &[P3], reach: f64) -> bool {
+    let [a, b] = ends else {
+        return false;
+    };
+    let along = sub(*b, *a);
+    let t = view::dot(sub(p, *a), along) / view::dot(along, along).max(1e-300);
+    let foot = add(*a, scaled(along, t));
+    (-1e-9..=1.0 + 1e-9).contains(&t) && view::norm(sub(p, foot)) < 1e-9 * reach
+}
+
+/// Whether the point `p` has a letter in the figure already: O, or G.
+fn lettered(p: P3, body: &Extent) -> bool {
+    let close = |q: P3| view::norm(sub(p, q)) < 1e-9 * body.reach;
+    close([0.0; 3]) || close(body.centre)
 }
 
 /// Whether a name is a word (`push`, `front`, `weight`): three or more lower-case letters

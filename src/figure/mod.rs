@@ -46,7 +46,17 @@ pub struct Stroke {
     pub width: f64,
     /// The accent colour (the loads), else black.
     pub accent: bool,
-    pub dashed: bool,
+    pub dashes: Dashes,
+}
+
+/// A line's dashes, as a drawing tells them apart.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Dashes {
+    Solid,
+    /// Short dashes: an edge out of sight, a body known only by its inertia.
+    Hidden,
+    /// Long dash, dot: an axis of symmetry or turning, a reference line.
+    CentreLine,
 }
 
 impl Stroke {
@@ -58,7 +68,7 @@ impl Stroke {
     pub const LOAD: Stroke = Stroke {
         width: 1.4,
         accent: true,
-        dashed: false,
+        dashes: Dashes::Solid,
     };
     /// A dimension line and its extension lines.
     pub const DIMENSION: Stroke = Stroke::black(0.6);
@@ -66,19 +76,19 @@ impl Stroke {
     pub const HIDDEN: Stroke = Stroke {
         width: 1.0,
         accent: false,
-        dashed: true,
+        dashes: Dashes::Hidden,
     };
     pub const CENTRE_LINE: Stroke = Stroke {
         width: 0.7,
         accent: false,
-        dashed: true,
+        dashes: Dashes::CentreLine,
     };
 
     const fn black(width: f64) -> Stroke {
         Stroke {
             width,
             accent: false,
-            dashed: false,
+            dashes: Dashes::Solid,
         }
     }
 }

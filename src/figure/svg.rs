@@ -2,7 +2,7 @@
 //! y turned down, strokes black or the accent colour, faces white, an impulse's head open,
 //! each label a `<text>` centred on its box, in a serif italic.
 
-use super::{Figure, Mark, Stroke, FACE_OPACITY, FONT_SIZE};
+use super::{Dashes, Figure, Mark, Stroke, FACE_OPACITY, FONT_SIZE};
 use crate::print::markup;
 use std::fmt::Write;
 
@@ -56,9 +56,10 @@ fn colour(stroke: &Stroke) -> &'static str {
 
 /// `stroke`, its width and its dashes as attributes.
 fn stroke_attributes(stroke: &Stroke) -> String {
-    let dashes = match stroke.dashed {
-        true => " stroke-dasharray=\"6 3 1.5 3\"",
-        false => "",
+    let dashes = match stroke.dashes {
+        Dashes::Solid => "",
+        Dashes::Hidden => " stroke-dasharray=\"4 2.5\"",
+        Dashes::CentreLine => " stroke-dasharray=\"6 3 1.5 3\"",
     };
     format!(
         "stroke=\"{}\" stroke-width=\"{}\"{dashes}",

@@ -2,7 +2,7 @@
 //! SVG: a figure unit is ¾ pt, so the figure is as wide on paper as on screen and its labels
 //! stand where they were placed; each label a node centred on its box.
 
-use super::{Figure, Mark, Stroke, FACE_OPACITY, P2};
+use super::{Dashes, Figure, Mark, Stroke, FACE_OPACITY, P2};
 use crate::print::markup;
 use std::fmt::Write;
 
@@ -48,9 +48,10 @@ fn colour(stroke: &Stroke) -> &'static str {
 
 /// A stroke's options: its colour, its width in points, its dashes.
 fn options(stroke: &Stroke) -> String {
-    let dashes = match stroke.dashed {
-        true => ",dash pattern=on 4.5pt off 2.25pt on 1pt off 2.25pt",
-        false => "",
+    let dashes = match stroke.dashes {
+        Dashes::Solid => "",
+        Dashes::Hidden => ",dash pattern=on 3pt off 1.9pt",
+        Dashes::CentreLine => ",dash pattern=on 4.5pt off 2.25pt on 1pt off 2.25pt",
     };
     format!(
         "draw={},line width={:.2}pt{dashes}",

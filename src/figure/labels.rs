@@ -25,6 +25,8 @@ const CROSSING: f64 = 12.0;
 const NEARER_ANOTHER: f64 = 80.0;
 const PER_DEGREE: f64 = 0.08;
 const PER_UNIT: f64 = 1.5;
+/// How much more each unit away costs the label of a point or a part's size.
+const POINT_TIGHTER: f64 = 2.5;
 
 /// A label asked for: its markup, the point it names and the side it would stand on.
 pub struct Wanted {
@@ -72,7 +74,12 @@ pub fn place(wanted: &[Wanted], marks: &[Mark]) -> Vec<Label> {
         let (hw, hh) = half_size(&w.markup);
         let mut best = (f64::INFINITY, w.anchor);
         for (centre, distance, turn) in candidates(w, hw, hh) {
-            let cost = PER_UNIT * distance
+            // A point's letter (G, O, A) or a part's size hugs what it names.
+            let per_unit = match w.on_body {
+                true => PER_UNIT * POINT_TIGHTER,
+                false => PER_UNIT,
+            };
+            let cost = per_unit * distance
                 + PER_DEGREE * turn.abs()
                 + faults(centre, (hw, hh), &placed, &around, (k, w));
             if cost < best.0 {

@@ -62,7 +62,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         canvas.keep_clear([0.0; 3], scaled(e, AXES_KEPT_CLEAR * body.reach));
     }
     omega(canvas, scene, body, &unknowns, &mut rays)?;
-    before_impact(canvas, scene, body, &unknowns, &mut rays)?;
+    motion_of_g(canvas, scene, body, &unknowns, &mut rays)?;
     for p in &scene.points {
         let at = canvas.vector(&p.position, &p.name)?;
         canvas.dot(at, 2.5);
@@ -191,12 +191,21 @@ fn omega(
             .as_ref()
             .filter(|rate| *rate != omega)
             .map(|rate| (rate, "Omega", Role::FrameRate)),
+        // α where the frame turns with the body (ω̇ in it is α), unless zero.
+        scene
+            .omega_dot
+            .as_ref()
+            .filter(|a| scene.frame_rate.is_none() && a.iter().any(|c| !c.is_zero()))
+            .map(|a| (a, "alpha", Role::AngularAcceleration)),
     ];
     let length = OMEGA_LENGTH * body.reach;
     for (vector, name, role) in rates.into_iter().flatten() {
         let d = view::unit(canvas.vector(vector, name)?);
-        let from = match (scene.fixed_point, holds_any(vector, unknowns)) {
-            (true, false) if !rays.ends.is_empty() => {
+        // Drawn whole (known, or along one axis), along a fixed axis past the shaft.
+        let whole =
+            !holds_any(vector, unknowns) || vector.iter().filter(|c| !c.is_zero()).count() == 1;
+        let from = match (scene.fixed_point, whole) {
+            (true, true) if !rays.ends.is_empty() => {
                 scaled(d, rays.claim(d, stretched(canvas, d, length)))
             }
             // From O, past an arrow already drawn from O along the same line (Ω = −ω₂ j
@@ -221,32 +230,38 @@ fn omega(
     Ok(())
 }
 
-/// The motion just before an impact, as the scene states it (`before vbar = v0*i`, `before
-/// omega = w0*k`): v̄₀ an arrow from G, ω₀ a double arrow from G, each past the arrows
-/// already drawn along its line from G, labelled by its magnitude.
-fn before_impact(
+/// The mass centre's velocity where the scene gives it (v̄, labelled so), and the motion
+/// just before an impact (`before vbar = v0*i`, `before omega = w0*k`, labelled by its
+/// magnitude, v₀ and ω₀): a velocity an arrow from G, an angular velocity a double arrow from
+/// G, each past the arrows already drawn along its line from G.
+fn motion_of_g(
     canvas: &mut Canvas,
     scene: &Scene,
     body: &Extent,
     unknowns: &[Symbol],
     rays: &mut Rays,
 ) -> Result<(), FigureError> {
+    // The velocity v̄ when known (an unknown one is the answer, not the statement).
+    let vbar = scene.vbar.as_ref().filter(|v| !holds_any(v, unknowns));
     let motions = [
+        (vbar, Some("vbar"), false, Role::Velocity, "vbar"),
         (
-            &scene.vbar_before,
+            scene.vbar_before.as_ref(),
+            None,
             false,
             Role::Velocity,
             "the velocity before",
         ),
         (
-            &scene.omega_before,
+            scene.omega_before.as_ref(),
+            None,
             true,
             Role::AngularVelocity,
             "the angular velocity before",
         ),
     ];
-    for (vector, double, role, what) in motions {
-        let Some(v) = vector.as_ref().filter(|v| v.iter().any(|c| !c.is_zero())) else {
+    for (vector, name, double, role, what) in motions {
+        let Some(v) = vector.filter(|v| v.iter().any(|c| !c.is_zero())) else {
             continue;
         };
         let d = view::unit(canvas.vector(v, what)?);
@@ -265,7 +280,7 @@ fn before_impact(
             into_point: false,
             body,
         };
-        let drew = drawn.vector(canvas, v, None, unknowns, what)?;
+        let drew = drawn.vector(canvas, v, name, unknowns, what)?;
         if view::norm(body.centre) <= 1e-12 * body.reach {
             rays.arrows.extend(drew.arrows);
         }

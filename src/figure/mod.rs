@@ -102,7 +102,9 @@ pub enum Role {
     Impulse,
     Couple,
     AngularVelocity,
-    /// A velocity (the mass centre's just before an impact).
+    /// The angular acceleration α (where the frame turns with the body).
+    AngularAcceleration,
+    /// A velocity: the mass centre's, or its just before an impact.
     Velocity,
     /// The frame's angular velocity Ω, where it differs from ω.
     FrameRate,

@@ -697,3 +697,42 @@ fn the_motion_before_an_impact_is_drawn() {
         );
     }
 }
+
+/// The motion the statement gives is drawn: SP 18.4's α (omegadot = alpha*i) a double arrow
+/// along the shaft x, and the frame of three rods' v̄ labelled at G.
+#[test]
+fn the_stated_alpha_and_vbar_are_drawn() {
+    let find = |name: &str| {
+        examples()
+            .into_iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, s)| figure(&s).unwrap())
+            .unwrap()
+    };
+    let written = |s: &str| format!("${}$", kinetics::print::latex(&Expr::sym(Symbol::new(s))));
+    let shaft = find("sp18_4_shaft_reactions");
+    let o = shaft.at([0.0; 3]);
+    let x = shaft.at([1.0, 0.0, 0.0]).minus(o);
+    let alpha_along_x = shaft.marks.iter().any(|m| {
+        matches!(m, Mark::Arrow { role: Role::AngularAcceleration, from, to, double: true, .. }
+        if {
+            let d = to.minus(*from);
+            (d.x * x.y - d.y * x.x).abs() < 1e-6 * d.length() * x.length()
+                && d.x * x.x + d.y * x.y > 0.0
+        })
+    });
+    assert!(alpha_along_x, "α a double arrow along x");
+    assert!(shaft.labels.iter().any(|l| l.markup == written("alpha")));
+    let frame = find("long_relations");
+    let velocity = frame.marks.iter().any(|m| {
+        matches!(
+            m,
+            Mark::Arrow {
+                role: Role::Velocity,
+                ..
+            }
+        )
+    });
+    assert!(velocity, "v̄ drawn");
+    assert!(frame.labels.iter().any(|l| l.markup == written("vbar")));
+}

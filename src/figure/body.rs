@@ -316,10 +316,17 @@ impl Placed {
         let len = |e| canvas.value(e, what);
         match shape {
             Shape::SlenderRod { length } => name(length, self.centre, u, None),
-            Shape::ThinPlate { a, b } | Shape::RectangularPrism { a, b, .. } => {
+            Shape::ThinPlate { a, b } => {
                 let (ha, hb) = (len(a)? / 2.0, len(b)? / 2.0);
                 name(a, self.at(0.0, -hb, 0.0), scaled(y, -1.0), None);
                 name(b, self.at(ha, 0.0, 0.0), x, None);
+            }
+            Shape::RectangularPrism { a, b, c } => {
+                let half = [len(a)? / 2.0, len(b)? / 2.0, len(c)? / 2.0];
+                for (k, side) in [a, b, c].into_iter().enumerate() {
+                    let middle = self.outline_edge(canvas, half, k);
+                    name(side, middle, sub(middle, self.centre), None);
+                }
             }
             Shape::ThinDisk { radius }
             | Shape::ThinRing { radius }
@@ -384,6 +391,29 @@ impl Placed {
             }
         }
         (corners, marks)
+    }
+
+    /// The middle of the box's edge along its own axis `k` that a side's length is written
+    /// by: of the four, one on a face toward the eye, drawn farthest down and to the right of
+    /// the centre (on the outline, clear of the faces).
+    fn outline_edge(&self, canvas: &Canvas, half: [f64; 3], k: usize) -> P3 {
+        let eye = canvas.view().toward_eye();
+        let (u, v) = ((k + 1) % 3, (k + 2) % 3);
+        let centre = canvas.project(self.centre);
+        let mut best = (f64::NEG_INFINITY, self.centre);
+        for (su, sv) in [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)] {
+            let seen = view::dot(scaled(self.axes[u], su), eye) > 0.0
+                || view::dot(scaled(self.axes[v], sv), eye) > 0.0;
+            let mut s = [0.0; 3];
+            (s[u], s[v]) = (su * half[u], sv * half[v]);
+            let middle = self.at(s[0], s[1], s[2]);
+            let drawn = canvas.project(middle).minus(centre);
+            let score = drawn.x * 0.5 - drawn.y;
+            if seen && score > best.0 {
+                best = (score, middle);
+            }
+        }
+        best.1
     }
 
     /// A box's corner out of sight (its three faces turned from the eye) where a load acts

@@ -736,3 +736,21 @@ fn the_stated_alpha_and_vbar_are_drawn() {
     assert!(velocity, "v̄ drawn");
     assert!(frame.labels.iter().any(|l| l.markup == written("vbar")));
 }
+
+/// A box's three sides are each written by one of its edges: `prism(b, c, d)` of the pushed
+/// box shows b, c and d.
+#[test]
+fn a_box_has_its_three_sides_labelled() {
+    let (_, scene) = examples()
+        .into_iter()
+        .find(|(n, _)| n == "sliding_box")
+        .unwrap();
+    let drawn = figure(&scene).unwrap();
+    for side in ["b", "c", "d"] {
+        let label = format!("${side}$");
+        assert!(
+            drawn.labels.iter().any(|l| l.markup == label),
+            "side {side} labelled"
+        );
+    }
+}

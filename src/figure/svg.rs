@@ -1,10 +1,15 @@
 //! A figure as an SVG element (inline in an HTML page, or a file beside a Markdown page):
 //! y turned down, strokes black or the accent colour, faces white, an impulse's head open,
-//! each label a `<text>` centred on its box, in a serif italic.
+//! each label a `<text>` centred on its box, in a serif italic, with a white halo (a white
+//! stroke painted under its glyphs) so a line passing under it breaks there, as a textbook
+//! knocks the lines out behind its lettering.
 
 use super::{Dashes, Figure, Mark, Stroke, FACE_OPACITY, FONT_SIZE};
 use crate::print::markup;
 use std::fmt::Write;
+
+/// The width of the white stroke under a label's glyphs, in figure units.
+const HALO: f64 = 3.0;
 
 /// The accent colour of the loads.
 pub const ACCENT: &str = "#0b5cad";
@@ -33,7 +38,7 @@ fn element(figure: &Figure, namespace: &str) -> String {
     out.push_str("</g>\n");
     let _ = writeln!(
         out,
-        "<g font-family=\"'Latin Modern Roman', 'Times New Roman', serif\" font-style=\"italic\" font-size=\"{FONT_SIZE}\" text-anchor=\"middle\" dominant-baseline=\"central\">"
+        "<g font-family=\"'Latin Modern Roman', 'Times New Roman', serif\" font-style=\"italic\" font-size=\"{FONT_SIZE}\" text-anchor=\"middle\" dominant-baseline=\"central\" stroke=\"white\" stroke-width=\"{HALO}\" stroke-linejoin=\"round\" paint-order=\"stroke\">"
     );
     for label in &figure.labels {
         let (text, _) = markup::svg(&label.markup);

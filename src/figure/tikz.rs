@@ -1,6 +1,7 @@
 //! A figure as a `tikzpicture` (TikZ, Debian's `texlive-pictures`), in the coordinates of the
 //! SVG: a figure unit is ¾ pt, so the figure is as wide on paper as on screen and its labels
-//! stand where they were placed; each label a node centred on its box.
+//! stand where they were placed; each label a node centred on its box, on white, so a line
+//! passing under it breaks there.
 
 use super::{Dashes, Figure, Mark, Stroke, FACE_OPACITY, P2};
 use crate::print::markup;
@@ -19,7 +20,7 @@ pub fn tikz(figure: &Figure) -> String {
     for label in &figure.labels {
         let _ = writeln!(
             out,
-            "\\node[inner sep=0pt] at {} {{{}}};",
+            "\\node[inner sep=0.8pt,fill=white] at {} {{{}}};",
             point(label.centre),
             markup::latex(&label.markup)
         );

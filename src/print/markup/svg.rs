@@ -47,6 +47,11 @@ fn one(out: &mut String, node: &Node) -> f64 {
             out.push_str("</tspan> ");
             (name.len() as f64 + 1.0) * DIGIT_EM
         }
+        // The minus sign, not the hyphen typed (`L − z₂`), as the HTML writer draws it.
+        Node::Operator('-') => {
+            out.push('−');
+            OPERATOR_EM
+        }
         other => {
             let plain = text::maths(std::slice::from_ref(other));
             escaped(out, &plain);
@@ -80,4 +85,13 @@ pub fn escaped(out: &mut String, words: &str) {
 /// Words' width in ems.
 pub fn words_em(words: &str) -> f64 {
     words.chars().count() as f64 * LETTER_EM
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn a_difference_is_written_with_the_minus_sign() {
+        let (text, _) = crate::print::markup::svg("$L - z_2$");
+        assert!(text.starts_with("L−z<tspan"), "{text}");
+    }
 }

@@ -92,7 +92,7 @@ impl Extent {
 pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
     let mut samples = Vec::new();
     let mut solids = Vec::new();
-    let loaded = loaded_points(canvas, scene)?;
+    let loaded = canvas.loaded_points(scene)?;
     let (mut mass, mut moment) = (0.0, [0.0; 3]);
     for (k, part) in scene.parts.iter().enumerate() {
         let what = format!("body {}", k + 1);
@@ -162,12 +162,7 @@ struct Placed {
 impl Placed {
     fn of(canvas: &Canvas, part: &Part, what: &str) -> Result<Placed, FigureError> {
         let centre = canvas.vector(&part.position, what)?;
-        let mut axes = [[0.0; 3]; 3];
-        for (j, axis) in axes.iter_mut().enumerate() {
-            for (i, c) in axis.iter_mut().enumerate() {
-                *c = canvas.value(&part.rotation[(i, j)], what)?;
-            }
-        }
+        let axes = canvas.columns(&part.rotation, what)?;
         Ok(Placed { centre, axes })
     }
 
@@ -442,21 +437,6 @@ impl Placed {
             })
             .collect()
     }
-}
-
-/// The points a force, an impulse or a name is at.
-fn loaded_points(canvas: &Canvas, scene: &Scene) -> Result<Vec<P3>, FigureError> {
-    let mut out = Vec::new();
-    for f in &scene.forces {
-        out.push(canvas.vector(&f.point, &f.name)?);
-    }
-    for (k, i) in scene.impulses.iter().enumerate() {
-        out.push(canvas.vector(&i.point, &format!("impulse {}", k + 1))?);
-    }
-    for p in &scene.points {
-        out.push(canvas.vector(&p.position, &p.name)?);
-    }
-    Ok(out)
 }
 
 /// Which end (−h or +h along the axis `x`) faces the eye.

@@ -90,12 +90,7 @@ impl<'s> Canvas<'s> {
         let (mut mass, mut moment) = (0.0, [0.0; 3]);
         for (k, part) in scene.parts.iter().enumerate() {
             let what = format!("body {}", k + 1);
-            let mut axes = [[0.0; 3]; 3];
-            for (j, axis) in axes.iter_mut().enumerate() {
-                for (i, c) in axis.iter_mut().enumerate() {
-                    *c = canvas.value(&part.rotation[(i, j)], &what)?;
-                }
-            }
+            let axes = canvas.columns(&part.rotation, &what)?;
             directions.extend(axes);
             let centre = canvas.vector(&part.position, &what)?;
             let m = canvas.value(&part.mass, &what)?;
@@ -109,15 +104,7 @@ impl<'s> Canvas<'s> {
         if mass > 0.0 {
             points.push(view::scaled(moment, 1.0 / mass));
         }
-        for f in &scene.forces {
-            points.push(canvas.vector(&f.point, &f.name)?);
-        }
-        for (k, i) in scene.impulses.iter().enumerate() {
-            points.push(canvas.vector(&i.point, &format!("impulse {}", k + 1))?);
-        }
-        for p in &scene.points {
-            points.push(canvas.vector(&p.position, &p.name)?);
-        }
+        points.extend(canvas.loaded_points(scene)?);
         canvas.view = View::choose(up, &directions, &points);
         Ok(canvas)
     }
@@ -136,6 +123,32 @@ impl<'s> Canvas<'s> {
             self.value(&v[1], what)?,
             self.value(&v[2], what)?,
         ])
+    }
+
+    /// The columns of a rotation (a part's own axes in the frame), at the figure's sizes.
+    pub fn columns(&self, m: &crate::algebra::Matrix, what: &str) -> Result<[P3; 3], FigureError> {
+        let mut axes = [[0.0; 3]; 3];
+        for (j, axis) in axes.iter_mut().enumerate() {
+            for (i, c) in axis.iter_mut().enumerate() {
+                *c = self.value(&m[(i, j)], what)?;
+            }
+        }
+        Ok(axes)
+    }
+
+    /// The points a force, an impulse or a name is at.
+    pub fn loaded_points(&self, scene: &Scene) -> Result<Vec<P3>, FigureError> {
+        let mut out = Vec::new();
+        for f in &scene.forces {
+            out.push(self.vector(&f.point, &f.name)?);
+        }
+        for (k, i) in scene.impulses.iter().enumerate() {
+            out.push(self.vector(&i.point, &format!("impulse {}", k + 1))?);
+        }
+        for p in &scene.points {
+            out.push(self.vector(&p.position, &p.name)?);
+        }
+        Ok(out)
     }
 
     /// The length a symbolic length is first drawn at ([`Sizes::base`]).

@@ -34,7 +34,7 @@ pub fn along_shaft(
         false => -&v[k],
     };
     let reach = body.reach;
-    let on_axis = |p: P3| view::norm(sub(p, scaled(a, view::dot(p, a)))) < 1e-9 * reach;
+    let on_axis = |p: P3| view::norm(view::square_to(p, a)) < 1e-9 * reach;
     let mut stations: Vec<(f64, Expr)> = vec![(0.0, Expr::zero())];
     let mut station = |p: P3, at: &Vector| stations.push((view::dot(p, a), coordinate(at)));
     for f in &scene.forces {
@@ -52,7 +52,7 @@ pub fn along_shaft(
     for (n, part) in scene.parts.iter().enumerate() {
         let what = format!("body {}", n + 1);
         let centre = canvas.vector(&part.position, &what)?;
-        if on_axis(centre) || fixed_across(canvas, part, centre, a, reach, &what)? {
+        if on_axis(centre) || fixed_across(canvas, part, centre, a, on_axis, &what)? {
             station(centre, &part.position);
         }
     }
@@ -101,20 +101,16 @@ fn fixed_across(
     part: &crate::scene::model::Part,
     centre: P3,
     a: P3,
-    reach: f64,
+    on_axis: impl Fn(P3) -> bool,
     what: &str,
 ) -> Result<bool, FigureError> {
     Ok(match &part.shape {
         Shape::PointMass => true,
         Shape::SlenderRod { length } => {
-            let along: Vec<f64> = (0..3)
-                .map(|i| canvas.value(&part.rotation[(i, 0)], what))
-                .collect::<Result<_, _>>()?;
-            let along = [along[0], along[1], along[2]];
+            let [along, _, _] = canvas.columns(&part.rotation, what)?;
             let half = scaled(along, canvas.value(length, what)? / 2.0);
             let square = view::dot(along, a).abs() < 1e-9;
-            let on = |p: P3| view::norm(sub(p, scaled(a, view::dot(p, a)))) < 1e-9 * reach;
-            square && (on(add(centre, half)) || on(sub(centre, half)))
+            square && (on_axis(add(centre, half)) || on_axis(sub(centre, half)))
         }
         _ => false,
     })

@@ -260,6 +260,7 @@ fn motion_of_g(
             "the angular velocity before",
         ),
     ];
+    let g_at_o = view::norm(body.centre) <= 1e-12 * body.reach;
     for (vector, name, double, role, what) in motions {
         let Some(v) = vector.filter(|v| v.iter().any(|c| !c.is_zero())) else {
             continue;
@@ -267,9 +268,9 @@ fn motion_of_g(
         let d = view::unit(canvas.vector(v, what)?);
         let length = OMEGA_LENGTH * body.reach;
         // From G; at O, past what is drawn from O along the same line (ω after the blow).
-        let from = match view::norm(body.centre) > 1e-12 * body.reach {
-            true => body.centre,
-            false => scaled(d, rays.past_arrows(d)),
+        let from = match g_at_o {
+            false => body.centre,
+            true => scaled(d, rays.past_arrows(d)),
         };
         let drawn = Drawn {
             from,
@@ -281,7 +282,7 @@ fn motion_of_g(
             body,
         };
         let drew = drawn.vector(canvas, v, name, unknowns, what)?;
-        if view::norm(body.centre) <= 1e-12 * body.reach {
+        if g_at_o {
             rays.arrows.extend(drew.arrows);
         }
     }
@@ -401,7 +402,7 @@ fn fixed_axis(
     };
     if let Some(a) = axis.filter(|a| view::norm(*a) > 0.0) {
         let reach = body.reach;
-        let on_axis = |p: P3| view::norm(sub(p, scaled(a, view::dot(p, a)))) < 1e-9 * reach;
+        let on_axis = |p: P3| view::norm(view::square_to(p, a)) < 1e-9 * reach;
         let mut bearings = Vec::new();
         for f in &scene.forces {
             let at = canvas.vector(&f.point, &f.name)?;

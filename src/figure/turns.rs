@@ -10,7 +10,7 @@
 
 use super::body::Extent;
 use super::canvas::{Canvas, Layer};
-use super::view::{self, add, cross, dot, scaled, sub, P3};
+use super::view::{self, add, cross, dot, scaled, square_to, P3};
 use super::{FigureError, Stroke};
 use crate::scene::model::Scene;
 
@@ -31,17 +31,11 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
             }
             let a = view::unit(canvas.vector(&turn.axis, &what)?);
             let theta = canvas.value(&turn.angle, &what)?;
-            let column = |j: usize| -> Result<P3, FigureError> {
-                let c: Vec<f64> = (0..3)
-                    .map(|i| canvas.value(&turn.from[(i, j)], &what))
-                    .collect::<Result<_, _>>()?;
-                Ok([c[0], c[1], c[2]])
-            };
             // The part's own x' as it stood, else y' when the turn is about x'.
-            let own_x = column(0)?;
+            let [own_x, own_y, _] = canvas.columns(&turn.from, &what)?;
             let before = match view::norm(square_to(own_x, a)) > 0.5 {
                 true => own_x,
-                false => column(1)?,
+                false => own_y,
             };
             let from = view::unit(square_to(before, a));
             mark(canvas, centre, from, a, theta, body.reach);
@@ -70,11 +64,6 @@ fn mark(canvas: &mut Canvas, centre: P3, from: P3, a: P3, theta: f64, reach: f64
         })
         .collect();
     canvas.path(Layer::Front, &arc, false, Stroke::MOTION);
-}
-
-/// The part of `v` square to the unit `a`.
-fn square_to(v: P3, a: P3) -> P3 {
-    sub(v, scaled(a, dot(v, a)))
 }
 
 /// `v` turned through `theta` about the unit `a` (Rodrigues).

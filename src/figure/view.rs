@@ -208,6 +208,11 @@ fn turn_to_z(u: P3) -> [[f64; 3]; 3] {
     r
 }
 
+/// The part of `v` square to the unit `a` (its distance from the line along `a` through O).
+pub fn square_to(v: P3, a: P3) -> P3 {
+    sub(v, scaled(a, dot(v, a)))
+}
+
 pub fn dot(a: P3, b: P3) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }

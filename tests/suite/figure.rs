@@ -24,6 +24,15 @@ fn examples() -> Vec<(String, Scene)> {
         .collect()
 }
 
+/// The example scene of that file stem.
+fn example(name: &str) -> Scene {
+    examples()
+        .into_iter()
+        .find(|(n, _)| n == name)
+        .map(|(_, s)| s)
+        .unwrap_or_else(|| panic!("no example {name}"))
+}
+
 fn near(a: P2, b: P2) -> bool {
     (a.x - b.x).hypot(a.y - b.y) < 1e-6
 }
@@ -186,10 +195,7 @@ fn arrows_start_where_the_scene_puts_their_points() {
 /// SP 18.4: the shaft CD between its bearings, the two rods, the couple M and ω.
 #[test]
 fn the_shaft_of_sample_problem_18_4() {
-    let (_, scene) = examples()
-        .into_iter()
-        .find(|(n, _)| n == "sp18_4_shaft_reactions")
-        .unwrap();
+    let scene = example("sp18_4_shaft_reactions");
     let drawn = figure(&scene).unwrap();
     let point = |name: &str| {
         let f = scene.forces.iter().find(|f| f.name == name).unwrap();
@@ -284,10 +290,7 @@ fn the_shaft_of_sample_problem_18_4() {
 /// SP 18.1: the plate a × b and the blow F Δt at its corner (−a/2, −b/2, 0).
 #[test]
 fn the_plate_and_the_blow_of_sample_problem_18_1() {
-    let (_, scene) = examples()
-        .into_iter()
-        .find(|(n, _)| n == "sp18_1_plate_impact")
-        .unwrap();
+    let scene = example("sp18_1_plate_impact");
     let drawn = figure(&scene).unwrap();
     let sizes = Sizes::of(&scene);
     let size = |s: &str| sizes.of_expr(&Expr::sym(Symbol::new(s))).unwrap();
@@ -318,10 +321,7 @@ fn the_plate_and_the_blow_of_sample_problem_18_1() {
 /// The top: the vertical, θ, and the rates φ̇ and ψ̇ as curved arrows.
 #[test]
 fn the_eulerian_angles_of_a_top() {
-    let (_, scene) = examples()
-        .into_iter()
-        .find(|(n, _)| n == "top_steady_tilt")
-        .unwrap();
+    let scene = example("top_steady_tilt");
     let drawn = figure(&scene).unwrap();
     for label in [r"$\theta$", r"$\dot\phi$", r"$\dot\psi$", "$Z$", "$W$"] {
         assert!(
@@ -538,10 +538,7 @@ fn the_figure_command_writes_svg_and_tikz() {
 /// Ω along −y on the ray from the fixed point O (past ω's component along it).
 #[test]
 fn the_frame_rate_is_drawn_where_it_differs_from_omega() {
-    let (_, scene) = examples()
-        .into_iter()
-        .find(|(n, _)| n == "sp18_2_rolling_disk")
-        .unwrap();
+    let scene = example("sp18_2_rolling_disk");
     let drawn = figure(&scene).unwrap();
     let minus_y = drawn.at([0.0, -1.0, 0.0]);
     let omega_frame = drawn.marks.iter().any(|m| match m {
@@ -614,10 +611,7 @@ fn the_numbers_page_has_the_figure_too() {
 /// the shaft's line x to the disk's axis (cos β, sin β, 0), both through G, labelled β.
 #[test]
 fn the_tilt_of_the_disk_on_its_shaft_is_marked_with_beta() {
-    let (_, scene) = examples()
-        .into_iter()
-        .find(|(n, _)| n == "disk_tilted_on_shaft")
-        .unwrap();
+    let scene = example("disk_tilted_on_shaft");
     let drawn = figure(&scene).unwrap();
     let beta = Sizes::of(&scene)
         .of_expr(&Expr::sym(Symbol::new("beta")))
@@ -647,10 +641,7 @@ fn the_tilt_of_the_disk_on_its_shaft_is_marked_with_beta() {
 /// at L/2 and D at L, the spans L/4, L/4 and L/2 labelled in the scene's symbols.
 #[test]
 fn the_shaft_of_sample_problem_18_4_is_dimensioned() {
-    let (_, scene) = examples()
-        .into_iter()
-        .find(|(n, _)| n == "sp18_4_shaft_reactions")
-        .unwrap();
+    let scene = example("sp18_4_shaft_reactions");
     let drawn = figure(&scene).unwrap();
     let l = Expr::sym(Symbol::new("L"));
     let written = |e: Expr| format!("${}$", kinetics::print::latex(&e));
@@ -670,10 +661,7 @@ fn the_shaft_of_sample_problem_18_4_is_dimensioned() {
 /// it: v̄₀ = v₀ i an arrow from G along x and ω₀ = ω₀ k, each labelled by its magnitude.
 #[test]
 fn the_motion_before_an_impact_is_drawn() {
-    let (_, scene) = examples()
-        .into_iter()
-        .find(|(n, _)| n == "spinning_rod_strikes_a_post")
-        .unwrap();
+    let scene = example("spinning_rod_strikes_a_post");
     let drawn = figure(&scene).unwrap();
     let g = drawn.at([0.0; 3]);
     let x = drawn.at([1.0, 0.0, 0.0]).minus(g);
@@ -702,13 +690,7 @@ fn the_motion_before_an_impact_is_drawn() {
 /// along the shaft x, and the frame of three rods' v̄ labelled at G.
 #[test]
 fn the_stated_alpha_and_vbar_are_drawn() {
-    let find = |name: &str| {
-        examples()
-            .into_iter()
-            .find(|(n, _)| n == name)
-            .map(|(_, s)| figure(&s).unwrap())
-            .unwrap()
-    };
+    let find = |name: &str| figure(&example(name)).unwrap();
     let written = |s: &str| format!("${}$", kinetics::print::latex(&Expr::sym(Symbol::new(s))));
     let shaft = find("sp18_4_shaft_reactions");
     let o = shaft.at([0.0; 3]);
@@ -741,10 +723,7 @@ fn the_stated_alpha_and_vbar_are_drawn() {
 /// box shows b, c and d.
 #[test]
 fn a_box_has_its_three_sides_labelled() {
-    let (_, scene) = examples()
-        .into_iter()
-        .find(|(n, _)| n == "sliding_box")
-        .unwrap();
+    let scene = example("sliding_box");
     let drawn = figure(&scene).unwrap();
     for side in ["b", "c", "d"] {
         let label = format!("${side}$");

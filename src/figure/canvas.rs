@@ -6,7 +6,10 @@
 use super::labels::{self, Wanted};
 use super::sizes::Sizes;
 use super::view::{self, View, P2, P3};
-use super::{Figure, FigureError, Label, Mark, Role, Stroke, BESIDE, MARKS_HEIGHT, MARKS_WIDTH};
+use super::{
+    Figure, FigureError, Label, Mark, Role, Stroke, BESIDE, MARKS_HEIGHT, MARKS_TALLEST,
+    MARKS_WIDTH,
+};
 use crate::algebra::{Expr, Vector};
 use crate::mechanics::eulerian_angles::EulerianAngles;
 use crate::mechanics::shapes::Shape;
@@ -19,6 +22,8 @@ const MARGIN: f64 = 6.0;
 const ALONG_DEG: f64 = 6.0;
 const ON_LINE: f64 = 0.05;
 const OVERLAPPING: f64 = 0.2;
+/// The share of a turn a curved arrow about a line goes round.
+const TURN: f64 = 0.8;
 
 pub struct Canvas<'s> {
     sizes: &'s Sizes,
@@ -259,12 +264,22 @@ impl<'s> Canvas<'s> {
         self.push(layer, mark, side.times(BESIDE));
     }
 
-    /// An arrow along a curve through the scene's points, its head at the last.
-    pub fn curved_arrow(&mut self, points: &[P3], stroke: Stroke, role: Role) {
-        let mut drawn: Vec<P2> = points.iter().map(|p| self.project(*p)).collect();
-        let (Some(to), true) = (drawn.pop(), !drawn.is_empty()) else {
-            return;
-        };
+    /// A curved arrow [`TURN`] of the way round the circle of `radius` about `centre` in the
+    /// plane across `axis`, turning right-handedly about it (a rate or a couple about a
+    /// line); where it starts, for its label.
+    pub fn turning_arrow(
+        &mut self,
+        centre: P3,
+        axis: P3,
+        radius: f64,
+        stroke: Stroke,
+        role: Role,
+    ) -> P3 {
+        // circle() goes round the axis right-handedly, so the arrow turns the way it should.
+        let whole = super::body::circle(centre, axis, radius);
+        let n = (whole.len() as f64 * TURN) as usize;
+        let mut drawn: Vec<P2> = whole[..n].iter().map(|p| self.project(*p)).collect();
+        let to = drawn.pop().unwrap_or(P2::new(0.0, 0.0));
         let from = drawn.remove(0);
         let mark = Mark::Arrow {
             from,
@@ -275,6 +290,7 @@ impl<'s> Canvas<'s> {
             role,
         };
         self.push(Layer::Front, mark, P2::new(0.0, 0.0));
+        whole[0]
     }
 
     /// A dot of `radius` figure units at a scene's point.
@@ -318,8 +334,9 @@ impl<'s> Canvas<'s> {
         self.wanted.push((wanted, shift));
     }
 
-    /// The figure: every mark scaled so the drawing is [`MARKS_WIDTH`] wide (or
-    /// [`MARKS_HEIGHT`] high) and those drawn beside a line shifted, then the labels placed.
+    /// The figure: every mark scaled so the drawing is [`MARKS_WIDTH`] wide or [`MARKS_HEIGHT`]
+    /// high (a tall one the area of that square, up to [`MARKS_TALLEST`]), and those drawn
+    /// beside a line shifted, then the labels placed.
     pub fn finish(self) -> Figure {
         let mut marks: Vec<(Mark, P2)> = self
             .behind
@@ -339,7 +356,9 @@ impl<'s> Canvas<'s> {
         let (min, max) = bounds(marks.iter().flat_map(|(m, _)| m.line()));
         let (w, h) = (max.x - min.x, max.y - min.y);
         let scale = match (w > 0.0, h > 0.0) {
-            (true, true) => (MARKS_WIDTH / w).min(MARKS_HEIGHT / h),
+            (true, true) => (MARKS_WIDTH / w)
+                .min(MARKS_TALLEST / h)
+                .min(MARKS_HEIGHT / h.min((w * h).sqrt())),
             (true, false) => MARKS_WIDTH / w,
             (false, true) => MARKS_HEIGHT / h,
             (false, false) => 1.0,

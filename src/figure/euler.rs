@@ -2,7 +2,7 @@
 //! as a centre line from O, the angle θ from it to the axis of symmetry z as an arc, the
 //! precession φ̇ a curved arrow about Z above the body, the spin ψ̇ one about z past it.
 
-use super::body::{circle, Extent};
+use super::body::Extent;
 use super::canvas::{Canvas, Layer};
 use super::view::{self, add, scaled, P3};
 use super::{FigureError, Role, Stroke};
@@ -13,8 +13,6 @@ use crate::mechanics::eulerian_angles::EulerianAngles;
 const VERTICAL: f64 = 1.35;
 const ARC_RADIUS: f64 = 0.3;
 const RATE_RADIUS: f64 = 0.12;
-/// The share of a turn a rate's curved arrow goes round.
-const RATE_TURN: f64 = 0.8;
 
 pub fn angles(canvas: &mut Canvas, body: &Extent) -> Result<(), FigureError> {
     let angles = EulerianAngles::chapter();
@@ -54,9 +52,6 @@ pub fn angles(canvas: &mut Canvas, body: &Extent) -> Result<(), FigureError> {
 
 /// A curved arrow round `axis` (right-handed) about `centre`, labelled.
 fn rate(canvas: &mut Canvas, centre: P3, axis: P3, r: f64, label: &str) {
-    let whole = circle(centre, axis, r);
-    let n = (whole.len() as f64 * RATE_TURN) as usize;
-    // circle() goes round the axis right-handedly, so the arrow turns the way the rate does.
-    canvas.curved_arrow(&whole[..n], Stroke::MOTION, Role::Rate);
-    canvas.label(label.into(), whole[0], view::sub(whole[0], centre));
+    let start = canvas.turning_arrow(centre, axis, r, Stroke::MOTION, Role::Rate);
+    canvas.label(label.into(), start, view::sub(start, centre));
 }

@@ -43,6 +43,8 @@ const BEARING_RADIUS: f64 = 0.07;
 /// The pieces a shaft is drawn in, each at its own depth among the parts.
 const SHAFT_PIECES: usize = 12;
 const BEARING_LENGTH: f64 = 0.1;
+/// The radius of a couple's curved arrow round the shaft.
+const TURNING_RADIUS: f64 = 0.12;
 
 const UNIT: [P3; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 
@@ -70,11 +72,8 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
     }
     loads(canvas, scene, body, &unknowns, &mut rays)?;
     // The shaft's dimensions after the loads, so the loads' labels are placed first.
-    if let [from, to] = rays.ends[..] {
-        let along = sub(to, from);
-        if view::norm(along) > 0.0 {
-            super::dimensions::along_shaft(canvas, scene, body, view::unit(along))?;
-        }
+    if let Some(along) = shaft_line(&rays.ends) {
+        super::dimensions::along_shaft(canvas, scene, body, along)?;
     }
     axes(canvas, scene, body, &rays);
     Ok(())
@@ -183,33 +182,56 @@ fn omega(
     let (Some(omega), None) = (&scene.omega, &scene.euler_angles) else {
         return Ok(());
     };
+    let omega_whole = drawn_whole(omega, unknowns);
+    // Ω where the frame does not turn with the body; drawn on ω's arrow where it is one of
+    // ω's components (Ω = −ω₂ j), labelled with both (ω₂, Ω).
+    let frame_rate = scene.frame_rate.as_ref().filter(|rate| *rate != omega);
+    let frame_in_omega = frame_rate.and_then(|rate| match nonzero(rate)[..] {
+        [k] if !omega_whole && omega[k] == rate[k] => Some(k),
+        _ => None,
+    });
+    // α where the frame turns with the body (ω̇ in it is α), unless zero; drawn on ω's arrow
+    // where it points the same way (a shaft speeding up), labelled with both (ω, α).
+    let alpha = scene
+        .omega_dot
+        .as_ref()
+        .filter(|a| scene.frame_rate.is_none() && !nonzero(a).is_empty());
+    let alpha_on_omega = match alpha {
+        Some(a) if omega_whole => {
+            let (a, w) = (canvas.vector(a, "alpha")?, canvas.vector(omega, "omega")?);
+            view::dot(view::unit(a), view::unit(w)) > 1.0 - 1e-9
+        }
+        _ => false,
+    };
+    let also = match (frame_in_omega, alpha_on_omega) {
+        (Some(k), _) => Some(Also {
+            component: Some(k),
+            name: "Omega",
+        }),
+        (None, true) => Some(Also {
+            component: None,
+            name: "alpha",
+        }),
+        (None, false) => None,
+    };
     let rates = [
-        Some((omega, "omega", Role::AngularVelocity)),
-        // Ω where the frame does not turn with the body.
-        scene
-            .frame_rate
-            .as_ref()
-            .filter(|rate| *rate != omega)
-            .map(|rate| (rate, "Omega", Role::FrameRate)),
-        // α where the frame turns with the body (ω̇ in it is α), unless zero.
-        scene
-            .omega_dot
-            .as_ref()
-            .filter(|a| scene.frame_rate.is_none() && a.iter().any(|c| !c.is_zero()))
-            .map(|a| (a, "alpha", Role::AngularAcceleration)),
+        Some((omega, "omega", Role::AngularVelocity, also)),
+        frame_rate
+            .filter(|_| frame_in_omega.is_none())
+            .map(|rate| (rate, "Omega", Role::FrameRate, None)),
+        alpha
+            .filter(|_| !alpha_on_omega)
+            .map(|a| (a, "alpha", Role::AngularAcceleration, None)),
     ];
     let length = OMEGA_LENGTH * body.reach;
-    for (vector, name, role) in rates.into_iter().flatten() {
+    for (vector, name, role, also) in rates.into_iter().flatten() {
         let d = view::unit(canvas.vector(vector, name)?);
-        // Drawn whole (known, or along one axis), along a fixed axis past the shaft.
-        let whole =
-            !holds_any(vector, unknowns) || vector.iter().filter(|c| !c.is_zero()).count() == 1;
-        let from = match (scene.fixed_point, whole) {
+        // Drawn whole along a fixed axis past the shaft.
+        let from = match (scene.fixed_point, drawn_whole(vector, unknowns)) {
             (true, true) if !rays.ends.is_empty() => {
                 scaled(d, rays.claim(d, stretched(canvas, d, length)))
             }
-            // From O, past an arrow already drawn from O along the same line (Ω = −ω₂ j
-            // beside ω's component −ω₂ j).
+            // From O, past an arrow already drawn from O along the same line.
             (true, _) => scaled(d, rays.past_arrows(d)),
             (false, _) => body.centre,
         };
@@ -220,6 +242,7 @@ fn omega(
             stroke: Stroke::MOTION,
             role,
             into_point: false,
+            also,
             body,
         };
         let drew = drawn.vector(canvas, vector, Some(name), unknowns, name)?;
@@ -279,6 +302,7 @@ fn motion_of_g(
             stroke: Stroke::MOTION,
             role,
             into_point: false,
+            also: None,
             body,
         };
         let drew = drawn.vector(canvas, v, name, unknowns, what)?;
@@ -307,6 +331,7 @@ fn loads(
             stroke: Stroke::LOAD,
             role: Role::Force(f.name.clone()),
             into_point: false,
+            also: None,
             body,
         };
         let drew = drawn.vector(canvas, &f.value, Some(&f.name), unknowns, &f.name)?;
@@ -327,8 +352,8 @@ fn loads(
         // A couple holding unknowns is drawn by its components, each along its own axis
         // (M_x along x past the body), as a textbook draws it.
         let parts: Vec<Vector> = match holds_any(c, unknowns) {
-            true => (0..3)
-                .filter(|k| !c[*k].is_zero())
+            true => nonzero(c)
+                .into_iter()
                 .map(|k| {
                     let mut part = Vector::from_element(Expr::zero());
                     part[k] = c[k].clone();
@@ -338,7 +363,18 @@ fn loads(
             false => vec![c.clone()],
         };
         for part in parts {
-            let d = view::unit(canvas.vector(&part, &what)?);
+            let value = canvas.vector(&part, &what)?;
+            let d = view::unit(value);
+            // About the shaft: a curved arrow round it past what is drawn along it, as a
+            // textbook draws the torque that drives a shaft.
+            if shaft_line(&rays.ends).is_some_and(|a| view::dot(a, d).abs() > 1.0 - 1e-9) {
+                let r = TURNING_RADIUS * reach;
+                let centre = scaled(d, rays.claim(d, 2.0 * r) + r);
+                let start = canvas.turning_arrow(centre, d, r, Stroke::LOAD, Role::Couple);
+                let name = whole_label(&part, value, None);
+                canvas.label(label(&name), start, sub(start, centre));
+                continue;
+            }
             let length = COUPLE_LENGTH * reach;
             let drawn = Drawn {
                 from: scaled(d, rays.claim(d, stretched(canvas, d, length))),
@@ -347,6 +383,7 @@ fn loads(
                 stroke: Stroke::LOAD,
                 role: Role::Couple,
                 into_point: false,
+                also: None,
                 body,
             };
             drawn.vector(canvas, &part, None, unknowns, &what)?;
@@ -365,6 +402,7 @@ fn loads(
             },
             role: Role::Impulse,
             into_point: true,
+            also: None,
             body,
         };
         let name = i.name.map(|s| s.name().to_string());
@@ -480,6 +518,14 @@ fn holds_any(v: &Vector, unknowns: &[Symbol]) -> bool {
         .any(|c| c.symbols().iter().any(|s| unknowns.contains(s)))
 }
 
+/// A second vector drawn on a vector's arrow, along the same line: α on ω (labelled ω, α),
+/// or Ω on ω's component equal to it (labelled ω₂, Ω). `component`: the axis of that
+/// component, or none for the whole arrow.
+struct Also {
+    component: Option<usize>,
+    name: &'static str,
+}
+
 /// What a vector's drawing came to: whether it was drawn whole (else by components), and
 /// its arrows, each its direction and the length it was drawn at.
 struct Drew {
@@ -496,17 +542,18 @@ struct Drawn<'b> {
     role: Role,
     /// The head at the point (an impulse striking it), else the tail.
     into_point: bool,
+    /// A second vector the arrow (or one component's arrow) stands for.
+    also: Option<Also>,
     /// The body: a load at a point inside it reaches out past it, and one drawn beside a
     /// line is drawn on the side away from its mass centre.
     body: &'b Extent,
 }
 
 impl Drawn<'_> {
-    /// Draws `v`: one arrow labelled `name` (else its magnitude along an axis, else the
-    /// vector written) when no unknown is in it or it has one component, else an arrow per
-    /// component that is not
-    /// zero, each labelled with the component when it is one symbol (`C_y`), else by the
-    /// name and the axis (`ω_x`). What it drew.
+    /// Draws `v`: one arrow ([`whole_label`]) when no unknown is in it or it has one
+    /// component, else an arrow per component that is not zero, each labelled with the
+    /// component when it is one symbol (`C_y`), else by the name and the axis (`ω_x`); the
+    /// arrow [`Also`] names labelled with it too. What it drew.
     fn vector(
         &self,
         canvas: &mut Canvas,
@@ -516,44 +563,30 @@ impl Drawn<'_> {
         what: &str,
     ) -> Result<Drew, FigureError> {
         let value = canvas.vector(v, what)?;
-        let nonzero: Vec<usize> = (0..3).filter(|k| !v[*k].is_zero()).collect();
-        // One component: the vector's line is known whatever its unknown magnitude.
-        if !holds_any(v, unknowns) || nonzero.len() == 1 {
-            let label = match (name, nonzero.as_slice()) {
-                // A force named by a word (`front`, `weight`) along one axis is labelled by
-                // its magnitude (N_A, m g), as a textbook labels it.
-                (Some(n), [k]) if is_word(n) => magnitude(&v[*k], value[*k]),
-                (Some(n), _) => named(n),
-                (None, [k]) => magnitude(&v[*k], value[*k]),
-                (None, _) => {
-                    let units = crate::algebra::vector::unit_vectors();
-                    let written = (0..3)
-                        .map(|k| &v[k] * &units[k])
-                        .fold(Expr::zero(), |a, b| a + b);
-                    label(&written)
-                }
-            };
+        let also = |component: Option<usize>, first: Expr| match &self.also {
+            Some(a) if a.component == component => label_all(&[first, symbol(a.name)]),
+            _ => label(&first),
+        };
+        if drawn_whole(v, unknowns) {
+            let label = also(None, whole_label(v, value, name));
             return Ok(Drew {
                 whole: true,
                 arrows: self.arrow(canvas, value, label).into_iter().collect(),
             });
         }
         let mut arrows = Vec::new();
-        for k in 0..3 {
-            if v[k].is_zero() {
-                continue;
-            }
+        for k in nonzero(v) {
             let mut d = [0.0; 3];
             d[k] = value[k].signum();
             if d[k] == 0.0 {
                 d[k] = 1.0;
             }
-            let label = match (v[k].as_symbol().or_else(|| (-&v[k]).as_symbol()), name) {
+            let first = match (v[k].as_symbol().or_else(|| (-&v[k]).as_symbol()), name) {
                 (Some(_), _) | (None, None) => magnitude(&v[k], value[k]),
                 // A component that is not one symbol is named by the vector's name.
-                (None, Some(n)) => named(&format!("{n}_{}", ["x", "y", "z"][k])),
+                (None, Some(n)) => symbol(&format!("{n}_{}", ["x", "y", "z"][k])),
             };
-            arrows.extend(self.arrow(canvas, d, label));
+            arrows.extend(self.arrow(canvas, d, also(Some(k), first)));
         }
         Ok(Drew {
             whole: false,
@@ -634,11 +667,47 @@ impl Drawn<'_> {
     }
 }
 
-/// A component's label without its sign where the value is negative (the arrow shows it).
-fn magnitude(c: &Expr, value: f64) -> String {
+/// The label of a vector drawn as one arrow: its name (a name that is a word, `front`,
+/// along one axis: its magnitude, N_A, as a textbook labels it), else its magnitude along an
+/// axis, else the vector written.
+fn whole_label(v: &Vector, value: P3, name: Option<&str>) -> Expr {
+    match (name, nonzero(v).as_slice()) {
+        (Some(n), &[k]) if is_word(n) => magnitude(&v[k], value[k]),
+        (Some(n), _) => symbol(n),
+        (None, &[k]) => magnitude(&v[k], value[k]),
+        (None, _) => {
+            let units = crate::algebra::vector::unit_vectors();
+            (0..3)
+                .map(|k| &v[k] * &units[k])
+                .fold(Expr::zero(), |a, b| a + b)
+        }
+    }
+}
+
+/// A component without its sign where the value is negative (the arrow shows it).
+fn magnitude(c: &Expr, value: f64) -> Expr {
     match value < 0.0 {
-        true => label(&-c),
-        false => label(c),
+        true => -c,
+        false => c.clone(),
+    }
+}
+
+/// The axes of a vector's components that are not zero.
+fn nonzero(v: &Vector) -> Vec<usize> {
+    (0..3).filter(|k| !v[*k].is_zero()).collect()
+}
+
+/// Whether a vector is drawn as one arrow: no unknown in it, or one component (its line is
+/// known whatever its unknown magnitude); else by components.
+fn drawn_whole(v: &Vector, unknowns: &[Symbol]) -> bool {
+    !holds_any(v, unknowns) || nonzero(v).len() == 1
+}
+
+/// The unit vector along the shaft drawn between `ends` (none without a shaft).
+fn shaft_line(ends: &[P3]) -> Option<P3> {
+    match ends {
+        [a, b] if view::norm(sub(*b, *a)) > 0.0 => Some(view::unit(sub(*b, *a))),
+        _ => None,
     }
 }
 
@@ -669,15 +738,28 @@ fn is_word(name: &str) -> bool {
 
 /// A label for a name as written (`C`, `P1`, `omega_x`, `weight`): the symbol of that name.
 fn named(name: &str) -> String {
-    label(&Expr::sym(Symbol::new(name)))
+    label(&symbol(name))
+}
+
+/// The symbol of a name as written.
+fn symbol(name: &str) -> Expr {
+    Expr::sym(Symbol::new(name))
 }
 
 /// A label for `e`: its LaTeX as the mathematics of a label where the markup of titles
 /// reads it, else its text as words (`weight`, `m g sin(θ)`).
 pub(super) fn label(e: &Expr) -> String {
-    let maths = format!("${}$", print::latex(e));
+    label_all(std::slice::from_ref(e))
+}
+
+/// A label for the vectors one arrow stands for, in a list (`ω, α`), as [`label`] writes one.
+fn label_all(es: &[Expr]) -> String {
+    let list = |write: fn(&Expr) -> String, comma: &str| {
+        es.iter().map(write).collect::<Vec<_>>().join(comma)
+    };
+    let maths = format!("${}$", list(print::latex, r",\, "));
     match markup::validate(&maths) {
         Ok(()) => maths,
-        Err(_) => print::text(e).replace('$', ""),
+        Err(_) => list(print::text, ", ").replace('$', ""),
     }
 }

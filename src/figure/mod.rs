@@ -25,9 +25,13 @@ use crate::scene::model::Scene;
 pub use canvas::Canvas;
 pub use view::{P2, P3};
 
-/// The width the marks are scaled to (the labels may stand beyond), and the most height.
+/// The width the marks are scaled to (the labels may stand beyond), and the most height; a
+/// drawing taller than it is wide (a vertical shaft) is given the area of a square
+/// [`MARKS_HEIGHT`] on a side, up to [`MARKS_TALLEST`] high, so it is drawn taller, not
+/// smaller.
 pub const MARKS_WIDTH: f64 = 260.0;
 pub const MARKS_HEIGHT: f64 = 180.0;
+pub const MARKS_TALLEST: f64 = 240.0;
 /// The labels' font size, in figure units.
 pub const FONT_SIZE: f64 = 14.0;
 /// How much a face hides what is behind it: the axes and parts behind a body show faintly.

@@ -265,20 +265,35 @@ fn the_shaft_of_sample_problem_18_4() {
             .iter()
             .any(|m| matches!(m, Mark::Arrow { role, double: true, .. } if *role == r))
     };
-    assert!(
-        roles(Role::Couple) && roles(Role::AngularVelocity),
-        "M and ω, double arrows"
-    );
+    assert!(roles(Role::AngularVelocity), "ω a double arrow");
+    // M drives the shaft: a curved arrow round its line CD, past D, as a textbook draws it.
+    let round_the_shaft = drawn.marks.iter().any(|m| match m {
+        Mark::Arrow {
+            role: Role::Couple,
+            from,
+            via,
+            to,
+            double: false,
+            ..
+        } if via.len() > 8 => {
+            let points: Vec<P2> = [*from, *to].into_iter().chain(via.clone()).collect();
+            let centre = points
+                .iter()
+                .fold(P2::new(0.0, 0.0), |s, q| s.plus(*q))
+                .times(1.0 / points.len() as f64);
+            let radius = points
+                .iter()
+                .map(|q| q.minus(centre).length())
+                .fold(0.0, f64::max);
+            let off = centre.minus(c);
+            let across = (off.x * cd.y - off.y * cd.x).abs() / cd.length();
+            across < radius && along(centre) > 1.0
+        }
+        _ => false,
+    });
+    assert!(round_the_shaft, "M a curved arrow round x past D");
     for label in [
-        "$C$",
-        "$D$",
-        "$M$",
-        r"$\omega$",
-        "$C_y$",
-        "$C_z$",
-        "$D_y$",
-        "$D_z$",
-        "$c$",
+        "$C$", "$D$", "$M$", "$C_y$", "$C_z$", "$D_y$", "$D_z$", "$c$",
     ] {
         assert!(
             drawn.labels.iter().any(|l| l.markup == label),
@@ -534,39 +549,57 @@ fn the_figure_command_writes_svg_and_tikz() {
     assert!(tikz.contains(r"{$\dot{\psi}$}"), "{tikz}");
 }
 
-/// SP 18.2: the frame turns at Ω = −ω₂ j, not with the disk (ω = ω₁ i − ω₂ j): both drawn,
-/// Ω along −y on the ray from the fixed point O (past ω's component along it).
+/// The frame's Ω where it differs from ω: the cone's Ω = ω₁ j (ω's component along y holds
+/// p too) a double arrow of its own on the ray from the fixed point O along y; SP 18.2's
+/// Ω = −ω₂ j, which is ω's component along −y, on that component's arrow, labelled with both;
+/// where the frame turns with the body (SP 18.4), no Ω.
 #[test]
 fn the_frame_rate_is_drawn_where_it_differs_from_omega() {
-    let scene = example("sp18_2_rolling_disk");
-    let drawn = figure(&scene).unwrap();
-    let minus_y = drawn.at([0.0, -1.0, 0.0]);
-    let omega_frame = drawn.marks.iter().any(|m| match m {
-        Mark::Arrow {
-            role: Role::FrameRate,
-            from,
-            to,
-            double: true,
-            ..
-        } => {
-            let along = to.minus(*from);
-            let on_the_ray = (from.x * minus_y.y - from.y * minus_y.x).abs() < 1e-6
-                && from.x * minus_y.x + from.y * minus_y.y >= 0.0;
-            on_the_ray
-                && (along.x * minus_y.y - along.y * minus_y.x).abs() < 1e-6 * along.length()
-                && along.x * minus_y.x + along.y * minus_y.y > 0.0
-        }
-        _ => false,
-    });
-    assert!(omega_frame, "Ω on the ray from O along −y");
-    assert!(drawn.labels.iter().any(|l| l.markup == r"$\Omega$"));
-    // And where the frame turns with the body (SP 18.4), no Ω.
-    let (_, shaft) = examples()
-        .into_iter()
-        .find(|(n, _)| n == "sp18_4_shaft_reactions")
-        .unwrap();
-    let drawn = figure(&shaft).unwrap();
-    assert!(!drawn.marks.iter().any(|m| matches!(
+    let frame_rate_along = |drawn: &Figure, axis: [f64; 3]| {
+        let o = drawn.at([0.0; 3]);
+        let e = drawn.at(axis).minus(o);
+        drawn.marks.iter().any(|m| match m {
+            Mark::Arrow {
+                role: Role::FrameRate,
+                from,
+                to,
+                double: true,
+                ..
+            } => {
+                let (tail, along) = (from.minus(o), to.minus(*from));
+                // On the ray, or beside it where it is an axis.
+                let on_the_ray = (tail.x * e.y - tail.y * e.x).abs()
+                    <= (BESIDE + 1e-6) * e.length()
+                    && tail.x * e.x + tail.y * e.y >= 0.0;
+                on_the_ray
+                    && (along.x * e.y - along.y * e.x).abs() < 1e-6 * along.length() * e.length()
+                    && along.x * e.x + along.y * e.y > 0.0
+            }
+            _ => false,
+        })
+    };
+    let written = |s: &str| kinetics::print::latex(&Expr::sym(Symbol::new(s)));
+    let cone = figure(&example("cone_rolling_about_apex")).unwrap();
+    assert!(
+        frame_rate_along(&cone, [0.0, 1.0, 0.0]),
+        "the cone's Ω along y"
+    );
+    assert!(cone
+        .labels
+        .iter()
+        .any(|l| l.markup == format!("${}$", written("Omega"))));
+    let disk = figure(&example("sp18_2_rolling_disk")).unwrap();
+    assert!(
+        !frame_rate_along(&disk, [0.0, -1.0, 0.0]),
+        "no second arrow"
+    );
+    let both = disk
+        .labels
+        .iter()
+        .any(|l| l.markup.contains(&written("omega_2")) && l.markup.contains(&written("Omega")));
+    assert!(both, "ω₂'s arrow labelled with Ω");
+    let shaft = figure(&example("sp18_4_shaft_reactions")).unwrap();
+    assert!(!shaft.marks.iter().any(|m| matches!(
         m,
         Mark::Arrow {
             role: Role::FrameRate,
@@ -686,25 +719,45 @@ fn the_motion_before_an_impact_is_drawn() {
     }
 }
 
-/// The motion the statement gives is drawn: SP 18.4's α (omegadot = alpha*i) a double arrow
-/// along the shaft x, and the frame of three rods' v̄ labelled at G.
+/// The motion the statement gives is drawn: SP 18.4's α (omegadot = alpha*i, the way ω
+/// turns) on ω's double arrow along the shaft x, labelled with both; slowing down (α = −α i)
+/// a double arrow of its own along −x; and the frame of three rods' v̄ labelled at G.
 #[test]
 fn the_stated_alpha_and_vbar_are_drawn() {
     let find = |name: &str| figure(&example(name)).unwrap();
-    let written = |s: &str| format!("${}$", kinetics::print::latex(&Expr::sym(Symbol::new(s))));
-    let shaft = find("sp18_4_shaft_reactions");
+    let written = |s: &str| kinetics::print::latex(&Expr::sym(Symbol::new(s)));
+    let double_along = |drawn: &Figure, role: Role, axis: P2| {
+        drawn.marks.iter().any(|m| {
+            matches!(m, Mark::Arrow { role: r, from, to, double: true, .. }
+            if *r == role && {
+                let d = to.minus(*from);
+                (d.x * axis.y - d.y * axis.x).abs() < 1e-6 * d.length() * axis.length()
+                    && d.x * axis.x + d.y * axis.y > 0.0
+            })
+        })
+    };
+    let scene = example("sp18_4_shaft_reactions");
+    let shaft = figure(&scene).unwrap();
     let o = shaft.at([0.0; 3]);
     let x = shaft.at([1.0, 0.0, 0.0]).minus(o);
-    let alpha_along_x = shaft.marks.iter().any(|m| {
-        matches!(m, Mark::Arrow { role: Role::AngularAcceleration, from, to, double: true, .. }
-        if {
-            let d = to.minus(*from);
-            (d.x * x.y - d.y * x.x).abs() < 1e-6 * d.length() * x.length()
-                && d.x * x.x + d.y * x.y > 0.0
-        })
-    });
-    assert!(alpha_along_x, "α a double arrow along x");
-    assert!(shaft.labels.iter().any(|l| l.markup == written("alpha")));
+    assert!(double_along(&shaft, Role::AngularVelocity, x), "ω along x");
+    let both = shaft
+        .labels
+        .iter()
+        .any(|l| l.markup.contains(&written("omega")) && l.markup.contains(&written("alpha")));
+    assert!(both, "ω's arrow labelled with α");
+    let mut slowing = scene.clone();
+    slowing.omega_dot = scene.omega_dot.as_ref().map(|a| a.map(|c| -c));
+    let slowing = figure(&slowing).unwrap();
+    let minus_x = x.times(-1.0);
+    assert!(
+        double_along(&slowing, Role::AngularAcceleration, minus_x),
+        "α along −x"
+    );
+    assert!(slowing
+        .labels
+        .iter()
+        .any(|l| l.markup == format!("${}$", written("alpha"))));
     let frame = find("long_relations");
     let velocity = frame.marks.iter().any(|m| {
         matches!(
@@ -716,7 +769,10 @@ fn the_stated_alpha_and_vbar_are_drawn() {
         )
     });
     assert!(velocity, "v̄ drawn");
-    assert!(frame.labels.iter().any(|l| l.markup == written("vbar")));
+    assert!(frame
+        .labels
+        .iter()
+        .any(|l| l.markup == format!("${}$", written("vbar"))));
 }
 
 /// A box's three sides are each written by one of its edges: `prism(b, c, d)` of the pushed

@@ -38,19 +38,30 @@ impl Solid {
     /// Whether `p` is within the part's box in its own axes (a flat part's plane within
     /// `depth`), and the part goes on past it both ways along `d` by `depth` or more.
     fn holds(&self, p: P3, d: P3, depth: f64) -> bool {
-        let span = |axis: P3, at: P3| {
-            self.samples
-                .iter()
-                .map(|s| view::dot(sub(*s, at), axis))
-                .fold((0.0f64, 0.0f64), |(lo, hi), x| (lo.min(x), hi.max(x)))
-        };
-        let within = self.axes.iter().all(|a| {
-            let (lo, hi) = span(*a, self.centre);
+        let (behind, ahead) = self.span(d, p);
+        self.within(p, depth) && ahead > depth && -behind > depth
+    }
+
+    /// Whether `p` is within the part's box in its own axes, widened by `margin` (narrowed
+    /// where it is negative, except across a flat part, which has no inside there).
+    fn within(&self, p: P3, margin: f64) -> bool {
+        self.axes.iter().all(|a| {
+            let (lo, hi) = self.span(*a, self.centre);
+            let margin = match hi - lo > -2.0 * margin {
+                true => margin,
+                false => 0.0,
+            };
             let x = view::dot(sub(p, self.centre), *a);
-            x >= lo - depth && x <= hi + depth
-        });
-        let (behind, ahead) = span(d, p);
-        within && ahead > depth && -behind > depth
+            x >= lo - margin && x <= hi + margin
+        })
+    }
+
+    /// How far the part's outline goes back and on along `axis` from `at`.
+    fn span(&self, axis: P3, at: P3) -> (f64, f64) {
+        self.samples
+            .iter()
+            .map(|s| view::dot(sub(*s, at), axis))
+            .fold((0.0f64, 0.0f64), |(lo, hi), x| (lo.min(x), hi.max(x)))
     }
 }
 
@@ -68,6 +79,34 @@ impl Extent {
     /// `depth` or more: a load there (a weight at G) is inside the body, not on its surface.
     pub fn surrounds(&self, p: P3, d: P3, depth: f64) -> bool {
         self.solids.iter().any(|solid| solid.holds(p, d, depth))
+    }
+
+    /// Whether the point `p`, on a solid part's surface, is out of sight behind it: a step
+    /// toward the eye from it goes into the part (a box's far corner, a point on a face
+    /// turned from the eye).
+    pub fn hides(&self, canvas: &Canvas, p: P3, depth: f64) -> bool {
+        self.goes_into(p, canvas.view().toward_eye(), depth)
+    }
+
+    /// Whether a step of `depth` from the point `p` on a solid part's surface along the unit
+    /// vector `d` goes into the part (a push on a face, a line of sight into it).
+    pub fn goes_into(&self, p: P3, d: P3, depth: f64) -> bool {
+        let stepped = add(p, scaled(d, depth));
+        self.solids
+            .iter()
+            .any(|s| !s.within(p, -depth) && s.within(stepped, 0.0))
+    }
+
+    /// Whether the body, as drawn, covers the point `p` (it projects inside the hull of the
+    /// body's outline).
+    pub fn covers(&self, canvas: &Canvas, p: P3) -> bool {
+        let at = canvas.project(p);
+        let hull = convex_hull(self.samples.iter().map(|s| canvas.project(*s)).collect());
+        hull.len() >= 3
+            && hull
+                .iter()
+                .zip(hull.iter().cycle().skip(1))
+                .all(|(a, b)| (b.x - a.x) * (at.y - a.y) - (b.y - a.y) * (at.x - a.x) >= 0.0)
     }
 
     /// How far, as drawn, the body goes past the point `p` along the unit vector `d` (0 if

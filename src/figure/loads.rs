@@ -16,7 +16,7 @@
 use super::body::{circle, Extent};
 use super::canvas::{Canvas, Layer};
 use super::view::{self, add, scaled, sub, P3};
-use super::{FigureError, Mark, Role, Stroke};
+use super::{Dashes, FigureError, Mark, Role, Stroke};
 use crate::algebra::{Expr, Symbol, Vector};
 use crate::print::{self, markup};
 use crate::scene::model::Scene;
@@ -28,6 +28,8 @@ const FORCE_LENGTH: f64 = 0.45;
 /// a point is for that.
 const PAST_BODY: f64 = 0.2;
 const INSIDE: f64 = 0.05;
+/// The most steps of a quarter of [`PAST_BODY`] a load at a hidden point is lengthened by.
+const LONGEST_STEPS: u32 = 60;
 const COUPLE_LENGTH: f64 = 0.4;
 /// The gap before a vector drawn past the body along a ray from O.
 const RAY_GAP: f64 = 0.1;
@@ -602,12 +604,15 @@ impl Drawn<'_> {
             return None;
         }
         let load = matches!(self.role, Role::Force(_) | Role::Impulse);
-        let length = self.length_from(canvas, u, self.into_point, load);
-        let mut into_point = self.into_point;
+        // A load pushing on a face (a floor's normal force) comes into its point from
+        // outside, as a textbook draws it, not across the body.
+        let pushes = load && self.body.goes_into(self.from, u, INSIDE * self.body.reach);
+        let mut into_point = self.into_point || pushes;
+        let length = self.length_from(canvas, u, into_point, load);
         let (mut from, mut to, mut free) = self.ends(canvas, u, length, into_point);
         // Nothing is drawn along an axis, a rod or the shaft, but beside it; a load along
         // such a line toward the body (a bearing's thrust along the shaft) comes into its
-        // point from outside, as a textbook draws it, not across the body.
+        // point from outside too.
         let mut side = canvas.beside(from, to, self.body.centre);
         let toward_body = view::dot(u, sub(self.body.centre, self.from)) > 0.0;
         if load && !into_point && toward_body && side.length() > 0.0 {
@@ -619,12 +624,20 @@ impl Drawn<'_> {
             true => scaled(u, -1.0),
             false => u,
         };
+        // At a point out of sight behind the body, dashed, as its hidden edges are.
+        let stroke = match self.body.hides(canvas, self.from, INSIDE * self.body.reach) {
+            true => Stroke {
+                dashes: Dashes::Hidden,
+                ..self.stroke
+            },
+            false => self.stroke,
+        };
         canvas.arrow_beside(
             Layer::Front,
             from,
             to,
             self.double,
-            self.stroke,
+            stroke,
             self.role.clone(),
             side,
         );
@@ -638,21 +651,32 @@ impl Drawn<'_> {
     }
 
     /// The length of an arrow along the unit `u` from the point (into it when `into_point`):
-    /// a load at a point inside the body (the body on both sides of it, as at G) reaches out
-    /// past it, so its free end and its label stand clear of the body.
+    /// a load at a point inside the body (the body on both sides of it, as at G) or out of
+    /// sight behind it (a box's far corner) reaches out past it, so its free end and its
+    /// label stand clear of the body.
     fn length_from(&self, canvas: &Canvas, u: P3, into_point: bool, load: bool) -> f64 {
         let outward = match into_point {
             true => scaled(u, -1.0),
             false => u,
         };
-        let inside = self
-            .body
-            .surrounds(self.from, outward, INSIDE * self.body.reach);
-        match load && inside {
-            true => self
-                .length
-                .max(self.body.beyond(canvas, self.from, outward) + PAST_BODY * self.body.reach),
-            false => self.length,
+        let (reach, depth) = (self.body.reach, INSIDE * self.body.reach);
+        if !load {
+            self.length
+        } else if self.body.surrounds(self.from, outward, depth) {
+            let past = self.body.beyond(canvas, self.from, outward) + PAST_BODY * reach;
+            self.length.max(past)
+        } else if self.body.hides(canvas, self.from, depth) {
+            // Out from behind the body: as long as it takes its free end to clear it.
+            let step = PAST_BODY * reach / 4.0;
+            let clear = |l: &f64| {
+                let free = add(self.from, scaled(outward, stretched(canvas, outward, *l)));
+                !self.body.covers(canvas, free)
+            };
+            let mut lengths = (0..=LONGEST_STEPS).map(|k| self.length + step * f64::from(k));
+            let longest = self.length + step * f64::from(LONGEST_STEPS);
+            lengths.find(clear).unwrap_or(longest) + step
+        } else {
+            self.length
         }
     }
 

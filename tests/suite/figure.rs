@@ -8,7 +8,7 @@ use crate::common::binary::{kinetics, scene};
 use crate::common::chromium::chromium;
 use crate::common::examples::example_scenes;
 use kinetics::figure::sizes::Sizes;
-use kinetics::figure::{figure, Figure, Label, Mark, Role, Stroke, BESIDE, P2};
+use kinetics::figure::{figure, Dashes, Figure, Label, Mark, Role, Stroke, BESIDE, P2};
 use kinetics::{Expr, Scene, Symbol};
 
 /// Every example scene, parsed, with its file stem.
@@ -788,4 +788,65 @@ fn a_box_has_its_three_sides_labelled() {
             "side {side} labelled"
         );
     }
+}
+
+/// Whether `p` lies outside the hull of `outline`: some direction takes it past them all.
+fn outside_hull(p: P2, outline: &[P2]) -> bool {
+    (0..360).any(|deg| {
+        let (s, c) = f64::from(deg).to_radians().sin_cos();
+        let reach = |q: P2| q.x * c + q.y * s;
+        outline.iter().all(|q| reach(p) > reach(*q))
+    })
+}
+
+/// A load pushing on a face comes into its point from outside, as a textbook draws a floor's
+/// normal force (the sliding box's N_A: its head at its point, its tail below); one at a point
+/// out of sight behind the body is dashed, as the hidden edges there are, and starts clear of
+/// the body as drawn (the free box's blow at its far corner, not from G).
+#[test]
+fn pushes_come_into_their_points_and_hidden_loads_are_dashed() {
+    let scene = example("sliding_box");
+    let drawn = figure(&scene).unwrap();
+    let front = scene.forces.iter().find(|f| f.name == "front").unwrap();
+    let at = drawn_at(&drawn, &scene, &front.point);
+    let into = drawn.marks.iter().any(|m| {
+        matches!(m, Mark::Arrow { role: Role::Force(n), from, to, stroke, .. }
+            if n == "front" && near(*to, at) && from.y < to.y && stroke.dashes == Dashes::Solid)
+    });
+    assert!(into, "N_A from below into its point, solid");
+    let scene = example("free_box_struck_at_corner");
+    let drawn = figure(&scene).unwrap();
+    let corner = drawn_at(&drawn, &scene, &scene.impulses[0].point);
+    let outline: Vec<P2> = drawn
+        .marks
+        .iter()
+        .filter_map(|m| match m {
+            Mark::Path { points, stroke, .. } if *stroke == Stroke::OUTLINE => Some(points.clone()),
+            _ => None,
+        })
+        .flatten()
+        .collect();
+    let blow = drawn.marks.iter().find_map(|m| match m {
+        Mark::Arrow {
+            role: Role::Impulse,
+            from,
+            to,
+            stroke,
+            ..
+        } => Some((*from, *to, *stroke)),
+        _ => None,
+    });
+    let (from, to, stroke) = blow.expect("the blow drawn");
+    // Into the corner, or beside it where its line is drawn along an axis.
+    let off = to.minus(corner).length();
+    assert!(off < BESIDE + 1e-6, "into the corner, {off} off");
+    assert_eq!(
+        stroke.dashes,
+        Dashes::Hidden,
+        "dashed: the corner is out of sight"
+    );
+    assert!(
+        outside_hull(from, &outline),
+        "from outside the box as drawn"
+    );
 }

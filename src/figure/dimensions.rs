@@ -3,7 +3,8 @@
 //! them), a chain of dimension lines below the body parallel to the shaft, each span between
 //! neighbouring stations labelled with its length as the scene writes it (`L/4`, `L/4`,
 //! `L/2`). Drawn only when every span is written in the scene's symbols: a span known only as
-//! a number has no name to show.
+//! a number has no name to show. And each point mass's radius from the shaft (an unbalance's
+//! e₁), a line from the axis out to it labelled with its length.
 
 use super::body::Extent;
 use super::canvas::{Canvas, Layer};
@@ -114,4 +115,39 @@ fn fixed_across(
         }
         _ => false,
     })
+}
+
+/// Each point mass off the shaft whose unit axis is `a` (along one of the frame's axes): a
+/// dimension line from the axis out to it, labelled with its radius as the scene writes it,
+/// the symbol of its position whose square is the radius squared (e₁ at (e₁, 0, z₁), e₂ at
+/// (−3/5 e₂, 4/5 e₂, z₂)); none where no symbol is.
+pub fn radii(canvas: &mut Canvas, scene: &Scene, body: &Extent, a: P3) -> Result<(), FigureError> {
+    let Some(k) = (0..3).find(|k| a[*k].abs() > 1.0 - 1e-12) else {
+        return Ok(());
+    };
+    for (n, part) in scene.parts.iter().enumerate() {
+        if part.shape != Shape::PointMass {
+            continue;
+        }
+        let p = canvas.vector(&part.position, &format!("body {}", n + 1))?;
+        let foot = scaled(a, view::dot(p, a));
+        if view::norm(sub(p, foot)) < 1e-9 * body.reach {
+            continue;
+        }
+        let at = &part.position;
+        let square = (0..3)
+            .filter(|j| *j != k)
+            .map(|j| &at[j] * &at[j])
+            .fold(Expr::zero(), |s, t| s + t);
+        let radius = at
+            .iter()
+            .flat_map(|c| c.symbols())
+            .map(Expr::sym)
+            .find(|e| e * e == square);
+        if let Some(radius) = radius {
+            canvas.path(Layer::Behind, &[foot, p], false, Stroke::DIMENSION);
+            canvas.label(super::loads::label(&radius), scaled(add(foot, p), 0.5), a);
+        }
+    }
+    Ok(())
 }

@@ -76,6 +76,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
     // The shaft's dimensions after the loads, so the loads' labels are placed first.
     if let Some(along) = shaft_line(&rays.ends) {
         super::dimensions::along_shaft(canvas, scene, body, along)?;
+        super::dimensions::radii(canvas, scene, body, along)?;
     }
     axes(canvas, scene, body, &rays);
     Ok(())

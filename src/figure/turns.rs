@@ -12,11 +12,16 @@ use super::body::Extent;
 use super::canvas::{Canvas, Layer};
 use super::view::{self, add, cross, dot, scaled, square_to, P3};
 use super::{FigureError, Stroke};
+use crate::mechanics::shapes::Shape;
 use crate::scene::model::Scene;
 
-/// The arc's radius and the lines' length, in proportion to the body's reach.
+/// The arc's radius, in proportion to the body's reach: [`ARC_RADIUS`], or for a small angle
+/// as much as gives an arc [`SHORTEST_ARC`] long, up to [`LONGEST_RADIUS`]; the lines run on
+/// past it by a share of it.
 const ARC_RADIUS: f64 = 0.55;
-const LINE_LENGTH: f64 = 0.8;
+const SHORTEST_ARC: f64 = 0.3;
+const LONGEST_RADIUS: f64 = 0.9;
+const LINE_PAST_ARC: f64 = 1.45;
 /// Points on an arc.
 const ARC_POINTS: usize = 24;
 
@@ -31,18 +36,32 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
             }
             let a = view::unit(canvas.vector(&turn.axis, &what)?);
             let theta = canvas.value(&turn.angle, &what)?;
-            // The part's own x' as it stood, else y' when the turn is about x'.
-            let [own_x, own_y, _] = canvas.columns(&turn.from, &what)?;
-            let before = match view::norm(square_to(own_x, a)) > 0.5 {
-                true => own_x,
-                false => own_y,
+            // A rod's own x' (its length) as it stood, unless the turn is about it; another
+            // part's own axis across the turn drawn longest (a disk's diameter, not its axis
+            // seen end-on along a shaft toward the reader).
+            let own = canvas.columns(&turn.from, &what)?;
+            let across = |v: &P3| view::norm(square_to(*v, a)) > 0.5;
+            let drawn = |v: &P3| {
+                let d = square_to(*v, a);
+                canvas.project(d).minus(canvas.project([0.0; 3])).length()
+            };
+            let before = match (&part.shape, across(&own[0])) {
+                (Shape::SlenderRod { .. }, true) => own[0],
+                _ => own
+                    .iter()
+                    .filter(|v| across(v))
+                    .copied()
+                    .max_by(|u, v| drawn(u).total_cmp(&drawn(v)))
+                    .unwrap_or(own[1]),
             };
             let from = view::unit(square_to(before, a));
-            mark(canvas, centre, from, a, theta, body.reach);
+            // A small angle on a larger arc, so it is seen.
+            let radius = (SHORTEST_ARC / theta.abs().max(1e-9)).clamp(ARC_RADIUS, LONGEST_RADIUS);
+            mark(canvas, centre, from, a, theta, radius * body.reach);
             let middle = turned(from, a, theta / 2.0);
             canvas.label(
                 super::loads::label(&turn.angle),
-                add(centre, scaled(middle, ARC_RADIUS * body.reach)),
+                add(centre, scaled(middle, radius * body.reach)),
                 middle,
             );
         }
@@ -50,17 +69,17 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
     Ok(())
 }
 
-/// The lines from `centre` along `from` and along it turned through `theta` about `a`, and
-/// the arc between them.
-fn mark(canvas: &mut Canvas, centre: P3, from: P3, a: P3, theta: f64, reach: f64) {
+/// The lines from `centre` along `from` and along it turned through `theta` about `a`, past
+/// the arc of `radius` between them, and the arc.
+fn mark(canvas: &mut Canvas, centre: P3, from: P3, a: P3, theta: f64, radius: f64) {
     for d in [from, turned(from, a, theta)] {
-        let tip = add(centre, scaled(d, LINE_LENGTH * reach));
+        let tip = add(centre, scaled(d, radius * LINE_PAST_ARC));
         canvas.path(Layer::Front, &[centre, tip], false, Stroke::CENTRE_LINE);
     }
     let arc: Vec<P3> = (0..=ARC_POINTS)
         .map(|s| {
             let t = theta * s as f64 / ARC_POINTS as f64;
-            add(centre, scaled(turned(from, a, t), ARC_RADIUS * reach))
+            add(centre, scaled(turned(from, a, t), radius))
         })
         .collect();
     canvas.path(Layer::Front, &arc, false, Stroke::MOTION);

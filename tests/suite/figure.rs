@@ -641,7 +641,8 @@ fn the_numbers_page_has_the_figure_too() {
 }
 
 /// A tilt the scene names is marked: the disk on its shaft turned β about z shows an arc from
-/// the shaft's line x to the disk's axis (cos β, sin β, 0), both through G, labelled β.
+/// the line y to the disk's diameter (−sin β, cos β, 0), both through G, labelled β (its
+/// axis, along the shaft toward the reader, would be seen nearly end-on).
 #[test]
 fn the_tilt_of_the_disk_on_its_shaft_is_marked_with_beta() {
     let scene = example("disk_tilted_on_shaft");
@@ -656,13 +657,13 @@ fn the_tilt_of_the_disk_on_its_shaft_is_marked_with_beta() {
         (u.x * v.y - u.y * v.x).abs() < 1e-6 * u.length() * v.length()
             && u.x * v.x + u.y * v.y > 0.0
     };
-    let axis = [beta.cos(), beta.sin(), 0.0];
+    let diameter = [-beta.sin(), beta.cos(), 0.0];
     let arc = drawn.marks.iter().any(|m| {
         matches!(m, Mark::Path { points, .. } if points.len() > 10
-            && on_ray(points[0], [1.0, 0.0, 0.0])
-            && on_ray(*points.last().unwrap(), axis))
+            && on_ray(points[0], [0.0, 1.0, 0.0])
+            && on_ray(*points.last().unwrap(), diameter))
     });
-    assert!(arc, "an arc from x to the disk's axis");
+    assert!(arc, "an arc from y to the disk's diameter");
     let label = format!(
         "${}$",
         kinetics::print::latex(&Expr::sym(Symbol::new("beta")))
@@ -849,4 +850,34 @@ fn pushes_come_into_their_points_and_hidden_loads_are_dashed() {
         outside_hull(from, &outline),
         "from outside the box as drawn"
     );
+}
+
+/// An unbalance's radius is dimensioned: the rotor's m₁ at (e₁, 0, z₁) and m₂ at
+/// (−3/5 e₂, 4/5 e₂, z₂) each have a dimension line from the shaft's axis out to the mass,
+/// labelled e₁ and e₂.
+#[test]
+fn the_unbalance_radii_are_dimensioned() {
+    let scene = example("rotor_two_unbalance_masses");
+    let drawn = figure(&scene).unwrap();
+    let written = |s: &str| format!("${}$", kinetics::print::latex(&Expr::sym(Symbol::new(s))));
+    for (part, radius) in scene.parts.iter().zip(["e1", "e2"]) {
+        let mass = drawn_at(&drawn, &scene, &part.position);
+        let mut foot = part.position.clone();
+        foot[0] = Expr::zero();
+        foot[1] = Expr::zero();
+        let foot = drawn_at(&drawn, &scene, &foot);
+        let line = drawn.marks.iter().any(|m| match m {
+            Mark::Path { points, stroke, .. } if *stroke == Stroke::DIMENSION => {
+                points.len() == 2
+                    && (near(points[0], foot) && near(points[1], mass)
+                        || near(points[1], foot) && near(points[0], mass))
+            }
+            _ => false,
+        });
+        assert!(line, "{radius}: a line from the axis to the mass");
+        assert!(
+            drawn.labels.iter().any(|l| l.markup == written(radius)),
+            "{radius} labelled"
+        );
+    }
 }

@@ -88,9 +88,9 @@ struct Rays<'b> {
     body: &'b Extent,
     ends: Vec<P3>,
     claimed: Vec<(P3, f64)>,
-    /// Arrows drawn from O itself (ω about a fixed point, a reaction at O), each direction
-    /// and length.
-    arrows: Vec<(P3, f64)>,
+    /// Arrows drawn from O or G themselves (ω about a fixed point, a reaction at O, ω and v̄
+    /// of a free body), each its point, direction and length.
+    arrows: Vec<(P3, P3, f64)>,
 }
 
 impl Rays<'_> {
@@ -102,24 +102,42 @@ impl Rays<'_> {
             .iter()
             .map(|p| view::dot(*p, d))
             .fold(0.0, f64::max);
+        let from_o = self
+            .arrows
+            .iter()
+            .filter(|(at, _, _)| *at == [0.0; 3])
+            .map(|(_, c, end)| (*c, *end));
         let claims = self
             .claimed
             .iter()
-            .chain(&self.arrows)
+            .copied()
+            .chain(from_o)
             .filter(|(c, _)| view::dot(*c, d) > 0.99)
-            .map(|(_, end)| *end)
+            .map(|(_, end)| end)
             .fold(0.0, f64::max);
         self.body.along(d).max(shaft).max(claims)
     }
 
-    /// Where, from O along `d`, a vector starts clear of the arrows already drawn from O
-    /// along it (at O when there are none).
-    fn past_arrows(&self, d: P3) -> f64 {
-        self.arrows
+    /// Where, from the point `at` along `d`, a vector starts clear of the arrows already
+    /// drawn from it along that line (at the point when there are none).
+    fn past_arrows(&self, at: P3, d: P3) -> P3 {
+        let start = self
+            .arrows
             .iter()
-            .filter(|(a, _)| view::dot(*a, d) > 0.99)
-            .map(|(_, length)| length + RAY_GAP * self.body.reach)
-            .fold(0.0, f64::max)
+            .filter(|(p, a, _)| *p == at && view::dot(*a, d) > 0.99)
+            .map(|(_, _, length)| length + RAY_GAP * self.body.reach)
+            .fold(0.0, f64::max);
+        add(at, scaled(d, start))
+    }
+
+    /// Notes the arrows drawn along their lines out of the point `at`, starting at `from`.
+    fn drawn_from(&mut self, at: P3, from: P3, drew: &Drew) {
+        let offset = view::norm(sub(from, at));
+        self.arrows.extend(
+            drew.arrows
+                .iter()
+                .map(|(d, length)| (at, *d, offset + *length)),
+        );
     }
 
     /// The start, from O along `d`, of a vector `length` long drawn past everything there.
@@ -234,9 +252,9 @@ fn omega(
             (true, true) if !rays.ends.is_empty() => {
                 scaled(d, rays.claim(d, stretched(canvas, d, length)))
             }
-            // From O, past an arrow already drawn from O along the same line.
-            (true, _) => scaled(d, rays.past_arrows(d)),
-            (false, _) => body.centre,
+            // From O (else G), past an arrow already drawn from it along the same line.
+            (true, _) => rays.past_arrows([0.0; 3], d),
+            (false, _) => rays.past_arrows(body.centre, d),
         };
         let drawn = Drawn {
             from,
@@ -249,9 +267,11 @@ fn omega(
             body,
         };
         let drew = drawn.vector(canvas, vector, Some(name), unknowns, name)?;
-        if from == [0.0; 3] {
-            rays.arrows.extend(drew.arrows);
-        }
+        let origin = match scene.fixed_point {
+            true => [0.0; 3],
+            false => body.centre,
+        };
+        rays.drawn_from(origin, from, &drew);
     }
     Ok(())
 }
@@ -286,20 +306,16 @@ fn motion_of_g(
             "the angular velocity before",
         ),
     ];
-    let g_at_o = view::norm(body.centre) <= 1e-12 * body.reach;
     for (vector, name, double, role, what) in motions {
         let Some(v) = vector.filter(|v| v.iter().any(|c| !c.is_zero())) else {
             continue;
         };
         let d = view::unit(canvas.vector(v, what)?);
         let length = OMEGA_LENGTH * body.reach;
-        // From G; at O, past what is drawn from O along the same line (ω after the blow).
-        let from = match g_at_o {
-            false => body.centre,
-            true => scaled(d, rays.past_arrows(d)),
-        };
+        // From G, past what is drawn from it along the same line (ω, v̄ along it).
+        let start = rays.past_arrows(body.centre, d);
         let drawn = Drawn {
-            from,
+            from: start,
             length,
             double,
             stroke: Stroke::MOTION,
@@ -309,9 +325,7 @@ fn motion_of_g(
             body,
         };
         let drew = drawn.vector(canvas, v, name, unknowns, what)?;
-        if g_at_o {
-            rays.arrows.extend(drew.arrows);
-        }
+        rays.drawn_from(body.centre, start, &drew);
     }
     Ok(())
 }
@@ -340,7 +354,7 @@ fn loads(
         let drew = drawn.vector(canvas, &f.value, Some(&f.name), unknowns, &f.name)?;
         // Drawn from O, a force's arrows push what is drawn along their rays past them.
         if at == [0.0; 3] {
-            rays.arrows.extend(drew.arrows.iter().copied());
+            rays.drawn_from(at, at, &drew);
         }
         // Drawn by components (C_y, C_z), a force is named at its point (the bearing C),
         // unless the name is a word (`pin`) or the point has its letter already (O, G) and

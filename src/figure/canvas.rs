@@ -3,7 +3,7 @@
 //! axes), the body's parts far to near, in front (loads and motion) — and the labels asked
 //! for, placed when the scale is known.
 
-use super::labels::{self, Wanted};
+use super::labels::{self, Names, Wanted};
 use super::sizes::Sizes;
 use super::view::{self, View, P2, P3};
 use super::{
@@ -308,28 +308,40 @@ impl<'s> Canvas<'s> {
     /// A label for the scene's point `anchor`, wanted on the side `direction` (the scene's
     /// frame) points to.
     pub fn label(&mut self, markup: String, anchor: P3, direction: P3) {
-        self.want(markup, anchor, direction, false, P2::new(0.0, 0.0));
+        self.want(markup, anchor, direction, Names::Beside, P2::new(0.0, 0.0));
     }
 
     /// A label for an arrow drawn beside a line ([`Canvas::arrow_beside`]), shifted with it.
     pub fn label_beside(&mut self, markup: String, anchor: P3, direction: P3, side: P2) {
-        self.want(markup, anchor, direction, false, side.times(BESIDE));
+        self.want(markup, anchor, direction, Names::Beside, side.times(BESIDE));
     }
 
     /// A label of something on the body (G, a named point, a part's size), which may stand
     /// on the body's faces.
     pub fn label_on_body(&mut self, markup: String, anchor: P3, direction: P3) {
-        self.want(markup, anchor, direction, true, P2::new(0.0, 0.0));
+        self.want(markup, anchor, direction, Names::OnBody, P2::new(0.0, 0.0));
     }
 
-    fn want(&mut self, markup: String, anchor: P3, direction: P3, on_body: bool, shift: P2) {
+    /// A dimension's label, at the middle of its line `anchor` if that is free, else beside
+    /// it on the side `direction` points to.
+    pub fn label_dimension(&mut self, markup: String, anchor: P3, direction: P3) {
+        self.want(
+            markup,
+            anchor,
+            direction,
+            Names::Dimension,
+            P2::new(0.0, 0.0),
+        );
+    }
+
+    fn want(&mut self, markup: String, anchor: P3, direction: P3, names: Names, shift: P2) {
         let at = self.project(anchor);
         let toward = self.project(view::add(anchor, direction)).minus(at);
         let wanted = Wanted {
             markup,
             anchor: at,
             direction: toward.unit().unwrap_or(P2::new(1.0, 0.0)),
-            on_body,
+            names,
         };
         self.wanted.push((wanted, shift));
     }

@@ -4,7 +4,9 @@
 //! neighbouring stations labelled with its length as the scene writes it (`L/4`, `L/4`,
 //! `L/2`). Drawn only when every span is written in the scene's symbols: a span known only as
 //! a number has no name to show. And each point mass's radius from the shaft (an unbalance's
-//! e₁), a line from the axis out to it labelled with its length.
+//! e₁), a line from the axis out to it labelled with its length; about a fixed point with no
+//! shaft, the distance from O to G along an axis (an axle's length L). Each label stands on
+//! its dimension line, which its halo breaks.
 
 use super::body::Extent;
 use super::canvas::{Canvas, Layer};
@@ -16,16 +18,18 @@ use crate::scene::model::Scene;
 
 /// The chain's distance past the body, and how far the extension lines start from the axis
 /// and run past the chain, in proportion to the body's reach.
-const CHAIN_GAP: f64 = 0.3;
+const CHAIN_GAP: f64 = 0.5;
 const EXTENSION_GAP: f64 = 0.05;
 const EXTENSION_PAST: f64 = 0.06;
 
-/// The chain of spans along the shaft whose unit axis is `a` (along one of the frame's axes).
+/// The chain of spans along the shaft whose unit axis is `a` (along one of the frame's axes),
+/// clear of the body and of the `loads`' arrows (their ends).
 pub fn along_shaft(
     canvas: &mut Canvas,
     scene: &Scene,
     body: &Extent,
     a: P3,
+    loads: &[P3],
 ) -> Result<(), FigureError> {
     let Some(k) = (0..3).find(|k| a[*k].abs() > 1.0 - 1e-12) else {
         return Ok(());
@@ -57,11 +61,56 @@ pub fn along_shaft(
             station(centre, &part.position);
         }
     }
+    chain(canvas, body, loads, (a, k), stations);
+    Ok(())
+}
+
+/// About a fixed point with no shaft, G on one of the frame's axes at a distance the scene
+/// writes in its symbols (SP 18.2's axle OG, L): a dimension from O to G.
+pub fn to_mass_centre(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    body: &Extent,
+    loads: &[P3],
+) -> Result<(), FigureError> {
+    let [part] = &scene.parts[..] else {
+        return Ok(());
+    };
+    let g = canvas.vector(&part.position, "body 1")?;
+    let Some(k) = (0..3).find(|k| g[*k].abs() > 1e-9 * body.reach) else {
+        return Ok(());
+    };
+    if !scene.fixed_point || (0..3).any(|j| j != k && g[j].abs() > 1e-9 * body.reach) {
+        return Ok(());
+    }
+    let mut a = [0.0; 3];
+    a[k] = g[k].signum();
+    let distance = match a[k] > 0.0 {
+        true => part.position[k].clone(),
+        false => -&part.position[k],
+    };
+    let stations = vec![(0.0, Expr::zero()), (g[k].abs(), distance)];
+    chain(canvas, body, loads, (a, k), stations);
+    Ok(())
+}
+
+/// A chain of dimension lines along the unit `a` (the frame's axis `k`) between `stations`
+/// (each its distance along `a` and that distance as the scene writes it), below the body
+/// and the `loads`' arrows (their ends), each span labelled; none unless every span is
+/// written in the scene's symbols.
+fn chain(
+    canvas: &mut Canvas,
+    body: &Extent,
+    loads: &[P3],
+    (a, k): (P3, usize),
+    mut stations: Vec<(f64, Expr)>,
+) {
+    let reach = body.reach;
     stations.sort_by(|p, q| p.0.total_cmp(&q.0));
     stations.dedup_by(|p, q| (p.0 - q.0).abs() < 1e-9 * reach);
     let spans: Vec<Expr> = stations.windows(2).map(|w| &w[1].1 - &w[0].1).collect();
     if spans.is_empty() || spans.iter().any(|s| s.symbols().is_empty()) {
-        return Ok(());
+        return;
     }
     // Below the body: the frame's direction square to the shaft drawn most nearly down.
     let down = (0..3)
@@ -73,7 +122,11 @@ pub fn along_shaft(
         })
         .min_by(|p, q| canvas.project(*p).y.total_cmp(&canvas.project(*q).y))
         .unwrap_or([0.0, 0.0, -1.0]);
-    let offset = body.along(down) + CHAIN_GAP * reach;
+    let lowest = loads
+        .iter()
+        .map(|p| view::dot(*p, down))
+        .fold(0.0, f64::max);
+    let offset = body.along(down).max(lowest) + CHAIN_GAP * reach;
     let foot = |s: f64| scaled(a, s);
     for (s, _) in &stations {
         let from = add(foot(*s), scaled(down, EXTENSION_GAP * reach));
@@ -90,9 +143,8 @@ pub fn along_shaft(
     );
     for (w, span) in stations.windows(2).zip(&spans) {
         let middle = chain((w[0].0 + w[1].0) / 2.0);
-        canvas.label(super::loads::label(span), middle, down);
+        canvas.label_dimension(super::loads::label(span), middle, down);
     }
-    Ok(())
 }
 
 /// Whether the part is fixed across the shaft at its centre's station: a rod square to the
@@ -146,7 +198,7 @@ pub fn radii(canvas: &mut Canvas, scene: &Scene, body: &Extent, a: P3) -> Result
             .find(|e| e * e == square);
         if let Some(radius) = radius {
             canvas.path(Layer::Behind, &[foot, p], false, Stroke::DIMENSION);
-            canvas.label(super::loads::label(&radius), scaled(add(foot, p), 0.5), a);
+            canvas.label_dimension(super::loads::label(&radius), scaled(add(foot, p), 0.5), a);
         }
     }
     Ok(())

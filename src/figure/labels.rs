@@ -33,8 +33,20 @@ pub struct Wanted {
     pub markup: String,
     pub anchor: P2,
     pub direction: P2,
-    /// Names something on the body (G, a point, a size): it may stand on a face.
-    pub on_body: bool,
+    pub names: Names,
+}
+
+/// What a label names, which decides where it may stand.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Names {
+    /// An arrow or an axis: beside its anchor, off the body.
+    Beside,
+    /// Something on the body (G, a named point, a part's size): it hugs its anchor and may
+    /// stand on a face.
+    OnBody,
+    /// A dimension: first of all on its own line at its middle, which the label's halo breaks,
+    /// as a textbook sets a dimension's figure; it hugs its anchor.
+    Dimension,
 }
 
 /// The size of a label's box: its text's width and a line's height (1.5 em: a serif's
@@ -52,7 +64,7 @@ struct Surroundings<'a> {
     anchors: Vec<P2>,
 }
 
-/// Every wanted label placed among `marks`, in order.
+/// Every wanted label placed among `marks`: the dimensions first, then the others in order.
 pub fn place(wanted: &[Wanted], marks: &[Mark]) -> Vec<Label> {
     let around = Surroundings {
         strokes: marks.iter().flat_map(segments).collect(),
@@ -69,15 +81,18 @@ pub fn place(wanted: &[Wanted], marks: &[Mark]) -> Vec<Label> {
             .collect(),
         anchors: wanted.iter().map(|w| w.anchor).collect(),
     };
+    // The dimensions first, each on its line while that is free; then the rest, in order.
+    let mut order: Vec<usize> = (0..wanted.len()).collect();
+    order.sort_by_key(|k| wanted[*k].names != Names::Dimension);
     let mut placed: Vec<Label> = Vec::new();
-    for (k, w) in wanted.iter().enumerate() {
+    for (k, w) in order.iter().map(|k| (*k, &wanted[*k])) {
         let (hw, hh) = half_size(&w.markup);
         let mut best = (f64::INFINITY, w.anchor);
         for (centre, distance, turn) in candidates(w, hw, hh) {
-            // A point's letter (G, O, A) or a part's size hugs what it names.
-            let per_unit = match w.on_body {
-                true => PER_UNIT * POINT_TIGHTER,
-                false => PER_UNIT,
+            // A point's letter (G, O, A), a part's size or a dimension hugs what it names.
+            let per_unit = match w.names {
+                Names::Beside => PER_UNIT,
+                Names::OnBody | Names::Dimension => PER_UNIT * POINT_TIGHTER,
             };
             let cost = per_unit * distance
                 + PER_DEGREE * turn.abs()
@@ -93,12 +108,21 @@ pub fn place(wanted: &[Wanted], marks: &[Mark]) -> Vec<Label> {
             half_height: hh,
         });
     }
-    placed
+    // Back in the order asked for.
+    let mut labels: Vec<Option<Label>> = (0..wanted.len()).map(|_| None).collect();
+    for (k, label) in order.into_iter().zip(placed) {
+        labels[k] = Some(label);
+    }
+    labels.into_iter().flatten().collect()
 }
 
-/// The centres tried round the anchor, with their gap and turn from the wanted side.
+/// The centres tried round the anchor (a dimension's first on it), with their gap and turn
+/// from the wanted side.
 fn candidates(w: &Wanted, hw: f64, hh: f64) -> Vec<(P2, f64, f64)> {
     let mut out = Vec::new();
+    if w.names == Names::Dimension {
+        out.push((w.anchor, 0.0, 0.0));
+    }
     for gap in GAPS {
         for turn in TURNS_DEG {
             let t = turn.to_radians();
@@ -138,23 +162,25 @@ fn faults(
             && distance_to_box(*a) + 2.0 < own_distance
     });
     // What stands on the body (its anchor on a face) is named on the body.
-    let on_body = w.on_body || around.faces.iter().any(|f| inside(mine, f));
+    let on_body = w.names == Names::OnBody || around.faces.iter().any(|f| inside(mine, f));
     let faces: &[&[P2]] = match on_body {
         true => &[],
         false => &around.faces,
     };
-    overlap(c, hw, hh, placed, faces, &around.strokes)
+    // A dimension's own line, through its anchor, is broken by it, not crossed.
+    let broken = (w.names == Names::Dimension).then_some(mine);
+    overlap(c, (hw, hh), placed, faces, (&around.strokes, broken))
         + if nearer_another { NEARER_ANOTHER } else { 0.0 }
 }
 
-/// How badly a box overlaps what is there: a label, a body's face, a stroke.
+/// How badly a box overlaps what is there: a label, a body's face, a stroke (but those
+/// through the point `broken`, a dimension's own line).
 fn overlap(
     c: P2,
-    hw: f64,
-    hh: f64,
+    (hw, hh): (f64, f64),
     placed: &[Label],
     faces: &[&[P2]],
-    strokes: &[(P2, P2, f64)],
+    (strokes, broken): (&[(P2, P2, f64)], Option<P2>),
 ) -> f64 {
     let labels = placed
         .iter()
@@ -177,6 +203,7 @@ fn overlap(
     let crossed: f64 = strokes
         .iter()
         .filter(|(a, b, _)| crosses_box(*a, *b, c, hw, hh))
+        .filter(|(a, b, _)| broken.is_none_or(|p| !through(p, *a, *b)))
         .map(|(_, _, weight)| weight)
         .sum();
     OVER_LABEL * labels as f64 + ON_BODY * inside_faces as f64 + CROSSING * crossed
@@ -212,6 +239,14 @@ fn segments(mark: &Mark) -> Vec<(P2, P2, f64)> {
             vec![(p[0], p[1], 2.0)]
         }
     }
+}
+
+/// Whether the segment from `a` to `b` passes through the point `p` (within a hairline).
+fn through(p: P2, a: P2, b: P2) -> bool {
+    let d = b.minus(a);
+    let t = ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / (d.x * d.x + d.y * d.y).max(1e-300);
+    let foot = a.plus(d.times(t.clamp(0.0, 1.0)));
+    foot.minus(p).length() < 0.5
 }
 
 /// Whether `p` is inside the polygon (even-odd).

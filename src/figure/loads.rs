@@ -72,11 +72,15 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         canvas.dot(at, 2.5);
         canvas.label_on_body(named(&p.name), at, sub(at, body.centre));
     }
-    loads(canvas, scene, body, &unknowns, &mut rays)?;
-    // The shaft's dimensions after the loads, so the loads' labels are placed first.
-    if let Some(along) = shaft_line(&rays.ends) {
-        super::dimensions::along_shaft(canvas, scene, body, along)?;
-        super::dimensions::radii(canvas, scene, body, along)?;
+    let loaded = loads(canvas, scene, body, &unknowns, &mut rays)?;
+    // The dimensions after the loads, clear of their arrows, so the loads' labels are placed
+    // first.
+    match shaft_line(&rays.ends) {
+        Some(along) => {
+            super::dimensions::along_shaft(canvas, scene, body, along, &loaded)?;
+            super::dimensions::radii(canvas, scene, body, along)?;
+        }
+        None => super::dimensions::to_mass_centre(canvas, scene, body, &loaded)?,
     }
     axes(canvas, scene, body, &rays);
     Ok(())
@@ -136,7 +140,7 @@ impl Rays<'_> {
         self.arrows.extend(
             drew.arrows
                 .iter()
-                .map(|(d, length)| (at, *d, offset + *length)),
+                .map(|a| (at, a.direction, offset + a.length)),
         );
     }
 
@@ -330,15 +334,16 @@ fn motion_of_g(
     Ok(())
 }
 
-/// The forces, couples and impulses.
+/// The forces, couples and impulses; the ends of the forces' and impulses' arrows.
 fn loads(
     canvas: &mut Canvas,
     scene: &Scene,
     body: &Extent,
     unknowns: &[Symbol],
     rays: &mut Rays,
-) -> Result<(), FigureError> {
+) -> Result<Vec<P3>, FigureError> {
     let reach = body.reach;
+    let mut ends = Vec::new();
     for f in &scene.forces {
         let at = canvas.vector(&f.point, &f.name)?;
         let drawn = Drawn {
@@ -352,6 +357,7 @@ fn loads(
             body,
         };
         let drew = drawn.vector(canvas, &f.value, Some(&f.name), unknowns, &f.name)?;
+        ends.extend(drew.arrows.iter().flat_map(|a| a.ends));
         // Drawn from O, a force's arrows push what is drawn along their rays past them.
         if at == [0.0; 3] {
             rays.drawn_from(at, at, &drew);
@@ -424,12 +430,13 @@ fn loads(
         };
         let name = i.name.map(|s| s.name().to_string());
         let drew = drawn.vector(canvas, &i.value, name.as_deref(), unknowns, &what)?;
+        ends.extend(drew.arrows.iter().flat_map(|a| a.ends));
         // Drawn by its components, a named impulse is named at its point (as a force is).
         if let (false, Some(name), false) = (drew.whole, &name, lettered(at, body)) {
             canvas.label(named(name), at, sub(at, body.centre));
         }
     }
-    Ok(())
+    Ok(ends)
 }
 
 /// A vector's length along the unit `d`, stretched where the view foreshortens `d` (toward
@@ -544,10 +551,17 @@ struct Also {
 }
 
 /// What a vector's drawing came to: whether it was drawn whole (else by components), and
-/// its arrows, each its direction and the length it was drawn at.
+/// its arrows.
 struct Drew {
     whole: bool,
-    arrows: Vec<(P3, f64)>,
+    arrows: Vec<Arrow>,
+}
+
+/// An arrow drawn: its unit direction, the length it was drawn at, its tail and its head.
+struct Arrow {
+    direction: P3,
+    length: f64,
+    ends: [P3; 2],
 }
 
 /// How a vector is drawn: from a point (or into it), at a length, single or double.
@@ -613,7 +627,7 @@ impl Drawn<'_> {
 
     /// One arrow along `direction`, its label at its free end; its unit direction and the
     /// length it was drawn at.
-    fn arrow(&self, canvas: &mut Canvas, direction: P3, label: String) -> Option<(P3, f64)> {
+    fn arrow(&self, canvas: &mut Canvas, direction: P3, label: String) -> Option<Arrow> {
         let u = view::unit(direction);
         if view::norm(u) == 0.0 {
             return None;
@@ -639,8 +653,9 @@ impl Drawn<'_> {
             true => scaled(u, -1.0),
             false => u,
         };
-        // At a point out of sight behind the body, dashed, as its hidden edges are.
-        let stroke = match self.body.hides(canvas, self.from, INSIDE * self.body.reach) {
+        // A load at a point out of sight behind the body, dashed, as its hidden edges are.
+        let hidden = load && self.body.hides(canvas, self.from, INSIDE * self.body.reach);
+        let stroke = match hidden {
             true => Stroke {
                 dashes: Dashes::Hidden,
                 ..self.stroke
@@ -662,7 +677,11 @@ impl Drawn<'_> {
         if load {
             canvas.keep_clear(from, to);
         }
-        Some((u, stretched(canvas, u, length)))
+        Some(Arrow {
+            direction: u,
+            length: stretched(canvas, u, length),
+            ends: [from, to],
+        })
     }
 
     /// The length of an arrow along the unit `u` from the point (into it when `into_point`):

@@ -1,6 +1,7 @@
 //! A figure drawn from the scene, as a textbook's solution starts: the body part by part,
 //! the axes from O, ω, the forces at their points, the couples, the impulses, the bearings
-//! and the fixed axis, named points, and for a gyroscope or top the vertical, θ, φ̇ and ψ̇.
+//! and the fixed axis, named points, the floor a body rolls on, and for a gyroscope or top the
+//! vertical, θ, φ̇ and ψ̇.
 //!
 //! One drawing, two writers: [`figure`] projects the scene once ([`view`], the near-isometric
 //! view with the scene's up drawn up), at the sizes of [`sizes`], scales it to
@@ -12,6 +13,7 @@ mod body;
 mod canvas;
 mod dimensions;
 mod euler;
+mod ground;
 mod labels;
 mod loads;
 pub mod sizes;
@@ -76,6 +78,8 @@ impl Stroke {
     };
     /// A dimension line and its extension lines.
     pub const DIMENSION: Stroke = Stroke::black(0.6);
+    /// The outline of the floor a body rolls on.
+    pub const GROUND: Stroke = Stroke::black(0.7);
     /// A hidden edge.
     pub const HIDDEN: Stroke = Stroke {
         width: 1.0,
@@ -204,6 +208,7 @@ pub fn figure(scene: &Scene) -> Result<Figure, FigureError> {
     if scene.euler_angles.is_some() {
         euler::angles(&mut canvas, &body)?;
     }
+    ground::draw(&mut canvas, scene, &body)?;
     turns::draw(&mut canvas, scene, &body)?;
     loads::draw(&mut canvas, scene, &body)?;
     Ok(canvas.finish())

@@ -165,6 +165,11 @@ impl View {
         dot(apply(&self.turn, p), self.eye)
     }
 
+    /// The scene's up, the direction drawn straight up, in the scene's frame.
+    pub fn up(&self) -> P3 {
+        [0, 1, 2].map(|j| self.turn[2][j])
+    }
+
     /// The direction toward the eye in the scene's frame (the turn undone).
     pub fn toward_eye(&self) -> P3 {
         let t = &self.turn;

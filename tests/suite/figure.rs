@@ -925,3 +925,88 @@ fn no_two_motion_arrows_are_drawn_over_one_another() {
         }
     }
 }
+
+/// The floor a body rolls on is drawn where the scene holds its lowest point still: SP 18.2's
+/// disk at (L, −r, 0) stands on a patch of the plane y = −r centred there; a falling plate
+/// held at the corner it strikes (a blow there) gets none, the scene shaping no ledge.
+#[test]
+fn the_floor_under_a_rolling_contact() {
+    let floor = |name: &str| {
+        let scene = example(name);
+        let drawn = figure(&scene).unwrap();
+        let held = scene.constraints.iter().find_map(|c| match &c.kind {
+            kinetics::scene::model::ConstraintKind::VelocityZero(at) => Some(at.clone()),
+            _ => None,
+        });
+        let at = drawn_at(&drawn, &scene, &held.expect("a point held still"));
+        drawn.marks.iter().any(|m| match m {
+            Mark::Path {
+                points,
+                closed: true,
+                stroke,
+                ..
+            } if *stroke == Stroke::GROUND && points.len() == 4 => {
+                let centre = points
+                    .iter()
+                    .fold(P2::new(0.0, 0.0), |s, q| s.plus(*q))
+                    .times(0.25);
+                near(centre, at)
+            }
+            _ => false,
+        })
+    };
+    assert!(floor("sp18_2_rolling_disk"), "the disk's floor");
+    assert!(floor("cone_rolling_about_apex"), "the cone's floor");
+    assert!(
+        !floor("plate_falls_on_corner"),
+        "no floor where a blow holds the point"
+    );
+}
+
+/// A dimension's label stands on its own line, which its halo breaks, as a textbook sets it:
+/// each of SP 18.4's spans (L/4, L/4, L/2) on the chain, and SP 18.2's axle OG (L, from O to
+/// G) dimensioned too.
+#[test]
+fn dimension_labels_stand_on_their_lines() {
+    let drawn = figure(&example("sp18_4_shaft_reactions")).unwrap();
+    let lines: Vec<(P2, P2)> = drawn
+        .marks
+        .iter()
+        .filter_map(|m| match m {
+            Mark::Path { points, stroke, .. } if *stroke == Stroke::DIMENSION => {
+                Some((points[0], points[1]))
+            }
+            _ => None,
+        })
+        .collect();
+    // How far the point is from the nearest dimension line.
+    let from_lines = |p: P2| {
+        lines
+            .iter()
+            .map(|(a, b)| {
+                let d = b.minus(*a);
+                let t = ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / (d.x * d.x + d.y * d.y);
+                a.plus(d.times(t.clamp(0.0, 1.0))).minus(p).length()
+            })
+            .fold(f64::INFINITY, f64::min)
+    };
+    let l = Expr::sym(Symbol::new("L"));
+    let half = format!("${}$", kinetics::print::latex(&(&l / &Expr::int(2))));
+    for span in [&l / &Expr::int(4), &l / &Expr::int(2)] {
+        let markup = format!("${}$", kinetics::print::latex(&span));
+        let labels: Vec<&Label> = drawn.labels.iter().filter(|x| x.markup == markup).collect();
+        assert!(!labels.is_empty(), "{markup}");
+        // On its line, or (a span too short for its figure) against it.
+        for label in labels {
+            let off = from_lines(label.centre);
+            assert!(
+                off < label.half_height + 6.0,
+                "{markup} {off} from its line"
+            );
+            // The span with room for its figure, L/2, has it on the line.
+            assert!(markup != half || off < 1e-6, "{markup} on its line");
+        }
+    }
+    let axle = figure(&example("sp18_2_rolling_disk")).unwrap();
+    assert!(axle.labels.iter().any(|x| x.markup == "$L$"), "OG = L");
+}

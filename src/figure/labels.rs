@@ -25,6 +25,9 @@ const CROSSING: f64 = 12.0;
 const NEARER_ANOTHER: f64 = 80.0;
 const PER_DEGREE: f64 = 0.08;
 const PER_UNIT: f64 = 1.5;
+/// Past this distance from its anchor, a label's distance costs its square too.
+const FAR: f64 = 20.0;
+const PER_FAR_SQUARED: f64 = 0.1;
 /// How much more each unit away costs the label of a point or a part's size.
 const POINT_TIGHTER: f64 = 2.5;
 
@@ -94,7 +97,10 @@ pub fn place(wanted: &[Wanted], marks: &[Mark]) -> Vec<Label> {
                 Names::Beside => PER_UNIT,
                 Names::OnBody | Names::Dimension => PER_UNIT * POINT_TIGHTER,
             };
+            // Far from its anchor a label no longer reads as its own: each unit costs more.
+            let far = (distance - FAR).max(0.0);
             let cost = per_unit * distance
+                + PER_FAR_SQUARED * far * far
                 + PER_DEGREE * turn.abs()
                 + faults(centre, (hw, hh), &placed, &around, (k, w));
             if cost < best.0 {

@@ -112,13 +112,15 @@ fn chain(
     if spans.is_empty() || spans.iter().any(|s| s.symbols().is_empty()) {
         return;
     }
-    // Below the body: the frame's direction square to the shaft drawn most nearly down.
+    // Below the body: of the frame's directions square to the shaft on the side no axis is
+    // drawn (−x, −y, −z, so an extension line from O never runs along one), the one drawn
+    // most nearly down.
     let down = (0..3)
         .filter(|j| *j != k)
-        .flat_map(|j| {
+        .map(|j| {
             let mut e = [0.0; 3];
-            e[j] = 1.0;
-            [e, scaled(e, -1.0)]
+            e[j] = -1.0;
+            e
         })
         .min_by(|p, q| canvas.project(*p).y.total_cmp(&canvas.project(*q).y))
         .unwrap_or([0.0, 0.0, -1.0]);

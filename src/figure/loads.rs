@@ -164,6 +164,15 @@ fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays) {
             Stroke::AXIS,
             Role::Axis,
         );
+        // Where it comes out of the body toward the eye, the rest of it is in front of every
+        // face (past the body along an axis turned to the eye nothing of the body is nearer):
+        // drawn again there, so a face does not grey it.
+        let out = body.along(*e);
+        let toward_eye = view::dot(*e, canvas.view().toward_eye()) > 0.0;
+        if toward_eye && out > 0.0 && out < view::norm(tip) {
+            let from = scaled(*e, out);
+            canvas.arrow(Layer::Front, from, tip, false, Stroke::AXIS, Role::Axis);
+        }
         canvas.label(format!("${name}$"), tip, *e);
     }
     let apart = view::norm(body.centre) > 1e-9 * body.reach;

@@ -1010,3 +1010,41 @@ fn dimension_labels_stand_on_their_lines() {
     let axle = figure(&example("sp18_2_rolling_disk")).unwrap();
     assert!(axle.labels.iter().any(|x| x.markup == "$L$"), "OG = L");
 }
+
+/// An axis that comes out of the body toward the reader is drawn again, in front, from where
+/// it leaves the body, so the face it passes in front of does not grey it: the free box's x
+/// axis (toward the reader) has a second arrow to the same tip, starting where it leaves.
+#[test]
+fn axes_in_front_of_the_body_are_drawn_over_it() {
+    let drawn = figure(&example("free_body")).unwrap();
+    let o = drawn.at([0.0; 3]);
+    let axes: Vec<(P2, P2)> = drawn
+        .marks
+        .iter()
+        .filter_map(|m| match m {
+            Mark::Arrow {
+                role: Role::Axis,
+                from,
+                to,
+                ..
+            } => Some((*from, *to)),
+            _ => None,
+        })
+        .collect();
+    let whole = axes.iter().filter(|(from, _)| near(*from, o)).count();
+    assert_eq!(whole, 3, "x, y, z from O");
+    let x_tip = axes
+        .iter()
+        .filter(|(from, _)| near(*from, o))
+        .map(|(_, to)| *to)
+        .min_by(|a, b| {
+            let x = drawn.at([1.0, 0.0, 0.0]).minus(o);
+            let along = |p: &P2| -(p.minus(o).x * x.x + p.minus(o).y * x.y);
+            along(a).total_cmp(&along(b))
+        })
+        .unwrap();
+    let again = axes
+        .iter()
+        .any(|(from, to)| near(*to, x_tip) && !near(*from, o));
+    assert!(again, "x drawn again in front from where it leaves the box");
+}

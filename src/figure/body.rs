@@ -143,7 +143,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
         // A point mass is named by its mass (m_1), as a figure names an unbalance.
         if let (Shape::PointMass, Some(_)) = (&part.shape, part.mass.as_symbol()) {
             canvas.label_on_body(
-                super::loads::label(&part.mass),
+                super::arrows::label(&part.mass),
                 placed.centre,
                 placed.centre,
             );
@@ -340,7 +340,7 @@ impl Placed {
         let mut name = |e: &crate::algebra::Expr, at: P3, outward: P3, radius: Option<[P3; 2]>| {
             if e.as_symbol().is_some() {
                 out.push(NamedSize {
-                    label: super::loads::label(e),
+                    label: super::arrows::label(e),
                     at,
                     outward,
                     radius,

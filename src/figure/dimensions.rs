@@ -145,7 +145,7 @@ fn chain(
     );
     for (w, span) in stations.windows(2).zip(&spans) {
         let middle = chain((w[0].0 + w[1].0) / 2.0);
-        canvas.label_dimension(super::loads::label(span), middle, down);
+        canvas.label_dimension(super::arrows::label(span), middle, down);
     }
 }
 
@@ -200,7 +200,7 @@ pub fn radii(canvas: &mut Canvas, scene: &Scene, body: &Extent, a: P3) -> Result
             .find(|e| e * e == square);
         if let Some(radius) = radius {
             canvas.path(Layer::Behind, &[foot, p], false, Stroke::DIMENSION);
-            canvas.label_dimension(super::loads::label(&radius), scaled(add(foot, p), 0.5), a);
+            canvas.label_dimension(super::arrows::label(&radius), scaled(add(foot, p), 0.5), a);
         }
     }
     Ok(())

@@ -9,6 +9,7 @@
 //! where it overlaps no other label and no stroke ([`labels`]); [`svg`] and [`tikz`] write the
 //! marks and labels as they are. Nothing is drawn that the scene does not state.
 
+mod arrows;
 mod body;
 mod canvas;
 mod dimensions;

@@ -60,7 +60,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
             mark(canvas, centre, from, a, theta, radius * body.reach);
             let middle = turned(from, a, theta / 2.0);
             canvas.label(
-                super::loads::label(&turn.angle),
+                super::arrows::label(&turn.angle),
                 add(centre, scaled(middle, radius * body.reach)),
                 middle,
             );

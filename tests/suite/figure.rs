@@ -33,6 +33,20 @@ fn example(name: &str) -> Scene {
         .unwrap_or_else(|| panic!("no example {name}"))
 }
 
+/// The paths of two points drawn with `stroke` (the shaft's pieces, dimension lines).
+fn two_point_paths(drawn: &Figure, stroke: Stroke) -> Vec<(P2, P2)> {
+    drawn
+        .marks
+        .iter()
+        .filter_map(|m| match m {
+            Mark::Path {
+                points, stroke: s, ..
+            } if *s == stroke => Some((points[0], points[1])),
+            _ => None,
+        })
+        .collect()
+}
+
 fn near(a: P2, b: P2) -> bool {
     (a.x - b.x).hypot(a.y - b.y) < 1e-6
 }
@@ -203,16 +217,7 @@ fn the_shaft_of_sample_problem_18_4() {
     };
     let (c, d) = (point("C"), point("D"));
     // The shaft, drawn in pieces (each at its depth), runs from C to D along CD and no farther.
-    let pieces: Vec<(P2, P2)> = drawn
-        .marks
-        .iter()
-        .filter_map(|m| match m {
-            Mark::Path { points, stroke, .. } if *stroke == Stroke::SHAFT => {
-                Some((points[0], points[1]))
-            }
-            _ => None,
-        })
-        .collect();
+    let pieces = two_point_paths(&drawn, Stroke::SHAFT);
     let cd = d.minus(c);
     let along = |p: P2| (p.minus(c).x * cd.x + p.minus(c).y * cd.y) / (cd.x * cd.x + cd.y * cd.y);
     let on_cd = |p: P2| (p.minus(c).x * cd.y - p.minus(c).y * cd.x).abs() < 1e-6 * cd.length();
@@ -969,16 +974,7 @@ fn the_floor_under_a_rolling_contact() {
 #[test]
 fn dimension_labels_stand_on_their_lines() {
     let drawn = figure(&example("sp18_4_shaft_reactions")).unwrap();
-    let lines: Vec<(P2, P2)> = drawn
-        .marks
-        .iter()
-        .filter_map(|m| match m {
-            Mark::Path { points, stroke, .. } if *stroke == Stroke::DIMENSION => {
-                Some((points[0], points[1]))
-            }
-            _ => None,
-        })
-        .collect();
+    let lines = two_point_paths(&drawn, Stroke::DIMENSION);
     // How far the point is from the nearest dimension line.
     let from_lines = |p: P2| {
         lines

@@ -1,0 +1,289 @@
+//! How one vector is drawn: as one arrow, or by components where it holds an unknown
+//! magnitude; from its point or (a push, an impulse) into it; beside a line it would lie
+//! along; lengthened out of the body where its point is inside or hidden behind it, dashed
+//! where hidden; labelled by its name, its magnitude or its components, and with a second
+//! vector it stands for too (`ω, α`).
+
+use super::body::Extent;
+use super::canvas::{Canvas, Layer};
+use super::view::{self, add, scaled, sub, P3};
+use super::{Dashes, FigureError, Role, Stroke};
+use crate::algebra::{Expr, Symbol, Vector};
+use crate::print::{self, markup};
+
+/// How far a load at a point inside the body reaches past its outline, and how deep inside
+/// a point is for that.
+const PAST_BODY: f64 = 0.2;
+const INSIDE: f64 = 0.05;
+/// The most steps of a quarter of [`PAST_BODY`] a load at a hidden point is lengthened by.
+const LONGEST_STEPS: u32 = 60;
+/// The least share of its length a vector is drawn at, however the view foreshortens it.
+const SHORTEST_DRAWN: f64 = 0.6;
+
+/// A vector's length along the unit `d`, stretched where the view foreshortens `d` (toward
+/// the reader), so that it is drawn at least [`SHORTEST_DRAWN`] of its length long.
+pub(super) fn stretched(canvas: &Canvas, d: P3, length: f64) -> f64 {
+    let drawn = canvas.project(d).minus(canvas.project([0.0; 3])).length();
+    length * (SHORTEST_DRAWN / drawn.max(1e-9)).clamp(1.0, 2.5)
+}
+
+/// Whether a vector's components hold one of the unknowns.
+pub(super) fn holds_any(v: &Vector, unknowns: &[Symbol]) -> bool {
+    v.iter()
+        .any(|c| c.symbols().iter().any(|s| unknowns.contains(s)))
+}
+
+/// A second vector drawn on a vector's arrow, along the same line: α on ω (labelled ω, α),
+/// or Ω on ω's component equal to it (labelled ω₂, Ω). `component`: the axis of that
+/// component, or none for the whole arrow.
+pub(super) struct Also {
+    pub(super) component: Option<usize>,
+    pub(super) name: &'static str,
+}
+
+/// What a vector's drawing came to: whether it was drawn whole (else by components), and
+/// its arrows.
+pub(super) struct Drew {
+    pub(super) whole: bool,
+    pub(super) arrows: Vec<Arrow>,
+}
+
+/// An arrow drawn: its unit direction, the length it was drawn at, its tail and its head.
+pub(super) struct Arrow {
+    pub(super) direction: P3,
+    pub(super) length: f64,
+    pub(super) ends: [P3; 2],
+}
+
+/// How a vector is drawn: from a point (or into it), at a length, single or double.
+pub(super) struct Drawn<'b> {
+    pub(super) from: P3,
+    pub(super) length: f64,
+    pub(super) double: bool,
+    pub(super) stroke: Stroke,
+    pub(super) role: Role,
+    /// The head at the point (an impulse striking it), else the tail.
+    pub(super) into_point: bool,
+    /// A second vector the arrow (or one component's arrow) stands for.
+    pub(super) also: Option<Also>,
+    /// The body: a load at a point inside it reaches out past it, and one drawn beside a
+    /// line is drawn on the side away from its mass centre.
+    pub(super) body: &'b Extent,
+}
+
+impl Drawn<'_> {
+    /// Draws `v`: one arrow ([`whole_label`]) when no unknown is in it or it has one
+    /// component, else an arrow per component that is not zero, each labelled with the
+    /// component when it is one symbol (`C_y`), else by the name and the axis (`ω_x`); the
+    /// arrow [`Also`] names labelled with it too. What it drew.
+    pub(super) fn vector(
+        &self,
+        canvas: &mut Canvas,
+        v: &Vector,
+        name: Option<&str>,
+        unknowns: &[Symbol],
+        what: &str,
+    ) -> Result<Drew, FigureError> {
+        let value = canvas.vector(v, what)?;
+        let also = |component: Option<usize>, first: Expr| match &self.also {
+            Some(a) if a.component == component => label_all(&[first, symbol(a.name)]),
+            _ => label(&first),
+        };
+        if drawn_whole(v, unknowns) {
+            let label = also(None, whole_label(v, value, name));
+            return Ok(Drew {
+                whole: true,
+                arrows: self.arrow(canvas, value, label).into_iter().collect(),
+            });
+        }
+        let mut arrows = Vec::new();
+        for k in nonzero(v) {
+            let mut d = [0.0; 3];
+            d[k] = value[k].signum();
+            if d[k] == 0.0 {
+                d[k] = 1.0;
+            }
+            let first = match (v[k].as_symbol().or_else(|| (-&v[k]).as_symbol()), name) {
+                (Some(_), _) | (None, None) => magnitude(&v[k], value[k]),
+                // A component that is not one symbol is named by the vector's name.
+                (None, Some(n)) => symbol(&format!("{n}_{}", ["x", "y", "z"][k])),
+            };
+            arrows.extend(self.arrow(canvas, d, also(Some(k), first)));
+        }
+        Ok(Drew {
+            whole: false,
+            arrows,
+        })
+    }
+
+    /// One arrow along `direction`, its label at its free end; its unit direction and the
+    /// length it was drawn at.
+    fn arrow(&self, canvas: &mut Canvas, direction: P3, label: String) -> Option<Arrow> {
+        let u = view::unit(direction);
+        if view::norm(u) == 0.0 {
+            return None;
+        }
+        let load = matches!(self.role, Role::Force(_) | Role::Impulse);
+        // A load pushing on a face (a floor's normal force) comes into its point from
+        // outside, as a textbook draws it, not across the body.
+        let pushes = load && self.body.goes_into(self.from, u, INSIDE * self.body.reach);
+        let mut into_point = self.into_point || pushes;
+        let length = self.length_from(canvas, u, into_point, load);
+        let (mut from, mut to, mut free) = self.ends(canvas, u, length, into_point);
+        // Nothing is drawn along an axis, a rod or the shaft, but beside it; a load along
+        // such a line toward the body (a bearing's thrust along the shaft) comes into its
+        // point from outside too.
+        let mut side = canvas.beside(from, to, self.body.centre);
+        let toward_body = view::dot(u, sub(self.body.centre, self.from)) > 0.0;
+        if load && !into_point && toward_body && side.length() > 0.0 {
+            into_point = true;
+            (from, to, free) = self.ends(canvas, u, length, into_point);
+            side = canvas.beside(from, to, self.body.centre);
+        }
+        let outward = match into_point {
+            true => scaled(u, -1.0),
+            false => u,
+        };
+        // A load at a point out of sight behind the body, dashed, as its hidden edges are.
+        let hidden = load && self.body.hides(canvas, self.from, INSIDE * self.body.reach);
+        let stroke = match hidden {
+            true => Stroke {
+                dashes: Dashes::Hidden,
+                ..self.stroke
+            },
+            false => self.stroke,
+        };
+        canvas.arrow_beside(
+            Layer::Front,
+            from,
+            to,
+            self.double,
+            stroke,
+            self.role.clone(),
+            side,
+        );
+        canvas.label_beside(label, free, outward, side);
+        // A later load along this one's line is drawn beside it (a normal force under a
+        // weight), not over it.
+        if load {
+            canvas.keep_clear(from, to);
+        }
+        Some(Arrow {
+            direction: u,
+            length: stretched(canvas, u, length),
+            ends: [from, to],
+        })
+    }
+
+    /// The length of an arrow along the unit `u` from the point (into it when `into_point`):
+    /// a load at a point inside the body (the body on both sides of it, as at G) or out of
+    /// sight behind it (a box's far corner) reaches out past it, so its free end and its
+    /// label stand clear of the body.
+    fn length_from(&self, canvas: &Canvas, u: P3, into_point: bool, load: bool) -> f64 {
+        let outward = match into_point {
+            true => scaled(u, -1.0),
+            false => u,
+        };
+        let (reach, depth) = (self.body.reach, INSIDE * self.body.reach);
+        if !load {
+            self.length
+        } else if self.body.surrounds(self.from, outward, depth) {
+            let past = self.body.beyond(canvas, self.from, outward) + PAST_BODY * reach;
+            self.length.max(past)
+        } else if self.body.hides(canvas, self.from, depth) {
+            // Out from behind the body: as long as it takes its free end to clear it.
+            let step = PAST_BODY * reach / 4.0;
+            let clear = |l: &f64| {
+                let free = add(self.from, scaled(outward, stretched(canvas, outward, *l)));
+                !self.body.covers(canvas, free)
+            };
+            let mut lengths = (0..=LONGEST_STEPS).map(|k| self.length + step * f64::from(k));
+            let longest = self.length + step * f64::from(LONGEST_STEPS);
+            lengths.find(clear).unwrap_or(longest) + step
+        } else {
+            self.length
+        }
+    }
+
+    /// The tail, the head and the free end (the end away from the point) of an arrow along
+    /// the unit `u`, `length` long, from the point or (`into_point`) into it.
+    fn ends(&self, canvas: &Canvas, u: P3, length: f64, into_point: bool) -> (P3, P3, P3) {
+        let span = scaled(u, stretched(canvas, u, length));
+        match into_point {
+            true => (sub(self.from, span), self.from, sub(self.from, span)),
+            false => (self.from, add(self.from, span), add(self.from, span)),
+        }
+    }
+}
+
+/// The label of a vector drawn as one arrow: its name (a name that is a word, `front`,
+/// along one axis: its magnitude, N_A, as a textbook labels it), else its magnitude along an
+/// axis, else the vector written.
+pub(super) fn whole_label(v: &Vector, value: P3, name: Option<&str>) -> Expr {
+    match (name, nonzero(v).as_slice()) {
+        (Some(n), &[k]) if is_word(n) => magnitude(&v[k], value[k]),
+        (Some(n), _) => symbol(n),
+        (None, &[k]) => magnitude(&v[k], value[k]),
+        (None, _) => {
+            let units = crate::algebra::vector::unit_vectors();
+            (0..3)
+                .map(|k| &v[k] * &units[k])
+                .fold(Expr::zero(), |a, b| a + b)
+        }
+    }
+}
+
+/// A component without its sign where the value is negative (the arrow shows it).
+pub(super) fn magnitude(c: &Expr, value: f64) -> Expr {
+    match value < 0.0 {
+        true => -c,
+        false => c.clone(),
+    }
+}
+
+/// The axes of a vector's components that are not zero.
+pub(super) fn nonzero(v: &Vector) -> Vec<usize> {
+    (0..3).filter(|k| !v[*k].is_zero()).collect()
+}
+
+/// Whether a vector is drawn as one arrow: no unknown in it, or one component (its line is
+/// known whatever its unknown magnitude); else by components.
+pub(super) fn drawn_whole(v: &Vector, unknowns: &[Symbol]) -> bool {
+    !holds_any(v, unknowns) || nonzero(v).len() == 1
+}
+
+/// Whether a name is a word (`push`, `front`, `weight`): three or more lower-case letters
+/// that are not a Greek letter's name.
+pub(super) fn is_word(name: &str) -> bool {
+    name.len() >= 3
+        && name.chars().all(|c| c.is_ascii_lowercase())
+        && Symbol::new(name).latex().starts_with(r"\mathit")
+}
+
+/// A label for a name as written (`C`, `P1`, `omega_x`, `weight`): the symbol of that name.
+pub(super) fn named(name: &str) -> String {
+    label(&symbol(name))
+}
+
+/// The symbol of a name as written.
+pub(super) fn symbol(name: &str) -> Expr {
+    Expr::sym(Symbol::new(name))
+}
+
+/// A label for `e`: its LaTeX as the mathematics of a label where the markup of titles
+/// reads it, else its text as words (`weight`, `m g sin(θ)`).
+pub(super) fn label(e: &Expr) -> String {
+    label_all(std::slice::from_ref(e))
+}
+
+/// A label for the vectors one arrow stands for, in a list (`ω, α`), as [`label`] writes one.
+pub(super) fn label_all(es: &[Expr]) -> String {
+    let list = |write: fn(&Expr) -> String, comma: &str| {
+        es.iter().map(write).collect::<Vec<_>>().join(comma)
+    };
+    let maths = format!("${}$", list(print::latex, r",\, "));
+    match markup::validate(&maths) {
+        Ok(()) => maths,
+        Err(_) => list(print::text, ", ").replace('$', ""),
+    }
+}

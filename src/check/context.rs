@@ -408,7 +408,7 @@ impl Context {
         match self.value_in_dimension(value, quantity) {
             Value::Scalar(e) => Meaning::Derived(e),
             Value::Vector(v) => {
-                if let Some(base) = component_base(quantity) {
+                if let Some(base) = component_base(quantity, scene.fixed_point) {
                     self.components(base, &v);
                 }
                 Meaning::Derived(unit_vector_sum(&v))
@@ -711,14 +711,18 @@ fn request(scene: &Scene, name: &str, quantity: Quantity) -> Request {
     }
 }
 
-/// The base of the names of a derived vector's components in a claim (`omega_x`).
-fn component_base(quantity: Quantity) -> Option<&'static str> {
+/// The base of the names of a derived vector's components in a claim (`omega_x`). `H_x` and
+/// `Hdot_x` are about the point the worked solution takes moments about: O in a scene with a
+/// fixed point (its page writes Ḣ_O's components `Hdot_x`), else G.
+fn component_base(quantity: Quantity, fixed_point: bool) -> Option<&'static str> {
     match quantity {
         Quantity::AngularVelocity => Some("omega"),
         Quantity::MassCentreVelocity => Some("vbar"),
         Quantity::MassCentreAcceleration => Some("abar"),
-        Quantity::AngularMomentumAboutG => Some("H"),
-        Quantity::RateOfAngularMomentum => Some("Hdot"),
+        Quantity::AngularMomentumAboutG if !fixed_point => Some("H"),
+        Quantity::RateOfAngularMomentum if !fixed_point => Some("Hdot"),
+        Quantity::AngularMomentumAboutO if fixed_point => Some("H"),
+        Quantity::RateOfAngularMomentumAboutO if fixed_point => Some("Hdot"),
         _ => None,
     }
 }

@@ -641,6 +641,33 @@ impl Context {
         (self.has_values() && !taken).then(|| marker(name))?
     }
 
+    /// This context with each name of `values` standing for that value instead of what the
+    /// mechanics derives: the values a student's earlier lines give the names, where a later
+    /// line is checked to see whether it follows from them. No slip is tried in it.
+    pub fn with_names(&self, values: &HashMap<String, Expr>) -> Context {
+        let mut c = self.clone();
+        for (name, value) in values {
+            c.meanings
+                .insert(name.clone(), Meaning::Derived(value.clone()));
+        }
+        c.source = None;
+        c.slipped = Arc::new(std::array::from_fn(|_| OnceLock::new()));
+        c
+    }
+
+    /// The value of a derived scalar `written` stands for (in the first solution): the names
+    /// whose value a line of a derivation may fix. Not a given, an alias or a vector.
+    pub fn derived_scalar(&self, written: &str) -> Option<Expr> {
+        match self.meaning(written)? {
+            Meaning::Derived(e) if !crate::algebra::vector::has_unit_vectors(e) => Some(e.clone()),
+            Meaning::Solutions(each) => each
+                .first()
+                .filter(|e| !crate::algebra::vector::has_unit_vectors(e))
+                .cloned(),
+            _ => None,
+        }
+    }
+
     /// This context deciding claims in numbers within `relative` of the exact value.
     pub fn with_relative_tolerance(mut self, relative: f64) -> Context {
         self.relative_tolerance = relative;

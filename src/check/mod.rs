@@ -3,6 +3,7 @@
 //! mechanics that explains it, and term by term.
 
 pub mod context;
+pub mod derivation;
 pub mod diagnosis;
 pub mod dimension;
 pub mod report;

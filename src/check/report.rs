@@ -211,6 +211,26 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
     out
 }
 
+/// What each component that does not hold should read: `D_y, correct: -3*M/(16*c) - …`
+/// (in the givens' names, and in numbers for a claim written in them).
+pub fn correct_forms(report: &Report, domains: &Domains) -> Vec<String> {
+    not_holding(report)
+        .map(|c| {
+            let form = shown(&c.correct_in_symbols, c.axis, Notation::Text, domains);
+            let value = c
+                .numbers
+                .as_ref()
+                .filter(|_| !c.correct_in_symbols.symbols().is_empty())
+                .map(|n| format!(" = {}", number(n.correct, figures(n), n)))
+                .unwrap_or_default();
+            format!(
+                "{}, correct: {form}{value}",
+                component_label(report, c.axis)
+            )
+        })
+        .collect()
+}
+
 /// `the term X is in kg·m/s where ...`, or `the term X: the argument of sin must ...`.
 fn odd_term_sentence(odd: &OddTerm) -> String {
     if odd.reason.starts_with("is ") {

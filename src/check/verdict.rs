@@ -347,6 +347,21 @@ fn slip_reading(
         }
         let slipped = context.slipped(slip)?;
         let as_slipped = holding_by_values(slipped, source_name, text, report.solution)?;
+        // A claim whose claimed side names what the slip changes, and whose every side the
+        // slip makes zero (`Hdot_z = I_xz alpha - I_xy w^2` with the products of inertia
+        // dropped), holds there vacuously: it is not explained (`B_y = 0` is).
+        let (_, claimed) = sides(context, claim);
+        let claimed_slips = claimed
+            .resolved
+            .iter()
+            .any(|name| context.slip_changes(slip, name));
+        if claimed_slips
+            && as_slipped
+                .iter()
+                .all(|c| c.correct.is_zero() && c.claimed.is_zero())
+        {
+            return None;
+        }
         let pieces = report
             .components
             .iter()

@@ -1,5 +1,6 @@
 //! `kinetics check [SCENE] [--principal] [--fixed-point | --fixed-axis] --claim "<eq>"... [--claims FILE|-]
-//! [--format text|latex|json]`: hand-written claims checked against the derivations.
+//! [--derivation FILE|-] [--format text|latex|json]`: hand-written claims checked against the
+//! derivations; a derivation line by line ([`super::derivation`]).
 //!
 //! Exit status: 0 when every claim holds, 1 when one differs, 3 when none differs and one is
 //! undecided, 2 when an input could not be read (the other claims are still checked).
@@ -31,6 +32,11 @@ pub struct Args {
     /// A file of claims, one a line (`#` starts a comment); `-` reads standard input.
     #[arg(long)]
     pub claims: Option<String>,
+    /// A derivation: successive equations, one a line (`#` comments, blank lines between
+    /// parts), each checked and, where wrong, checked again against the lines before it
+    /// (`follows from line k`: it carries that line's slip); `-` reads standard input.
+    #[arg(long, conflicts_with_all = ["claim", "claims"])]
+    pub derivation: Option<String>,
     /// Principal axes: every product of inertia is zero.
     #[arg(long, conflicts_with_all = ["scene", "fixed_axis"])]
     pub principal: bool,
@@ -70,9 +76,9 @@ struct Written {
 }
 
 /// Exit status 2: an input could not be read.
-const INPUT_ERROR: u8 = 2;
+pub(super) const INPUT_ERROR: u8 = 2;
 /// Exit status 3: no claim differs, and one is undecided.
-const UNDECIDED: u8 = 3;
+pub(super) const UNDECIDED: u8 = 3;
 
 pub fn run(args: Args) -> ExitCode {
     match checked(&args) {
@@ -138,6 +144,9 @@ fn claims(args: &Args) -> Result<Vec<Written>, CliError> {
 
 fn checked(args: &Args) -> Result<ExitCode, CliError> {
     let context = context(args)?;
+    if let Some(path) = &args.derivation {
+        return super::derivation::run(&context, path, args.format);
+    }
     let claims = claims(args)?;
     // The claims share one budget, that of all their text, in proportion to their lengths.
     let whole: usize = claims.iter().map(|w| w.text.len()).sum();

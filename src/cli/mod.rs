@@ -3,6 +3,7 @@
 mod bench;
 mod budget;
 mod check;
+mod derivation;
 mod derive;
 mod error;
 mod figure;

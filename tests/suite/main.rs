@@ -18,6 +18,7 @@ mod cancel_agrees_with_sympy;
 mod cancel_corpus_parses;
 mod check_cli;
 mod check_corpus;
+mod check_derivation;
 mod check_dimension;
 mod check_properties;
 mod check_slips;

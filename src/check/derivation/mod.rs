@@ -1,0 +1,184 @@
+//! A hand derivation checked line by line, with error carried forward.
+//!
+//! A derivation is a chain of equations, one a line. Each line is first decided against the
+//! mechanics ([`check`]): `holds`, `differs` (with its slip), `undecided`. A line that differs
+//! is then decided again in the student's world ([`world`]): the values the earlier lines,
+//! taken as true, give the derived names. Where it holds there it `follows from` the earlier
+//! lines that differ and that its names' values rest on: it is wrong only because it carries
+//! their slip (the marking scheme's "error carried forward").
+//!
+//! Blank lines separate the parts of a file (each its own chain); `#` starts a comment.
+
+pub mod report;
+mod world;
+
+use super::context::Context;
+use super::verdict::{check, Report, Verdict};
+use crate::parse::{parse_claim_with_units, Diagnostic};
+use world::World;
+
+/// A line of a derivation: its number in its file and its text.
+#[derive(Debug, Clone)]
+pub struct Line {
+    pub number: usize,
+    pub text: String,
+}
+
+/// What a line of a derivation is judged.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Judgement {
+    Holds,
+    Differs,
+    /// Wrong against the mechanics, right from the earlier wrong lines.
+    Follows,
+    Undecided,
+    /// The line could not be read.
+    Error,
+}
+
+impl Judgement {
+    /// The judgement as a word: `holds`, `differs`, `follows`, `undecided`, `error`.
+    pub fn word(self) -> &'static str {
+        match self {
+            Judgement::Holds => "holds",
+            Judgement::Differs => "differs",
+            Judgement::Follows => "follows",
+            Judgement::Undecided => "undecided",
+            Judgement::Error => "error",
+        }
+    }
+}
+
+/// One line checked: against the mechanics, and (where it differs) in the student's world.
+#[derive(Debug, Clone)]
+pub struct LineCheck {
+    pub line: Line,
+    /// The check against the mechanics, or why the line could not be read.
+    pub outcome: Result<Report, Box<Diagnostic>>,
+    /// The earlier lines that differ whose slip this line carries (none unless it differs
+    /// and holds in the world of the lines before it).
+    pub follows_from: Vec<usize>,
+}
+
+impl LineCheck {
+    pub fn judgement(&self) -> Judgement {
+        match &self.outcome {
+            Err(_) => Judgement::Error,
+            Ok(_) if !self.follows_from.is_empty() => Judgement::Follows,
+            Ok(r) => match r.verdict {
+                Verdict::Holds => Judgement::Holds,
+                Verdict::Differs => Judgement::Differs,
+                Verdict::Undecided => Judgement::Undecided,
+            },
+        }
+    }
+}
+
+/// The parts of a derivation file: runs of lines between blank lines, `#` comments and
+/// trailing blanks taken off (a line that is only a comment neither counts nor separates).
+pub fn parts(text: &str) -> Vec<Vec<Line>> {
+    let mut parts: Vec<Vec<Line>> = vec![Vec::new()];
+    for (k, raw) in text.lines().enumerate() {
+        let is_comment = raw.trim_start().starts_with('#');
+        let content = raw.split('#').next().unwrap_or_default().trim_end();
+        if content.trim().is_empty() {
+            if !is_comment && parts.last().is_some_and(|p| !p.is_empty()) {
+                parts.push(Vec::new());
+            }
+            continue;
+        }
+        if let Some(part) = parts.last_mut() {
+            part.push(Line {
+                number: k + 1,
+                text: content.to_string(),
+            });
+        }
+    }
+    parts.retain(|p| !p.is_empty());
+    parts
+}
+
+/// Checks one part of a derivation, line by line, in `context` ([the module](self)).
+pub fn check_derivation(context: &Context, source_name: &str, lines: &[Line]) -> Vec<LineCheck> {
+    let mut world = World::new(context);
+    let mut checked: Vec<LineCheck> = Vec::with_capacity(lines.len());
+    for line in lines {
+        let outcome = check(context, source_name, &line.text).map_err(|mut d| {
+            d.line = line.number;
+            Box::new(d)
+        });
+        let differs = outcome
+            .as_ref()
+            .is_ok_and(|r| r.verdict == Verdict::Differs);
+        let follows_from = match differs {
+            true => carried(context, &world, &checked, source_name, &line.text),
+            false => Vec::new(),
+        };
+        if outcome.is_ok() {
+            world.take(line.number, source_name, &line.text);
+        }
+        checked.push(LineCheck {
+            line: line.clone(),
+            outcome,
+            follows_from,
+        });
+    }
+    checked
+}
+
+/// The earlier lines that differ (not themselves carrying a slip) whose values `text` rests
+/// on, when it holds in the world of the earlier lines; none when it does not.
+fn carried(
+    context: &Context,
+    world: &World,
+    earlier: &[LineCheck],
+    source_name: &str,
+    text: &str,
+) -> Vec<usize> {
+    let values = world.values();
+    if values.is_empty() {
+        return Vec::new();
+    }
+    let slips: Vec<usize> = earlier
+        .iter()
+        .filter(|c| c.judgement() == Judgement::Differs)
+        .map(|c| c.line.number)
+        .collect();
+    let names = names_written(context, source_name, text);
+    let under: Vec<usize> = world
+        .lines_under(names.iter())
+        .into_iter()
+        .filter(|l| slips.contains(l))
+        .collect();
+    if under.is_empty() {
+        return Vec::new();
+    }
+    let in_world = context.with_names(&values);
+    match check(&in_world, source_name, text) {
+        Ok(r) if r.verdict == Verdict::Holds => under,
+        _ => Vec::new(),
+    }
+}
+
+/// The derived names `text` writes.
+fn names_written(context: &Context, source_name: &str, text: &str) -> Vec<String> {
+    let resolve = |name: &str| context.name(name);
+    let unit = |name: &str| context.unit(name);
+    match parse_claim_with_units(source_name, text, &resolve, Some(&unit)) {
+        Ok(claim) => claim.resolved_names().cloned().collect(),
+        Err(_) => Vec::new(),
+    }
+}
+
+/// The first line that differs (a slip of its own), and the lines that carry it.
+pub fn first_slip(checked: &[LineCheck]) -> Option<(&LineCheck, Vec<usize>)> {
+    let first = checked
+        .iter()
+        .find(|c| c.judgement() == Judgement::Differs)?;
+    let carrying = checked
+        .iter()
+        .filter(|c| c.follows_from.contains(&first.line.number))
+        .map(|c| c.line.number)
+        .collect();
+    Some((first, carrying))
+}

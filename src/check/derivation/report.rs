@@ -1,0 +1,103 @@
+//! A derivation's check as a person reads it: each line's verdict (a line that carries an
+//! earlier slip says which line it follows from), then for each part the first wrong line,
+//! its slip and the lines that carry it. In text and JSON.
+
+use super::{first_slip, Judgement, LineCheck};
+use crate::algebra::Domains;
+use crate::check::report;
+use serde_json::{json, Value as Json};
+
+/// `lines 3, 4 and 5`, `line 2`.
+pub fn line_list(lines: &[usize]) -> String {
+    let numbers: Vec<String> = lines.iter().map(ToString::to_string).collect();
+    match numbers.as_slice() {
+        [] => String::new(),
+        [one] => format!("line {one}"),
+        [init @ .., last] => format!("lines {} and {last}", init.join(", ")),
+    }
+}
+
+/// The part's report in text.
+pub fn text(checked: &[LineCheck], source_name: &str, domains: &Domains) -> String {
+    let mut out = String::new();
+    for c in checked {
+        let label = format!("{source_name}:{}", c.line.number);
+        match (&c.outcome, c.judgement()) {
+            (Err(d), _) => out.push_str(&format!(
+                "error ({label}): {}\n  {}\n",
+                c.line.text, d.message
+            )),
+            (Ok(r), Judgement::Follows) => {
+                let from = line_list(&c.follows_from);
+                out.push_str(&format!("follows from {from} ({label}): {}\n", c.line.text));
+                out.push_str(&format!(
+                    "  right from {from}, which differs: it carries that slip, and is otherwise correct\n"
+                ));
+                for form in report::correct_forms(r, domains) {
+                    out.push_str(&format!("  {form}\n"));
+                }
+            }
+            (Ok(r), _) => out.push_str(&report::text(r, &label, domains)),
+        }
+    }
+    out.push_str(&summary(checked));
+    out.push('\n');
+    out
+}
+
+/// `first wrong line: 2 (sign-flipped); lines 3, 4 and 5 carry it`, or `every line holds`.
+pub fn summary(checked: &[LineCheck]) -> String {
+    let (Some(first), Some(last)) = (checked.first(), checked.last()) else {
+        return String::new();
+    };
+    let span = format!("lines {}-{}", first.line.number, last.line.number);
+    match first_slip(checked) {
+        Some((slip, carrying)) => {
+            let reading = slip
+                .outcome
+                .as_ref()
+                .ok()
+                .and_then(|r| r.reading())
+                .map(|r| format!(" ({r})"))
+                .unwrap_or_default();
+            let carried = match carrying.len() {
+                0 => "no later line carries it".to_string(),
+                1 => format!("{} carries it", line_list(&carrying)),
+                _ => format!("{} carry it", line_list(&carrying)),
+            };
+            format!(
+                "{span}: first wrong line {}{reading}; {carried}",
+                slip.line.number
+            )
+        }
+        None if checked.iter().all(|c| c.judgement() == Judgement::Holds) => {
+            format!("{span}: every line holds")
+        }
+        None => format!("{span}: no line differs"),
+    }
+}
+
+/// The part's report as JSON: each line's check and what it follows from, and the first slip.
+pub fn json(checked: &[LineCheck], domains: &Domains) -> Json {
+    let lines: Vec<Json> = checked
+        .iter()
+        .map(|c| {
+            let mut j = match &c.outcome {
+                Ok(r) => report::json(r, domains),
+                Err(d) => {
+                    json!({"claim": c.line.text, "reading": Json::Null, "error": d.to_string()})
+                }
+            };
+            j["line"] = c.line.number.into();
+            j["verdict"] = c.judgement().word().into();
+            j["follows_from"] = c.follows_from.clone().into();
+            j
+        })
+        .collect();
+    let slip = first_slip(checked).map(|(first, carrying)| {
+        json!({"line": first.line.number,
+               "reading": first.outcome.as_ref().ok().and_then(|r| r.reading()),
+               "carried_by": carrying})
+    });
+    json!({"lines": lines, "first_slip": slip})
+}

@@ -81,6 +81,7 @@
 pub mod algebra;
 pub mod check;
 pub mod figure;
+pub mod marking;
 pub mod mechanics;
 pub mod numeric;
 pub mod parse;

@@ -8,6 +8,7 @@ mod derive;
 mod error;
 mod figure;
 mod input;
+mod mark;
 #[cfg(feature = "plot")]
 mod plot;
 mod progress;
@@ -51,6 +52,8 @@ enum Command {
     /// Check hand-written claims against the derivations: holds, differs (and what is
     /// wrong), or undecided.
     Check(check::Args),
+    /// Mark a class: a scheme's questions, a CSV of answers; grades, feedback and a summary.
+    Mark(mark::Args),
     /// Show which derivations a scene's requests pull, in order.
     Plan(solve::PlanArgs),
     /// Draw a scene's figure: the body, its axes and loads (SVG or TikZ).
@@ -112,6 +115,7 @@ fn execute(command: Command) -> Result<ExitCode, CliError> {
         Command::Derive(args) => derive::run(args),
         Command::Solve(args) => solve::run(args),
         Command::Plan(args) => solve::plan(args),
+        Command::Mark(args) => mark::run(args),
         Command::Figure(args) => figure::run(args),
         Command::Simulate(args) => simulate::run(args),
         Command::Bench(b) => bench::run(b),

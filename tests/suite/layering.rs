@@ -6,7 +6,7 @@
 use std::path::Path;
 
 /// Each folder of `src/` and the folders it may use, lowest first.
-const LAYERS: [(&str, &[&str]); 10] = [
+const LAYERS: [(&str, &[&str]); 11] = [
     ("algebra", &[]),
     ("parse", &["algebra"]),
     ("print", &["algebra"]),
@@ -34,6 +34,18 @@ const LAYERS: [(&str, &[&str]); 10] = [
         &["algebra", "parse", "print", "mechanics", "numeric", "scene"],
     ),
     (
+        "marking",
+        &[
+            "algebra",
+            "parse",
+            "print",
+            "mechanics",
+            "numeric",
+            "scene",
+            "check",
+        ],
+    ),
+    (
         "cli",
         &[
             "algebra",
@@ -45,6 +57,7 @@ const LAYERS: [(&str, &[&str]); 10] = [
             "figure",
             "solution",
             "check",
+            "marking",
         ],
     ),
 ];

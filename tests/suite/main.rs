@@ -60,6 +60,7 @@ mod latex_pages;
 mod latex_width;
 mod layering;
 mod line_break;
+mod marking;
 mod markup;
 mod mathml;
 mod motion_obeys_loads;

@@ -55,6 +55,14 @@ pub fn latex_words(words: &str) -> String {
     out
 }
 
+/// Plain words in Markdown, by the one escaper of Markdown's words: what [`markdown`] does
+/// to a title's words.
+pub fn markdown_words(words: &str) -> String {
+    let mut out = String::with_capacity(words.len() + words.len() / 4);
+    markdown::words(&mut out, words);
+    out
+}
+
 /// Markdown: words escaped for Markdown, each mathematics as `$…$` (LaTeX); no `<`, `>` or
 /// `&` as itself anywhere, so no tag reaches a renderer.
 pub fn markdown(title: &str) -> String {

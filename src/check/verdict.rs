@@ -116,6 +116,21 @@ pub struct Report {
 }
 
 impl Report {
+    /// The slip in words: the mechanics' slip's concept, or the first differing
+    /// component's reading's explanation, or the odd term's dimension.
+    pub fn reading_words(&self) -> Option<String> {
+        if let Some(odd) = &self.odd_term {
+            return Some(format!("the term {} {}", odd.text, odd.reason));
+        }
+        if let Some(slip) = &self.slip {
+            return Some(crate::print::markup::text(slip.slip.concept()));
+        }
+        self.components
+            .iter()
+            .filter(|c| c.verdict == Verdict::Differs)
+            .find_map(|c| Some(c.diagnosis.as_ref()?.reading.as_ref()?.explanation.clone()))
+    }
+
     /// The name of the slip: `inhomogeneous`, or the first differing component's reading.
     pub fn reading(&self) -> Option<&'static str> {
         if self.odd_term.is_some() {

@@ -17,7 +17,9 @@ pub struct SlipCount {
     pub slip: Slip,
     pub students: usize,
     pub carried: usize,
+    /// The first example met: the wrong line as written, and the slip in words there.
     pub example: Option<String>,
+    pub words: Option<String>,
 }
 
 /// The slips of question `q`, most frequent first (ties by name).
@@ -36,11 +38,15 @@ pub fn slips(class: &Class, q: usize) -> Vec<SlipCount> {
             students: 0,
             carried: 0,
             example: None,
+            words: None,
         });
         entry.students += 1;
         if let Some((line, carrying)) = first {
             entry.carried += usize::from(!carrying.is_empty());
-            entry.example.get_or_insert_with(|| line.line.text.clone());
+            if entry.example.is_none() {
+                entry.example = Some(line.line.text.clone());
+                entry.words = line.outcome.as_ref().ok().and_then(|r| r.reading_words());
+            }
         }
     }
     let mut ranked: Vec<SlipCount> = counts.into_values().collect();
@@ -103,11 +109,16 @@ pub fn summary(scheme: &Scheme, class: &Class, submissions_name: &str) -> Docume
                     Slip::Named(name) => question.feedback.get(*name).cloned(),
                     _ => None,
                 };
+                let mut example: Vec<Inline> =
+                    s.example.clone().map(Inline::Code).into_iter().collect();
+                if let Some(w) = &s.words {
+                    example.push(Inline::Text(format!(": {w}")));
+                }
                 vec![
                     vec![Inline::Strong(s.slip.words())],
                     vec![Inline::Text(s.students.to_string())],
                     vec![Inline::Text(s.carried.to_string())],
-                    s.example.clone().map(Inline::Code).into_iter().collect(),
+                    example,
                     vec![Inline::Text(words.unwrap_or_default())],
                 ]
             })
@@ -117,7 +128,7 @@ pub fn summary(scheme: &Scheme, class: &Class, submissions_name: &str) -> Docume
                 "slip".into(),
                 "students".into(),
                 "carried into later lines".into(),
-                "example".into(),
+                "example, and the slip in it".into(),
                 "your words".into(),
             ],
             rows,

@@ -92,11 +92,15 @@ fn every_help_carries_an_example_that_runs() {
         assert_eq!(lines.len(), 1, "{command}: one example\n{help}");
         let words = words(&lines[0]);
         assert_eq!(words[0], "kinetics", "{command}: {}", lines[0]);
+        // `mark` writes its outputs into `marked/` and never over an earlier run's.
+        let marked = std::path::Path::new(root).join("marked");
+        let _ = std::fs::remove_dir_all(&marked);
         let out = std::process::Command::new(env!("CARGO_BIN_EXE_kinetics"))
             .args(&words[1..])
             .current_dir(root)
             .output()
             .expect("runs");
+        let _ = std::fs::remove_dir_all(&marked);
         // `check` exits 1 when its example's claim differs, a verdict like any other.
         let verdict = command == "check" && out.status.code() == Some(1);
         assert!(

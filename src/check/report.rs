@@ -212,21 +212,27 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
 }
 
 /// What each component that does not hold should read: `D_y, correct: -3*M/(16*c) - …`
-/// (in the givens' names, and in numbers for a claim written in them).
-pub fn correct_forms(report: &Report, domains: &Domains) -> Vec<String> {
+/// (in the givens' names, and in numbers for a claim written in them). In LaTeX
+/// (`notation`), the label in words and the form as `$…$`.
+pub fn correct_forms(report: &Report, notation: Notation, domains: &Domains) -> Vec<String> {
     not_holding(report)
         .map(|c| {
-            let form = shown(&c.correct_in_symbols, c.axis, Notation::Text, domains);
+            let form = shown(&c.correct_in_symbols, c.axis, notation, domains);
             let value = c
                 .numbers
                 .as_ref()
                 .filter(|_| !c.correct_in_symbols.symbols().is_empty())
                 .map(|n| format!(" = {}", number(n.correct, figures(n), n)))
                 .unwrap_or_default();
-            format!(
-                "{}, correct: {form}{value}",
-                component_label(report, c.axis)
-            )
+            let label = component_label(report, c.axis);
+            match notation {
+                Notation::Latex => format!(
+                    "{}, correct: ${form}${}",
+                    markup::latex_words(&label),
+                    markup::latex_words(&value).replacen(" = -", " = $-$", 1)
+                ),
+                _ => format!("{label}, correct: {form}{value}"),
+            }
         })
         .collect()
 }

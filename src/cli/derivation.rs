@@ -45,7 +45,12 @@ pub fn run(context: &Context, path: &str, format: Format) -> Result<ExitCode, Cl
             stdout =
                 serde_json::json!({"context": context.description, "parts": parts}).to_string();
         }
-        _ => {
+        Format::Latex => {
+            for part in &checked {
+                stdout.push_str(&report::latex(part, &name, domains));
+            }
+        }
+        Format::Text => {
             for part in &checked {
                 stdout.push_str(&report::text(part, &name, domains));
             }

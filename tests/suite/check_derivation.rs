@@ -203,3 +203,43 @@ fn the_text_report_names_the_first_slip_and_the_lines_carrying_it() {
         run.stdout
     );
 }
+
+/// In LaTeX, a carried line is a paragraph saying which line it follows from, with the
+/// correct form in mathematics; the part's summary is a comment.
+#[test]
+fn the_latex_report_says_which_line_a_carried_line_follows_from() {
+    let text = "Hdot_z = -I_xz alpha - I_xy w^2\n-D_y L = Hdot_z\nD_y = 129.8 N\n";
+    let run = kinetics_with_input(
+        &[
+            "check",
+            &context_args(SP18_4)[0],
+            "--derivation",
+            "-",
+            "--format",
+            "latex",
+        ],
+        text,
+    );
+    assert!(
+        run.stdout
+            .contains(r"stdin\textgreater{}:2 differs (scaled).}"),
+        "{}",
+        run.stdout
+    );
+    assert!(
+        run.stdout
+            .contains(r"stdin\textgreater{}:3 follows from line 2.}"),
+        "{}",
+        run.stdout
+    );
+    assert!(
+        run.stdout.contains(
+            r"D\_y, correct: $-\frac{3 M}{16 c} - \frac{1}{4} m c \omega^2$ = $-$129.8 N."
+        ),
+        "{}",
+        run.stdout
+    );
+    assert!(run
+        .stdout
+        .contains("% lines 1-3: first wrong line 2 (scaled); line 3 carries it"));
+}

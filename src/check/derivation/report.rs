@@ -5,6 +5,7 @@
 use super::{first_slip, Judgement, LineCheck};
 use crate::algebra::Domains;
 use crate::check::report;
+use crate::print::{markup, Notation};
 use serde_json::{json, Value as Json};
 
 /// `lines 3, 4 and 5`, `line 2`.
@@ -33,7 +34,7 @@ pub fn text(checked: &[LineCheck], source_name: &str, domains: &Domains) -> Stri
                 out.push_str(&format!(
                     "  right from {from}, which differs: it carries that slip, and is otherwise correct\n"
                 ));
-                for form in report::correct_forms(r, domains) {
+                for form in report::correct_forms(r, Notation::Text, domains) {
                     out.push_str(&format!("  {form}\n"));
                 }
             }
@@ -42,6 +43,37 @@ pub fn text(checked: &[LineCheck], source_name: &str, domains: &Domains) -> Stri
     }
     out.push_str(&summary(checked));
     out.push('\n');
+    out
+}
+
+/// The part's report in LaTeX: a paragraph a line (a carried line says which line it
+/// follows from and gives the correct form), then the summary as a comment.
+pub fn latex(checked: &[LineCheck], source_name: &str, domains: &Domains) -> String {
+    let mut out = String::new();
+    for c in checked {
+        let label = format!("{source_name}:{}", c.line.number);
+        let (label_tex, text_tex) = (
+            markup::latex_words(&label),
+            markup::latex_words(&c.line.text),
+        );
+        match (&c.outcome, c.judgement()) {
+            (Err(d), _) => out.push_str(&format!(
+                "\\paragraph{{{label_tex} error.}} \\texttt{{{text_tex}}}: {}.\n",
+                markup::latex_words(&d.message)
+            )),
+            (Ok(r), Judgement::Follows) => {
+                let from = line_list(&c.follows_from);
+                out.push_str(&format!(
+                    "\\paragraph{{{label_tex} follows from {from}.}} \\texttt{{{text_tex}}}\nRight from {from}, which differs: it carries that slip, and is otherwise correct.\n"
+                ));
+                for form in report::correct_forms(r, Notation::Latex, domains) {
+                    out.push_str(&format!("{form}.\n"));
+                }
+            }
+            (Ok(r), _) => out.push_str(&report::latex(r, &label, domains)),
+        }
+    }
+    out.push_str(&format!("% {}\n", summary(checked)));
     out
 }
 

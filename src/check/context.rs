@@ -70,6 +70,8 @@ pub struct Context {
     source: Option<Source>,
     /// The context derived with each slip of [`Slip::ALL`], when a claim first needs it.
     slipped: Arc<[OnceLock<Option<Context>>; Slip::ALL.len()]>,
+    /// Names that are another spelling of one quantity (`M_x` of `SumM_x`), by the spelling.
+    spellings: HashMap<String, String>,
 }
 
 /// Where a context's meanings come from.
@@ -150,6 +152,7 @@ impl Context {
         let euler = Context::derive_vector("euler", principal)?;
         c.components("M", &euler);
         c.components("SumM", &euler);
+        c.moments_spelt_m();
         c.derived("SumM", unit_vector_sum(&euler));
         // Body-fixed axes: the frame turns with the body, Ω = ω.
         let body_fixed = |s: Symbol| match s.name() {
@@ -232,6 +235,7 @@ impl Context {
         let moments = Context::derive_vector("fixed_axis", false)?;
         c.components("M", &moments);
         c.components("SumM", &moments);
+        c.moments_spelt_m();
         c.derived("SumM", unit_vector_sum(&moments));
         let reactions = derive_general("reactions", false).expect("a catalogue name")?;
         for r in reactions.result() {
@@ -445,6 +449,23 @@ impl Context {
             relative_tolerance: DEFAULT_RELATIVE_TOLERANCE,
             source: None,
             slipped: Arc::new(std::array::from_fn(|_| OnceLock::new())),
+            spellings: HashMap::new(),
+        }
+    }
+
+    /// `M_x`, `M_y`, `M_z`: other spellings of `SumM_x`, `SumM_y`, `SumM_z`.
+    fn moments_spelt_m(&mut self) {
+        for axis in ["x", "y", "z"] {
+            self.spellings
+                .insert(format!("M_{axis}"), format!("SumM_{axis}"));
+        }
+    }
+
+    /// The one name of the quantity `written` stands for: `SumM_x` for `M_x`, `w_1` for `w1`.
+    pub fn canonical(&self, written: &str) -> String {
+        match self.spellings.get(written) {
+            Some(name) => name.clone(),
+            None => Symbol::new(written).name().to_string(),
         }
     }
 
@@ -647,8 +668,11 @@ impl Context {
     pub fn with_names(&self, values: &HashMap<String, Expr>) -> Context {
         let mut c = self.clone();
         for (name, value) in values {
-            c.meanings
-                .insert(name.clone(), Meaning::Derived(value.clone()));
+            let spellings = self.spellings.iter().filter(|(_, of)| *of == name);
+            for written in spellings.map(|(w, _)| w).chain([name]) {
+                c.meanings
+                    .insert(written.clone(), Meaning::Derived(value.clone()));
+            }
         }
         c.source = None;
         c.slipped = Arc::new(std::array::from_fn(|_| OnceLock::new()));

@@ -10,7 +10,6 @@ use super::check::{INPUT_ERROR, UNDECIDED};
 use super::error::CliError;
 use super::input::read_file;
 use super::show::Format;
-use kinetics::algebra::work::Budget;
 use kinetics::check::context::Context;
 use kinetics::check::derivation::{check_derivation, parts, report, Judgement, LineCheck};
 use std::io::Write;
@@ -24,18 +23,9 @@ pub fn run(context: &Context, path: &str, format: Format) -> Result<ExitCode, Cl
             "{name} holds no line to check\n  = help: write one equation a line, like T = 1/2 m v^2"
         )));
     }
-    let budget = Budget::for_input(source.len());
-    let checked: Vec<Vec<LineCheck>> = parts
-        .iter()
-        .map(|lines| {
-            let bytes: usize = lines.iter().map(|l| l.text.len()).sum();
-            let input = Input {
-                budget: budget.share(bytes, source.len()),
-                ..Input::expression(&name, &source)
-            };
-            input.within(|| Ok::<_, CliError>(check_derivation(context, &name, lines)))
-        })
-        .collect::<Result<_, _>>()?;
+    let checked: Vec<Vec<LineCheck>> = Input::expression(&name, &source)
+        .within(|| Ok::<_, CliError>(check_derivation(context, &name, &parts, &[])))?
+        .parts;
     let domains = context.domains();
     let mut stdout = String::new();
     match format {

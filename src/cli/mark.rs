@@ -55,14 +55,7 @@ pub fn run(args: Args) -> Result<String, CliError> {
     let outputs = Outputs::new(&args.output);
     outputs.refuse_overwriting(args.force)?;
     let class = super::progress::with_bar(|progress| {
-        mark_class(
-            &scheme,
-            &contexts,
-            &args.submissions,
-            &answers,
-            bad,
-            progress,
-        )
+        mark_class(&scheme, &contexts, &answers, bad, progress)
     });
     outputs.write(&scheme, &contexts, &class, &args.submissions)?;
     for b in &class.bad_rows {

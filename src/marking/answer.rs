@@ -1,19 +1,41 @@
 //! One answer marked: its lines checked as a derivation ([`check_derivation`]), and each
-//! quantity the question asks for (a step) marked by the last line that gives it,
-//! `D_y = …`: full marks where it holds, the scheme's carried-forward fraction where it is
-//! wrong only because it carries an earlier slip, none otherwise.
+//! quantity the question asks for (a step) marked by what the answer gives it: the value
+//! its lines, taken as true, fix for the quantity, stated by its last line `D_y = …`.
+//!
+//! - full marks where that value is the mechanics' own, in the givens (and the names the
+//!   scheme lets an answer leave, `may_use`);
+//! - the scheme's carried-forward fraction where the value is wrong only because it rests
+//!   on an earlier wrong line (the last line holds as a relation, or follows from it);
+//! - none where the last line has a slip of its own, where no line states the quantity, or
+//!   where its value is left in another quantity (`T_BC = T_BC`, `M_x = Hdot_x - m g c`).
 
 use super::scheme::Question;
 use crate::check::context::Context;
-use crate::check::derivation::{check_derivation, first_slip, Judgement, Line, LineCheck};
+use crate::check::derivation::{check_derivation, first_slip, Given, Judgement, Line, LineCheck};
+
+/// How a step stands in an answer.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Standing {
+    /// The value is the mechanics' own.
+    Right,
+    /// Wrong only because it carries the slip of these earlier lines.
+    Carried(Vec<usize>),
+    /// The line stating it has a slip of its own (or cannot be read, or is undecided).
+    Wrong,
+    /// No line states it (`NAME = …`), or none fixes its value.
+    Missing,
+    /// Its value is left in these derived quantities.
+    LeftIn(Vec<String>),
+}
 
 /// A step of a question as one answer gives it.
 #[derive(Debug, Clone)]
 pub struct Step {
     /// The quantity the step gives.
     pub quantity: String,
-    /// The answer's line that gives it (an index into [`Marked::lines`]), if any does.
+    /// The answer's last line stating it (an index into [`Marked::lines`]), if any does.
     pub line: Option<usize>,
+    pub standing: Standing,
     pub marks: f64,
     pub out_of: f64,
 }
@@ -32,10 +54,14 @@ pub struct Marked {
 pub enum Slip {
     /// A named slip (`sign-flipped`, `omega-for-Omega`, …).
     Named(&'static str),
+    /// A line that relates quantities earlier lines gave, and does not follow from them.
+    Algebra,
     /// A line differs and no reading fits.
     Unnamed,
     /// No line gives a quantity the question asks for.
     StepMissing,
+    /// A quantity left in another quantity, not in the givens.
+    LeftIn,
     /// A line could not be read.
     Unreadable,
     /// A line the checker could not decide (to look at by hand).
@@ -49,8 +75,10 @@ impl Slip {
     pub fn words(&self) -> String {
         match self {
             Slip::Named(name) => (*name).to_string(),
+            Slip::Algebra => "algebra: a line does not follow from the lines before it".into(),
             Slip::Unnamed => "differs (no reading fits)".into(),
             Slip::StepMissing => "a quantity asked for is not given".into(),
+            Slip::LeftIn => "a quantity left in another, not in the givens".into(),
             Slip::Unreadable => "a line could not be read".into(),
             Slip::Undecided => "undecided (look by hand)".into(),
             Slip::NoAnswer => "no answer marked".into(),
@@ -74,6 +102,9 @@ impl Marked {
     /// The answer's first slip, if it lost marks or holds a wrong line.
     pub fn slip(&self) -> Option<Slip> {
         if let Some((first, _)) = first_slip(&self.lines) {
+            if !first.does_not_follow.is_empty() {
+                return Some(Slip::Algebra);
+            }
             return Some(
                 match first.outcome.as_ref().ok().and_then(|r| r.reading()) {
                     Some(name) => Slip::Named(name),
@@ -82,10 +113,13 @@ impl Marked {
             );
         }
         let any = |j: Judgement| self.lines.iter().any(|l| l.judgement() == j);
+        let standing = |f: &dyn Fn(&Standing) -> bool| self.steps.iter().any(|s| f(&s.standing));
         if any(Judgement::Error) {
             Some(Slip::Unreadable)
-        } else if self.steps.iter().any(|s| s.line.is_none()) {
+        } else if standing(&|s| matches!(s, Standing::Missing)) {
             Some(Slip::StepMissing)
+        } else if standing(&|s| matches!(s, Standing::LeftIn(_))) {
+            Some(Slip::LeftIn)
         } else if any(Judgement::Undecided) {
             Some(Slip::Undecided)
         } else {
@@ -117,21 +151,37 @@ pub fn mark_answer(
             last.text = format!("{quantity} = {}", last.text);
         }
     }
-    let checked = check_derivation(context, source_name, &lines);
+    let mut checked = check_derivation(context, source_name, &[lines], &question.gives);
+    let checked_lines = checked.parts.pop().unwrap_or_default();
     let out_of = question.marks / question.gives.len() as f64;
+    let may_use: Vec<String> = question
+        .may_use
+        .iter()
+        .map(|n| context.canonical(n))
+        .collect();
     let steps: Vec<Step> = question
         .gives
         .iter()
-        .map(|quantity| {
-            let line = checked.iter().rposition(|c| gives(&c.line.text, quantity));
-            let credit = match line.map(|k| checked[k].judgement()) {
-                Some(Judgement::Holds) => 1.0,
-                Some(Judgement::Follows) => question.carried_forward,
+        .zip(&checked.asked)
+        .map(|(quantity, given)| {
+            let line = checked_lines
+                .iter()
+                .rposition(|c| states(context, &c.line.text, quantity));
+            let standing = standing(
+                line.map(|k| &checked_lines[k]),
+                given.as_ref(),
+                &checked_lines,
+                &may_use,
+            );
+            let credit = match &standing {
+                Standing::Right => 1.0,
+                Standing::Carried(_) => question.carried_forward,
                 _ => 0.0,
             };
             Step {
                 quantity: quantity.clone(),
                 line,
+                standing,
                 marks: credit * out_of,
                 out_of,
             }
@@ -139,14 +189,56 @@ pub fn mark_answer(
         .collect();
     Marked {
         marks: steps.iter().map(|s| s.marks).sum(),
-        lines: checked,
+        lines: checked_lines,
         steps,
     }
 }
 
-/// Whether `line` gives `quantity`: its left side is the name alone (`D_y = …`; in
-/// `D_y L = Hdot_z` Ḣ_z is used, not given).
-fn gives(line: &str, quantity: &str) -> bool {
-    line.split_once('=')
-        .is_some_and(|(left, _)| left.trim() == quantity)
+/// How a step stands: `line` the last line stating it, `given` what the lines give it.
+fn standing(
+    line: Option<&LineCheck>,
+    given: Option<&Given>,
+    lines: &[LineCheck],
+    may_use: &[String],
+) -> Standing {
+    let (Some(line), Some(given)) = (line, given) else {
+        return Standing::Missing;
+    };
+    if !matches!(line.judgement(), Judgement::Holds | Judgement::Follows) {
+        return Standing::Wrong;
+    }
+    let left_in: Vec<String> = given
+        .left_in
+        .iter()
+        .filter(|n| !may_use.contains(n))
+        .cloned()
+        .collect();
+    if !left_in.is_empty() {
+        return Standing::LeftIn(left_in);
+    }
+    if given.agrees {
+        return Standing::Right;
+    }
+    let slips: Vec<usize> = lines
+        .iter()
+        .filter(|c| c.judgement() == Judgement::Differs && given.lines.contains(&c.line.number))
+        .map(|c| c.line.number)
+        .collect();
+    match slips.is_empty() {
+        true => Standing::Wrong,
+        false => Standing::Carried(slips),
+    }
+}
+
+/// Whether `line` states `quantity`: its left side is the name alone, in any spelling of the
+/// quantity (`D_y = …`, `M_x = …` for `SumM_x`; in `D_y L = Hdot_z` Ḣ_z is used, not stated).
+fn states(context: &Context, line: &str, quantity: &str) -> bool {
+    line.split_once('=').is_some_and(|(left, _)| {
+        let left = left.trim();
+        left.starts_with(|c: char| c.is_ascii_alphabetic())
+            && left
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || "_'".contains(c))
+            && context.canonical(left) == context.canonical(quantity)
+    })
 }

@@ -13,6 +13,19 @@ pub enum Inline {
     Strong(String),
 }
 
+/// Words in which a formula is quoted between backticks (a reading's explanation:
+/// "the sign of `3*M*L/(16*c)` is flipped") as text and code.
+pub fn words_and_code(text: &str) -> Vec<Inline> {
+    text.split('`')
+        .enumerate()
+        .filter(|(_, part)| !part.is_empty())
+        .map(|(k, part)| match k % 2 {
+            0 => Inline::Text(part.to_string()),
+            _ => Inline::Code(part.to_string()),
+        })
+        .collect()
+}
+
 /// A block of a page.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Block {
@@ -116,7 +129,7 @@ fn inline_html(out: &mut String, inlines: &[Inline]) {
 const STYLE: &str = "body{font-family:system-ui,sans-serif;max-width:52rem;margin:2rem auto;\
 padding:0 1rem;line-height:1.45;color:#222}table{border-collapse:collapse;margin:.5rem 0 1rem}\
 td,th{border:1px solid #bbb;padding:.25rem .6rem;text-align:left;vertical-align:top}\
-th{background:#f0f0f0}pre{background:#f7f7f7;padding:.6rem;overflow-x:auto}\
+th{background:#f0f0f0}pre{background:#f7f7f7;padding:.6rem;white-space:pre-wrap;overflow-wrap:anywhere}\
 code{background:#f3f3f3;padding:0 .2rem}blockquote{border-left:4px solid #7a9;margin:0;\
 padding:.2rem .8rem;background:#f4faf6}";
 

@@ -2,12 +2,12 @@
 //! carries an earlier slip says so), the slip in words and in the checker's mathematics, the
 //! instructor's words for it, and the marks of each step.
 
-use super::answer::Marked;
+use super::answer::{Marked, Standing, Step};
 use super::document::{Block, Document, Inline};
 use super::scheme::{Question, Scheme};
 use super::{marks_text, Answer, Class};
 use crate::check::context::Context;
-use crate::check::derivation::report::line_list;
+use crate::check::derivation::report::{algebra_words, line_list};
 use crate::check::derivation::{Judgement, LineCheck};
 use crate::check::report;
 
@@ -20,6 +20,10 @@ pub fn feedback(
     submissions_name: &str,
 ) -> Document {
     let student = &class.students[k];
+    // The file's name, not where the instructor keeps it.
+    let submissions_name = std::path::Path::new(submissions_name)
+        .file_name()
+        .map_or(submissions_name.into(), |f| f.to_string_lossy());
     let out_of: f64 = scheme.questions.iter().map(|q| q.marks).sum();
     let mut blocks = vec![Block::Paragraph(vec![
         Inline::Text("Total: ".into()),
@@ -65,18 +69,34 @@ pub fn feedback(
     }
 }
 
+/// `right from line 2, which differs: it carries that slip`, or for several lines `…
+/// which differ: it carries their slips`.
+fn carries(lines: &[usize]) -> String {
+    match lines.len() {
+        1 => format!(
+            "right from {}, which differs: it carries that slip",
+            line_list(lines)
+        ),
+        _ => format!(
+            "right from {}, which differ: it carries their slips",
+            line_list(lines)
+        ),
+    }
+}
+
 /// A line's verdict in words for the table.
 fn verdict(c: &LineCheck) -> Vec<Inline> {
     match c.judgement() {
         Judgement::Holds => vec![Inline::Text("holds".into())],
-        Judgement::Follows => vec![Inline::Text(format!(
-            "right from {}, which differs: it carries that slip",
-            line_list(&c.follows_from)
-        ))],
+        Judgement::Follows => vec![Inline::Text(carries(&c.follows_from))],
         Judgement::Differs => {
-            let reading = c.outcome.as_ref().ok().and_then(|r| r.reading());
             let mut v = vec![Inline::Strong("differs".into())];
-            if let Some(name) = reading {
+            if !c.does_not_follow.is_empty() {
+                v.push(Inline::Text(format!(
+                    ": it does not follow from {} (a slip in the algebra)",
+                    line_list(&c.does_not_follow)
+                )));
+            } else if let Some(name) = c.outcome.as_ref().ok().and_then(|r| r.reading()) {
                 v.push(Inline::Text(format!(" ({name})")));
             }
             v
@@ -85,6 +105,36 @@ fn verdict(c: &LineCheck) -> Vec<Inline> {
             "undecided: the checker cannot tell; ask your instructor".into(),
         )],
         Judgement::Error => vec![Inline::Strong("could not be read".into())],
+    }
+}
+
+/// How a step was marked, in words: the line stating it and why its marks are what they are.
+fn step_words(question: &Question, marked: &Marked, step: &Step) -> String {
+    let line = step.line.map(|k| marked.lines[k].line.number);
+    let at = |words: &str| match line {
+        Some(n) => format!("line {n}: {words}"),
+        None => words.to_string(),
+    };
+    match &step.standing {
+        Standing::Right => at("right"),
+        Standing::Carried(slips) => at(&format!(
+            "{} ({} % of the marks)",
+            carries(slips),
+            marks_text(question.carried_forward * 100.0)
+        )),
+        Standing::Wrong => at(
+            match line.map(|_| marked.lines[step.line.unwrap_or(0)].judgement()) {
+                Some(Judgement::Error) => "could not be read",
+                Some(Judgement::Undecided) => "undecided",
+                _ => "a slip of its own",
+            },
+        ),
+        Standing::Missing if line.is_some() => at("does not fix its value"),
+        Standing::Missing => format!("no line {} = …", step.quantity),
+        Standing::LeftIn(names) => at(&format!(
+            "left in {}: give it in the givens",
+            names.join(", ")
+        )),
     }
 }
 
@@ -110,24 +160,9 @@ fn marked_blocks(question: &Question, context: &Context, marked: &Marked) -> Vec
         .steps
         .iter()
         .map(|s| {
-            let given = match s.line {
-                Some(k) => {
-                    let c = &marked.lines[k];
-                    let how = match c.judgement() {
-                        Judgement::Follows => format!(
-                            " (carries the slip of {}: {} of the marks)",
-                            line_list(&c.follows_from),
-                            marks_text(question.carried_forward * 100.0) + " %"
-                        ),
-                        j => format!(" ({})", j.word()),
-                    };
-                    format!("line {}{how}", c.line.number)
-                }
-                None => format!("no line {} = …", s.quantity),
-            };
             vec![
                 vec![Inline::Code(s.quantity.clone())],
-                vec![Inline::Text(given)],
+                vec![Inline::Text(step_words(question, marked, s))],
                 vec![Inline::Text(format!(
                     "{} / {}",
                     marks_text(s.marks),
@@ -137,13 +172,20 @@ fn marked_blocks(question: &Question, context: &Context, marked: &Marked) -> Vec
         })
         .collect();
     blocks.push(Block::Table {
-        header: vec!["asked for".into(), "given by".into(), "marks".into()],
+        header: vec![
+            "asked for".into(),
+            "your answer gives it".into(),
+            "marks".into(),
+        ],
         rows: step_rows,
     });
     for c in &marked.lines {
         match (&c.outcome, c.judgement()) {
             (Ok(r), Judgement::Differs | Judgement::Undecided) => {
                 blocks.push(Block::Heading(2, format!("Line {}", c.line.number)));
+                if let Some(words) = algebra_words(c) {
+                    blocks.push(Block::Paragraph(vec![Inline::Text(words)]));
+                }
                 blocks.push(Block::Preformatted(report::text(
                     r,
                     &format!("line {}", c.line.number),
@@ -164,9 +206,9 @@ fn marked_blocks(question: &Question, context: &Context, marked: &Marked) -> Vec
         blocks.push(Block::Paragraph(vec![
             Inline::Text("No line gives ".into()),
             Inline::Code(missing.quantity.clone()),
-            Inline::Text(": end the answer with a line ".into()),
+            Inline::Text(": state it on a line of its own, ".into()),
             Inline::Code(format!("{} = …", missing.quantity)),
-            Inline::Text(".".into()),
+            Inline::Text(", the last such line being your answer.".into()),
         ]));
     }
     blocks

@@ -84,7 +84,6 @@ fn students_of(answers: &[Submission], bad: &[BadRow]) -> Vec<String> {
 pub fn mark_class(
     scheme: &Scheme,
     contexts: &[Context],
-    source_name: &str,
     submissions: &[Submission],
     mut bad_rows: Vec<BadRow>,
     progress: &mut dyn FnMut(f64),
@@ -155,7 +154,7 @@ pub fn mark_class(
             .par_iter()
             .map(|&(k, q, s)| {
                 let question = &scheme.questions[q];
-                let label = format!("{source_name}:{} ({}, {})", s.line, s.student, s.question);
+                let label = format!("answer to {}", s.question);
                 let budget = Budget::for_input(s.answer.len());
                 let answer =
                     match budget.run(|| mark_answer(question, &contexts[q], &label, &s.answer)) {

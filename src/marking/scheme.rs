@@ -9,6 +9,7 @@
 //! id = "Q1"
 //! scene = "../scenes/sp18_4_shaft_reactions.scene"   # relative to the scheme
 //! gives = ["Hdot_z", "D_y"]        # each a step, the marks shared among them
+//! may_use = ["I_xz", "I_xy", "alpha"]  # what a step may be left in besides the givens
 //! marks = 4
 //! [question.feedback]
 //! scaled = "Take the moment of D about C as r × F, with r = L i."
@@ -49,6 +50,11 @@ pub struct Question {
     /// `D_y = …` is marked for it.
     pub gives: Vec<String>,
     pub marks: f64,
+    /// Derived quantities a step's value may be left in (`alpha`, `I_xz`); otherwise it must
+    /// be in the givens once the answer's own lines are put in.
+    pub may_use: Vec<String>,
+    /// Where `gives` stands in the scheme, for an error about a name of it.
+    pub gives_span: Range<usize>,
     /// The fraction of a step's marks for a line that is wrong only because it carries an
     /// earlier slip (from 0 to 1).
     pub carried_forward: f64,
@@ -89,6 +95,7 @@ struct RawQuestion {
     context: Option<Spanned<String>>,
     gives: Spanned<Gives>,
     marks: Spanned<f64>,
+    may_use: Option<Spanned<Vec<String>>>,
     carried_forward: Option<Spanned<f64>>,
     #[serde(default)]
     feedback: BTreeMap<Spanned<String>, String>,
@@ -186,13 +193,45 @@ pub fn parse_scheme(
             Gives::One(name) => vec![name.trim().to_string()],
             Gives::Steps(names) => names.iter().map(|n| n.trim().to_string()).collect(),
         };
-        if gives.is_empty() || gives.iter().any(|g| !is_name(g)) {
+        let help = "name the quantities the answer gives, like gives = [\"Hdot_z\", \"D_y\"]";
+        if gives.is_empty() {
             return Err(error(
                 q.gives.span(),
-                format!("question {id}: gives is not a list of names"),
-                "name the quantities the answer gives, like gives = [\"Hdot_z\", \"D_y\"]",
+                format!("question {id} gives nothing"),
+                help,
             ));
         }
+        if let Some(bad) = gives.iter().find(|g| !is_name(g)) {
+            return Err(error(
+                q.gives.span(),
+                format!("question {id}: {bad:?} in gives is not a name"),
+                help,
+            ));
+        }
+        if let Some(twice) = gives
+            .iter()
+            .enumerate()
+            .find(|(k, g)| gives[..*k].contains(g))
+        {
+            return Err(error(
+                q.gives.span(),
+                format!("question {id} gives {} twice", twice.1),
+                "each step is a quantity of its own",
+            ));
+        }
+        let may_use = match &q.may_use {
+            None => Vec::new(),
+            Some(names) => match names.get_ref().iter().find(|n| !is_name(n)) {
+                Some(bad) => {
+                    return Err(error(
+                        names.span(),
+                        format!("question {id}: {bad:?} in may_use is not a name"),
+                        "name the quantities an answer may leave its value in, like may_use = [\"alpha\"]",
+                    ))
+                }
+                None => names.get_ref().clone(),
+            },
+        };
         let marks = *q.marks.get_ref();
         if !(marks.is_finite() && marks > 0.0) {
             return Err(error(
@@ -217,6 +256,8 @@ pub fn parse_scheme(
             setting,
             gives,
             marks,
+            may_use,
+            gives_span: q.gives.span(),
             carried_forward: fraction(&q.carried_forward, default)?,
             feedback,
         });

@@ -4,7 +4,7 @@
 //! later lines; then the rows that could not be marked.
 
 use super::answer::Slip;
-use super::document::{Block, Document, Inline};
+use super::document::{words_and_code, Block, Document, Inline};
 use super::scheme::Scheme;
 use super::{marks_text, Answer, Class};
 use crate::check::derivation::first_slip;
@@ -112,7 +112,8 @@ pub fn summary(scheme: &Scheme, class: &Class, submissions_name: &str) -> Docume
                 let mut example: Vec<Inline> =
                     s.example.clone().map(Inline::Code).into_iter().collect();
                 if let Some(w) = &s.words {
-                    example.push(Inline::Text(format!(": {w}")));
+                    example.push(Inline::Text(": ".into()));
+                    example.extend(words_and_code(w));
                 }
                 vec![
                     vec![Inline::Strong(s.slip.words())],

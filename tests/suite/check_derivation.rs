@@ -128,19 +128,17 @@ C_y = -1/2 m c alpha - 1/2 m c w^2 + 1/8 m c alpha - 1/4 m c w^2
     assert_eq!(lines(&json, 0)[1].2.as_deref(), Some("sign-flipped"));
 }
 
-/// Euler's first equation for principal axes, ΣM_x = I_x ω̇_x − (I_y − I_z) ω_y ω_z: line 2
-/// reverses the gyroscopic term, and line 3 solves line 2 for ω̇_x, right from it. A blank
-/// line starts a second part, checked on its own: its line holds.
+/// Euler's first equation for principal axes, ΣM_x = I_x ω̇_x − (I_y − I_z) ω_y ω_z: line 3
+/// writes ΣM_x again with the gyroscopic term reversed. It meets no new quantity, so the slip
+/// is in the algebra: it does not follow from line 2. Line 4 solves line 3 for ω̇_x, right
+/// from it.
 #[test]
-fn parts_are_chains_of_their_own() {
+fn a_line_relating_quantities_already_given_does_not_follow_from_them() {
     let text = "\
 # Euler's equation about x
 SumM_x = I_x wdot_x - (I_y - I_z) w_y w_z
 SumM_x = I_x wdot_x + (I_y - I_z) w_y w_z
 wdot_x = (SumM_x - (I_y - I_z) w_y w_z)/I_x
-
-# a second part
-wdot_x = (SumM_x + (I_y - I_z) w_y w_z)/I_x
 ";
     let (run, json) = derivation("principal", text);
     let first: Vec<(u64, String, Vec<u64>)> = lines(&json, 0)
@@ -157,8 +155,54 @@ wdot_x = (SumM_x + (I_y - I_z) w_y w_z)/I_x
         "{}",
         run.stdout
     );
-    let second = lines(&json, 1);
-    assert_eq!((second[0].0, second[0].1.as_str()), (7, "holds"));
+    assert_eq!(
+        json["parts"][0]["lines"][1]["does_not_follow"],
+        serde_json::json!([2])
+    );
+}
+
+/// A blank line starts a part, and a later part takes what the earlier ones gave: part (b)
+/// states D_y from part (a)'s wrong moment, −L D_y for L D_y, so D_y = +129.8 N follows.
+#[test]
+fn a_later_part_carries_an_earlier_parts_slip() {
+    let text = "# (a)\n-D_y L = -1/8 m L c alpha - 1/4 m L c w^2\n\n# (b)\nD_y = 129.8 N\n";
+    let (run, json) = derivation(SP18_4, text);
+    assert_eq!(lines(&json, 0)[0].1, "differs", "{}", run.stdout);
+    assert_eq!(lines(&json, 1)[0].1, "follows", "{}", run.stdout);
+    assert_eq!(lines(&json, 1)[0].3, vec![2]);
+}
+
+/// Numbers carry a slip too. Line 1 is L D_y = Ḣ_z, true; line 2 divides by L but turns the
+/// sign of I_xy ω²/L (an algebra slip: it meets no new quantity); line 3 puts the numbers in
+/// (I_xz α/L = ⅛ m c α = 11.25, I_xy ω²/L = ¼ m c ω² = 118.5037), rounded; line 4 adds them.
+/// Both follow from line 2, within the tolerance of line 2's own value, 107.2537.
+#[test]
+fn rounded_numbers_carry_the_slip() {
+    let text = "\
+L D_y = -I_xz alpha - I_xy w^2
+D_y = -I_xz alpha/L + I_xy w^2/L
+D_y = -11.25 + 118.5
+D_y = 107.25
+";
+    let (run, json) = derivation(SP18_4, text);
+    let got: Vec<(String, Vec<u64>)> = lines(&json, 0)
+        .into_iter()
+        .map(|(_, v, _, from)| (v, from))
+        .collect();
+    let expected: Vec<(String, Vec<u64>)> = [
+        ("holds", vec![]),
+        ("differs", vec![]),
+        ("follows", vec![2]),
+        ("follows", vec![2]),
+    ]
+    .into_iter()
+    .map(|(v, f)| (v.to_owned(), f))
+    .collect();
+    assert_eq!(got, expected, "{}", run.stdout);
+    assert_eq!(
+        json["parts"][0]["lines"][1]["does_not_follow"],
+        serde_json::json!([1])
+    );
 }
 
 /// A line that cannot be read is an error at its line, and the others are still checked.

@@ -332,3 +332,59 @@ fn a_scheme_naming_an_unknown_slip_is_refused_where_it_names_it() {
         "nothing is written"
     );
 }
+
+/// An answer gets its marks for the value its lines give the quantity, in the givens: a
+/// restatement (`SumM_x = SumM_x`, `SumM_x = M_x`: M_x is another spelling of ΣM_x), a
+/// circular pair, or a value left in another quantity (`SumM_x = Hdot_x`) gives nothing; a
+/// relation that holds but takes an earlier wrong value (`T = ½(I_x ω₁² + I_y ω₂²)` after
+/// I_x = ¼ m r², I_y = m L² + ½ m r², both wrong) carries the slip.
+#[test]
+fn marks_follow_the_value_the_lines_give() {
+    let dir = OutputDir::new("values");
+    std::fs::create_dir_all(&dir.0).expect("created");
+    let scenes = format!("{}/examples/scenes", env!("CARGO_MANIFEST_DIR"));
+    std::fs::write(
+        dir.0.join("scheme.toml"),
+        format!(
+            "carried_forward = 0.5\n\
+             [[question]]\nid = \"E\"\ncontext = \"principal\"\ngives = \"SumM_x\"\nmarks = 2\n\
+             [[question]]\nid = \"R\"\nscene = \"{scenes}/sp18_4_shaft_reactions.scene\"\ngives = [\"C_y\", \"D_y\"]\nmay_use = [\"alpha\"]\nmarks = 2\n\
+             [[question]]\nid = \"T\"\nscene = \"{scenes}/sp18_2_rolling_disk.scene\"\ngives = \"T\"\nmarks = 2\n"
+        ),
+    )
+    .expect("written");
+    // E: ΣM_x = I_x ω̇_x − (I_y − I_z) ω_y ω_z; R: C_y = −9M/(16c) − ¼ m c ω²,
+    // D_y = −3M/(16c) − ¼ m c ω²; T: ⅛ m r² (6 + r²/L²) ω₁², and with the wrong moments
+    // ½(¼ m r² ω₁² + (m L² + ½ m r²) r² ω₁²/L²) ≠ T, right from lines 1 and 2 (1 of 2).
+    let csv = "student,question,answer\n\
+        ann,E,SumM_x = SumM_x\n\
+        ann,R,\"C_y = -D_y - 1/2 m c alpha - 1/2 m c w^2\nD_y = -C_y - 1/2 m c alpha - 1/2 m c w^2\"\n\
+        ann,T,T = T\n\
+        bob,E,SumM_x = M_x\n\
+        bob,R,\"D_y = -3 M/(16 c) - 1/4 m c w^2\nC_y = -D_y - 1/2 m c alpha - 1/2 m c w^2\"\n\
+        bob,T,\"I_x = 1/4 m r^2\nI_y = m L^2 + 1/2 m r^2\nw2 = r w1/L\nT = 1/2 (I_x w1^2 + I_y w2^2)\"\n\
+        cat,E,M_x = I_x wdot_x - (I_y - I_z) w_y w_z\n\
+        dan,E,SumM_x = Hdot_x\n";
+    let submissions = dir.0.join("submissions.csv");
+    std::fs::write(&submissions, csv).expect("written");
+    let out = dir.0.join("out");
+    let (code, stdout, stderr) = kinetics(&[
+        "mark",
+        dir.0.join("scheme.toml").to_str().expect("UTF-8"),
+        submissions.to_str().expect("UTF-8"),
+        "-o",
+        out.to_str().expect("UTF-8"),
+    ]);
+    assert_eq!(code, 0, "{stdout}\n{stderr}");
+    // bob's R: D_y right (1), C_y = −D_y − ½ m c (α + ω²) right once line 1's D_y is put in,
+    // left in α, which R's may_use allows (1); cat's M_x is ΣM_x (2).
+    assert_eq!(
+        std::fs::read_to_string(out.join("grades.csv")).expect("grades"),
+        "student,E,R,T,total\nann,0,0,0,0\nbob,0,2,1,3\ncat,2,0,0,2\ndan,0,0,0,0\n"
+    );
+    let dan = std::fs::read_to_string(out.join("feedback/dan.md")).expect("dan");
+    assert!(
+        dan.contains(r"left in Hdot\_x: give it in the givens"),
+        "{dan}"
+    );
+}

@@ -15,6 +15,7 @@ mod world;
 use super::context::Context;
 use super::verdict::{check, Report, Verdict};
 use crate::parse::{parse_claim_with_units, Diagnostic};
+pub use world::Given;
 use world::World;
 
 /// A line of a derivation: its number in its file and its text.
@@ -58,6 +59,9 @@ pub struct LineCheck {
     /// The earlier lines that differ whose slip this line carries (none unless it differs
     /// and holds in the world of the lines before it).
     pub follows_from: Vec<usize>,
+    /// For a line that differs and writes only quantities earlier lines wrote (it relates
+    /// them again: algebra, not mechanics), the lines it should have followed from.
+    pub does_not_follow: Vec<usize>,
 }
 
 impl LineCheck {
@@ -98,32 +102,73 @@ pub fn parts(text: &str) -> Vec<Vec<Line>> {
     parts
 }
 
-/// Checks one part of a derivation, line by line, in `context` ([the module](self)).
-pub fn check_derivation(context: &Context, source_name: &str, lines: &[Line]) -> Vec<LineCheck> {
+/// A derivation checked: each part's lines, and what the lines give each quantity asked
+/// for.
+#[derive(Debug, Clone)]
+pub struct DerivationCheck {
+    pub parts: Vec<Vec<LineCheck>>,
+    /// For each name of `asked`, what the lines give it (none when no line fixed it).
+    pub asked: Vec<Option<Given>>,
+}
+
+/// Checks a derivation, line by line, in `context` ([the module](self)): its parts in
+/// order, a later part taking what the earlier ones gave (part (b) uses part (a)'s result);
+/// and what the lines give each name of `asked`.
+pub fn check_derivation(
+    context: &Context,
+    source_name: &str,
+    parts: &[Vec<Line>],
+    asked: &[String],
+) -> DerivationCheck {
     let mut world = World::new(context);
-    let mut checked: Vec<LineCheck> = Vec::with_capacity(lines.len());
-    for line in lines {
-        let outcome = check(context, source_name, &line.text).map_err(|mut d| {
-            d.line = line.number;
-            Box::new(d)
-        });
-        let differs = outcome
-            .as_ref()
-            .is_ok_and(|r| r.verdict == Verdict::Differs);
-        let follows_from = match differs {
-            true => carried(context, &world, &checked, source_name, &line.text),
-            false => Vec::new(),
-        };
-        if outcome.is_ok() {
-            world.take(line.number, source_name, &line.text);
+    let mut checked: Vec<Vec<LineCheck>> = Vec::with_capacity(parts.len());
+    for lines in parts {
+        let mut part: Vec<LineCheck> = Vec::with_capacity(lines.len());
+        for line in lines {
+            let earlier: Vec<&LineCheck> = checked.iter().flatten().chain(&part).collect();
+            let c = check_line(context, &world, &earlier, source_name, line);
+            if c.outcome.is_ok() {
+                world.take(line.number, source_name, &line.text, &c.follows_from);
+            }
+            part.push(c);
         }
-        checked.push(LineCheck {
-            line: line.clone(),
-            outcome,
-            follows_from,
-        });
+        checked.push(part);
     }
-    checked
+    DerivationCheck {
+        parts: checked,
+        asked: asked.iter().map(|name| world.given(name)).collect(),
+    }
+}
+
+/// One line against the mechanics, and where it differs, against the earlier lines.
+fn check_line(
+    context: &Context,
+    world: &World,
+    earlier: &[&LineCheck],
+    source_name: &str,
+    line: &Line,
+) -> LineCheck {
+    let outcome = check(context, source_name, &line.text).map_err(|mut d| {
+        d.line = line.number;
+        Box::new(d)
+    });
+    let mut c = LineCheck {
+        line: line.clone(),
+        outcome,
+        follows_from: Vec::new(),
+        does_not_follow: Vec::new(),
+    };
+    if c.outcome
+        .as_ref()
+        .is_ok_and(|r| r.verdict == Verdict::Differs)
+    {
+        let names = names_written(context, source_name, &line.text);
+        c.follows_from = carried(context, world, earlier, source_name, &line.text, &names);
+        if c.follows_from.is_empty() && !names.is_empty() && world.all_met(&names) {
+            c.does_not_follow = world.lines_under(names.iter()).into_iter().collect();
+        }
+    }
+    c
 }
 
 /// The earlier lines that differ (not themselves carrying a slip) whose values `text` rests
@@ -131,9 +176,10 @@ pub fn check_derivation(context: &Context, source_name: &str, lines: &[Line]) ->
 fn carried(
     context: &Context,
     world: &World,
-    earlier: &[LineCheck],
+    earlier: &[&LineCheck],
     source_name: &str,
     text: &str,
+    names: &[String],
 ) -> Vec<usize> {
     let values = world.values();
     if values.is_empty() {
@@ -144,7 +190,6 @@ fn carried(
         .filter(|c| c.judgement() == Judgement::Differs)
         .map(|c| c.line.number)
         .collect();
-    let names = names_written(context, source_name, text);
     let under: Vec<usize> = world
         .lines_under(names.iter())
         .into_iter()

@@ -38,7 +38,16 @@ pub fn text(checked: &[LineCheck], source_name: &str, domains: &Domains) -> Stri
                     out.push_str(&format!("  {form}\n"));
                 }
             }
-            (Ok(r), _) => out.push_str(&report::text(r, &label, domains)),
+            (Ok(r), _) => {
+                let text = report::text(r, &label, domains);
+                let (head, rest) = text.split_once('\n').unwrap_or((&text, ""));
+                out.push_str(head);
+                out.push('\n');
+                if let Some(words) = algebra_words(c) {
+                    out.push_str(&format!("  {words}\n"));
+                }
+                out.push_str(rest);
+            }
         }
     }
     out.push_str(&summary(checked));
@@ -70,11 +79,28 @@ pub fn latex(checked: &[LineCheck], source_name: &str, domains: &Domains) -> Str
                     out.push_str(&format!("{form}.\n"));
                 }
             }
-            (Ok(r), _) => out.push_str(&report::latex(r, &label, domains)),
+            (Ok(r), _) => {
+                out.push_str(&report::latex(r, &label, domains));
+                if let Some(words) = algebra_words(c) {
+                    out.push_str(&format!("{}.\n", markup::latex_words(&words)));
+                }
+            }
         }
     }
     out.push_str(&format!("% {}\n", summary(checked)));
     out
+}
+
+/// For a line that differs and only relates quantities earlier lines gave: `it does not
+/// follow from line 1: a slip in the algebra, …`.
+pub fn algebra_words(c: &LineCheck) -> Option<String> {
+    if c.does_not_follow.is_empty() {
+        return None;
+    }
+    let lines = line_list(&c.does_not_follow);
+    Some(format!(
+        "it does not follow from {lines}: a slip in the algebra (the quantities it relates are {lines}'s), read against the mechanics below"
+    ))
 }
 
 /// `first wrong line: 2 (sign-flipped); lines 3, 4 and 5 carry it`, or `every line holds`.
@@ -85,13 +111,20 @@ pub fn summary(checked: &[LineCheck]) -> String {
     let span = format!("lines {}-{}", first.line.number, last.line.number);
     match first_slip(checked) {
         Some((slip, carrying)) => {
-            let reading = slip
-                .outcome
-                .as_ref()
-                .ok()
-                .and_then(|r| r.reading())
-                .map(|r| format!(" ({r})"))
-                .unwrap_or_default();
+            let reading = match slip.does_not_follow.is_empty() {
+                false => Some(format!(
+                    "does not follow from {}",
+                    line_list(&slip.does_not_follow)
+                )),
+                true => slip
+                    .outcome
+                    .as_ref()
+                    .ok()
+                    .and_then(|r| r.reading())
+                    .map(String::from),
+            }
+            .map(|r| format!(" ({r})"))
+            .unwrap_or_default();
             let carried = match carrying.len() {
                 0 => "no later line carries it".to_string(),
                 1 => format!("{} carries it", line_list(&carrying)),
@@ -123,6 +156,7 @@ pub fn json(checked: &[LineCheck], domains: &Domains) -> Json {
             j["line"] = c.line.number.into();
             j["verdict"] = c.judgement().word().into();
             j["follows_from"] = c.follows_from.clone().into();
+            j["does_not_follow"] = c.does_not_follow.clone().into();
             j
         })
         .collect();

@@ -37,6 +37,28 @@ struct Fixed {
     lines: BTreeSet<usize>,
 }
 
+/// What a derivation's lines give a quantity.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Given {
+    /// The derived names its value is left in (none when in the givens alone).
+    pub left_in: Vec<String>,
+    /// Whether the value (those names at the mechanics' values) is the mechanics' own:
+    /// exactly, or within the tolerance for a value in numbers.
+    pub agrees: bool,
+    /// The lines the value rests on.
+    pub lines: Vec<usize>,
+}
+
+/// Whether `e` is zero: its numerator over one denominator multiplied out, then with
+/// `sin² + cos² = 1`, then in the shortest form.
+fn is_zero(e: &Expr, domains: &crate::algebra::Domains) -> Result<bool, AlgebraError> {
+    let (numerator, _) = e.together_parts()?;
+    if numerator.expand()?.simplify_trig()?.is_zero() {
+        return Ok(true);
+    }
+    Ok(e.simplify(domains)?.is_zero())
+}
+
 /// The values a derivation's lines give the derived names, line by line.
 pub struct World<'c> {
     context: &'c Context,
@@ -60,20 +82,19 @@ impl<'c> World<'c> {
         }
     }
 
-    /// The symbol standing for the derived name `written` in the equations (a name no
-    /// claim can spell: `__world` is not a name a person writes).
+    /// The symbol standing for the derived name `written` in the equations: one for the
+    /// spellings of one quantity (`M_x`, `SumM_x`), named by a name no claim can spell
+    /// (`__world` is not a name a person writes).
     fn unknown(&mut self, written: &str, truth: Expr) -> Symbol {
         if let Some((_, s)) = self.by_name.iter().find(|(n, _)| n == written) {
             return *s;
         }
-        let symbol = Symbol::new(&format!("{written}__world"));
-        self.unknowns.insert(
-            symbol,
-            Unknown {
-                name: written.to_string(),
-                truth,
-            },
-        );
+        let canonical = self.context.canonical(written);
+        let symbol = Symbol::new(&format!("{canonical}__world"));
+        self.unknowns.entry(symbol).or_insert(Unknown {
+            name: canonical.to_string(),
+            truth,
+        });
         self.by_name.push((written.to_string(), symbol));
         symbol
     }
@@ -81,7 +102,8 @@ impl<'c> World<'c> {
     /// Takes the line `text` (number `line`) as true: solves it for its subject and puts the
     /// value into the world. A line that cannot be read, fixes nothing new (every unknown it
     /// holds is fixed) or is not linear in any of its unknowns leaves the world as it was.
-    pub fn take(&mut self, line: usize, source_name: &str, text: &str) {
+    /// `carried`: the earlier lines whose slip the line carries, which what it fixes rests on.
+    pub fn take(&mut self, line: usize, source_name: &str, text: &str, carried: &[usize]) {
         let Some((claim, written)) = self.read(source_name, text) else {
             return;
         };
@@ -98,8 +120,10 @@ impl<'c> World<'c> {
             .copied()
             .filter(|s| !self.met.contains(s))
             .collect();
+        let mut lines = BTreeSet::from([line]);
+        lines.extend(carried);
         for equation in equations {
-            let _ = self.solve(line, &equation, &written, !new.is_empty());
+            let _ = self.solve(&lines, &equation, &written, !new.is_empty());
         }
         self.met.extend(written);
     }
@@ -141,58 +165,107 @@ impl<'c> World<'c> {
     /// Solves `equation = 0` for its subject and fixes it: the first of `written` (fixed or
     /// not: a line that says again what a name is, differently, is the student's latest
     /// word on it) in which the equation, with the other names' values put in, is linear.
-    /// A line that meets no new name and holds as the world stands changes nothing.
+    /// A line that meets no new name and holds as the world stands changes nothing, unless
+    /// it states its subject in fewer of the names no line fixed (`SumM_x = I_x wdot_x`
+    /// after `SumM_x = I_x wdot_x + w_y H_z - w_z H_y`): then that is the subject's value.
     fn solve(
         &mut self,
-        line: usize,
+        line: &BTreeSet<usize>,
         equation: &Expr,
         written: &[Symbol],
         meets_new: bool,
     ) -> Result<(), AlgebraError> {
         let in_world = equation.subs(&|s| self.fixed.get(&s).map(|f| f.value.clone()))?;
         if !meets_new && self.holds_at_truth(&in_world)? {
+            let Some(&subject) = written.first() else {
+                return Ok(());
+            };
+            let Some(current) = self.fixed.get(&subject).map(|f| self.open_names(&f.value)) else {
+                return Ok(());
+            };
+            if let Some((value, lines)) = self.solved_for(subject, line, equation)? {
+                if self.open_names(&value) < current {
+                    self.fix(subject, value, lines);
+                }
+            }
             return Ok(());
         }
         for &u in written {
-            let others = |s: Symbol| match s == u {
-                true => None,
-                false => self.fixed.get(&s).map(|f| f.value.clone()),
-            };
-            let (numerator, _) = equation.subs(&others)?.together_parts()?;
-            let numerator = numerator.expand()?;
-            if !numerator.contains(u) {
-                continue;
+            if let Some((value, lines)) = self.solved_for(u, line, equation)? {
+                self.fix(u, value, lines);
+                return Ok(());
             }
-            let a = numerator.diff(u)?;
-            if a.is_zero() || a.contains(u) {
-                continue;
-            }
-            let b = numerator.subs(&|s| (s == u).then(Expr::zero))?;
-            let mut lines = BTreeSet::from([line]);
-            for s in equation.symbols().into_iter().filter(|s| *s != u) {
-                if let Some(f) = self.fixed.get(&s) {
-                    lines.extend(&f.lines);
-                }
-            }
-            self.fix(u, -(&b / &a), lines);
-            return Ok(());
         }
         Ok(())
     }
 
+    /// How many unknowns no line fixed `value` holds.
+    fn open_names(&self, value: &Expr) -> usize {
+        value
+            .symbols()
+            .into_iter()
+            .filter(|s| self.unknowns.contains_key(s))
+            .count()
+    }
+
+    /// `equation = 0` solved for `u`, the other names' values put in, when it is linear in
+    /// `u`; with the lines the value rests on (`line`, and those of the values put in).
+    fn solved_for(
+        &self,
+        u: Symbol,
+        line: &BTreeSet<usize>,
+        equation: &Expr,
+    ) -> Result<Option<(Expr, BTreeSet<usize>)>, AlgebraError> {
+        let others = |s: Symbol| match s == u {
+            true => None,
+            false => self.fixed.get(&s).map(|f| f.value.clone()),
+        };
+        let (numerator, _) = equation.subs(&others)?.together_parts()?;
+        let numerator = numerator.expand()?;
+        if !numerator.contains(u) {
+            return Ok(None);
+        }
+        let a = numerator.diff(u)?;
+        if a.is_zero() || a.contains(u) {
+            return Ok(None);
+        }
+        let b = numerator.subs(&|s| (s == u).then(Expr::zero))?;
+        let mut lines = line.clone();
+        for s in equation.symbols().into_iter().filter(|s| *s != u) {
+            if let Some(f) = self.fixed.get(&s) {
+                lines.extend(&f.lines);
+            }
+        }
+        Ok(Some((-(&b / &a), lines)))
+    }
+
     /// Whether `equation = 0` holds with the unknowns no line fixed at the mechanics' values:
-    /// exactly, or for an equation left in numbers within the context's tolerance of its
-    /// terms' scale (`D_y = -129.8 N`).
+    /// exactly, or, for an equation left in numbers, within the context's tolerance of the
+    /// scale of its terms (`D_y = -11.25 + 118.5` against -11.25 + 118.5037).
     fn holds_at_truth(&self, equation: &Expr) -> Result<bool, AlgebraError> {
         let at_truth = equation.subs(&|s| self.unknowns.get(&s).map(|u| u.truth.clone()))?;
-        let in_values = at_truth.subs(&|s| self.context.value(s))?;
-        if !in_values.has_symbol_where(&|s| !s.is_pi()) {
-            let value = |e: &Expr| e.eval::<f64>(&|_| None).unwrap_or(f64::NAN);
-            let scale: f64 = in_values.terms().iter().map(|t| value(t).abs()).sum();
-            return Ok(value(&in_values).abs() <= self.context.relative_tolerance() * scale);
+        if let Some((value, scale)) = self.in_numbers(&at_truth) {
+            return Ok(value.abs() <= self.context.relative_tolerance() * scale);
         }
-        let (numerator, _) = at_truth.together_parts()?;
-        Ok(numerator.expand()?.simplify_trig()?.is_zero())
+        is_zero(&at_truth, self.context.domains())
+    }
+
+    /// `e`'s value at the givens' values and the sum of its terms' magnitudes, when it is a
+    /// number there.
+    fn in_numbers(&self, e: &Expr) -> Option<(f64, f64)> {
+        let number = |t: &Expr| -> Option<f64> {
+            let v = t.subs(&|s| self.context.value(s)).ok()?;
+            if v.has_symbol_where(&|s| !s.is_pi()) {
+                return None;
+            }
+            v.eval::<f64>(&|_| None).ok().filter(|x| x.is_finite())
+        };
+        let scale = e
+            .terms()
+            .iter()
+            .map(|t| number(t).map(f64::abs))
+            .sum::<Option<f64>>()?;
+        Some((number(e)?, scale))
     }
 
     /// Fixes `u` at `value` and puts it into every value that holds `u`.
@@ -221,6 +294,43 @@ impl<'c> World<'c> {
                 ))
             })
             .collect()
+    }
+
+    /// Whether every name of `names` was written by an earlier line: a line that meets no
+    /// new quantity only relates ones the derivation has already (algebra, not mechanics).
+    pub fn all_met(&self, names: &[String]) -> bool {
+        names.iter().all(|n| {
+            self.by_name
+                .iter()
+                .find(|(m, _)| m == n)
+                .is_some_and(|(_, s)| self.met.contains(s))
+        })
+    }
+
+    /// What the lines give `name` (any spelling of its quantity), if a line fixed it.
+    pub fn given(&self, name: &str) -> Option<Given> {
+        let canonical = self.context.canonical(name);
+        let (symbol, unknown) = self.unknowns.iter().find(|(_, u)| u.name == canonical)?;
+        let fixed = self.fixed.get(symbol)?;
+        let left_in: Vec<String> = fixed
+            .value
+            .symbols()
+            .into_iter()
+            .filter_map(|s| Some(self.unknowns.get(&s)?.name.clone()))
+            .collect();
+        let truth = |s: Symbol| self.unknowns.get(&s).map(|u| u.truth.clone());
+        let value = fixed.value.subs(&truth).ok()?;
+        let agrees = match (self.in_numbers(&value), self.in_numbers(&unknown.truth)) {
+            (Some((v, _)), Some((t, _))) => {
+                (v - t).abs() <= self.context.relative_tolerance() * t.abs()
+            }
+            _ => is_zero(&(&value - &unknown.truth), self.context.domains()).unwrap_or(false),
+        };
+        Some(Given {
+            left_in,
+            agrees,
+            lines: fixed.lines.iter().copied().collect(),
+        })
     }
 
     /// The lines the values of `names` rest on.

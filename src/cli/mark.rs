@@ -12,7 +12,7 @@ use kinetics::check::reading_names;
 use kinetics::marking::document::{html, markdown, Document};
 use kinetics::marking::feedback::{feedback, file_stem};
 use kinetics::marking::grades::grades_csv;
-use kinetics::marking::scheme::{parse_scheme, Scheme, Setting};
+use kinetics::marking::scheme::{check_names, parse_scheme, Scheme, Setting};
 use kinetics::marking::submissions::read_submissions;
 use kinetics::marking::summary::summary;
 use kinetics::marking::{mark_class, Class};
@@ -47,6 +47,7 @@ pub fn run(args: Args) -> Result<String, CliError> {
     let names = reading_names();
     let scheme = parse_scheme(&scheme_name, &scheme_text, &names).map_err(CliError::Located)?;
     let contexts = contexts(&scheme, &args.scheme)?;
+    check_names(&scheme, &contexts, &scheme_name, &scheme_text).map_err(CliError::Located)?;
     let bytes = submissions_bytes(&args.submissions)?;
     let (answers, bad) = read_submissions(&bytes).map_err(|why| CliError::Unreadable {
         name: args.submissions.clone(),
@@ -59,7 +60,7 @@ pub fn run(args: Args) -> Result<String, CliError> {
     });
     outputs.write(&scheme, &contexts, &class, &args.submissions)?;
     for b in &class.bad_rows {
-        let who = b.student.as_deref().unwrap_or("(student unreadable)");
+        let who = b.student.as_deref().unwrap_or("(no student read)");
         let question = b
             .question
             .as_deref()
@@ -76,11 +77,21 @@ pub fn run(args: Args) -> Result<String, CliError> {
         .flatten()
         .filter(|a| matches!(a, kinetics::marking::Answer::Marked { .. }))
         .count();
+    if answers.is_empty() {
+        super::tell(&format!(
+            "warning: {} has no answer to mark",
+            args.submissions
+        ));
+    }
+    let bad = match class.bad_rows.len() {
+        0 => String::new(),
+        1 => ", 1 row named above".into(),
+        n => format!(", {n} rows named above"),
+    };
     Ok(format!(
-        "{} students, {} questions: {marked} answers marked, {} rows not marked; wrote {}",
+        "{} students, {} questions: {marked} answers marked{bad}; wrote {}",
         class.students.len(),
         scheme.questions.len(),
-        class.bad_rows.len(),
         outputs.listing()
     ))
 }
@@ -99,7 +110,13 @@ fn contexts(scheme: &Scheme, scheme_path: &str) -> Result<Vec<Context>, CliError
                 if let Some(c) = scenes.get(&path) {
                     return Ok(c.clone());
                 }
-                let (name, source) = read_file(&path.to_string_lossy())?;
+                let (name, source) = read_file(&path.to_string_lossy()).map_err(|e| {
+                    CliError::Usage(format!(
+                        "question {} of {scheme_path}: {}",
+                        q.id,
+                        e.to_string().trim_start_matches("error: ")
+                    ))
+                })?;
                 let context = Input::scene(&name, &source)
                     .within(|| Ok::<_, CliError>(Context::scene(&parse_scene(&name, &source)?)))?;
                 scenes.insert(path, context.clone());

@@ -23,6 +23,8 @@
 //!
 //! Every error stands at the place in the scheme that causes it.
 
+use crate::check::context::Context;
+use crate::parse::claim::Name;
 use crate::parse::Diagnostic;
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -296,4 +298,43 @@ fn is_name(text: &str) -> bool {
     let mut chars = text.chars();
     chars.next().is_some_and(|c| c.is_ascii_alphabetic())
         && chars.all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '\'')
+}
+
+/// Checks that every name a question gives or lets an answer use is a quantity its context
+/// derives (`contexts[k]` for question k): a misspelt `T_CB` is an error at its `gives`,
+/// with the context's suggestion, not a step no answer can state.
+pub fn check_names(
+    scheme: &Scheme,
+    contexts: &[Context],
+    source_name: &str,
+    source: &str,
+) -> Result<(), Box<Diagnostic>> {
+    for (q, context) in scheme.questions.iter().zip(contexts) {
+        for (key, names) in [("gives", &q.gives), ("may_use", &q.may_use)] {
+            for name in names {
+                let why = match context.name(name) {
+                    Name::Derived(_) if !context.is_alias(name) => continue,
+                    Name::Unknown(help) => help,
+                    _ => format!(
+                        "{name} is not among the quantities {} derives",
+                        context.description
+                    ),
+                };
+                return Err(Box::new(
+                    Diagnostic::at(
+                        source_name,
+                        source,
+                        q.gives_span.start,
+                        q.gives_span.end,
+                        format!(
+                            "question {}: {key} names {name}, which {} does not derive",
+                            q.id, context.description
+                        ),
+                    )
+                    .with_help(why),
+                ));
+            }
+        }
+    }
+    Ok(())
 }

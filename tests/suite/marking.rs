@@ -388,3 +388,78 @@ fn marks_follow_the_value_the_lines_give() {
         "{dan}"
     );
 }
+
+/// A form's export: CRLF line ends (the lines named are the file's), and a quoted answer
+/// whose quote is never closed: that row is named, and the rows after it are still marked.
+#[test]
+fn crlf_lines_and_an_unclosed_quote_are_named_where_they_are() {
+    let dir = OutputDir::new("export");
+    std::fs::create_dir_all(&dir.0).expect("created");
+    let scheme = dir.0.join("scheme.toml");
+    std::fs::write(
+        &scheme,
+        "[[question]]\nid = \"E\"\ncontext = \"principal\"\ngives = \"SumM_x\"\nmarks = 2\n",
+    )
+    .expect("written");
+    let run = |name: &str, csv: &str| {
+        let path = dir.0.join(name);
+        std::fs::write(&path, csv).expect("written");
+        let out = dir.0.join(format!("{name}-out"));
+        let (code, _, stderr) = kinetics(&[
+            "mark",
+            scheme.to_str().expect("UTF-8"),
+            path.to_str().expect("UTF-8"),
+            "-o",
+            out.to_str().expect("UTF-8"),
+        ]);
+        assert_eq!(code, 0, "{stderr}");
+        let grades = std::fs::read_to_string(out.join("grades.csv")).expect("grades");
+        (path.to_string_lossy().into_owned(), grades, stderr)
+    };
+    // Line 2-3 ann's quoted answer over two lines, line 4 bob's, line 5 an unknown question.
+    let (path, grades, stderr) = run(
+        "crlf.csv",
+        "student,question,answer\r\nann,E,\"SumM_x = I_x wdot_x - (I_y - I_z) w_y w_z\r\n\"\r\nbob,E,SumM_x = I_x wdot_x\r\nbob,F,x = 1\r\n",
+    );
+    assert_eq!(grades, "student,E,total\nann,2,2\nbob,0,0\n");
+    assert!(stderr.contains(&format!("{path}:5: bob, F: ")), "{stderr}");
+    // ann's quote is never closed at line 2; bob (line 3) and cal (line 4) are marked.
+    let (path, grades, stderr) = run(
+        "unclosed.csv",
+        "student,question,answer\nann,E,\"SumM_x = I_x wdot_x\nbob,E,SumM_x = I_x wdot_x - (I_y - I_z) w_y w_z\ncal,E,M_x = I_x wdot_x - (I_y - I_z) w_y w_z\n",
+    );
+    assert_eq!(grades, "student,E,total\nann,0,0\nbob,2,2\ncal,2,2\n");
+    assert!(
+        stderr.contains(&format!(
+            "{path}:2: ann, E: a quote in the row is never closed"
+        )),
+        "{stderr}"
+    );
+}
+
+/// A name the scheme asks for that its context does not derive is refused at its `gives`.
+#[test]
+fn a_misspelt_quantity_is_refused_at_its_gives() {
+    let dir = OutputDir::new("gives");
+    std::fs::create_dir_all(&dir.0).expect("created");
+    let scheme = dir.0.join("scheme.toml");
+    std::fs::write(
+        &scheme,
+        format!(
+            "[[question]]\nid = \"Q\"\nscene = \"{}/examples/scenes/sp18_4_shaft_reactions.scene\"\ngives = [\"D_y\", \"D_yy\"]\nmarks = 2\n",
+            env!("CARGO_MANIFEST_DIR")
+        ),
+    )
+    .expect("written");
+    let (code, _, stderr) = kinetics(&[
+        "mark",
+        scheme.to_str().expect("UTF-8"),
+        &example("submissions.csv"),
+        "-o",
+        &dir.0.join("out").to_string_lossy(),
+    ]);
+    assert_eq!(code, 1);
+    assert!(stderr.contains("gives names D_yy"), "{stderr}");
+    assert!(stderr.contains(":4:"), "at line 4: {stderr}");
+    assert!(stderr.contains("did you mean D_y"), "{stderr}");
+}

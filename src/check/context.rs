@@ -23,6 +23,7 @@ use crate::algebra::{AlgebraError, Domains, Expr, Symbol, Vector};
 use crate::mechanics::catalogue::derive_general;
 use crate::mechanics::slip::Slip;
 use crate::parse::claim::Name;
+use crate::parse::Follows;
 use crate::scene::analysis::values_of;
 use crate::scene::model::{Quantity, Request, Span};
 use crate::scene::unit_system::UnitSystem;
@@ -655,11 +656,13 @@ impl Context {
 
     /// The unit a name after a number stands for (`1857 N`, `150 mm`), as its marker: in a
     /// context whose givens have values, a unit of the table that is not a name here (in SP
-    /// 18.5, where `N` is the normal force, `2 N` is twice it).
-    pub fn unit(&self, name: &str) -> Option<Expr> {
+    /// 18.5, where `N` is the normal force, `2 N` is twice it); after a unit, any unit of the
+    /// table (`0.0913 N*m` is in N·m where m is the mass).
+    pub fn unit(&self, name: &str, follows: Follows) -> Option<Expr> {
         let taken =
             self.meanings.contains_key(name) || self.dimensions.contains_key(&Symbol::new(name));
-        (self.has_values() && !taken).then(|| marker(name))?
+        let free = !taken || follows == Follows::Unit;
+        (self.has_values() && free).then(|| marker(name))?
     }
 
     /// This context with each name of `values` standing for that value instead of what the

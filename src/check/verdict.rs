@@ -22,8 +22,8 @@ use crate::algebra::{AlgebraError, Axis, Domains, Expr, Vector};
 use crate::algebra::{Role, Symbol};
 use crate::mechanics::slip::Slip;
 use crate::parse::claim::{Claim, ClaimSide};
-use crate::parse::parse_claim_with_units;
 use crate::parse::Diagnostic;
+use crate::parse::{parse_claim_with_units, Follows};
 use crate::scene::named_unit::NamedUnit;
 use crate::scene::units::{dimension_with, Dimension};
 use crate::scene::units_in_math::{in_system, marker_dimension};
@@ -228,8 +228,8 @@ fn read(
     solution: usize,
 ) -> Result<(Claim, bool), Diagnostic> {
     let wrote_unit = std::cell::Cell::new(false);
-    let unit = |name: &str| {
-        let unit = context.unit(name);
+    let unit = |name: &str, follows: Follows| {
+        let unit = context.unit(name, follows);
         wrote_unit.set(wrote_unit.get() || unit.is_some());
         unit
     };

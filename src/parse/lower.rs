@@ -98,8 +98,18 @@ pub(super) struct Lowering<'a> {
     pub(super) units: Option<Units<'a>>,
 }
 
-/// The value of a name written after a number, when the caller reads it as a unit there.
-pub type Units<'a> = &'a dyn Fn(&str) -> Option<Expr>;
+/// The value of a name written after a number or a unit, when the caller reads it as a unit
+/// there.
+pub type Units<'a> = &'a dyn Fn(&str, Follows) -> Option<Expr>;
+
+/// What a name read as a possible unit follows in its product.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Follows {
+    /// A number: `2 m` (a caller may read a name it declares, the mass m, as itself).
+    Number,
+    /// A unit: `N*m`, `m/s` (a quantity's unit goes on: `m` is the metre).
+    Unit,
+}
 
 /// What the user wrote that the algebra could not form: the help names it.
 #[derive(Clone, Copy)]
@@ -298,15 +308,19 @@ impl Lowering<'_> {
         let mut out = Vec::with_capacity(factors.len());
         let mut bits = 0u64;
         let mut vectors = VectorFactors::default();
-        let mut after_number = false;
+        let mut after_number: Option<Follows> = None;
         for (divide, f) in factors {
             let (gathered, span) = (out.len(), f.span);
             let number = is_number(&f);
             let unit = match after_number {
-                true => self.unit_after_number(f, divide)?,
-                false => Err(f),
+                Some(follows) => self.unit_after_number(f, divide, follows)?,
+                None => Err(f),
             };
-            after_number = number || unit.is_ok();
+            after_number = match (number, unit.is_ok()) {
+                (true, _) => Some(Follows::Number),
+                (false, true) => Some(Follows::Unit),
+                (false, false) => None,
+            };
             match unit {
                 Ok(unit) => out.push((unit, span)),
                 Err(f) => self.gather_factors(f, divide, divide, &mut out)?,

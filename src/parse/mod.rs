@@ -19,4 +19,4 @@ pub use expression::{
     parse_equation, parse_expression, parse_expression_with_units, parse_statement, Equation,
     Statement,
 };
-pub use lower::{Units, DEGREE};
+pub use lower::{Follows, Units, DEGREE};

@@ -7,7 +7,7 @@
 //! each stands for.
 
 use super::diagnostic::Diagnostic;
-use super::lower::{Ast, Lowering, Node, Operation};
+use super::lower::{Ast, Follows, Lowering, Node, Operation};
 use crate::algebra::Expr;
 
 /// Whether a factor as written is a number (`300`, or `-300` with its minus).
@@ -27,15 +27,16 @@ impl Lowering<'_> {
         &mut self,
         node: Node,
         divide: bool,
+        follows: Follows,
     ) -> Result<Result<Expr, Node>, Diagnostic> {
         let Some(units) = self.units else {
             return Ok(Err(node));
         };
         let span = node.span;
         let unit = match &node.ast {
-            Ast::Symbol(name) => units(name),
+            Ast::Symbol(name) => units(name, follows),
             Ast::Power(base, exponent) if is_number(exponent) => match &base.ast {
-                Ast::Symbol(name) => units(name),
+                Ast::Symbol(name) => units(name, follows),
                 _ => None,
             },
             _ => None,

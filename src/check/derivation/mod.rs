@@ -14,7 +14,7 @@ mod world;
 
 use super::context::Context;
 use super::verdict::{check, Report, Verdict};
-use crate::parse::{parse_claim_with_units, Diagnostic};
+use crate::parse::{parse_claim_with_units, Diagnostic, Follows};
 pub use world::Given;
 use world::World;
 
@@ -208,7 +208,7 @@ fn carried(
 /// The derived names `text` writes.
 fn names_written(context: &Context, source_name: &str, text: &str) -> Vec<String> {
     let resolve = |name: &str| context.name(name);
-    let unit = |name: &str| context.unit(name);
+    let unit = |name: &str, follows: Follows| context.unit(name, follows);
     match parse_claim_with_units(source_name, text, &resolve, Some(&unit)) {
         Ok(claim) => claim.resolved_names().cloned().collect(),
         Err(_) => Vec::new(),

@@ -19,7 +19,7 @@ use crate::algebra::vector::{components, has_unit_vectors};
 use crate::algebra::{AlgebraError, Expr, Symbol};
 use crate::check::context::Context;
 use crate::parse::claim::{Claim, Name};
-use crate::parse::parse_claim_with_units;
+use crate::parse::{parse_claim_with_units, Follows};
 use crate::scene::units_in_math::in_system;
 use std::collections::{BTreeSet, HashMap, HashSet};
 
@@ -140,7 +140,7 @@ impl<'c> World<'c> {
             }
             None => context.name(name),
         };
-        let unit = |name: &str| context.unit(name);
+        let unit = |name: &str, follows: Follows| context.unit(name, follows);
         let claim = parse_claim_with_units(source_name, text, &resolve, Some(&unit)).ok()?;
         let written: Vec<Symbol> = met
             .into_inner()

@@ -9,7 +9,7 @@ use super::unit_system::UnitSystem;
 use super::units::{dimension_with, Dimension, DimensionError, Dimensions};
 use super::units_in_math::{marker, marker_dimension};
 use crate::algebra::{vector, Expr, Symbol, Vector};
-use crate::parse::{parse_expression_with_units, Diagnostic};
+use crate::parse::{parse_expression_with_units, Diagnostic, Follows};
 use pest::iterators::Pair;
 use pest::Parser;
 use syntax_error::{expected_words, syntax_error};
@@ -517,9 +517,14 @@ impl Reader<'_> {
     /// (`units_in_math.rs`): for [`Reader::quantity`] to check and bring into the scene's units.
     fn math(&self, p: &Pair<Rule>) -> Result<Expr, Diagnostic> {
         let (start, _) = span(p);
-        let unit = |name: &str| match self.dims.contains_key(&Symbol::new(name)) {
-            true => None,
-            false => marker(name),
+        // A name the scene declares is itself after a number (`2 N`, twice the force N),
+        // and a unit after a unit (`N*m`, with m the mass).
+        let unit = |name: &str, follows: Follows| match (
+            self.dims.contains_key(&Symbol::new(name)),
+            follows,
+        ) {
+            (true, Follows::Number) => None,
+            _ => marker(name),
         };
         let e = parse_expression_with_units(self.source_name, p.as_str(), &unit).map_err(|d| {
             let offset = start + d.span.offset();

@@ -54,6 +54,46 @@ pub fn slips(class: &Class, q: usize) -> Vec<SlipCount> {
     ranked
 }
 
+/// `6 (20 %)`: a count of students and its share of the class.
+fn share(count: usize, of: usize) -> String {
+    format!("{count} ({:.0} %)", 100.0 * count as f64 / of.max(1) as f64)
+}
+
+/// The slips of every question together, most answers first: what to teach again across
+/// the assignment (a slip in three questions is one lesson), with the questions it was in.
+fn across_the_class(scheme: &Scheme, per_question: &[Vec<SlipCount>], n: usize) -> Vec<Block> {
+    let mut totals: BTreeMap<Slip, (usize, Vec<String>)> = BTreeMap::new();
+    for (question, ranked) in scheme.questions.iter().zip(per_question) {
+        for s in ranked.iter().filter(|s| s.slip != Slip::NoAnswer) {
+            let entry = totals.entry(s.slip.clone()).or_default();
+            entry.0 += s.students;
+            entry.1.push(format!("{} ({})", question.id, s.students));
+        }
+    }
+    if totals.is_empty() {
+        return Vec::new();
+    }
+    let mut ranked: Vec<(Slip, (usize, Vec<String>))> = totals.into_iter().collect();
+    ranked.sort_by(|a, b| b.1 .0.cmp(&a.1 .0).then(a.0.cmp(&b.0)));
+    let answers = n * scheme.questions.len();
+    vec![
+        Block::Heading(1, "Across the class".into()),
+        Block::Table {
+            header: vec!["slip".into(), "answers".into(), "in".into()],
+            rows: ranked
+                .into_iter()
+                .map(|(slip, (count, questions))| {
+                    vec![
+                        vec![Inline::Strong(slip.words())],
+                        vec![Inline::Text(share(count, answers))],
+                        vec![Inline::Text(questions.join(", "))],
+                    ]
+                })
+                .collect(),
+        },
+    ]
+}
+
 /// The summary page.
 pub fn summary(scheme: &Scheme, class: &Class, submissions_name: &str) -> Document {
     let n = class.students.len();
@@ -65,6 +105,10 @@ pub fn summary(scheme: &Scheme, class: &Class, submissions_name: &str) -> Docume
         marks_text(mean(&mut (0..n).map(|k| class.total(k)))),
         marks_text(out_of)
     ))])];
+    let per_question: Vec<Vec<SlipCount>> = (0..scheme.questions.len())
+        .map(|q| slips(class, q))
+        .collect();
+    blocks.extend(across_the_class(scheme, &per_question, n));
     for (q, question) in scheme.questions.iter().enumerate() {
         let marks: Vec<f64> = class.answers.iter().map(|a| a[q].marks()).collect();
         blocks.push(Block::Heading(
@@ -95,7 +139,7 @@ pub fn summary(scheme: &Scheme, class: &Class, submissions_name: &str) -> Docume
                 })
                 .collect(),
         });
-        let ranked = slips(class, q);
+        let ranked = &per_question[q];
         if ranked.is_empty() {
             blocks.push(Block::Paragraph(vec![Inline::Text(
                 "No slip: every answer marked holds.".into(),
@@ -117,7 +161,7 @@ pub fn summary(scheme: &Scheme, class: &Class, submissions_name: &str) -> Docume
                 }
                 vec![
                     vec![Inline::Strong(s.slip.words())],
-                    vec![Inline::Text(s.students.to_string())],
+                    vec![Inline::Text(share(s.students, n))],
                     vec![Inline::Text(s.carried.to_string())],
                     example,
                     vec![Inline::Text(words.unwrap_or_default())],

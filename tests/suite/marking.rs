@@ -162,8 +162,9 @@ fn summary_slips(summary: &str) -> HashMap<String, Vec<(String, usize)>> {
             question = heading.split(' ').next().unwrap_or_default().to_string();
         } else if let Some(row) = line.strip_prefix("| **") {
             let (slip, rest) = row.split_once("** | ").expect("a slip row");
+            // `6 (20 %) | …`: the count before its share.
             let count = rest
-                .split(" | ")
+                .split(' ')
                 .next()
                 .and_then(|c| c.parse().ok())
                 .expect("a count");

@@ -73,6 +73,10 @@ pub struct Context {
     slipped: Arc<[OnceLock<Option<Context>>; Slip::ALL.len()]>,
     /// Names that are another spelling of one quantity (`M_x` of `SumM_x`), by the spelling.
     spellings: HashMap<String, String>,
+    /// A student's world ([`Context::with_names`]): its values come from their lines, whose
+    /// numbers are in the unit system without their units, so a value may mix dimensions
+    /// (`-750 m c` for α = 3000 rad/s² put in): no claim is refused for its dimensions here.
+    world: bool,
 }
 
 /// Where a context's meanings come from.
@@ -451,7 +455,13 @@ impl Context {
             source: None,
             slipped: Arc::new(std::array::from_fn(|_| OnceLock::new())),
             spellings: HashMap::new(),
+            world: false,
         }
+    }
+
+    /// Whether this is a student's world ([`Context::with_names`]).
+    pub fn is_world(&self) -> bool {
+        self.world
     }
 
     /// `M_x`, `M_y`, `M_z`: other spellings of `SumM_x`, `SumM_y`, `SumM_z`.
@@ -679,7 +689,17 @@ impl Context {
         }
         c.source = None;
         c.slipped = Arc::new(std::array::from_fn(|_| OnceLock::new()));
+        c.world = true;
         c
+    }
+
+    /// Every value of a derived scalar `written` stands for: one, or one in each solution of
+    /// the scene's equations (a top's slow and fast precession).
+    pub fn derived_scalar_values(&self, written: &str) -> Vec<Expr> {
+        match self.meaning(written) {
+            Some(Meaning::Solutions(each)) => each.clone(),
+            _ => self.derived_scalar(written).into_iter().collect(),
+        }
     }
 
     /// The value of a derived scalar `written` stands for (in the first solution): the names

@@ -196,10 +196,10 @@ fn check_in_solution(
         solution: k,
         solutions,
     };
-    if report
-        .odd_term
-        .as_ref()
-        .is_some_and(|odd| !written_in_plain_numbers(context, &claim, text, wrote_unit, odd.span))
+    if !context.is_world()
+        && report.odd_term.as_ref().is_some_and(|odd| {
+            !written_in_plain_numbers(context, &claim, text, wrote_unit, odd.span)
+        })
     {
         return Ok(report);
     }
@@ -209,7 +209,7 @@ fn check_in_solution(
         .into_iter()
         .map(|mut pair| match pair.numbers.take() {
             Some(numbers) => numeric_component(pair, numbers),
-            None => component(pair, context.domains(), seed),
+            None => in_symbols_where_it_differs(pair, context.domains(), seed),
         })
         .collect();
     report.verdict = overall(&report.components);
@@ -575,6 +575,33 @@ fn overall(components: &[Component]) -> Verdict {
         Verdict::Undecided
     } else {
         Verdict::Holds
+    }
+}
+
+/// A component not in numbers. Decided as compared (at the givens' values where the claimed
+/// side leaves a given out: it may have been written as its value); where that differs and
+/// the values were put in, decided again in the givens' names and reported so: a claim that
+/// left a term out (`Hdot_z = -I_xz alpha`, no ω) reads as `-3ML/(16c)` against
+/// `-3ML/(16c) - ¼ m L c ω²`, not as fractions of the values times L.
+fn in_symbols_where_it_differs(pair: Compared, domains: &Domains, seed: u64) -> Component {
+    let substituted =
+        pair.correct != pair.correct_in_symbols || pair.claimed != pair.claimed_in_symbols;
+    let in_symbols = Compared {
+        axis: pair.axis,
+        correct: pair.correct_in_symbols.clone(),
+        claimed: pair.claimed_in_symbols.clone(),
+        correct_in_symbols: pair.correct_in_symbols.clone(),
+        claimed_in_symbols: pair.claimed_in_symbols.clone(),
+        numbers: None,
+    };
+    let decided = component(pair, domains, seed);
+    if decided.verdict != Verdict::Differs || !substituted {
+        return decided;
+    }
+    let again = component(in_symbols, domains, seed);
+    match again.verdict {
+        Verdict::Differs => again,
+        _ => decided,
     }
 }
 

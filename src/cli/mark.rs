@@ -88,8 +88,9 @@ pub fn run(args: Args) -> Result<String, CliError> {
         1 => ", 1 row named above".into(),
         n => format!(", {n} rows named above"),
     };
+    let answers_word = if marked == 1 { "answer" } else { "answers" };
     Ok(format!(
-        "{} students, {} questions: {marked} answers marked{bad}; wrote {}",
+        "{} students, {} questions: {marked} {answers_word} marked{bad}; wrote {}",
         class.students.len(),
         scheme.questions.len(),
         outputs.listing()

@@ -164,9 +164,9 @@ pub fn mark_answer(
         .iter()
         .zip(&checked.asked)
         .map(|(quantity, given)| {
-            let line = checked_lines
-                .iter()
-                .rposition(|c| states(context, &c.line.text, quantity));
+            let line = checked_lines.iter().rposition(|c| {
+                c.judgement() != Judgement::Error && states(context, &c.line.text, quantity)
+            });
             let standing = standing(
                 line.map(|k| &checked_lines[k]),
                 given.as_ref(),
@@ -230,15 +230,25 @@ fn standing(
     }
 }
 
-/// Whether `line` states `quantity`: its left side is the name alone, in any spelling of the
-/// quantity (`D_y = …`, `M_x = …` for `SumM_x`; in `D_y L = Hdot_z` Ḣ_z is used, not stated).
+/// Whether `line` states `quantity`: one side is the name alone, in any spelling of the
+/// quantity (`D_y = …`, `M_x = …` for `SumM_x`), and the other names no derived quantity
+/// (`1857 N = T_BC` states T_BC; in `D_y L = Hdot_z` Ḣ_z is used, not stated).
 fn states(context: &Context, line: &str, quantity: &str) -> bool {
-    line.split_once('=').is_some_and(|(left, _)| {
-        let left = left.trim();
-        left.starts_with(|c: char| c.is_ascii_alphabetic())
-            && left
+    let Some((left, right)) = line.split_once('=') else {
+        return false;
+    };
+    let is_quantity = |side: &str| {
+        let side = side.trim();
+        side.starts_with(|c: char| c.is_ascii_alphabetic())
+            && side
                 .chars()
                 .all(|c| c.is_ascii_alphanumeric() || "_'".contains(c))
-            && context.canonical(left) == context.canonical(quantity)
-    })
+            && context.canonical(side) == context.canonical(quantity)
+    };
+    let names_derived = |side: &str| {
+        side.split(|c: char| !(c.is_ascii_alphanumeric() || "_'".contains(c)))
+            .filter(|w| w.starts_with(|c: char| c.is_ascii_alphabetic()))
+            .any(|w| context.derived_scalar(w).is_some())
+    };
+    is_quantity(left) || is_quantity(right) && !names_derived(left)
 }

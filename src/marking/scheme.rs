@@ -313,7 +313,13 @@ pub fn check_names(
         for (key, names) in [("gives", &q.gives), ("may_use", &q.may_use)] {
             for name in names {
                 let why = match context.name(name) {
-                    Name::Derived(_) if !context.is_alias(name) => continue,
+                    Name::Derived(_) if context.is_alias(name) => {
+                        format!("{name} is another spelling of givens, not a quantity to derive")
+                    }
+                    Name::Derived(_) if context.derived_scalar(name).is_none() => format!(
+                        "{name} is a vector: give its components as steps, as check names them (H_x, H_y, H_z)"
+                    ),
+                    Name::Derived(_) => continue,
                     Name::Unknown(help) => help,
                     _ => format!(
                         "{name} is not among the quantities {} derives",
@@ -327,7 +333,7 @@ pub fn check_names(
                         q.gives_span.start,
                         q.gives_span.end,
                         format!(
-                            "question {}: {key} names {name}, which {} does not derive",
+                            "question {}: {key} cannot name {name} in {}",
                             q.id, context.description
                         ),
                     )

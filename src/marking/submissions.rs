@@ -195,11 +195,27 @@ impl Rows {
         if record.iter().all(|f| f.iter().all(u8::is_ascii_whitespace)) {
             return;
         }
-        if record.len() != width {
+        if record.len() > width {
             self.bad.push(row_error(format!(
                 "the row has {} fields where the header has {width}",
                 record.len()
             )));
+            return;
+        }
+        if record.len() < width {
+            // Too few fields to trust which is the student (a line of another row's answer,
+            // after a quote never closed): named by its text alone.
+            let text = String::from_utf8_lossy(record.as_slice()).into_owned();
+            self.bad.push(BadRow {
+                line,
+                student: None,
+                question: None,
+                why: format!(
+                    "the row {:?} has {} fields where the header has {width}",
+                    visible(&text),
+                    record.len()
+                ),
+            });
             return;
         }
         let text = |k: usize, name: &str| -> Result<String, String> {

@@ -460,7 +460,54 @@ fn a_misspelt_quantity_is_refused_at_its_gives() {
         &dir.0.join("out").to_string_lossy(),
     ]);
     assert_eq!(code, 1);
-    assert!(stderr.contains("gives names D_yy"), "{stderr}");
+    assert!(stderr.contains("gives cannot name D_yy"), "{stderr}");
     assert!(stderr.contains(":4:"), "at line 4: {stderr}");
     assert!(stderr.contains("did you mean D_y"), "{stderr}");
+}
+
+/// A quantity stated with its name on the right (`1857 N = T_BC`), either root of a quantity
+/// the scene's equations give two of (a top's slow and fast precession), and a correct answer
+/// followed by a line that cannot be read: each earns its marks.
+#[test]
+fn reversed_statements_either_root_and_an_unread_last_line() {
+    let dir = OutputDir::new("roots");
+    std::fs::create_dir_all(&dir.0).expect("created");
+    let scenes = format!("{}/examples/scenes", env!("CARGO_MANIFEST_DIR"));
+    let scheme = dir.0.join("scheme.toml");
+    std::fs::write(
+        &scheme,
+        format!(
+            "[[question]]\nid = \"T\"\nscene = \"{scenes}/sp18_3_rotating_rod.scene\"\ngives = [\"T_BC\", \"A_x\"]\nmarks = 4\n\
+             [[question]]\nid = \"V\"\nscene = \"{scenes}/top_slow_and_fast_precession.scene\"\ngives = \"phidot\"\nmarks = 2\n"
+        ),
+    )
+    .expect("written");
+    // SP 18.3: T_BC = 1857 N, A_x = −843.4 N. The top: φ̇ = 2.651 rad/s or 142.5 rad/s.
+    let submissions = dir.0.join("submissions.csv");
+    std::fs::write(
+        &submissions,
+        "student,question,answer\n\
+         a,T,\"1857 N = T_BC\n-843.4 N = A_x\"\n\
+         b,V,phidot = 142.5 rad/s\n\
+         c,V,phidot = 2.651 rad/s\n\
+         d,T,\"T_BC = 1857 N\nA_x = -843.4 N\nT_BC = 1857 N (tension)\"\n",
+    )
+    .expect("written");
+    let out = dir.0.join("out");
+    let (code, _, stderr) = kinetics(&[
+        "mark",
+        scheme.to_str().expect("UTF-8"),
+        submissions.to_str().expect("UTF-8"),
+        "-o",
+        out.to_str().expect("UTF-8"),
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(
+        std::fs::read_to_string(out.join("grades.csv")).expect("grades"),
+        "student,T,V,total\na,4,0,4\nb,0,2,2\nc,0,2,2\nd,4,0,4\n"
+    );
+    assert!(
+        stderr.contains("d, T: line 3 of the answer cannot be read"),
+        "{stderr}"
+    );
 }

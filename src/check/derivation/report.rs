@@ -135,6 +135,24 @@ pub fn summary(checked: &[LineCheck]) -> String {
                 slip.line.number
             )
         }
+        None if checked.iter().any(|c| c.judgement() == Judgement::Follows) => {
+            let carrying: Vec<usize> = checked
+                .iter()
+                .filter(|c| c.judgement() == Judgement::Follows)
+                .map(|c| c.line.number)
+                .collect();
+            let mut from: Vec<usize> = checked
+                .iter()
+                .flat_map(|c| c.follows_from.clone())
+                .collect();
+            from.sort_unstable();
+            from.dedup();
+            format!(
+                "{span}: no slip of its own; {} carrying the slip of {} before it",
+                line_list(&carrying),
+                line_list(&from)
+            )
+        }
         None if checked.iter().all(|c| c.judgement() == Judgement::Holds) => {
             format!("{span}: every line holds")
         }

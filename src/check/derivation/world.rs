@@ -320,12 +320,19 @@ impl<'c> World<'c> {
             .collect();
         let truth = |s: Symbol| self.unknowns.get(&s).map(|u| u.truth.clone());
         let value = fixed.value.subs(&truth).ok()?;
-        let agrees = match (self.in_numbers(&value), self.in_numbers(&unknown.truth)) {
-            (Some((v, _)), Some((t, _))) => {
-                (v - t).abs() <= self.context.relative_tolerance() * t.abs()
-            }
-            _ => is_zero(&(&value - &unknown.truth), self.context.domains()).unwrap_or(false),
-        };
+        // The truth, or where the scene's equations have several solutions, one of them.
+        let agrees = self
+            .context
+            .derived_scalar_values(&unknown.name)
+            .iter()
+            .any(
+                |truth| match (self.in_numbers(&value), self.in_numbers(truth)) {
+                    (Some((v, _)), Some((t, _))) => {
+                        (v - t).abs() <= self.context.relative_tolerance() * t.abs()
+                    }
+                    _ => is_zero(&(&value - truth), self.context.domains()).unwrap_or(false),
+                },
+            );
         Some(Given {
             left_in,
             agrees,

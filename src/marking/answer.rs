@@ -230,15 +230,21 @@ fn standing(
     }
 }
 
-/// Whether `line` states `quantity`: one side is the name alone, in any spelling of the
-/// quantity (`D_y = …`, `M_x = …` for `SumM_x`), and the other names no derived quantity
-/// (`1857 N = T_BC` states T_BC; in `D_y L = Hdot_z` Ḣ_z is used, not stated).
+/// Whether `line` states `quantity`: one side is the name alone or a number times it, in any
+/// spelling of the quantity (`D_y = …`, `M_x = …` for `SumM_x`, `2 T = …`), and the other
+/// names no derived quantity (`1857 N = T_BC` states T_BC; in `D_y L = Hdot_z` Ḣ_z is used,
+/// not stated).
 fn states(context: &Context, line: &str, quantity: &str) -> bool {
     let Some((left, right)) = line.split_once('=') else {
         return false;
     };
     let is_quantity = |side: &str| {
-        let side = side.trim();
+        // A number in front is a multiple of the equation (`2 T = …`), which states T too.
+        let side = side
+            .trim()
+            .trim_start_matches(|c: char| c.is_ascii_digit() || "./ ".contains(c))
+            .trim_start_matches('*')
+            .trim();
         side.starts_with(|c: char| c.is_ascii_alphabetic())
             && side
                 .chars()

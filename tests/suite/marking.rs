@@ -465,7 +465,8 @@ fn a_misspelt_quantity_is_refused_at_its_gives() {
     assert!(stderr.contains("did you mean D_y"), "{stderr}");
 }
 
-/// A quantity stated with its name on the right (`1857 N = T_BC`), either root of a quantity
+/// A quantity stated with its name on the right (`1857 N = T_BC`) or times a number
+/// (`2 phidot = 5.302 rad/s`), either root of a quantity
 /// the scene's equations give two of (a top's slow and fast precession), and a correct answer
 /// followed by a line that cannot be read: each earns its marks.
 #[test]
@@ -490,6 +491,7 @@ fn reversed_statements_either_root_and_an_unread_last_line() {
          a,T,\"1857 N = T_BC\n-843.4 N = A_x\"\n\
          b,V,phidot = 142.5 rad/s\n\
          c,V,phidot = 2.651 rad/s\n\
+         e,V,2 phidot = 5.302 rad/s\n\
          d,T,\"T_BC = 1857 N\nA_x = -843.4 N\nT_BC = 1857 N (tension)\"\n",
     )
     .expect("written");
@@ -504,7 +506,7 @@ fn reversed_statements_either_root_and_an_unread_last_line() {
     assert_eq!(code, 0, "{stderr}");
     assert_eq!(
         std::fs::read_to_string(out.join("grades.csv")).expect("grades"),
-        "student,T,V,total\na,4,0,4\nb,0,2,2\nc,0,2,2\nd,4,0,4\n"
+        "student,T,V,total\na,4,0,4\nb,0,2,2\nc,0,2,2\ne,0,2,2\nd,4,0,4\n"
     );
     assert!(
         stderr.contains("d, T: line 3 of the answer cannot be read"),

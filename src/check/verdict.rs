@@ -407,21 +407,33 @@ fn slip_reading(
 }
 
 /// Both sides' values, when neither holds a symbol (π aside): a claim written in numbers;
-/// and the scale of the correct side, the sum of its terms' magnitudes (an exact zero
-/// evaluates to round-off of that size: `3 r cos θ φ̇² − 2 r ψ̇ φ̇ + 4 g = 0` at a root).
+/// and the scale of the correct side ([`value_and_scale`]).
 fn in_numbers(correct: &Expr, claimed: &Expr) -> Option<(f64, f64, f64)> {
-    let value = |e: &Expr| {
-        if e.has_symbol_where(&|s| !s.is_pi()) {
-            return None;
-        }
-        e.eval::<f64>(&|_| None).ok().filter(|v| v.is_finite())
-    };
-    let scale = correct
+    let (value, scale) = value_and_scale(correct, &plain_value)?;
+    Some((value, plain_value(claimed)?, scale))
+}
+
+/// The value of `e` when it holds no symbol (π aside) and is finite.
+pub(in crate::check) fn plain_value(e: &Expr) -> Option<f64> {
+    if e.has_symbol_where(&|s| !s.is_pi()) {
+        return None;
+    }
+    e.eval::<f64>(&|_| None).ok().filter(|v| v.is_finite())
+}
+
+/// `e`'s value and its scale, the sum of its terms' magnitudes, each term valued by `value`
+/// (an exact zero evaluates to round-off of that size: `3 r cos θ φ̇² − 2 r ψ̇ φ̇ + 4 g = 0`
+/// at a root); none when a term has no value.
+pub(in crate::check) fn value_and_scale(
+    e: &Expr,
+    value: &dyn Fn(&Expr) -> Option<f64>,
+) -> Option<(f64, f64)> {
+    let scale = e
         .terms()
         .iter()
         .map(|t| value(t).map(f64::abs))
         .sum::<Option<f64>>()?;
-    Some((value(correct)?, value(claimed)?, scale))
+    Some((value(e)?, scale))
 }
 
 /// A difference this small relative to the scale of the correct side's terms is round-off.
@@ -710,6 +722,16 @@ fn expanded_numerator(difference: &Expr) -> Result<Expr, AlgebraError> {
         });
     }
     numerator.expand()
+}
+
+/// Whether `difference` is zero: its numerator multiplied out (within [`EXPANDED_TERMS`]),
+/// then with the trigonometric and radical identities ([`reduced_is_zero`]).
+pub(in crate::check) fn is_zero(
+    difference: &Expr,
+    domains: &Domains,
+) -> Result<bool, AlgebraError> {
+    let numerator = expanded_numerator(difference)?;
+    Ok(numerator.is_zero() || reduced_is_zero(&numerator, difference, domains)?)
 }
 
 /// Whether `difference` is zero once `sin² + cos² = 1`, the double angles, roots and

@@ -97,29 +97,19 @@ pub fn mark_class(
         vec![vec![None; scheme.questions.len()]; students.len()];
     for s in submissions {
         let Some(q) = scheme.question(&s.question) else {
-            bad_rows.push(BadRow {
-                line: s.line,
-                student: Some(s.student.clone()),
-                question: Some(s.question.clone()),
-                why: format!(
-                    "the scheme has no question {:?} (its questions: {})",
-                    s.question,
-                    question_ids(scheme)
-                ),
-            });
+            bad_rows.push(s.bad(format!(
+                "the scheme has no question {:?} (its questions: {})",
+                s.question,
+                question_ids(scheme)
+            )));
             continue;
         };
         let k = student_index(&s.student).expect("every student of a row is listed");
         if let Some(earlier) = latest[k][q].replace(s) {
-            bad_rows.push(BadRow {
-                line: earlier.line,
-                student: Some(s.student.clone()),
-                question: Some(s.question.clone()),
-                why: format!(
-                    "answered again at line {}: the last answer is marked",
-                    s.line
-                ),
-            });
+            bad_rows.push(earlier.bad(format!(
+                "answered again at line {}: the last answer is marked",
+                s.line
+            )));
         }
     }
     for b in &bad_rows {

@@ -14,6 +14,18 @@ pub struct Submission {
     pub answer: String,
 }
 
+impl Submission {
+    /// This row named as one not marked, and why.
+    pub fn bad(&self, why: String) -> BadRow {
+        BadRow {
+            line: self.line,
+            student: Some(self.student.clone()),
+            question: Some(self.question.clone()),
+            why,
+        }
+    }
+}
+
 /// A row that is not an answer to mark: its line, its student and question where they
 /// could be read, and why.
 #[derive(Debug, Clone, PartialEq)]

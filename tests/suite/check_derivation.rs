@@ -39,6 +39,22 @@ fn lines(json: &Value, k: usize) -> Vec<(u64, String, Option<String>, Vec<u64>)>
         .collect()
 }
 
+/// Each line of part `k`: its verdict and what it follows from.
+fn verdicts(json: &Value, k: usize) -> Vec<(String, Vec<u64>)> {
+    lines(json, k)
+        .into_iter()
+        .map(|(_, v, _, from)| (v, from))
+        .collect()
+}
+
+/// The verdicts derived by hand, as [`verdicts`] gives them.
+fn by_hand(expected: &[(&str, &[u64])]) -> Vec<(String, Vec<u64>)> {
+    expected
+        .iter()
+        .map(|(v, from)| (v.to_string(), from.to_vec()))
+        .collect()
+}
+
 const SP18_4: &str = "examples/scenes/sp18_4_shaft_reactions.scene";
 
 /// SP 18.4's D_y. Moments about C: the reaction D_y j at L i has the moment
@@ -108,22 +124,16 @@ C_y = -1/2 m c alpha - 1/2 m c w^2 - 1/8 m c alpha + 1/4 m c w^2
 C_y = -1/2 m c alpha - 1/2 m c w^2 + 1/8 m c alpha - 1/4 m c w^2
 ";
     let (run, json) = derivation(SP18_4, text);
-    let verdicts: Vec<(String, Vec<u64>)> = lines(&json, 0)
-        .into_iter()
-        .map(|(_, v, _, from)| (v, from))
-        .collect();
-    let expected: Vec<(String, Vec<u64>)> = [
-        ("holds", vec![]),
-        ("differs", vec![]),
-        ("follows", vec![2]),
-        ("follows", vec![2]),
-        ("holds", vec![]),
-        ("follows", vec![2]),
-        ("differs", vec![]),
-    ]
-    .into_iter()
-    .map(|(v, f)| (v.to_owned(), f))
-    .collect();
+    let verdicts = verdicts(&json, 0);
+    let expected = by_hand(&[
+        ("holds", &[]),
+        ("differs", &[]),
+        ("follows", &[2]),
+        ("follows", &[2]),
+        ("holds", &[]),
+        ("follows", &[2]),
+        ("differs", &[]),
+    ]);
     assert_eq!(verdicts, expected, "{}", run.stdout);
     assert_eq!(lines(&json, 0)[1].2.as_deref(), Some("sign-flipped"));
 }
@@ -185,19 +195,13 @@ D_y = -11.25 + 118.5
 D_y = 107.25
 ";
     let (run, json) = derivation(SP18_4, text);
-    let got: Vec<(String, Vec<u64>)> = lines(&json, 0)
-        .into_iter()
-        .map(|(_, v, _, from)| (v, from))
-        .collect();
-    let expected: Vec<(String, Vec<u64>)> = [
-        ("holds", vec![]),
-        ("differs", vec![]),
-        ("follows", vec![2]),
-        ("follows", vec![2]),
-    ]
-    .into_iter()
-    .map(|(v, f)| (v.to_owned(), f))
-    .collect();
+    let got = verdicts(&json, 0);
+    let expected = by_hand(&[
+        ("holds", &[]),
+        ("differs", &[]),
+        ("follows", &[2]),
+        ("follows", &[2]),
+    ]);
     assert_eq!(got, expected, "{}", run.stdout);
     assert_eq!(
         json["parts"][0]["lines"][1]["does_not_follow"],

@@ -29,6 +29,12 @@ impl Drop for OutputDir {
     }
 }
 
+/// `kinetics mark SCHEME SUBMISSIONS -o OUT`.
+fn mark(scheme: &Path, submissions: &Path, out: &Path) -> (i32, String, String) {
+    let path = |p: &Path| p.to_str().expect("a UTF-8 temporary path").to_owned();
+    kinetics(&["mark", &path(scheme), &path(submissions), "-o", &path(out)])
+}
+
 fn example(file: &str) -> String {
     format!("{}/examples/marking/{file}", env!("CARGO_MANIFEST_DIR"))
 }
@@ -369,13 +375,7 @@ fn marks_follow_the_value_the_lines_give() {
     let submissions = dir.0.join("submissions.csv");
     std::fs::write(&submissions, csv).expect("written");
     let out = dir.0.join("out");
-    let (code, stdout, stderr) = kinetics(&[
-        "mark",
-        dir.0.join("scheme.toml").to_str().expect("UTF-8"),
-        submissions.to_str().expect("UTF-8"),
-        "-o",
-        out.to_str().expect("UTF-8"),
-    ]);
+    let (code, stdout, stderr) = mark(&dir.0.join("scheme.toml"), &submissions, &out);
     assert_eq!(code, 0, "{stdout}\n{stderr}");
     // bob's R: D_y right (1), C_y = −D_y − ½ m c (α + ω²) right once line 1's D_y is put in,
     // left in α, which R's may_use allows (1); cat's M_x is ΣM_x (2).
@@ -406,13 +406,7 @@ fn crlf_lines_and_an_unclosed_quote_are_named_where_they_are() {
         let path = dir.0.join(name);
         std::fs::write(&path, csv).expect("written");
         let out = dir.0.join(format!("{name}-out"));
-        let (code, _, stderr) = kinetics(&[
-            "mark",
-            scheme.to_str().expect("UTF-8"),
-            path.to_str().expect("UTF-8"),
-            "-o",
-            out.to_str().expect("UTF-8"),
-        ]);
+        let (code, _, stderr) = mark(&scheme, &path, &out);
         assert_eq!(code, 0, "{stderr}");
         let grades = std::fs::read_to_string(out.join("grades.csv")).expect("grades");
         (path.to_string_lossy().into_owned(), grades, stderr)
@@ -496,13 +490,7 @@ fn reversed_statements_either_root_and_an_unread_last_line() {
     )
     .expect("written");
     let out = dir.0.join("out");
-    let (code, _, stderr) = kinetics(&[
-        "mark",
-        scheme.to_str().expect("UTF-8"),
-        submissions.to_str().expect("UTF-8"),
-        "-o",
-        out.to_str().expect("UTF-8"),
-    ]);
+    let (code, _, stderr) = mark(&scheme, &submissions, &out);
     assert_eq!(code, 0, "{stderr}");
     assert_eq!(
         std::fs::read_to_string(out.join("grades.csv")).expect("grades"),

@@ -18,6 +18,7 @@
 use crate::algebra::vector::{components, has_unit_vectors};
 use crate::algebra::{AlgebraError, Expr, Symbol};
 use crate::check::context::Context;
+use crate::check::verdict::{is_zero, plain_value, value_and_scale};
 use crate::parse::claim::{Claim, Name};
 use crate::parse::{parse_claim_with_units, Follows};
 use crate::scene::units_in_math::in_system;
@@ -47,16 +48,6 @@ pub struct Given {
     pub agrees: bool,
     /// The lines the value rests on.
     pub lines: Vec<usize>,
-}
-
-/// Whether `e` is zero: its numerator over one denominator multiplied out, then with
-/// `sin² + cos² = 1`, then in the shortest form.
-fn is_zero(e: &Expr, domains: &crate::algebra::Domains) -> Result<bool, AlgebraError> {
-    let (numerator, _) = e.together_parts()?;
-    if numerator.expand()?.simplify_trig()?.is_zero() {
-        return Ok(true);
-    }
-    Ok(e.simplify(domains)?.is_zero())
 }
 
 /// The values a derivation's lines give the derived names, line by line.
@@ -253,19 +244,10 @@ impl<'c> World<'c> {
     /// `e`'s value at the givens' values and the sum of its terms' magnitudes, when it is a
     /// number there.
     fn in_numbers(&self, e: &Expr) -> Option<(f64, f64)> {
-        let number = |t: &Expr| -> Option<f64> {
-            let v = t.subs(&|s| self.context.value(s)).ok()?;
-            if v.has_symbol_where(&|s| !s.is_pi()) {
-                return None;
-            }
-            v.eval::<f64>(&|_| None).ok().filter(|x| x.is_finite())
-        };
-        let scale = e
-            .terms()
-            .iter()
-            .map(|t| number(t).map(f64::abs))
-            .sum::<Option<f64>>()?;
-        Some((number(e)?, scale))
+        // Each term valued apart: put in together, the numbers would fold into one.
+        value_and_scale(e, &|t| {
+            plain_value(&t.subs(&|s| self.context.value(s)).ok()?)
+        })
     }
 
     /// Fixes `u` at `value` and puts it into every value that holds `u`.

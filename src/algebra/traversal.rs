@@ -2,6 +2,7 @@
 //! size limits use), whether a symbol occurs in it, and the set of its symbols.
 
 use super::expr::{Expr, View};
+use super::function::Func;
 use super::symbol::Symbol;
 use super::work;
 
@@ -95,6 +96,16 @@ impl Expr {
             View::Add(xs) | View::Mul(xs) => xs.iter().any(|x| x.has_symbol_where(holds)),
             View::Pow(b, e) => b.has_symbol_where(holds) || e.has_symbol_where(holds),
             View::Func(_, a) => a.has_symbol_where(holds),
+        }
+    }
+
+    /// Whether a function for which `holds` is true is applied anywhere in the expression.
+    pub fn has_function_where(&self, holds: &dyn Fn(Func) -> bool) -> bool {
+        match self.view() {
+            View::Num(_) | View::Sym(_) => false,
+            View::Add(xs) | View::Mul(xs) => xs.iter().any(|x| x.has_function_where(holds)),
+            View::Pow(b, e) => b.has_function_where(holds) || e.has_function_where(holds),
+            View::Func(f, a) => holds(f) || a.has_function_where(holds),
         }
     }
 

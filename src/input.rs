@@ -1,15 +1,15 @@
 //! Every command's work on an input runs within the input's work budget
-//! ([`kinetics::algebra::work`]: a floor plus a number of operations per byte), so that any
+//! ([`crate::algebra::work`]: a floor plus a number of operations per byte), so that any
 //! input ends in bounded time: answered, or refused at a place in it with the reason.
 //!
 //! With the environment variable `KINETICS_WORK_REPORT` set, each budgeted piece of work
 //! writes `work: SPENT of LIMIT operations` to standard error (a refusal as `LIMIT + 1`):
 //! the tests measure the work of hostile inputs by it, not by the wall clock.
 
-use kinetics::algebra::work::{self, Budget};
-use kinetics::algebra::AlgebraError;
-use kinetics::parse::Diagnostic;
-use kinetics::print::markup;
+use crate::algebra::work::{self, Budget};
+use crate::algebra::AlgebraError;
+use crate::parse::Diagnostic;
+use crate::print::markup;
 use std::ops::Range;
 
 /// An input a command works on: its name in diagnostics, its text, and the place a refusal

@@ -81,6 +81,7 @@
 pub mod algebra;
 pub mod check;
 pub mod figure;
+pub mod input;
 pub mod marking;
 pub mod mechanics;
 pub mod numeric;
@@ -91,20 +92,34 @@ pub mod solution;
 pub mod visible;
 
 // The expression algebra.
-pub use algebra::{AlgebraError, Axis, Expr, Matrix, Symbol, Vector};
+pub use algebra::{AlgebraError, Axis, Domain, Domains, Expr, Matrix, Symbol, Vector, View};
 // The derivations, each returned with its steps.
 pub use mechanics::angular_momentum::angular_momentum;
-pub use mechanics::catalogue::derive_general;
+pub use mechanics::catalogue::{derive_general, derive_general_along, NAMES as DERIVATION_NAMES};
 pub use mechanics::euler::euler_equations;
 pub use mechanics::fixed_axis::fixed_axis_rotation;
 pub use mechanics::kinetic_energy::kinetic_energy;
 pub use mechanics::{Derivation, InertiaTensor, Relation, Step};
-// Reading expressions and scenes.
+// Reading expressions and scenes, each within its work budget.
+pub use input::Input;
 pub use parse::{parse_expression, Diagnostic};
-pub use scene::{analyse, parse_scene, Analysis, Scene, Value};
-// Worked solutions.
-pub use solution::{render, Format};
+pub use scene::unit_system::UnitSystem;
+pub use scene::{analyse, parse_scene, parse_scene_in, Analysis, Scene, Value};
+// Worked solutions, and derivations as pages.
+pub use print::markup::{latex as markup_latex, text as markup_text};
+pub use print::{render as render_expr, Notation};
+pub use solution::numbers::check_numeric_requests;
+pub use solution::render::relation;
+pub use solution::{
+    answers, render, render_derivations, render_numbers, worked_steps, Answer, AnswerForm, Format,
+    Shown, WorkedStep,
+};
+// Hand-written claims checked against the derivations.
+pub use check::context::{Context, DEFAULT_RELATIVE_TOLERANCE};
+pub use check::report::{latex as claim_report_latex, text as claim_report_text};
+pub use check::verdict::{check as check_claim, Report, Verdict};
 // Simulation of a body's motion.
+pub use numeric::integrators::splitting::SplittingOrder;
 pub use numeric::rigid_body::exact_propagation::{simulate_choice, Choice, MethodUsed};
 pub use numeric::rigid_body::inertia::BodyInertia;
 pub use numeric::rigid_body::sample_sink::Sample;
@@ -112,3 +127,6 @@ pub use numeric::rigid_body::simulate::{simulate, Method, Problem, Sampling};
 pub use numeric::rigid_body::state::RigidBodyState;
 pub use numeric::rigid_body::torque::Torque;
 pub use numeric::NumericError;
+pub use scene::parse_scene_to_simulate;
+pub use scene::simulation::{located as simulation_located, problem as simulation_problem};
+pub use scene::top_simulation::heavy_top;

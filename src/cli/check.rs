@@ -5,7 +5,6 @@
 //! Exit status: 0 when every claim holds, 1 when one differs, 3 when none differs and one is
 //! undecided, 2 when an input could not be read (the other claims are still checked).
 
-use super::budget::Input;
 use super::error::CliError;
 use super::input::read_file;
 use kinetics::algebra::work::Budget;
@@ -14,6 +13,7 @@ use kinetics::check::report;
 use kinetics::check::verdict::{check, Report, Verdict};
 use kinetics::parse::Diagnostic;
 use kinetics::scene::parse_scene;
+use kinetics::Input;
 use rayon::prelude::*;
 use std::io::Write;
 use std::process::ExitCode;

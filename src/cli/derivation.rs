@@ -5,13 +5,13 @@
 //! Exit status as `check`'s: 0 when every line holds, 1 when one differs or follows from
 //! one that does, 3 when none differs and one is undecided, 2 when a line could not be read.
 
-use super::budget::Input;
 use super::check::{INPUT_ERROR, UNDECIDED};
 use super::error::CliError;
 use super::input::read_file;
 use super::show::Format;
 use kinetics::check::context::Context;
 use kinetics::check::derivation::{check_derivation, parts, report, Judgement, LineCheck};
+use kinetics::Input;
 use std::io::Write;
 use std::process::ExitCode;
 

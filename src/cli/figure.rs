@@ -1,10 +1,10 @@
 //! `kinetics figure SCENE [--format svg|tikz] [-o FILE]`: the scene's figure (the body, its
 //! axes and loads) as an SVG image or a TikZ picture, on standard output or in FILE.
 
-use super::budget::Input;
 use super::error::CliError;
 use kinetics::figure::{figure, svg::svg, tikz::tikz};
 use kinetics::scene::parse_scene_in;
+use kinetics::Input;
 
 #[derive(clap::Args)]
 #[command(

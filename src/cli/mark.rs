@@ -4,7 +4,6 @@
 //! with its CSV line and student, and never stops the run. Nothing is overwritten without
 //! `--force`.
 
-use super::budget::Input;
 use super::error::CliError;
 use super::input::read_file;
 use kinetics::check::context::Context;
@@ -17,6 +16,7 @@ use kinetics::marking::submissions::read_submissions;
 use kinetics::marking::summary::summary;
 use kinetics::marking::{mark_class, Class};
 use kinetics::scene::parse_scene;
+use kinetics::Input;
 use std::collections::HashMap;
 use std::io::Read;
 use std::path::{Path, PathBuf};

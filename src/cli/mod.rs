@@ -1,7 +1,6 @@
 //! The command line: argument parsing (clap) and one module per command.
 
 mod bench;
-mod budget;
 mod check;
 mod derivation;
 mod derive;

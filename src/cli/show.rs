@@ -2,13 +2,13 @@
 //! JSON: as written (the user's order and parentheses, only the notation changed), or with
 //! `--textbook` in the textbook's order and grouping that `derive` prints.
 
-use super::budget::Input;
 use super::error::CliError;
 use super::input;
 use kinetics::algebra::{vector, AlgebraError, Axis, Expr};
 use kinetics::parse::as_written::statement_as_written;
 use kinetics::parse::{Diagnostic, Statement};
 use kinetics::print::{self, Notation};
+use kinetics::Input;
 
 #[derive(clap::Args)]
 #[command(after_help = "Example:\n  kinetics latex \"-a^2 + 1/2 m v^2\"")]

@@ -2,12 +2,12 @@
 //! or equation (`Expr::simplify`, the chapter's symbols positive where they name masses,
 //! lengths, moments of inertia and times), its canonical form, or its expansion.
 
-use super::budget::Input;
 use super::error::CliError;
 use super::input;
 use super::show::{at_input, render_statement, Format};
 use kinetics::algebra::{AlgebraError, Domains, Expr};
 use kinetics::parse::{parse_statement, Equation, Statement};
+use kinetics::Input;
 
 #[derive(clap::Args)]
 #[command(after_help = "Example:\n  kinetics simplify \"(a^2 - b^2)/(a - b)\"")]

@@ -13,7 +13,6 @@
 //! kinetic energy that overflows, say); the header goes out with the first sample. An
 //! overflow found later stops the run with an error at the body, never an `inf` row.
 
-use super::budget::Input;
 use super::error::CliError;
 use super::sample_rows::SampleRows;
 use super::simulate_flags::{positive, sampling};
@@ -25,6 +24,7 @@ use kinetics::numeric::rigid_body::sample_sink::Sample;
 use kinetics::numeric::rigid_body::simulate::{Method, Problem, SimulationStatistics};
 use kinetics::numeric::NumericError;
 use kinetics::scene::{parse_scene_to_simulate, simulation, top_simulation, Scene};
+use kinetics::Input;
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum MethodName {

@@ -2,13 +2,13 @@
 //! [--digits N] [--units si|us] [-o FILE]` and
 //! `kinetics plan SCENE`: a scene file (or `-` for standard input) analysed on demand.
 
-use super::budget::Input;
 use super::error::CliError;
 use kinetics::figure::{figure, svg::svg};
 use kinetics::scene::unit_system::UnitSystem;
 use kinetics::scene::{analyse, parse_scene_in, Analysis, Scene};
 use kinetics::solution::numbers::{with_digits, DEFAULT_DIGITS};
 use kinetics::solution::{render_beside, render_numbers_beside, Format};
+use kinetics::Input;
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]

@@ -36,6 +36,7 @@ pub fn render_derivations(derivations: &[Derivation], shown: Shown) -> String {
     match shown.format {
         Format::Json => super::json::derivations(&page).to_string(),
         Format::Html => super::html::page(&page),
+        Format::HtmlFragment => super::html::fragment(&page),
         Format::Latex => super::latex::page(&page, shown.standalone)
             .trim_end()
             .to_string(),

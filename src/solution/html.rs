@@ -17,34 +17,66 @@ use crate::mechanics::derivation::Table;
 use crate::print::{self, markup, mathml::escaped, Notation};
 use crate::scene::model::Given;
 
-/// The page's style: a column of text, headings smaller a level down (derive's steps,
-/// `<h3>`, under their derivation's `<h2>`), the maths in a maths font, the left sides of the
-/// relations to the right of their column and the right sides to the left (Chromium aligns
-/// a table cell of maths by `-webkit-right`, not by `right`; other browsers read the
-/// table's `columnalign`).
-const STYLE: &str = "\
-body { font-family: 'Latin Modern Roman', 'DejaVu Serif', serif; max-width: 48em; \
-margin: 2em auto; padding: 0 1em; line-height: 1.45; color: #111; }
-math { font-family: 'Latin Modern Math', 'STIX Two Math', 'DejaVu Math TeX Gyre', math; }
-math[display=\"block\"] { overflow-x: auto; overflow-y: hidden; padding: 0.25em 0; }
-mtd { padding: 0.2em 0; }
-mtd.lhs { text-align: right; text-align: -webkit-right; }
-mtd.eq { padding: 0.2em 0.3em; }
-mtd.rhs { text-align: left; text-align: -webkit-left; }
-h2 { font-size: 1.1em; margin: 1.4em 0 0.4em; }
-h2 .step { margin-right: 0.5em; }
-h3 { font-size: 1em; margin: 1em 0 0.3em; }
-figure { margin: 1em 0; } figure svg { max-width: 100%; height: auto; }
-table.parts { border-collapse: collapse; margin: 0.5em 0; }
-table.parts th, table.parts td { border-bottom: 1px solid #bbb; padding: 0.2em 0.8em; }
-";
+/// The page's style as rules: a column of text, headings smaller a level down (derive's
+/// steps, `<h3>`, under their derivation's `<h2>`), the maths in a maths font, the left
+/// sides of the relations to the right of their column and the right sides to the left
+/// (Chromium aligns a table cell of maths by `-webkit-right`, not by `right`; other
+/// browsers read the table's `columnalign`). The first rule is the page's own, `body`.
+const RULES: [(&str, &str); 14] = [
+    (
+        "body",
+        "font-family: 'Latin Modern Roman', 'DejaVu Serif', serif; max-width: 48em; \
+      margin: 2em auto; padding: 0 1em; line-height: 1.45; color: #111;",
+    ),
+    (
+        "math",
+        "font-family: 'Latin Modern Math', 'STIX Two Math', 'DejaVu Math TeX Gyre', math;",
+    ),
+    (
+        "math[display=\"block\"]",
+        "overflow-x: auto; overflow-y: hidden; padding: 0.25em 0;",
+    ),
+    ("mtd", "padding: 0.2em 0;"),
+    ("mtd.lhs", "text-align: right; text-align: -webkit-right;"),
+    ("mtd.eq", "padding: 0.2em 0.3em;"),
+    ("mtd.rhs", "text-align: left; text-align: -webkit-left;"),
+    ("h2", "font-size: 1.1em; margin: 1.4em 0 0.4em;"),
+    ("h2 .step", "margin-right: 0.5em;"),
+    ("h3", "font-size: 1em; margin: 1em 0 0.3em;"),
+    ("figure", "margin: 1em 0;"),
+    ("figure svg", "max-width: 100%; height: auto;"),
+    ("table.parts", "border-collapse: collapse; margin: 0.5em 0;"),
+    (
+        "table.parts th, table.parts td",
+        "border-bottom: 1px solid #bbb; padding: 0.2em 0.8em;",
+    ),
+];
+
+/// The style of a page, or (`scope`) of a fragment within the element of that class: each
+/// rule's selectors prefixed by it, the page's own rule the element's.
+fn style(scope: Option<&str>) -> String {
+    let scoped = |selectors: &str| match scope {
+        None => selectors.to_string(),
+        Some(class) if selectors == "body" => format!(".{class}"),
+        Some(class) => selectors
+            .split(", ")
+            .map(|s| format!(".{class} {s}"))
+            .collect::<Vec<_>>()
+            .join(", "),
+    };
+    RULES
+        .iter()
+        .map(|(selectors, declarations)| format!("{} {{ {declarations} }}\n", scoped(selectors)))
+        .collect()
+}
 
 /// The head of a page titled `title` (plain words), up to its `<body>`; [`PAGE_END`] closes it.
 fn page_start(title: &str) -> String {
     format!(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
-         <title>{}</title>\n<style>\n{STYLE}</style>\n</head>\n<body>\n",
-        escaped(title)
+         <title>{}</title>\n<style>\n{}</style>\n</head>\n<body>\n",
+        escaped(title),
+        style(None)
     )
 }
 
@@ -55,14 +87,40 @@ const PAGE_END: &str = "</body>\n</html>\n";
 pub(super) fn page(page: &Page) -> String {
     let title = page.title.map_or(page.untitled.to_string(), markup::text);
     let mut out = page_start(&title);
+    content(&mut out, page);
+    out.push_str(PAGE_END);
+    out
+}
+
+/// The class of a fragment's element, which its style is scoped to.
+const FRAGMENT_CLASS: &str = "kinetics-page";
+
+/// The page's content as a fragment of another page (a notebook's cell): one `<div>` with
+/// its style scoped to it, so nothing around it changes.
+pub(super) fn fragment(page: &Page) -> String {
+    let mut out = format!(
+        "<div class=\"{FRAGMENT_CLASS}\">\n<style>\n{}</style>\n",
+        style(Some(FRAGMENT_CLASS))
+    );
+    content(&mut out, page);
+    out.push_str("</div>\n");
+    out
+}
+
+/// The title and the sections.
+fn content(out: &mut String, page: &Page) {
     if let Some(t) = page.title {
         out.push_str(&format!("<h1>{}</h1>\n", markup::html(t)));
     }
     for s in &page.sections {
-        section(&mut out, s);
+        section(out, s);
     }
-    out.push_str(PAGE_END);
-    out
+}
+
+/// One line of the results as a block of maths, `name = form = value unit`.
+pub(super) fn result_line(l: &Line) -> String {
+    let room = print::aligned_room(print::width::symbol_em(&l.name.latex));
+    block_of_rows(std::iter::once(result_rows(l, room.0, room.1, false)))
 }
 
 /// A section; a step's and a derivation's in a `<section>` of their own.

@@ -2,8 +2,9 @@
 //! the statement, the givens, the quantities asked for, each step with its relations as text
 //! and LaTeX, the names of long radicands, and the results with their forms and values.
 
+use super::answer::WorkedStep;
 use super::engineer::StepValues;
-use super::page::{Block, Heading, Page, Row, Section};
+use super::page::{Block, Heading, Page, Section};
 use super::parts_table;
 use super::render::relation;
 use super::result::{Body, Form, Line, Result};
@@ -89,21 +90,19 @@ pub(super) fn derivations(page: &Page) -> serde_json::Value {
 
 /// A step of a page: its title (text and LaTeX), its table of parts and its relations.
 fn step_json(section: &Section) -> serde_json::Value {
-    let title = match section.heading {
-        Heading::Step { title, .. } | Heading::DerivationStep(title) => title,
-        _ => "",
-    };
-    let (mut table, mut relations) = (None, Vec::new());
-    for block in &section.blocks {
-        match block {
-            Block::Table(t) => table = Some(parts_table::json(t)),
-            Block::Relations(rows) => relations = rows_json(rows),
-            _ => {}
-        }
-    }
+    let step = WorkedStep::of(section);
+    let table = section.blocks.iter().find_map(|block| match block {
+        Block::Table(t) => Some(parts_table::json(t)),
+        _ => None,
+    });
+    let relations: Vec<serde_json::Value> = step
+        .relations
+        .iter()
+        .map(|(text, latex)| serde_json::json!({"text": text, "latex": latex}))
+        .collect();
     serde_json::json!({
-        "title": markup::text(title),
-        "title_latex": markup::latex(title),
+        "title": step.title,
+        "title_latex": step.title_latex,
         "table": table,
         "relations": relations,
     })
@@ -162,18 +161,6 @@ fn step_values_json(step: &StepValues) -> serde_json::Value {
         })
         .collect();
     serde_json::json!({"step": markup::text(&step.title), "values": values})
-}
-
-/// Rows of relations as JSON objects `{"text": "lhs = rhs", "latex": "lhs = rhs"}`.
-fn rows_json(rows: &[Row]) -> Vec<serde_json::Value> {
-    rows.iter()
-        .map(|row| {
-            serde_json::json!({
-                "text": row.one_line(Notation::Text),
-                "latex": row.one_line(Notation::Latex),
-            })
-        })
-        .collect()
 }
 
 /// A result: its name, its form in text and LaTeX, its value and unit.

@@ -2,6 +2,7 @@
 //! textbook form, and the results with values and units, as text, LaTeX, Markdown, JSON or
 //! an HTML page; and the derivations `kinetics derive` prints, in the same formats.
 
+mod answer;
 mod balance_rows;
 pub mod derivations;
 mod engineer;
@@ -23,5 +24,6 @@ mod solution_page;
 mod text;
 pub mod unit_latex;
 
+pub use answer::{answers, worked_steps, Answer, AnswerForm, WorkedStep};
 pub use derivations::{render_derivations, Shown};
 pub use render::{render, render_beside, render_numbers, render_numbers_beside, Format};

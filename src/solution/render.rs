@@ -25,6 +25,9 @@ pub enum Format {
     Json,
     /// One self-contained HTML page, the mathematics in MathML.
     Html,
+    /// The HTML page's content as one `<div>` with its style scoped to it, to stand in
+    /// another page (a notebook's cell).
+    HtmlFragment,
 }
 
 /// The two sides of a relation in the chosen notation, presented about its axis.
@@ -91,13 +94,14 @@ pub fn render_beside(
             Format::Markdown => super::markdown::page(&page),
             Format::Json => super::json::solution(&page, analysis).to_string(),
             Format::Html => super::html::page(&page),
+            Format::HtmlFragment => super::html::fragment(&page),
         }
     })
 }
 
 /// `write` with the names of one page: two symbols that would print alike (`w_x` and
 /// `omega_x`) are told apart, unless a relation `omega_x = w_x` states them one quantity.
-fn on_the_page(scene: &Scene, analysis: &Analysis, write: impl FnOnce() -> String) -> String {
+pub(super) fn on_the_page<T>(scene: &Scene, analysis: &Analysis, write: impl FnOnce() -> T) -> T {
     let relations = || analysis.plan.iter().flat_map(|s| &s.relations);
     let vectors = analysis.plan.iter().flat_map(|s| &s.vectors);
     let page = scene
@@ -144,6 +148,7 @@ pub fn render_numbers_beside(
             Format::Markdown => super::markdown::page(&page),
             Format::Json => super::json::numbers(&page).to_string(),
             Format::Html => super::html::page(&page),
+            Format::HtmlFragment => super::html::fragment(&page),
         }
     })
 }

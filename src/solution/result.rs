@@ -117,6 +117,18 @@ impl Form<'_> {
 }
 
 impl<'a> Line<'a> {
+    /// The line's right side on one line: its form, or its numbers (without the unit) where
+    /// it shows only its value.
+    pub(super) fn one_line(&self, notation: Notation) -> String {
+        match (&self.form, self.show) {
+            (Some(form), Show::Form | Show::Both) => form.render(notation),
+            (_, _) => self.value.as_deref().map_or_else(String::new, |numbers| {
+                let unit = &NO_UNIT;
+                ShownValue { numbers, unit }.render(notation)
+            }),
+        }
+    }
+
     /// The value with its unit, where the line has one.
     pub(super) fn shown_value(&self) -> Option<ShownValue<'_>> {
         Some(ShownValue {
@@ -204,13 +216,7 @@ impl<'a> Result<'a> {
     /// The result on one line (JSON's `text` and `latex`): a line's form, or its number
     /// where it shows only its value; a frame's moments and axes `I_1 = …` joined.
     pub(super) fn one_line(&self, notation: Notation) -> String {
-        let shown = |l: &Line| match (&l.form, l.show) {
-            (Some(form), Show::Form | Show::Both) => form.render(notation),
-            (_, _) => l.value.as_deref().map_or_else(String::new, |numbers| {
-                let unit = &NO_UNIT;
-                ShownValue { numbers, unit }.render(notation)
-            }),
-        };
+        let shown = |l: &Line| l.one_line(notation);
         match &self.body {
             Body::Line(line) => shown(line),
             Body::Frame { moments, axes, .. } => {

@@ -76,6 +76,7 @@ mod principal_axes;
 mod principal_axes_acceptance;
 mod principal_scenes;
 mod print_parse_properties;
+mod python_package;
 mod quick_use;
 mod readable_products;
 mod reproducers;

@@ -1,0 +1,141 @@
+"""Hand-written claims checked: :func:`check` and the :class:`Verdict` it gives."""
+
+from __future__ import annotations
+
+import html
+from typing import Any, Dict, List, Optional
+
+from . import _native
+from ._scene import SceneSource, read
+from ._sympy import from_tree
+
+
+class Side:
+    """The correct side of a claim: its text (``-3*M/(16*c) - 1/4*m*c*w^2``), its LaTeX,
+    and :meth:`to_sympy` (an expression, or a column of components for a vector)."""
+
+    def __init__(self, components: List[Dict[str, Any]], side: str) -> None:
+        self._components = components
+        self._side = side
+        texts = [c[f"{side}_text"] for c in components]
+        self.text: str = texts[0] if len(texts) == 1 else "(" + ", ".join(texts) + ")"
+        latex = [c[f"{side}_latex"] for c in components]
+        self.latex: str = latex[0] if len(latex) == 1 else r",\ ".join(latex)
+
+    def to_sympy(self) -> Any:
+        trees = [c[self._side] for c in self._components]
+        if len(trees) == 1:
+            return from_tree(trees[0])
+        import sympy
+
+        return sympy.Matrix([from_tree(t) for t in trees])
+
+    def __str__(self) -> str:
+        return self.text
+
+    def __repr__(self) -> str:
+        return f"<Side {self.text}>"
+
+
+class Verdict:
+    """What the checker says of a claim.
+
+    ``holds`` is True, False (the claim differs) or None (undecided); ``slip`` names the
+    physics slip that turns the correct side into the claimed one (``cross-product-reversed``,
+    ``omega-for-Omega``, ``parallel-axis-missing``, …) where one explains it, and
+    ``explanation`` says it in words; ``correct`` is the side taken as correct
+    (``.text``, ``.latex``, ``.to_sympy()``); ``report`` is the command line's report.
+    """
+
+    def __init__(self, checked: Dict[str, Any]) -> None:
+        self.claim: str = checked["claim"]
+        self.verdict: str = checked["verdict"]
+        self.holds: Optional[bool] = {"holds": True, "differs": False}.get(self.verdict)
+        self.slip: Optional[str] = checked["slip"]
+        self.explanation: Optional[str] = checked["explanation"]
+        self.report: str = checked["report"]
+        self.report_latex: str = checked["report_latex"]
+        self.correct_side: str = checked["correct_side"]
+        self.claimed_side: str = checked["claimed_side"]
+        components = checked["components"]
+        self.correct: Optional[Side] = Side(components, "correct") if components else None
+        self.claimed: Optional[Side] = Side(components, "claimed") if components else None
+
+    def __bool__(self) -> bool:
+        """True only when the claim holds (an autograder's ``assert``)."""
+        return self.holds is True
+
+    def message(self) -> str:
+        """One paragraph for a student: the verdict, the slip in words, the correct side."""
+        if self.holds:
+            return f"{self.claim}: holds"
+        if self.holds is None:
+            return f"{self.claim}: undecided\n{self.report}"
+        said = f"{self.claim}: differs"
+        if self.explanation:
+            said += f" — {self.explanation}"
+        if self.correct is not None:
+            said += f"\ncorrect: {self.correct_side} = {self.correct.text}"
+        return said
+
+    def __str__(self) -> str:
+        return self.report
+
+    def __repr__(self) -> str:
+        slip = f" ({self.slip})" if self.slip else ""
+        return f"<Verdict {self.verdict}{slip}: {self.claim}>"
+
+    def _repr_html_(self) -> str:
+        colour = {"holds": "#176f2c", "differs": "#a61b1b"}.get(self.verdict, "#8a5a00")
+        head = (f'<p><b style="color:{colour}">{self.verdict}</b>'
+                f"{' (' + html.escape(self.slip) + ')' if self.slip else ''}: "
+                f"<code>{html.escape(self.claim)}</code></p>")
+        words = f"<p>{html.escape(self.explanation)}.</p>" if self.explanation else ""
+        rows = ""
+        if self.correct is not None and self.claimed is not None:
+            rows = f"<p>$${self._aligned()}$$</p>"
+        return f'<div class="kinetics-verdict">{head}{words}{rows}</div>'
+
+    def _repr_latex_(self) -> str:
+        said = rf"\text{{{self.verdict}{' (' + self.slip + ')' if self.slip else ''}}}"
+        if self.correct is None or self.claimed is None:
+            return f"$${said}$$"
+        return f"$${said}\\\\ {self._aligned()}$$"
+
+    def _repr_markdown_(self) -> str:
+        return self._repr_latex_()
+
+    def _aligned(self) -> str:
+        assert self.correct is not None and self.claimed is not None
+        return (r"\begin{aligned} "
+                rf"\text{{as claimed:}}\ & {self.claimed.latex} \\ "
+                rf"\text{{correct:}}\ & {self.correct.latex} \end{{aligned}}")
+
+
+def check(
+    claim: str,
+    scene: Optional[SceneSource] = None,
+    principal: bool = False,
+    fixed_point: bool = False,
+    fixed_axis: bool = False,
+    rtol: Optional[float] = None,
+) -> Verdict:
+    """Checks a hand-written claim ``lhs = rhs`` against the derivations.
+
+    Against a scene (a path or its text) the claim may use the scene's givens, unknowns
+    and derived quantities; without one, a general body in body-fixed axes
+    (``principal``: every product of inertia zero; ``fixed_point``: about a fixed point O;
+    ``fixed_axis``: rotation about z at ``w``, ``alpha``). ``rtol`` is how close a claim in
+    numbers must come (default 0.005). A claim that cannot be read raises
+    :class:`kinetics.SceneError` at its place.
+
+    >>> import kinetics
+    >>> v = kinetics.check("D_y = -3*M/(16*c) + 1/4*m*c*w^2",
+    ...                    scene="examples/scenes/sp18_4_shaft_reactions.scene")
+    >>> v.holds, v.slip
+    (False, 'cross-product-reversed')
+    >>> v.correct.text
+    '-3*M/(16*c) - 1/4*m*c*w^2'
+    """
+    source = read(scene) if scene is not None else None
+    return Verdict(_native.check(claim, source, principal, fixed_point, fixed_axis, rtol))

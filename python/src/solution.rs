@@ -1,0 +1,141 @@
+//! `solve`: a scene parsed, analysed and checked within its work budget, kept as a
+//! [`Solved`] whose results, steps and pages are written when asked for.
+
+use crate::error::{refused, scene_error};
+use crate::expression::tree;
+use kinetics::{
+    analyse, answers, check_numeric_requests, parse_scene_in, render, render_numbers, worked_steps,
+    Analysis, AnswerForm, Format, Input, Scene, UnitSystem,
+};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+/// A step as Python receives it: its title, its title in LaTeX, and its relations as
+/// `(text, latex)`.
+type StepRows = (String, String, Vec<(String, String)>);
+
+/// A solved scene.
+#[pyclass(frozen, module = "kinetics._native")]
+pub struct Solved {
+    scene: Scene,
+    analysis: Analysis,
+}
+
+/// Solves the scene `text` (named `name` in errors), its values shown in `units` (`"si"`,
+/// `"us"`, or None for the system its givens are written in).
+#[pyfunction]
+#[pyo3(signature = (name, text, units=None))]
+pub fn solve(py: Python<'_>, name: &str, text: &str, units: Option<&str>) -> PyResult<Solved> {
+    let units = match units {
+        None => None,
+        Some("si") => Some(UnitSystem::Si),
+        Some("us") => Some(UnitSystem::Us),
+        Some(other) => return Err(refused(format!("units={other:?}: give \"si\" or \"us\""))),
+    };
+    py.detach(|| {
+        Input::scene(name, text).within(|| {
+            let scene = parse_scene_in(name, text, units)?;
+            let analysis = analyse(&scene)?;
+            check_numeric_requests(&scene, &analysis)?;
+            Ok(Solved { scene, analysis })
+        })
+    })
+    .map_err(|d| scene_error(&d))
+}
+
+#[pymethods]
+impl Solved {
+    /// The scene's title, if it has one.
+    #[getter]
+    fn title(&self) -> Option<String> {
+        self.scene.title.clone()
+    }
+
+    /// Each line of the results: a dict of `name`, `name_latex`, `text`, `latex`, `kind`
+    /// (`expr`, `vector`, `matrix`, `words`, `number`), `form` (the expression's tree, a
+    /// list of three or nine, or None), `value` (a list of numbers or None), `unit`,
+    /// `value_text`, `value_latex` and `mathml`.
+    fn answers<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        let domains = self.scene.domains();
+        let list = PyList::empty(py);
+        for a in answers(&self.scene, &self.analysis) {
+            let d = PyDict::new(py);
+            let (kind, form) = match &a.form {
+                AnswerForm::Expr(e) => ("expr", tree(py, e, &domains)?.into_any()),
+                AnswerForm::Vector(v) => ("vector", trees(py, v.iter(), &domains)?),
+                AnswerForm::Matrix(m) => {
+                    // Row by row, as the value's nine numbers.
+                    ("matrix", trees(py, m.transpose().iter(), &domains)?)
+                }
+                AnswerForm::Words(_) => ("words", py.None().into_bound(py)),
+                AnswerForm::Number => ("number", py.None().into_bound(py)),
+            };
+            d.set_item("name", a.name)?;
+            d.set_item("name_latex", a.name_latex)?;
+            d.set_item("text", a.text)?;
+            d.set_item("latex", a.latex)?;
+            d.set_item("kind", kind)?;
+            d.set_item("form", form)?;
+            d.set_item("value", a.value)?;
+            d.set_item("unit", a.unit)?;
+            d.set_item("value_text", a.value_text)?;
+            d.set_item("value_latex", a.value_latex)?;
+            d.set_item("mathml", a.mathml)?;
+            list.append(d)?;
+        }
+        Ok(list)
+    }
+
+    /// The steps of the plan: `(title, title_latex, [(text, latex), ...])` each.
+    fn steps(&self) -> Vec<StepRows> {
+        worked_steps(&self.scene, &self.analysis)
+            .into_iter()
+            .map(|s| (s.title, s.title_latex, s.relations))
+            .collect()
+    }
+
+    /// The worked solution as a page: `format` one of `text`, `latex`, `markdown`, `json`,
+    /// `html`, `html-fragment`; `standalone` LaTeX a whole document; `numbers` the engineer's
+    /// page (the values without the symbolic steps).
+    #[pyo3(signature = (format, standalone=false, numbers=false))]
+    fn render(&self, format: &str, standalone: bool, numbers: bool) -> PyResult<String> {
+        let format = page_format(format)?;
+        if standalone && format != Format::Latex {
+            return Err(refused("standalone goes with the LaTeX format"));
+        }
+        let page = match numbers {
+            true => render_numbers(&self.scene, &self.analysis, format, standalone),
+            false => render(&self.scene, &self.analysis, format, standalone),
+        };
+        Ok(page.trim_end().to_string())
+    }
+}
+
+/// The format of a page as Python names it.
+pub fn page_format(name: &str) -> PyResult<Format> {
+    Ok(match name {
+        "text" => Format::Text,
+        "latex" => Format::Latex,
+        "markdown" => Format::Markdown,
+        "json" => Format::Json,
+        "html" => Format::Html,
+        "html-fragment" => Format::HtmlFragment,
+        other => {
+            return Err(refused(format!(
+                "format {other:?}: choose text, latex, markdown, json, html or html-fragment"
+            )))
+        }
+    })
+}
+
+/// The trees of several expressions, as a list.
+fn trees<'a, 'py>(
+    py: Python<'py>,
+    exprs: impl Iterator<Item = &'a kinetics::Expr>,
+    domains: &kinetics::Domains,
+) -> PyResult<Bound<'py, PyAny>> {
+    let trees = exprs
+        .map(|e| tree(py, e, domains))
+        .collect::<PyResult<Vec<_>>>()?;
+    Ok(PyList::new(py, trees)?.into_any())
+}

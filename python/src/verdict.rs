@@ -1,0 +1,106 @@
+//! `check`: one hand-written claim checked against the derivations of a scene, or of the
+//! general body (principal axes, a fixed point, rotation about a fixed axis), as
+//! `kinetics check` does, within the claim's work budget.
+
+use crate::error::{refused, scene_error};
+use crate::expression::tree;
+use kinetics::{
+    check_claim, claim_report_latex, claim_report_text, parse_scene, render_expr, Axis, Context,
+    Diagnostic, Input, Notation, DEFAULT_RELATIVE_TOLERANCE,
+};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+/// Checks `claim`. The context is the scene `(name, text)` when given, else the general
+/// body as `principal`, `fixed_point` and `fixed_axis` say. Returns a dict: `claim`,
+/// `verdict` (`holds`, `differs`, `undecided`), `slip` (the named rule or reading, or
+/// None), `explanation`, `correct_side`, `claimed_side`, `report` and `report_latex` (the
+/// command line's report), and `components` (`axis`, `verdict`, `correct`, `claimed` as
+/// trees, `correct_text`, `correct_latex`, `claimed_text`, `claimed_latex`).
+#[pyfunction]
+#[pyo3(signature = (claim, scene=None, principal=false, fixed_point=false, fixed_axis=false, rtol=None))]
+pub fn check<'py>(
+    py: Python<'py>,
+    claim: &str,
+    scene: Option<(String, String)>,
+    principal: bool,
+    fixed_point: bool,
+    fixed_axis: bool,
+    rtol: Option<f64>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let rtol = rtol.unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
+    if !(0.0..1.0).contains(&rtol) {
+        return Err(refused(format!(
+            "rtol={rtol}: give a relative tolerance from 0 up to 1, like 0.005 for 0.5 %"
+        )));
+    }
+    let context = match &scene {
+        Some(_) if principal || fixed_point || fixed_axis => {
+            return Err(refused(
+                "principal, fixed_point and fixed_axis describe the general body: a scene \
+                 says all of that itself",
+            ))
+        }
+        Some((name, text)) => py
+            .detach(|| {
+                Input::scene(name, text)
+                    .within(|| Ok::<_, Diagnostic>(Context::scene(&parse_scene(name, text)?)))
+            })
+            .map_err(|d| scene_error(&d))?,
+        None if fixed_axis && (principal || fixed_point) => {
+            return Err(refused(
+                "fixed_axis goes alone: rotation about z is its own context",
+            ))
+        }
+        None if fixed_axis => Context::fixed_axis().map_err(refused)?,
+        None => Context::general(principal, fixed_point).map_err(refused)?,
+    };
+    let context = context.with_relative_tolerance(rtol);
+    let label = "claim";
+    let report = py
+        .detach(|| Input::expression(label, claim).within(|| check_claim(&context, label, claim)))
+        .map_err(|d| scene_error(&d))?;
+    let domains = context.domains();
+    let d = PyDict::new(py);
+    d.set_item("claim", &report.claim)?;
+    d.set_item("verdict", report.verdict.word())?;
+    let slip = report
+        .slip
+        .as_ref()
+        .map(|s| s.slip.name())
+        .or_else(|| report.reading());
+    d.set_item("slip", slip)?;
+    d.set_item("explanation", report.reading_words())?;
+    d.set_item("correct_side", &report.correct_side)?;
+    d.set_item("claimed_side", &report.claimed_side)?;
+    d.set_item(
+        "report",
+        claim_report_text(&report, label, domains).trim_end(),
+    )?;
+    d.set_item(
+        "report_latex",
+        claim_report_latex(&report, label, domains).trim_end(),
+    )?;
+    let components = PyList::empty(py);
+    for c in &report.components {
+        let component = PyDict::new(py);
+        component.set_item("axis", c.axis.map(|a| ["x", "y", "z"][a as usize]))?;
+        component.set_item("verdict", c.verdict.word())?;
+        component.set_item("correct", tree(py, &c.correct_in_symbols, domains)?)?;
+        component.set_item("claimed", tree(py, &c.claimed_in_symbols, domains)?)?;
+        for (side, e) in [
+            ("correct", &c.correct_in_symbols),
+            ("claimed", &c.claimed_in_symbols),
+        ] {
+            let axis = c.axis.unwrap_or(Axis::X);
+            component.set_item(format!("{side}_text"), render_expr(e, Notation::Text, axis))?;
+            component.set_item(
+                format!("{side}_latex"),
+                render_expr(e, Notation::Latex, axis),
+            )?;
+        }
+        components.append(component)?;
+    }
+    d.set_item("components", components)?;
+    Ok(d)
+}

@@ -1,0 +1,47 @@
+"""kinetics.check: verdicts, named slips, the correct side as text and SymPy."""
+
+import pytest
+import sympy
+
+import kinetics
+from conftest import scene
+
+SP18_4 = scene("sp18_4_shaft_reactions.scene")
+
+
+def test_the_sign_slip_is_named():
+    v = kinetics.check("D_y = -3*M/(16*c) + 1/4*m*c*w^2", scene=SP18_4)
+    assert v.holds is False and not v
+    assert v.slip == "cross-product-reversed"
+    assert "Ω × H" in v.explanation
+    assert v.correct.text == "-3*M/(16*c) - 1/4*m*c*w^2"
+    correct = v.correct.to_sympy()
+    M, c, m, w = sorted(correct.free_symbols, key=lambda s: s.name)[0:4]
+    assert sympy.simplify(correct - kinetics.solve(SP18_4).results["D_y"].to_sympy()) == 0
+    assert "differs" in v._repr_html_() and "cross-product-reversed" in v._repr_html_()
+    assert v._repr_latex_().startswith("$$")
+
+
+def test_a_right_claim_holds():
+    v = kinetics.check("D_y = -3*M/(16*c) - 1/4*m*c*w^2", scene=SP18_4)
+    assert v.holds is True and v
+    assert v.slip is None
+
+
+def test_general_body_with_principal_axes():
+    v = kinetics.check("T = 1/2 (I_x w_x^2 + I_y w_y^2 + I_z w_z^2)", principal=True, fixed_point=True)
+    assert v.holds is True
+    wrong = kinetics.check("H_x = I_x w_x - I_xy w_y - I_xz w_z", principal=True)
+    # With principal axes the products of inertia are zero, but I_xy is not a name there.
+    assert wrong.holds in (False, None) or wrong.slip is not None
+
+
+def test_an_unreadable_claim_is_a_scene_error():
+    with pytest.raises(kinetics.SceneError) as caught:
+        kinetics.check("D_y = = 3", scene=SP18_4)
+    assert caught.value.column >= 1
+
+
+def test_the_scene_says_its_own_context():
+    with pytest.raises(ValueError, match="a scene says all of that itself"):
+        kinetics.check("T = 0", scene=SP18_4, principal=True)

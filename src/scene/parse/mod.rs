@@ -97,9 +97,14 @@ fn read_scene(
     units: Option<UnitSystem>,
 ) -> Result<Scene, Diagnostic> {
     before_grammar::check_before_grammar(source_name, source)?;
-    // Error detail records the furthest place the grammar reached and what it expected there.
-    pest::set_error_detail(true);
-    let mut pairs = SceneGrammar::parse(Rule::scene, source).map_err(|e| {
+    // Error detail records the furthest place the grammar reached and what it expected
+    // there, at a cost on every parse: a scene that does not parse is parsed again with it
+    // (once set it stays set, so no thread's error ever lacks it).
+    let parsed = SceneGrammar::parse(Rule::scene, source).or_else(|_| {
+        pest::set_error_detail(true);
+        SceneGrammar::parse(Rule::scene, source)
+    });
+    let mut pairs = parsed.map_err(|e| {
         let start = match e.location {
             pest::error::InputLocation::Pos(p) => p,
             pest::error::InputLocation::Span((s, _)) => s,

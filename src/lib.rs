@@ -104,7 +104,7 @@ pub use mechanics::{Derivation, InertiaTensor, Relation, Step};
 pub use input::Input;
 pub use parse::{parse_expression, Diagnostic};
 pub use scene::unit_system::UnitSystem;
-pub use scene::{analyse, parse_scene, parse_scene_in, Analysis, Scene, Value};
+pub use scene::{analyse, analyse_results, parse_scene, parse_scene_in, Analysis, Scene, Value};
 // Worked solutions, and derivations as pages.
 pub use print::markup::{latex as markup_latex, text as markup_text};
 pub use print::{render as render_expr, Notation};

@@ -10,8 +10,7 @@
 //! | a power | `("pow", base, exponent)` |
 //! | sin cos tan abs acos atan | `("function", name, argument)` |
 
-use kinetics::algebra::{Domain, Domains, View};
-use kinetics::Expr;
+use kinetics::{Domain, Domains, Expr, View};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 

@@ -4,21 +4,27 @@
 use crate::error::{refused, scene_error};
 use crate::expression::tree;
 use kinetics::{
-    analyse, answers, check_numeric_requests, parse_scene_in, render, render_numbers, worked_steps,
-    Analysis, AnswerForm, Format, Input, Scene, UnitSystem,
+    analyse, analyse_results, answers, check_numeric_requests, parse_scene_in, render,
+    render_numbers, worked_steps, Analysis, AnswerForm, Format, Input, Scene, UnitSystem,
 };
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
+use std::sync::OnceLock;
 
 /// A step as Python receives it: its title, its title in LaTeX, and its relations as
 /// `(text, latex)`.
 type StepRows = (String, String, Vec<(String, String)>);
 
-/// A solved scene.
+/// A solved scene: its results, and its worked solution written when first asked for.
 #[pyclass(frozen, module = "kinetics._native")]
 pub struct Solved {
+    name: String,
+    text: String,
     scene: Scene,
-    analysis: Analysis,
+    /// The results (`analyse_results`: the steps not written).
+    results: Analysis,
+    /// The whole analysis, its steps written, for a page or the steps.
+    page: OnceLock<Analysis>,
 }
 
 /// Solves the scene `text` (named `name` in errors), its values shown in `units` (`"si"`,
@@ -35,12 +41,31 @@ pub fn solve(py: Python<'_>, name: &str, text: &str, units: Option<&str>) -> PyR
     py.detach(|| {
         Input::scene(name, text).within(|| {
             let scene = parse_scene_in(name, text, units)?;
-            let analysis = analyse(&scene)?;
-            check_numeric_requests(&scene, &analysis)?;
-            Ok(Solved { scene, analysis })
+            let results = analyse_results(&scene)?;
+            check_numeric_requests(&scene, &results)?;
+            Ok(Solved {
+                name: name.to_string(),
+                text: text.to_string(),
+                scene,
+                results,
+                page: OnceLock::new(),
+            })
         })
     })
     .map_err(|d| scene_error(&d))
+}
+
+impl Solved {
+    /// The analysis with its steps written, made once (within the scene's budget).
+    fn page(&self, py: Python<'_>) -> PyResult<&Analysis> {
+        if let Some(analysis) = self.page.get() {
+            return Ok(analysis);
+        }
+        let analysis = py
+            .detach(|| Input::scene(&self.name, &self.text).within(|| analyse(&self.scene)))
+            .map_err(|d| scene_error(&d))?;
+        Ok(self.page.get_or_init(|| analysis))
+    }
 }
 
 #[pymethods]
@@ -58,7 +83,7 @@ impl Solved {
     fn answers<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         let domains = self.scene.domains();
         let list = PyList::empty(py);
-        for a in answers(&self.scene, &self.analysis) {
+        for a in answers(&self.scene, &self.results) {
             let d = PyDict::new(py);
             let (kind, form) = match &a.form {
                 AnswerForm::Expr(e) => ("expr", tree(py, e, &domains)?.into_any()),
@@ -87,25 +112,32 @@ impl Solved {
     }
 
     /// The steps of the plan: `(title, title_latex, [(text, latex), ...])` each.
-    fn steps(&self) -> Vec<StepRows> {
-        worked_steps(&self.scene, &self.analysis)
+    fn steps(&self, py: Python<'_>) -> PyResult<Vec<StepRows>> {
+        Ok(worked_steps(&self.scene, self.page(py)?)
             .into_iter()
             .map(|s| (s.title, s.title_latex, s.relations))
-            .collect()
+            .collect())
     }
 
     /// The worked solution as a page: `format` one of `text`, `latex`, `markdown`, `json`,
     /// `html`, `html-fragment`; `standalone` LaTeX a whole document; `numbers` the engineer's
     /// page (the values without the symbolic steps).
     #[pyo3(signature = (format, standalone=false, numbers=false))]
-    fn render(&self, format: &str, standalone: bool, numbers: bool) -> PyResult<String> {
+    fn render(
+        &self,
+        py: Python<'_>,
+        format: &str,
+        standalone: bool,
+        numbers: bool,
+    ) -> PyResult<String> {
         let format = page_format(format)?;
         if standalone && format != Format::Latex {
             return Err(refused("standalone goes with the LaTeX format"));
         }
+        let analysis = self.page(py)?;
         let page = match numbers {
-            true => render_numbers(&self.scene, &self.analysis, format, standalone),
-            false => render(&self.scene, &self.analysis, format, standalone),
+            true => render_numbers(&self.scene, analysis, format, standalone),
+            false => render(&self.scene, analysis, format, standalone),
         };
         Ok(page.trim_end().to_string())
     }

@@ -15,7 +15,7 @@ pub mod unit_text;
 pub mod units;
 pub(crate) mod units_in_math;
 
-pub use analysis::{analyse, Analysis, Value};
+pub use analysis::{analyse, analyse_results, Analysis, Value};
 pub use model::Scene;
 pub use parse::{parse_scene, parse_scene_in, parse_scene_to_simulate};
 pub use quantity_dimension::derived_dimension;

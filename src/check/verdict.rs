@@ -312,7 +312,12 @@ fn compared(
                 };
             }
             let (values_c, values_s) = (in_values(context, &c), in_values(context, &s));
+            // A claimed side that still names quantities and holds no decimal and no unit
+            // (`1/4 m r^2 w_1^2` where T also holds w_2) is exact: decided at the values
+            // exactly, never within the tolerance of a number read off a calculator.
+            let exact = !with_units && !holds_decimal(text) && s.has_symbol_where(&|t| !t.is_pi());
             let numbers = in_numbers(&values_c, &values_s)
+                .filter(|_| !exact)
                 .map(|values| Numbers::new(values, context.relative_tolerance(), unit));
             Compared {
                 axis,
@@ -391,10 +396,8 @@ fn slip_reading(
                     Some(s) => &c.correct_in_symbols - &s.correct_in_symbols,
                     None => c.correct_in_symbols.clone(),
                 };
-                let value = c
-                    .numbers
-                    .as_ref()
-                    .and_then(|_| in_values(context, &in_symbols).eval::<f64>(&|_| None).ok());
+                // Its value, where the givens have values.
+                let value = in_values(context, &in_symbols).eval::<f64>(&|_| None).ok();
                 Piece {
                     axis: c.axis,
                     in_symbols,

@@ -191,6 +191,27 @@ fn a_claim_written_with_the_givens_values_is_decided_at_them() {
 }
 
 #[test]
+fn a_claim_in_names_missing_a_small_term_differs() {
+    // A disk (I_z = ½ m r², I_x = ¼ m r²) turning at w_1 = 300 rpm about its axis and
+    // w_2 = 2 rad/s across it: T = ¼ m r² w_1² + ⅛ m r² w_2², whose second term is 0.2 % of
+    // T. Leaving it out is a slip, not a rounding: a claim in names is exact.
+    let scene = parse_scene(
+        "disk.scene",
+        "given m = 4 kg\ngiven r = 250 mm\ngiven w1 = 300 rpm\ngiven w2 = 2 rad/s\n\
+         body disk(r) mass m along z\nvbar = 0\nomega = w2*i + w1*k\nfind T\n",
+    )
+    .unwrap_or_else(|d| panic!("{}", d.render()));
+    let c = Context::scene(&scene);
+    assert_eq!(verdict(&c, "T = 1/4 m r^2 w1^2"), Verdict::Differs);
+    assert_eq!(
+        verdict(&c, "T = 1/4 m r^2 w1^2 + 1/8 m r^2 w2^2"),
+        Verdict::Holds
+    );
+    // In numbers it holds within the tolerance: 61.8 J is 0.02 % from 61.81 J.
+    assert_eq!(verdict(&c, "T = 61.8"), Verdict::Holds);
+}
+
+#[test]
 fn dimensions_judge_what_the_student_wrote() {
     let p = Context::general(true, false).expect("principal");
     // |u| has the unit of u; exponents past a unit's range are not judged, never an error.

@@ -106,13 +106,15 @@ pub use parse::{parse_expression, Diagnostic};
 pub use scene::unit_system::UnitSystem;
 pub use scene::{analyse, analyse_results, parse_scene, parse_scene_in, Analysis, Scene, Value};
 // Worked solutions, and derivations as pages.
-pub use print::markup::{latex as markup_latex, text as markup_text};
+pub use figure::svg::svg as figure_svg;
+pub use figure::{figure, Figure, FigureError};
+pub use print::markup::{html as markup_html, latex as markup_latex, text as markup_text};
 pub use print::{render as render_expr, Notation};
 pub use solution::numbers::check_numeric_requests;
 pub use solution::render::relation;
 pub use solution::{
-    answers, render, render_derivations, render_numbers, worked_steps, Answer, AnswerForm, Format,
-    Shown, WorkedStep,
+    answers, render, render_beside, render_derivations, render_numbers, render_numbers_beside,
+    worked_steps, Answer, AnswerForm, Format, Shown, WorkedStep,
 };
 // Hand-written claims checked against the derivations.
 pub use check::context::{Context, DEFAULT_RELATIVE_TOLERANCE};

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Any, Dict, List, NamedTuple, Optional, Sequence
+from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Union
 
 from . import _native
 from ._sympy import from_tree
@@ -75,11 +75,11 @@ class Derivations:
         return self.to_markdown()
 
 
-def derive(only: Optional[Sequence[str]] = None, principal: bool = False,
+def derive(only: Union[str, Sequence[str], None] = None, principal: bool = False,
            axis: str = "z") -> Derivations:
     """Derives the chapter's equations for a general body, as ``kinetics derive --general``.
 
-    ``only`` names the derivations (``H_G``, ``H_O``, ``T``, ``T_O``, ``T_plane``,
+    ``only`` names the derivation or derivations (``H_G``, ``H_O``, ``T``, ``T_O``, ``T_plane``,
     ``impulse``, ``Hdot``, ``euler``, ``fixed_axis``, ``reactions``, ``balancing``,
     ``gyroscope``, …; all when None); ``principal`` takes principal axes (every product of
     inertia zero); ``axis`` is the fixed axis of rotation of the fixed-axis derivations.
@@ -89,4 +89,5 @@ def derive(only: Optional[Sequence[str]] = None, principal: bool = False,
     >>> euler.text[0]
     'SumM_x = I_x*wdot_x - (I_y - I_z)*w_y*w_z'
     """
-    return Derivations(_native.derive(list(only or []), principal, axis))
+    names = [only] if isinstance(only, str) else list(only or [])
+    return Derivations(_native.derive(names, principal, axis))

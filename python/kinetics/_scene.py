@@ -9,14 +9,11 @@ SceneSource = Union[str, "os.PathLike[str]"]
 
 
 def read(scene: SceneSource) -> Tuple[str, str]:
-    """``(name, text)`` of ``scene``: a path (an ``os.PathLike``, or a one-line string that
-    names a file or ends in ``.scene``) is read; any other string is the scene's text,
-    named ``<scene>`` in errors."""
+    """``(name, text)`` of ``scene``: a path (an ``os.PathLike``, or a string of one line)
+    is read; a string of several lines is the scene's text, named ``<scene>`` in errors."""
     if isinstance(scene, os.PathLike):
         path = os.fspath(scene)
-    elif isinstance(scene, str) and "\n" not in scene and (
-        scene.endswith(".scene") or os.path.isfile(scene)
-    ):
+    elif isinstance(scene, str) and "\n" not in scene.strip():
         path = scene
     elif isinstance(scene, str):
         return "<scene>", scene

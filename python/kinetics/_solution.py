@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from typing import Any, Dict, List, NamedTuple, Optional, Tuple, Union
 
 from . import _native
@@ -22,7 +23,7 @@ class Result:
     """
 
     __slots__ = ("name", "name_latex", "text", "latex", "value", "unit", "kind",
-                 "_form", "_value_text", "_value_latex", "_mathml")
+                 "_form", "_value_text", "_value_latex", "_html")
 
     def __init__(self, answer: Dict[str, Any]) -> None:
         self.name: str = answer["name"]
@@ -36,7 +37,7 @@ class Result:
         self._form = answer["form"]
         self._value_text: Optional[str] = answer["value_text"]
         self._value_latex: Optional[str] = answer["value_latex"]
-        self._mathml: str = answer["mathml"]
+        self._html: str = answer["html"]
 
     def to_sympy(self) -> Any:
         """The exact form as SymPy: an expression, or a ``Matrix`` (a 3×1 column for a
@@ -75,7 +76,7 @@ class Result:
         return f"<Result {self}>"
 
     def _repr_html_(self) -> str:
-        return self._mathml
+        return self._html
 
     def _repr_latex_(self) -> str:
         return f"$${self._latex_line()}$$"
@@ -153,14 +154,17 @@ class Solution:
 
     @property
     def symbols(self) -> Dict[str, Any]:
-        """The symbols of the results' forms, by name, as SymPy symbols with the scene's
-        assumptions (so an expression built from them compares equal)."""
-        found: Dict[str, Any] = {}
-        for r in self.results.values():
-            if r.kind in ("expr", "vector", "matrix"):
-                for s in r.to_sympy().free_symbols:
-                    found[s.name] = s
-        return found
+        """The scene's symbols (its givens and unknowns) and those of its results, by name,
+        as SymPy symbols with the scene's assumptions, so that an expression built from
+        them compares equal to a result's :meth:`Result.to_sympy`. Names are spelled as the
+        page spells them: a given written ``w1`` is ``w_1``."""
+        return {name: from_tree(("symbol", name, positive))
+                for name, positive in self._solved.symbols()}
+
+    def figure_svg(self) -> Optional[str]:
+        """The scene's figure (the body, its axes and loads) as SVG; None where it cannot
+        be drawn (a size without a number)."""
+        return self._solved.figure_svg()
 
     def to_text(self, numbers: bool = False) -> str:
         """The page as plain text (``numbers``: the engineer's page, values only)."""
@@ -170,8 +174,18 @@ class Solution:
         """The page as LaTeX; ``standalone`` a whole document that compiles with pdflatex."""
         return self._solved.render("latex", standalone=standalone, numbers=numbers)
 
-    def to_markdown(self, numbers: bool = False) -> str:
-        return self._solved.render("markdown", numbers=numbers)
+    def to_markdown(self, numbers: bool = False, figure: Optional[str] = None) -> str:
+        """The page as Markdown, its maths in ``$…$``; with ``figure``, a path, the figure
+        is written there as SVG and the page shows it as that image (a path relative to
+        where the page will stand)."""
+        figure_file = None
+        if figure is not None:
+            svg = self.figure_svg()
+            if svg is not None:
+                with open(figure, "w", encoding="utf-8") as f:
+                    f.write(svg)
+                figure_file = os.path.basename(figure)
+        return self._solved.render("markdown", numbers=numbers, figure_file=figure_file)
 
     def to_html(self, numbers: bool = False) -> str:
         """One self-contained HTML page, the mathematics in MathML."""
@@ -201,7 +215,7 @@ class Solution:
 def solve(scene: SceneSource, units: Optional[str] = None) -> Solution:
     """Solves a scene: a path, or the scene's text.
 
-    ``units`` shows the values in ``"si"`` or ``"us"`` (U.S. customary); by default in
+    ``units`` shows the values in ``"si"`` or ``"us"`` (U.S. customary, any case); by default in
     the system the givens are written in. A scene that cannot be read or solved raises
     :class:`kinetics.SceneError` with its line, column, message and hint.
 
@@ -213,5 +227,5 @@ def solve(scene: SceneSource, units: Optional[str] = None) -> Solution:
     alpha = 3*M/(2*m*c^2) = 3000 rad/s²
     """
     name, text = read(scene)
-    return Solution(_native.solve(name, text, units))
+    return Solution(_native.solve(name, text, units.lower() if units else None))
 

@@ -10,17 +10,31 @@ from ._scene import SceneSource, read
 from ._sympy import from_tree
 
 
+#: A component both sides of a vector claim leave at zero (the checker leaves it out).
+_ZERO = {"correct": ("number", "0", "1"), "claimed": ("number", "0", "1"),
+         "correct_text": "0", "claimed_text": "0", "correct_latex": "0",
+         "claimed_latex": "0", "correct_mathml": "<mn>0</mn>", "claimed_mathml": "<mn>0</mn>"}
+
+
 class Side:
-    """The correct side of a claim: its text (``-3*M/(16*c) - 1/4*m*c*w^2``), its LaTeX,
-    and :meth:`to_sympy` (an expression, or a column of components for a vector)."""
+    """One side of a claim as the checker read it: a scalar, or a vector's x, y and z
+    components (a component zero on both sides is 0). ``text`` and ``latex`` write it,
+    :meth:`to_sympy` gives an expression or a 3×1 ``Matrix``."""
 
     def __init__(self, components: List[Dict[str, Any]], side: str) -> None:
+        if components[0]["axis"] is not None:
+            by_axis = {c["axis"]: c for c in components}
+            components = [by_axis.get(axis, _ZERO) for axis in ("x", "y", "z")]
         self._components = components
         self._side = side
         texts = [c[f"{side}_text"] for c in components]
         self.text: str = texts[0] if len(texts) == 1 else "(" + ", ".join(texts) + ")"
         latex = [c[f"{side}_latex"] for c in components]
-        self.latex: str = latex[0] if len(latex) == 1 else r",\ ".join(latex)
+        self.latex: str = (latex[0] if len(latex) == 1
+                           else r"\left(" + r",\ ".join(latex) + r"\right)")
+        mathml = [c[f"{side}_mathml"] for c in components]
+        self.mathml: str = (mathml[0] if len(mathml) == 1
+                            else "<mo>(</mo>" + "<mo>,</mo>".join(mathml) + "<mo>)</mo>")
 
     def to_sympy(self) -> Any:
         trees = [c[self._side] for c in self._components]
@@ -53,6 +67,7 @@ class Verdict:
         self.holds: Optional[bool] = {"holds": True, "differs": False}.get(self.verdict)
         self.slip: Optional[str] = checked["slip"]
         self.explanation: Optional[str] = checked["explanation"]
+        self._explanation_html: Optional[str] = checked["explanation_html"]
         self.report: str = checked["report"]
         self.report_latex: str = checked["report_latex"]
         self.correct_side: str = checked["correct_side"]
@@ -87,29 +102,32 @@ class Verdict:
 
     def _repr_html_(self) -> str:
         colour = {"holds": "#176f2c", "differs": "#a61b1b"}.get(self.verdict, "#8a5a00")
-        head = (f'<p><b style="color:{colour}">{self.verdict}</b>'
-                f"{' (' + html.escape(self.slip) + ')' if self.slip else ''}: "
-                f"<code>{html.escape(self.claim)}</code></p>")
-        words = f"<p>{html.escape(self.explanation)}.</p>" if self.explanation else ""
-        rows = ""
-        if self.correct is not None and self.claimed is not None:
-            rows = f"<p>$${self._aligned()}$$</p>"
-        return f'<div class="kinetics-verdict">{head}{words}{rows}</div>'
+        slip = f" ({html.escape(self.slip)})" if self.slip else ""
+        out = [f'<div class="kinetics-verdict"><p><b style="color:{colour}">{self.verdict}</b>'
+               f"{slip}: <code>{html.escape(self.claim)}</code></p>"]
+        words = self._explanation_html or (html.escape(self.explanation) if self.explanation else "")
+        if words:
+            out.append(f"<p>{words[:1].upper()}{words[1:]}.</p>")
+        if self.correct is not None and self.claimed is not None and not self.holds:
+            rows = [("as claimed", self.claimed.mathml), ("correct", self.correct.mathml)]
+            cells = "".join(f'<tr><td style="padding-right:1em">{label}</td>'
+                            f"<td><math displaystyle=\"true\">{maths}</math></td></tr>"
+                            for label, maths in rows)
+            out.append(f"<table>{cells}</table>")
+        out.append("</div>")
+        return "".join(out)
 
     def _repr_latex_(self) -> str:
-        said = rf"\text{{{self.verdict}{' (' + self.slip + ')' if self.slip else ''}}}"
-        if self.correct is None or self.claimed is None:
-            return f"$${said}$$"
-        return f"$${said}\\\\ {self._aligned()}$$"
+        slip = f" ({self.slip})" if self.slip else ""
+        head = rf"&\text{{{self.verdict}{slip}}}"
+        if self.correct is None or self.claimed is None or self.holds:
+            return f"$$\\begin{{aligned}}{head}\\end{{aligned}}$$"
+        return (rf"$$\begin{{aligned}}{head} \\ "
+                rf"&\text{{as claimed: }} {self.claimed.latex} \\ "
+                rf"&\text{{correct: }} {self.correct.latex}\end{{aligned}}$$")
 
     def _repr_markdown_(self) -> str:
         return self._repr_latex_()
-
-    def _aligned(self) -> str:
-        assert self.correct is not None and self.claimed is not None
-        return (r"\begin{aligned} "
-                rf"\text{{as claimed:}}\ & {self.claimed.latex} \\ "
-                rf"\text{{correct:}}\ & {self.correct.latex} \end{{aligned}}")
 
 
 def check(

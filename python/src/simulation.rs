@@ -193,6 +193,11 @@ fn sampling(
         (None, Some(until)) => {
             let end = positive("until", until)?;
             let interval = every.map_or(Ok(end / 100.0), |e| positive("every", e))?;
+            if interval > end {
+                return Err(refused(format!(
+                    "every={interval} is longer than until={end}: only t = 0 would be sampled"
+                )));
+            }
             if end / interval + 1.0 > MAX_SAMPLES {
                 return Err(refused(format!(
                     "until={end}, every={interval} would gather more than {MAX_SAMPLES:.0} samples: sample less often"

@@ -4,8 +4,9 @@
 use crate::error::{refused, scene_error};
 use crate::expression::tree;
 use kinetics::{
-    analyse, analyse_results, answers, check_numeric_requests, parse_scene_in, render,
-    render_numbers, worked_steps, Analysis, AnswerForm, Format, Input, Scene, UnitSystem,
+    analyse, analyse_results, answers, check_numeric_requests, figure, figure_svg, parse_scene_in,
+    render_beside, render_numbers_beside, worked_steps, Analysis, AnswerForm, Domain, Format,
+    Input, Scene, Symbol, UnitSystem, Value,
 };
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -79,7 +80,7 @@ impl Solved {
     /// Each line of the results: a dict of `name`, `name_latex`, `text`, `latex`, `kind`
     /// (`expr`, `vector`, `matrix`, `words`, `number`), `form` (the expression's tree, a
     /// list of three or nine, or None), `value` (a list of numbers or None), `unit`,
-    /// `value_text`, `value_latex` and `mathml`.
+    /// `value_text`, `value_latex` and `html` (the line's MathML, its style scoped to it).
     fn answers<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         let domains = self.scene.domains();
         let list = PyList::empty(py);
@@ -105,7 +106,7 @@ impl Solved {
             d.set_item("unit", a.unit)?;
             d.set_item("value_text", a.value_text)?;
             d.set_item("value_latex", a.value_latex)?;
-            d.set_item("mathml", a.mathml)?;
+            d.set_item("html", a.html)?;
             list.append(d)?;
         }
         Ok(list)
@@ -119,16 +120,48 @@ impl Solved {
             .collect())
     }
 
+    /// The symbols of the scene (its givens and unknowns) and of its results, each
+    /// `(name, positive)`, names as the page spells them (`w1` is `w_1`).
+    fn symbols(&self) -> Vec<(String, bool)> {
+        let domains = self.scene.domains();
+        let mut symbols: Vec<Symbol> = self.scene.givens.iter().map(|g| g.symbol).collect();
+        symbols.extend(self.scene.unknowns.iter().map(|(s, _)| *s));
+        for (_, value) in &self.results.results {
+            let exprs: Vec<&kinetics::Expr> = match value {
+                Value::Scalar(e) => vec![e],
+                Value::Vector(v) => v.iter().collect(),
+                Value::Tensor(m) => m.iter().collect(),
+                _ => Vec::new(),
+            };
+            symbols.extend(exprs.into_iter().flat_map(|e| e.symbols()));
+        }
+        symbols.sort();
+        symbols.dedup();
+        symbols
+            .into_iter()
+            .filter(|s| !s.is_pi())
+            .map(|s| (s.name().to_string(), domains.domain(s) == Domain::Positive))
+            .collect()
+    }
+
+    /// The scene's figure as SVG, or None where it cannot be drawn (a size without a
+    /// number).
+    fn figure_svg(&self) -> Option<String> {
+        figure(&self.scene).ok().map(|drawn| figure_svg(&drawn))
+    }
+
     /// The worked solution as a page: `format` one of `text`, `latex`, `markdown`, `json`,
     /// `html`, `html-fragment`; `standalone` LaTeX a whole document; `numbers` the engineer's
-    /// page (the values without the symbolic steps).
-    #[pyo3(signature = (format, standalone=false, numbers=false))]
+    /// page (the values without the symbolic steps); a Markdown page shows its figure as the
+    /// image `figure_file`, a file the caller writes (`figure_svg`).
+    #[pyo3(signature = (format, standalone=false, numbers=false, figure_file=None))]
     fn render(
         &self,
         py: Python<'_>,
         format: &str,
         standalone: bool,
         numbers: bool,
+        figure_file: Option<&str>,
     ) -> PyResult<String> {
         let format = page_format(format)?;
         if standalone && format != Format::Latex {
@@ -136,8 +169,8 @@ impl Solved {
         }
         let analysis = self.page(py)?;
         let page = match numbers {
-            true => render_numbers(&self.scene, analysis, format, standalone),
-            false => render(&self.scene, analysis, format, standalone),
+            true => render_numbers_beside(&self.scene, analysis, format, standalone, figure_file),
+            false => render_beside(&self.scene, analysis, format, standalone, figure_file),
         };
         Ok(page.trim_end().to_string())
     }

@@ -5,8 +5,8 @@
 use crate::error::{refused, scene_error};
 use crate::expression::tree;
 use kinetics::{
-    check_claim, claim_report_latex, claim_report_text, parse_scene, render_expr, Axis, Context,
-    Diagnostic, Input, Notation, DEFAULT_RELATIVE_TOLERANCE,
+    check_claim, claim_report_latex, claim_report_text, markup_html, parse_scene, render_expr,
+    Axis, Context, Diagnostic, Input, Notation, DEFAULT_RELATIVE_TOLERANCE,
 };
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -16,7 +16,7 @@ use pyo3::types::{PyDict, PyList};
 /// `verdict` (`holds`, `differs`, `undecided`), `slip` (the named rule or reading, or
 /// None), `explanation`, `correct_side`, `claimed_side`, `report` and `report_latex` (the
 /// command line's report), and `components` (`axis`, `verdict`, `correct`, `claimed` as
-/// trees, `correct_text`, `correct_latex`, `claimed_text`, `claimed_latex`).
+/// trees, and each side's `_text`, `_latex` and `_mathml`), `explanation_html`.
 #[pyfunction]
 #[pyo3(signature = (claim, scene=None, principal=false, fixed_point=false, fixed_axis=false, rtol=None))]
 pub fn check<'py>(
@@ -71,6 +71,9 @@ pub fn check<'py>(
         .or_else(|| report.reading());
     d.set_item("slip", slip)?;
     d.set_item("explanation", report.reading_words())?;
+    // The named slip's concept with its maths in MathML (else the explanation is words).
+    let concept_html = report.slip.as_ref().map(|s| markup_html(s.slip.concept()));
+    d.set_item("explanation_html", concept_html)?;
     d.set_item("correct_side", &report.correct_side)?;
     d.set_item("claimed_side", &report.claimed_side)?;
     d.set_item(
@@ -93,11 +96,13 @@ pub fn check<'py>(
             ("claimed", &c.claimed_in_symbols),
         ] {
             let axis = c.axis.unwrap_or(Axis::X);
-            component.set_item(format!("{side}_text"), render_expr(e, Notation::Text, axis))?;
-            component.set_item(
-                format!("{side}_latex"),
-                render_expr(e, Notation::Latex, axis),
-            )?;
+            for (format, notation) in [
+                ("text", Notation::Text),
+                ("latex", Notation::Latex),
+                ("mathml", Notation::MathMl),
+            ] {
+                component.set_item(format!("{side}_{format}"), render_expr(e, notation, axis))?;
+            }
         }
         components.append(component)?;
     }

@@ -18,8 +18,11 @@ def test_the_sign_slip_is_named():
     correct = v.correct.to_sympy()
     M, c, m, w = sorted(correct.free_symbols, key=lambda s: s.name)[0:4]
     assert sympy.simplify(correct - kinetics.solve(SP18_4).results["D_y"].to_sympy()) == 0
-    assert "differs" in v._repr_html_() and "cross-product-reversed" in v._repr_html_()
-    assert v._repr_latex_().startswith("$$")
+    page = v._repr_html_()
+    assert "differs" in page and "cross-product-reversed" in page
+    # MathML, read without MathJax; the explanation a sentence.
+    assert "<math displaystyle" in page and "$$" not in page and "<p>The cross product" in page
+    assert v._repr_latex_().startswith(r"$$\begin{aligned}&\text{differs")
 
 
 def test_a_right_claim_holds():
@@ -45,3 +48,19 @@ def test_an_unreadable_claim_is_a_scene_error():
 def test_the_scene_says_its_own_context():
     with pytest.raises(ValueError, match="a scene says all of that itself"):
         kinetics.check("T = 0", scene=SP18_4, principal=True)
+
+
+def test_a_vector_sides_components_are_x_y_z():
+    # SP 18.3: the rod turns about A (the origin O) in the xy-plane; H_O has no z-component.
+    v = kinetics.check("H_O = 1/3*m*L^2*w*j", scene=scene("sp18_3_rotating_rod.scene"))
+    assert v.holds is False
+    assert v.correct.to_sympy().shape == (3, 1)
+    assert v.correct.text.startswith("(") and v.correct.text.endswith(", 0)")
+
+
+def test_a_symbolic_claim_missing_a_small_term_differs():
+    # The w_2 term is 0.2 % of T: a claim in names is exact, not within a tolerance.
+    disk = ("given m = 4 kg\ngiven r = 250 mm\ngiven w1 = 300 rpm\ngiven w2 = 2 rad/s\n"
+            "body disk(r) mass m along z\nvbar = 0\nomega = w2*i + w1*k\nfind T\n")
+    v = kinetics.check("T = 1/4*m*r^2*w1^2", scene=disk)
+    assert v.holds is False and "1/8*m*r^2*w_2^2" in v.explanation

@@ -17,6 +17,11 @@ def test_euler_equations_in_principal_axes():
     assert sympy.expand(x.rhs - by_hand) == 0
 
 
+def test_one_derivation_by_its_name():
+    assert kinetics.derive("euler", principal=True)["euler"].text == kinetics.derive(
+        ["euler"], principal=True)["euler"].text
+
+
 def test_an_unknown_derivation_names_the_choices():
     with pytest.raises(ValueError, match="choose from H_G"):
         kinetics.derive(["H_Q"])
@@ -69,5 +74,7 @@ def test_settings_a_method_does_not_use_are_refused():
         kinetics.simulate(scene("spun_up_sphere.scene"), until=1.0, method="dop853", step=0.1)
     with pytest.raises(ValueError, match="until"):
         kinetics.simulate(scene("spun_up_sphere.scene"), until=-1.0)
+    with pytest.raises(ValueError, match="longer than until"):
+        kinetics.simulate(scene("spun_up_sphere.scene"), until=1.0, every=5.0)
     with pytest.raises(ValueError, match="strictly increasing"):
         kinetics.simulate(scene("spun_up_sphere.scene"), at=[1.0, 0.5])

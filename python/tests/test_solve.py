@@ -74,7 +74,8 @@ def test_steps_are_the_pages_steps():
 def test_result_reprs():
     r = kinetics.solve(SP18_4).results["alpha"]
     assert str(r) == "alpha = 3*M/(2*m*c^2) = 3000 rad/s²"
-    assert r._repr_html_().startswith('<math display="block">')
+    assert r._repr_html_().startswith('<div class="kinetics-page">')
+    assert '<math display="block">' in r._repr_html_()
     assert r._repr_latex_() == r"$$\alpha = \frac{3 M}{2 m c^2} = 3000\,\mathrm{rad/s^2}$$"
 
 
@@ -120,3 +121,30 @@ def test_bad_arguments_say_why():
     with pytest.raises(TypeError):
         kinetics.solve(42)
     assert math.isfinite(kinetics.solve(SP18_4).results["C_y"].value)
+
+
+def test_symbols_are_the_scenes_as_the_page_spells_them():
+    s = kinetics.solve(SP18_4)
+    # L is a given no result holds; it is among the scene's symbols all the same.
+    assert {"m", "c", "M", "L", "w", "alpha", "D_y"} <= set(s.symbols)
+    assert s.symbols["L"].is_positive
+    disk = kinetics.solve("given m = 4 kg\ngiven r = 250 mm\ngiven w1 = 300 rpm\n"
+                          "body disk(r) mass m along z\nvbar = 0\nomega = w1*k\nfind T\n")
+    w_1 = disk.symbols["w_1"]
+    m, r = disk.symbols["m"], disk.symbols["r"]
+    assert sympy.simplify(disk.results["T"].to_sympy() - m * r**2 * w_1**2 / 4) == 0
+
+
+def test_markdown_with_its_figure(tmp_path):
+    s = kinetics.solve(SP18_4)
+    figure = tmp_path / "sp18_4.svg"
+    page = s.to_markdown(figure=str(figure))
+    assert "![The figure of the problem](sp18_4.svg)" in page
+    assert figure.read_text().startswith("<svg")
+    assert "to_markdown(figure=" in s.to_markdown()
+
+
+def test_units_in_any_case_and_a_missing_path():
+    assert kinetics.solve(SP18_4, units="SI").results["D_y"].unit == "N"
+    with pytest.raises(FileNotFoundError):
+        kinetics.solve("examples/scenes/sp18_4_shaft_reactions")

@@ -1,6 +1,6 @@
 //! The worked solution as data a program reads (the Python binding, a notebook): each line
 //! of the page's results as an [`Answer`] — its name, its form in text and LaTeX, the
-//! exact expression behind it, its numbers in its unit — and each step of the plan as a
+//! exact expression behind it, its numbers in its unit, the line in HTML — and each step of the plan as a
 //! [`WorkedStep`], its title and its relations as the page shows them.
 //!
 //! Sample Problem 18.4's reaction at D, `D_y = −3M/(16c) − m c ω²/4`:
@@ -50,8 +50,9 @@ pub struct Answer {
     /// The numbers with their unit, in text (`-129.8 N`) and in LaTeX (`-129.8\,\mathrm{N}`).
     pub value_text: Option<String>,
     pub value_latex: Option<String>,
-    /// The whole line, `name = form = value unit`, as a block of MathML (`<math display="block">`).
-    pub mathml: String,
+    /// The whole line, `name = form = value unit`, as a fragment of HTML: a block of MathML
+    /// with the page's style scoped to it.
+    pub html: String,
 }
 
 /// What an answer is, exactly.
@@ -106,7 +107,7 @@ pub fn answers(scene: &Scene, analysis: &Analysis) -> Vec<Answer> {
                     .map(ToString::to_string),
                 value_text: line.shown_value().map(|v| v.render(Notation::Text)),
                 value_latex: line.shown_value().map(|v| v.render(Notation::Latex)),
-                mathml: super::html::result_line(line),
+                html: super::html::result_line(line),
             })
             .collect()
     })

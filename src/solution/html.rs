@@ -117,10 +117,15 @@ fn content(out: &mut String, page: &Page) {
     }
 }
 
-/// One line of the results as a block of maths, `name = form = value unit`.
+/// One line of the results as a fragment of a page: its block of maths, `name = form =
+/// value unit`, with the page's style scoped to it.
 pub(super) fn result_line(l: &Line) -> String {
     let room = print::aligned_room(print::width::symbol_em(&l.name.latex));
-    block_of_rows(std::iter::once(result_rows(l, room.0, room.1, false)))
+    format!(
+        "<div class=\"{FRAGMENT_CLASS}\">\n<style>\n{}</style>\n{}</div>\n",
+        style(Some(FRAGMENT_CLASS)),
+        block_of_rows(std::iter::once(result_rows(l, room.0, room.1, false)))
+    )
 }
 
 /// A section; a step's and a derivation's in a `<section>` of their own.

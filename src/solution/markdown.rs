@@ -54,10 +54,10 @@ fn section(out: &mut String, section: &Section, figure_file: Option<&str>) {
             Block::Answers(results) => format!("$$\n{}$$\n", latex::results(results, true)),
             Block::Figure(_) => match figure_file {
                 Some(file) => format!("![The figure of the problem]({})\n\n", markdown_link(file)),
-                None => {
-                    "*The figure is written beside the page with `-o FILE.md` (as `FILE.svg`).*\n\n"
-                        .into()
-                }
+                None => "*The figure is drawn beside a page written to a file: `kinetics solve -o \
+                     FILE.md` writes `FILE.svg`, Python's `to_markdown(figure=\"FILE.svg\")` \
+                     the file it names.*\n\n"
+                    .into(),
             },
             Block::Values(steps) => steps
                 .iter()

@@ -1,4 +1,5 @@
-//! Every command's work on an input runs within the input's work budget
+//! Every caller's work on an input (each command of the command line, each call of the
+//! Python binding) runs within the input's work budget
 //! ([`crate::algebra::work`]: a floor plus a number of operations per byte), so that any
 //! input ends in bounded time: answered, or refused at a place in it with the reason.
 //!
@@ -12,7 +13,7 @@ use crate::parse::Diagnostic;
 use crate::print::markup;
 use std::ops::Range;
 
-/// An input a command works on: its name in diagnostics, its text, and the place a refusal
+/// An input a caller works on: its name in diagnostics, its text, and the place a refusal
 /// for work stands at (the whole expression, or a scene's first request).
 pub struct Input<'a> {
     pub name: &'a str,

@@ -42,7 +42,7 @@ class Result:
     def to_sympy(self) -> Any:
         """The exact form as SymPy: an expression, or a ``Matrix`` (a 3×1 column for a
         vector, 3×3 for a tensor). Its symbols carry the scene's assumptions: masses,
-        lengths and the givens in kg, m, s, N and kg·m² are positive, the rest real.
+        lengths and the givens in kg, m, s, N and kg·m² are positive, the others plain symbols.
 
         >>> import kinetics, sympy
         >>> s = kinetics.solve("examples/scenes/sp18_4_shaft_reactions.scene")

@@ -4,7 +4,8 @@ A tree is a tuple: ``("number", p, q)``, ``("symbol", name, positive)``, ``("pi"
 ``("add", terms)``, ``("mul", factors)``, ``("pow", base, exponent)`` or
 ``("function", name, argument)``. Each node becomes the SymPy object of that kind; a
 symbol carries the scene's assumption (``positive=True`` for a mass, a length, a given
-in kg, m, s, N or kg·m², else ``real=True``), so SymPy simplifies as the chapter does.
+in kg, m, s, N or kg·m²; any other symbol a plain ``Symbol``), so SymPy simplifies as the
+chapter does and the hand form can be written with ``sympy.symbols``.
 No text is parsed.
 """
 
@@ -34,7 +35,7 @@ def from_tree(tree: tuple) -> Any:
             name, positive = node[1], node[2]
             if positive:
                 return sympy.Symbol(name, positive=True)
-            return sympy.Symbol(name, real=True)
+            return sympy.Symbol(name)
         if kind == "pi":
             return sympy.pi
         if kind == "add":

@@ -32,7 +32,11 @@ def test_to_sympy_is_the_exact_form_with_assumptions():
     assert sympy.simplify(d_y - (-3 * M / (16 * c) - m * c * w**2 / 4)) == 0
     # Masses and lengths are positive; a couple and a rate may be negative.
     assert m.is_positive and c.is_positive
-    assert M.is_real and M.is_positive is None and w.is_positive is None
+    assert M == sympy.Symbol("M") and w == sympy.Symbol("w")
+    # So the hand form may be written with SymPy's own symbols, m and c positive.
+    m_, c_ = sympy.symbols("m c", positive=True)
+    M_, w_ = sympy.symbols("M w")
+    assert sympy.simplify(d_y - (-3 * M_ / (16 * c_) - m_ * c_ * w_**2 / 4)) == 0
     # The exact form evaluates to the page's number.
     values = {M: 6, c: sympy.Rational(1, 10), m: sympy.Rational(3, 10), w: sympy.Rational(1257, 10)}
     assert float(d_y.subs(values)) == pytest.approx(s.results["D_y"].value, rel=1e-12)

@@ -533,7 +533,10 @@ fn a_markdown_page_has_its_figure_beside_it() {
     );
     let _ = std::fs::remove_dir_all(&dir);
     let (_, md, _) = kinetics(&["solve", "--format", "markdown", &path]);
-    assert!(md.contains("with `-o FILE.md`"), "{md}");
+    assert!(
+        md.contains("`kinetics solve -o FILE.md` writes `FILE.svg`"),
+        "{md}"
+    );
     let (_, text, _) = kinetics(&["solve", &path]);
     assert!(
         !text.contains("svg") && !text.contains("tikz"),

@@ -146,3 +146,50 @@ fn the_check_names_an_upward_use_and_passes_what_is_allowed() {
         vec![(1, "scene".to_string()), (1, "mechanics".to_string())]
     );
 }
+
+/// The paths into a module of the crate (`kinetics::scene::…`, past the root's
+/// re-exports) in `source`, comments aside, with their lines.
+fn paths_past_the_root(source: &str) -> Vec<(usize, String)> {
+    let mut found = Vec::new();
+    for (number, line) in source.lines().enumerate() {
+        if line.trim_start().starts_with("//") {
+            continue;
+        }
+        for (at, _) in line.match_indices("kinetics::") {
+            let rest = &line[at + "kinetics::".len()..];
+            let name: String = rest
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            if rest[name.len()..].starts_with("::") {
+                found.push((number + 1, name));
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn the_python_binding_uses_only_the_crates_root() {
+    let binding = Path::new(env!("CARGO_MANIFEST_DIR")).join("python/src");
+    let mut read = 0;
+    let mut past = Vec::new();
+    for entry in std::fs::read_dir(&binding).expect("python/src") {
+        let file = entry.expect("an entry").path();
+        let source = std::fs::read_to_string(&file).expect("readable");
+        read += 1;
+        for (line, module) in paths_past_the_root(&source) {
+            past.push(format!("{}:{line}: kinetics::{module}::", file.display()));
+        }
+    }
+    assert!(read >= 5, "only {read} files read");
+    assert!(
+        past.is_empty(),
+        "the binding reaches past lib.rs's re-exports:\n{}",
+        past.join("\n")
+    );
+    assert_eq!(
+        paths_past_the_root("use kinetics::{Expr, View};\nuse kinetics::scene::Scene;"),
+        vec![(2, "scene".to_string())]
+    );
+}

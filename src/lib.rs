@@ -118,7 +118,10 @@ pub use solution::{
 };
 // Hand-written claims checked against the derivations.
 pub use check::context::{Context, DEFAULT_RELATIVE_TOLERANCE};
-pub use check::report::{latex as claim_report_latex, text as claim_report_text};
+pub use check::report::{
+    latex as claim_report_latex, numbers_sentence as claim_numbers_sentence,
+    text as claim_report_text,
+};
 pub use check::verdict::{check as check_claim, Report, Verdict};
 // Simulation of a body's motion.
 pub use numeric::integrators::splitting::SplittingOrder;

@@ -73,6 +73,8 @@ class Verdict:
         self.correct_side: str = checked["correct_side"]
         self.claimed_side: str = checked["claimed_side"]
         components = checked["components"]
+        #: For a claim in numbers, each component's sentence: how far from the exact value.
+        self.numbers: List[str] = [c["numbers"] for c in components if c["numbers"]]
         self.correct: Optional[Side] = Side(components, "correct") if components else None
         self.claimed: Optional[Side] = Side(components, "claimed") if components else None
 
@@ -89,6 +91,8 @@ class Verdict:
         said = f"{self.claim}: differs"
         if self.explanation:
             said += f" — {self.explanation}"
+        for sentence in self.numbers:
+            said += f"\n{sentence}"
         if self.correct is not None:
             said += f"\ncorrect: {self.correct_side} = {self.correct.text}"
         return said
@@ -108,6 +112,7 @@ class Verdict:
         words = self._explanation_html or (html.escape(self.explanation) if self.explanation else "")
         if words:
             out.append(f"<p>{words[:1].upper()}{words[1:]}.</p>")
+        out.extend(f"<p>{html.escape(sentence)}.</p>" for sentence in self.numbers)
         if self.correct is not None and self.claimed is not None and not self.holds:
             rows = [("as claimed", self.claimed.mathml), ("correct", self.correct.mathml)]
             cells = "".join(f'<tr><td style="padding-right:1em">{label}</td>'

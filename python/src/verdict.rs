@@ -5,8 +5,9 @@
 use crate::error::{refused, scene_error};
 use crate::expression::tree;
 use kinetics::{
-    check_claim, claim_report_latex, claim_report_text, markup_html, parse_scene, render_expr,
-    Axis, Context, Diagnostic, Input, Notation, DEFAULT_RELATIVE_TOLERANCE,
+    check_claim, claim_numbers_sentence, claim_report_latex, claim_report_text, markup_html,
+    parse_scene, render_expr, Axis, Context, Diagnostic, Input, Notation,
+    DEFAULT_RELATIVE_TOLERANCE,
 };
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -16,7 +17,8 @@ use pyo3::types::{PyDict, PyList};
 /// `verdict` (`holds`, `differs`, `undecided`), `slip` (the named rule or reading, or
 /// None), `explanation`, `correct_side`, `claimed_side`, `report` and `report_latex` (the
 /// command line's report), and `components` (`axis`, `verdict`, `correct`, `claimed` as
-/// trees, and each side's `_text`, `_latex` and `_mathml`), `explanation_html`.
+/// trees, and each side's `_text`, `_latex` and `_mathml`, `numbers`: a claim in numbers'
+/// sentence), `explanation_html`.
 #[pyfunction]
 #[pyo3(signature = (claim, scene=None, principal=false, fixed_point=false, fixed_axis=false, rtol=None))]
 pub fn check<'py>(
@@ -89,6 +91,8 @@ pub fn check<'py>(
         let component = PyDict::new(py);
         component.set_item("axis", c.axis.map(|a| ["x", "y", "z"][a as usize]))?;
         component.set_item("verdict", c.verdict.word())?;
+        let numbers = c.numbers.as_ref().map(claim_numbers_sentence);
+        component.set_item("numbers", numbers)?;
         component.set_item("correct", tree(py, &c.correct_in_symbols, domains)?)?;
         component.set_item("claimed", tree(py, &c.claimed_in_symbols, domains)?)?;
         for (side, e) in [

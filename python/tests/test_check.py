@@ -64,3 +64,13 @@ def test_a_symbolic_claim_missing_a_small_term_differs():
             "body disk(r) mass m along z\nvbar = 0\nomega = w2*i + w1*k\nfind T\n")
     v = kinetics.check("T = 1/4*m*r^2*w1^2", scene=disk)
     assert v.holds is False and "1/8*m*r^2*w_2^2" in v.explanation
+
+
+def test_a_claim_in_numbers_says_how_far_it_is():
+    v = kinetics.check("D_z = 36.75", scene=SP18_4)
+    assert v.holds is False
+    assert v.numbers == ["36.75 N has the wrong sign: the exact value is -36.75 N"]
+    assert "the exact value is -36.75 N" in v.message() and "wrong sign" in v._repr_html_()
+    # 156.2 is 0.58 % from 155.3: shown with the figures that tell it from 0.5 %.
+    near = kinetics.check("C_z = -156.2", scene=SP18_4)
+    assert near.holds is False and "the tolerance is 0.5 %" in near.numbers[0]

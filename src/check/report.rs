@@ -131,8 +131,16 @@ fn piece_text(
 }
 
 /// `1900 N is 2.3 % from the exact 1857 N; the tolerance is 0.5 %`.
-fn numbers_sentence(n: &Numbers) -> String {
-    let percent = |r: f64| significant_figures(100.0 * r, 2);
+pub fn numbers_sentence(n: &Numbers) -> String {
+    // Two figures, or as many as tell a distance from the tolerance (0.502 %, never a
+    // 0.50 % that fails beside a tolerance of 0.5 %).
+    let percent = |r: f64| {
+        let shown = |k: usize| significant_figures(100.0 * r, k);
+        (2..=6)
+            .map(shown)
+            .find(|p| r == n.tolerance || p.parse::<f64>() != Ok(100.0 * n.tolerance))
+            .unwrap_or_else(|| shown(6))
+    };
     let digits = figures(n);
     let claimed = number(n.claimed, digits, n);
     // The exact value in the claim's figures where it differs (the answer to write), in one

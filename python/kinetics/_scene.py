@@ -13,7 +13,7 @@ def read(scene: SceneSource) -> Tuple[str, str]:
     is read; a string of several lines is the scene's text, named ``<scene>`` in errors."""
     if isinstance(scene, os.PathLike):
         path = os.fspath(scene)
-    elif isinstance(scene, str) and "\n" not in scene.strip():
+    elif isinstance(scene, str) and "\n" not in scene:
         path = scene
     elif isinstance(scene, str):
         return "<scene>", scene

@@ -152,3 +152,14 @@ def test_units_in_any_case_and_a_missing_path():
     assert kinetics.solve(SP18_4, units="SI").results["D_y"].unit == "N"
     with pytest.raises(FileNotFoundError):
         kinetics.solve("examples/scenes/sp18_4_shaft_reactions")
+
+
+def test_hostile_input_is_refused_with_its_reason():
+    with pytest.raises(kinetics.SceneError, match="nested more than 200 levels"):
+        kinetics.check("T = " + "(" * 5000 + "m" + ")" * 5000)
+    with pytest.raises(kinetics.SceneError, match="more than the limit"):
+        kinetics.solve("# a comment\n" * 100000 + "find T\n")
+    with pytest.raises(kinetics.SceneError):
+        kinetics.solve("\n\n")
+    with pytest.raises(ValueError):
+        kinetics.check("T = 1", rtol=float("nan"))

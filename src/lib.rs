@@ -118,6 +118,11 @@ pub use solution::{
 };
 // Hand-written claims checked against the derivations.
 pub use check::context::{Context, DEFAULT_RELATIVE_TOLERANCE};
+pub use check::derivation::report::text as derivation_report_text;
+pub use check::derivation::{
+    check_derivation, first_slip, parts as derivation_parts, DerivationCheck, Judgement, Line,
+    LineCheck,
+};
 pub use check::report::{
     latex as claim_report_latex, numbers_sentence as claim_numbers_sentence,
     text as claim_report_text,

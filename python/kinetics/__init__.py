@@ -14,7 +14,8 @@ Check a hand-written claim, and name the slip::
     >>> v.holds, v.slip
     (False, 'cross-product-reversed')
 
-:func:`solve`, :func:`check`, :func:`derive` and :func:`simulate` are the whole surface;
+:func:`solve`, :func:`check`, :func:`check_derivation`, :func:`derive` and
+:func:`simulate` are the whole surface;
 a :class:`Solution`, a :class:`Result`, a :class:`Verdict` and :class:`Derivations` show
 themselves in a notebook (MathML, LaTeX, Markdown), and :meth:`Result.to_sympy` hands a
 result to SymPy. An input refused at a place in it raises :class:`SceneError`.
@@ -22,6 +23,7 @@ result to SymPy. An input refused at a place in it raises :class:`SceneError`.
 
 from ._native import SceneError
 from ._derivations import Derivations, Derived, derive
+from ._hand_derivation import CheckedLine, DerivationCheck, check_derivation
 from ._simulation import Simulation, simulate
 from ._solution import Relation, Result, Solution, Step, solve
 from ._verdict import Side, Verdict, check
@@ -30,6 +32,7 @@ __all__ = [
     "SceneError",
     "solve",
     "check",
+    "check_derivation",
     "derive",
     "simulate",
     "Solution",
@@ -38,6 +41,8 @@ __all__ = [
     "Relation",
     "Verdict",
     "Side",
+    "DerivationCheck",
+    "CheckedLine",
     "Derivations",
     "Derived",
     "Simulation",

@@ -34,6 +34,14 @@ def check(
     fixed_axis: bool = False,
     rtol: Optional[float] = None,
 ) -> Dict[str, Any]: ...
+def check_derivation(
+    text: str,
+    scene: Optional[Tuple[str, str]] = None,
+    principal: bool = False,
+    fixed_point: bool = False,
+    fixed_axis: bool = False,
+    rtol: Optional[float] = None,
+) -> Dict[str, Any]: ...
 def derive(only: List[str], principal: bool = False, axis: str = "z") -> Derived: ...
 def simulate(
     name: str,

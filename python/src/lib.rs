@@ -10,6 +10,7 @@
 mod derivations;
 mod error;
 mod expression;
+mod hand_derivation;
 mod simulation;
 mod solution;
 mod verdict;
@@ -27,6 +28,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(solution::solve, m)?)?;
     m.add_class::<solution::Solved>()?;
     m.add_function(wrap_pyfunction!(verdict::check, m)?)?;
+    m.add_function(wrap_pyfunction!(hand_derivation::check_derivation, m)?)?;
     m.add_function(wrap_pyfunction!(derivations::derive, m)?)?;
     m.add_class::<derivations::Derived>()?;
     m.add_function(wrap_pyfunction!(simulation::simulate, m)?)?;

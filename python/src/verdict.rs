@@ -30,34 +30,7 @@ pub fn check<'py>(
     fixed_axis: bool,
     rtol: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let rtol = rtol.unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
-    if !(0.0..1.0).contains(&rtol) {
-        return Err(refused(format!(
-            "rtol={rtol}: give a relative tolerance from 0 up to 1, like 0.005 for 0.5 %"
-        )));
-    }
-    let context = match &scene {
-        Some(_) if principal || fixed_point || fixed_axis => {
-            return Err(refused(
-                "principal, fixed_point and fixed_axis describe the general body: a scene \
-                 says all of that itself",
-            ))
-        }
-        Some((name, text)) => py
-            .detach(|| {
-                Input::scene(name, text)
-                    .within(|| Ok::<_, Diagnostic>(Context::scene(&parse_scene(name, text)?)))
-            })
-            .map_err(|d| scene_error(&d))?,
-        None if fixed_axis && (principal || fixed_point) => {
-            return Err(refused(
-                "fixed_axis goes alone: rotation about z is its own context",
-            ))
-        }
-        None if fixed_axis => Context::fixed_axis().map_err(refused)?,
-        None => Context::general(principal, fixed_point).map_err(refused)?,
-    };
-    let context = context.with_relative_tolerance(rtol);
+    let context = context(py, scene, principal, fixed_point, fixed_axis, rtol)?;
     let label = "claim";
     let report = py
         .detach(|| Input::expression(label, claim).within(|| check_claim(&context, label, claim)))
@@ -112,4 +85,45 @@ pub fn check<'py>(
     }
     d.set_item("components", components)?;
     Ok(d)
+}
+
+/// The context claims are checked in: the scene `(name, text)`, read within its budget,
+/// else the general body as `principal`, `fixed_point` and `fixed_axis` say; numbers
+/// within `rtol` (default 0.005).
+pub fn context(
+    py: Python<'_>,
+    scene: Option<(String, String)>,
+    principal: bool,
+    fixed_point: bool,
+    fixed_axis: bool,
+    rtol: Option<f64>,
+) -> PyResult<Context> {
+    let rtol = rtol.unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
+    if !(0.0..1.0).contains(&rtol) {
+        return Err(refused(format!(
+            "rtol={rtol}: give a relative tolerance from 0 up to 1, like 0.005 for 0.5 %"
+        )));
+    }
+    let context = match &scene {
+        Some(_) if principal || fixed_point || fixed_axis => {
+            return Err(refused(
+                "principal, fixed_point and fixed_axis describe the general body: a scene \
+                 says all of that itself",
+            ))
+        }
+        Some((name, text)) => py
+            .detach(|| {
+                Input::scene(name, text)
+                    .within(|| Ok::<_, Diagnostic>(Context::scene(&parse_scene(name, text)?)))
+            })
+            .map_err(|d| scene_error(&d))?,
+        None if fixed_axis && (principal || fixed_point) => {
+            return Err(refused(
+                "fixed_axis goes alone: rotation about z is its own context",
+            ))
+        }
+        None if fixed_axis => Context::fixed_axis().map_err(refused)?,
+        None => Context::general(principal, fixed_point).map_err(refused)?,
+    };
+    Ok(context.with_relative_tolerance(rtol))
 }

@@ -74,3 +74,25 @@ def test_a_claim_in_numbers_says_how_far_it_is():
     # 156.2 is 0.58 % from 155.3: shown with the figures that tell it from 0.5 %.
     near = kinetics.check("C_z = -156.2", scene=SP18_4)
     assert near.holds is False and "the tolerance is 0.5 %" in near.numbers[0]
+
+
+def test_a_derivation_is_followed_line_by_line():
+    # The slip (H x Omega for Omega x H) is made in the moment equation; the last line is
+    # right from it, so it follows and is not counted a second slip.
+    work = kinetics.check_derivation(
+        "alpha = 3*M/(2*m*c^2)\n"
+        "# about z: D_y L = Hdot_z\n"
+        "D_y*L = -1/8*m*L*c*alpha + 1/4*m*L*c*w^2\n"
+        "D_y = -3*M/(16*c) + 1/4*m*c*w^2\n",
+        scene=SP18_4)
+    assert [(line.number, line.verdict) for line in work.lines] == [
+        (1, "holds"), (3, "differs"), (4, "follows")]
+    assert work.first_slip == (3, "cross-product-reversed")
+    assert work.lines[2].follows_from == [3]
+    assert work.holds is False and not work
+    assert "follows" in work._repr_html_() and "| 4 |" in work._repr_markdown_()
+    right = kinetics.check_derivation(["T = 1/2 (I_x w_x^2 + I_y w_y^2 + I_z w_z^2)"],
+                                      principal=True, fixed_point=True)
+    assert right.holds is True
+    with pytest.raises(ValueError, match="no line to check"):
+        kinetics.check_derivation("# only a comment\n")

@@ -24,7 +24,7 @@ def test_quickstart_runs_and_shows_its_results():
     NotebookClient(nb, timeout=300, kernel_name="python3",
                    resources={"metadata": {"path": NOTEBOOK.parent}}).execute()
     code = [c for c in nb.cells if c.cell_type == "code"]
-    page, d_y, sympy_cell, verdict, plot = (outputs(c) for c in code)
+    page, d_y, sympy_cell, verdict, derivation, plot = (outputs(c) for c in code)
     # The page, as MathML, with its figure.
     assert "<math" in page["text/html"] and "<svg" in page["text/html"]
     assert "Sample Problem 18.4" in page["text/html"]
@@ -36,6 +36,8 @@ def test_quickstart_runs_and_shows_its_results():
     # The wrong claim: its named slip.
     assert verdict["stream"].strip() == "False cross-product-reversed"
     assert "cross-product-reversed" in verdict["text/html"]
+    # The derivation: its lines judged, the last one following the slip.
+    assert derivation["text/html"].count("<tr>") == 4 and ">follows<" in derivation["text/html"]
     # The simulation: within 1e-8 of the hand solution, and a plot.
     difference = float(plot["stream"].split(":")[1])
     assert difference < 1e-8

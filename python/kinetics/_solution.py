@@ -32,8 +32,7 @@ class Result:
         self.latex: str = answer["latex"]
         self.kind: str = answer["kind"]
         self.unit: Optional[str] = answer["unit"]
-        numbers = answer["value"]
-        self.value: Optional[Value] = _shaped(numbers, self.kind)
+        self.value: Optional[Value] = _shaped(answer["value"])
         self._form = answer["form"]
         self._value_text: Optional[str] = answer["value_text"]
         self._value_latex: Optional[str] = answer["value_latex"]
@@ -67,10 +66,17 @@ class Result:
             self.kind, "an expression")
 
     def __str__(self) -> str:
+        if self._value_text is not None and self._a_number():
+            return f"{self.name} = {self._value_text}"
         line = f"{self.name} = {self.text}"
         if self._value_text is not None and self._value_text != self.text:
             line += f" = {self._value_text}"
         return line
+
+    def _a_number(self) -> bool:
+        """Whether the result is a number alone (`A_z = 0 N`, a balance's angle): its value
+        with its unit says all there is."""
+        return self.kind == "number" or (self.kind == "expr" and self._form[0] == "number")
 
     def __repr__(self) -> str:
         return f"<Result {self}>"
@@ -85,14 +91,15 @@ class Result:
         return f"$${self._latex_line()}$$"
 
     def _latex_line(self) -> str:
+        if self._value_latex is not None and self._a_number():
+            return f"{self.name_latex} = {self._value_latex}"
         line = f"{self.name_latex} = {self.latex}"
-        if self._value_latex is not None and self.kind not in ("number",):
-            if self._value_latex != self.latex:
-                line += f" = {self._value_latex}"
+        if self._value_latex is not None and self._value_latex != self.latex:
+            line += f" = {self._value_latex}"
         return line
 
 
-def _shaped(numbers: Optional[List[float]], kind: str) -> Optional[Value]:
+def _shaped(numbers: Optional[List[float]]) -> Optional[Value]:
     """One number as a float, three as a tuple, nine as three rows."""
     if numbers is None:
         return None

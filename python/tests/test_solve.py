@@ -163,3 +163,11 @@ def test_hostile_input_is_refused_with_its_reason():
         kinetics.solve("\n\n")
     with pytest.raises(ValueError):
         kinetics.check("T = 1", rtol=float("nan"))
+
+
+def test_a_result_that_is_a_number_says_it_once():
+    # SP 18.3's pin: A_z = 0 (no load along z); said as its value with its unit.
+    s = kinetics.solve(scene("sp18_3_rotating_rod.scene"))
+    a_z = s.results["A_z"]
+    assert a_z.value == 0 and str(a_z) == "A_z = 0 N"
+    assert a_z._repr_latex_() == r"$$A_z = 0\,\mathrm{N}$$"

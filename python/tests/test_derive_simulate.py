@@ -78,3 +78,9 @@ def test_settings_a_method_does_not_use_are_refused():
         kinetics.simulate(scene("spun_up_sphere.scene"), until=1.0, every=5.0)
     with pytest.raises(ValueError, match="strictly increasing"):
         kinetics.simulate(scene("spun_up_sphere.scene"), at=[1.0, 0.5])
+
+
+def test_exact_under_a_couple_is_refused_at_the_couple():
+    with pytest.raises(kinetics.SceneError) as caught:
+        kinetics.simulate(scene("spun_up_sphere.scene"), until=1.0, method="exact")
+    assert "couple" in caught.value.source_line and "torque-free" in caught.value.hint

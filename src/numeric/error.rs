@@ -13,6 +13,12 @@ pub enum NumericError {
     /// time before the start, a non-finite initial value).
     #[error("{what}: {reason}")]
     InvalidInput { what: String, reason: String },
+    /// The closed form of torque-free motion asked of a body whose loads have a moment
+    /// about G.
+    #[error(
+        "method exact: the closed form exists only for a torque-free body; use dop853, rk4 or splitting"
+    )]
+    NotTorqueFree,
     /// An adaptive integrator used up its budget of steps before reaching the end time.
     #[error(
         "integration stopped at t = {t} after {max_steps} steps (the step limit); loosen the tolerance or shorten the interval"

@@ -147,6 +147,14 @@ fn initial_magnitudes(
 /// for the step budget) at the body. A sample sink's or the code generator's failure is not
 /// about a statement: `None`.
 pub fn located(scene: &Scene, error: &NumericError) -> Option<Diagnostic> {
+    if *error == NumericError::NotTorqueFree {
+        return Some(scene.error_at(
+            loads_place(scene),
+            error.to_string(),
+            "these loads have a moment about G, so the motion is not torque-free; the method \
+             auto integrates it with dop853",
+        ));
+    }
     let help = match error {
         NumericError::Physics(_) => "check the masses and sizes of the body",
         NumericError::InvalidInput { .. } => {

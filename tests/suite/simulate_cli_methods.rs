@@ -163,3 +163,19 @@ fn a_parameter_the_method_does_not_use_is_refused() {
     assert_eq!(code, 2, "{stderr}");
     assert!(stderr.contains("cannot be used with"), "{stderr}");
 }
+
+/// The closed form asked of a body under a moment: refused at the loads that make the
+/// moment, saying auto would integrate it.
+#[test]
+fn exact_under_a_moment_is_refused_at_the_loads() {
+    let path = scene("spun_up_sphere");
+    let (code, out, stderr) = kinetics(&["simulate", &path, "--until", "1", "--method", "exact"]);
+    assert_eq!(code, 1, "{stderr}");
+    assert!(out.is_empty(), "wrote {out}");
+    assert!(
+        stderr.contains("the closed form exists only for a torque-free body")
+            && stderr.contains("couple M_0*sin(p*t)*i")
+            && stderr.contains("auto integrates it with dop853"),
+        "{stderr}"
+    );
+}

@@ -56,12 +56,7 @@ impl Propagator<f64> for ExactPropagator {
 
 fn exact(problem: &Problem<f64>) -> Result<Box<dyn Propagator<f64> + '_>, NumericError> {
     if !matches!(problem.torque, Torque::None) {
-        return Err(NumericError::InvalidInput {
-            what: "method exact".into(),
-            reason:
-                "the closed form exists only for a torque-free body; use dop853, rk4 or splitting"
-                    .into(),
-        });
+        return Err(NumericError::NotTorqueFree);
     }
     let (moments, principal_to_body) = match problem.inertia {
         BodyInertia::Principal(m) => (m, Rotation3::identity()),

@@ -8,6 +8,7 @@ from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
 
 from . import _native
 from ._scene import SceneSource, read
+from ._verdict import verdict_colour
 
 
 class CheckedLine(NamedTuple):
@@ -57,7 +58,6 @@ class DerivationCheck:
         return f"<DerivationCheck {len(self.lines)} lines{first}>"
 
     def _repr_html_(self) -> str:
-        colour = {"holds": "#176f2c", "differs": "#a61b1b", "follows": "#a65f1b"}
         rows = []
         for line in self.lines:
             note = line.explanation or line.error or ""
@@ -66,7 +66,7 @@ class DerivationCheck:
                 note = f"right from line {froms}, so it carries its slip"
             rows.append(
                 f"<tr><td>{line.number}</td><td><code>{html.escape(line.text)}</code></td>"
-                f'<td style="color:{colour.get(line.verdict, "#8a5a00")}">{line.verdict}</td>'
+                f'<td style="color:{verdict_colour(line.verdict)}">{line.verdict}</td>'
                 f"<td>{html.escape(note)}</td></tr>")
         return ('<table class="kinetics-derivation"><tr><th>line</th><th>written</th>'
                 "<th>verdict</th><th></th></tr>" + "".join(rows) + "</table>")

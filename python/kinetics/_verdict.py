@@ -16,6 +16,12 @@ _ZERO = {"correct": ("number", "0", "1"), "claimed": ("number", "0", "1"),
          "claimed_latex": "0", "correct_mathml": "<mn>0</mn>", "claimed_mathml": "<mn>0</mn>"}
 
 
+def verdict_colour(verdict: str) -> str:
+    """The colour a verdict is shown in: green holds, red differs, orange follows (a carried
+    slip), amber undecided or unread."""
+    return {"holds": "#176f2c", "differs": "#a61b1b", "follows": "#a65f1b"}.get(verdict, "#8a5a00")
+
+
 class Side:
     """One side of a claim as the checker read it: a scalar, or a vector's x, y and z
     components (a component zero on both sides is 0). ``text`` and ``latex`` write it,
@@ -105,7 +111,7 @@ class Verdict:
         return f"<Verdict {self.verdict}{slip}: {self.claim}>"
 
     def _repr_html_(self) -> str:
-        colour = {"holds": "#176f2c", "differs": "#a61b1b"}.get(self.verdict, "#8a5a00")
+        colour = verdict_colour(self.verdict)
         slip = f" ({html.escape(self.slip)})" if self.slip else ""
         out = [f'<div class="kinetics-verdict"><p><b style="color:{colour}">{self.verdict}</b>'
                f"{slip}: <code>{html.escape(self.claim)}</code></p>"]

@@ -18,6 +18,13 @@ impl OutputDir {
     fn path(&self) -> &str {
         self.0.to_str().expect("a UTF-8 temporary path")
     }
+    /// Writes `file` in the folder (made if need be) and returns its path.
+    fn write(&self, file: &str, contents: impl AsRef<[u8]>) -> PathBuf {
+        std::fs::create_dir_all(&self.0).expect("created");
+        let path = self.0.join(file);
+        std::fs::write(&path, contents).expect("written");
+        path
+    }
     fn read(&self, file: &str) -> String {
         std::fs::read_to_string(self.0.join(file)).unwrap_or_else(|e| panic!("{file}: {e}"))
     }
@@ -306,14 +313,11 @@ fn an_earlier_run_is_not_overwritten_without_force() {
 #[test]
 fn a_scheme_naming_an_unknown_slip_is_refused_where_it_names_it() {
     let dir = OutputDir::new("scheme");
-    std::fs::create_dir_all(&dir.0).expect("created");
-    let scheme = dir.0.join("scheme.toml");
-    std::fs::write(
-        &scheme,
+    let scheme = dir.write(
+        "scheme.toml",
         "[[question]]\nid = \"Q1\"\ncontext = \"principal\"\ngives = \"SumM_x\"\nmarks = 2\n\
          [question.feedback]\nsign-flip = \"Check the signs.\"\n",
-    )
-    .expect("written");
+    );
     let (code, _, stderr) = kinetics(&[
         "mark",
         scheme.to_str().expect("UTF-8"),
@@ -348,18 +352,16 @@ fn a_scheme_naming_an_unknown_slip_is_refused_where_it_names_it() {
 #[test]
 fn marks_follow_the_value_the_lines_give() {
     let dir = OutputDir::new("values");
-    std::fs::create_dir_all(&dir.0).expect("created");
     let scenes = format!("{}/examples/scenes", env!("CARGO_MANIFEST_DIR"));
-    std::fs::write(
-        dir.0.join("scheme.toml"),
+    let scheme = dir.write(
+        "scheme.toml",
         format!(
             "carried_forward = 0.5\n\
              [[question]]\nid = \"E\"\ncontext = \"principal\"\ngives = \"SumM_x\"\nmarks = 2\n\
              [[question]]\nid = \"R\"\nscene = \"{scenes}/sp18_4_shaft_reactions.scene\"\ngives = [\"C_y\", \"D_y\"]\nmay_use = [\"alpha\"]\nmarks = 2\n\
              [[question]]\nid = \"T\"\nscene = \"{scenes}/sp18_2_rolling_disk.scene\"\ngives = \"T\"\nmarks = 2\n"
         ),
-    )
-    .expect("written");
+    );
     // E: ΣM_x = I_x ω̇_x − (I_y − I_z) ω_y ω_z; R: C_y = −9M/(16c) − ¼ m c ω²,
     // D_y = −3M/(16c) − ¼ m c ω²; T: ⅛ m r² (6 + r²/L²) ω₁², and with the wrong moments
     // ½(¼ m r² ω₁² + (m L² + ½ m r²) r² ω₁²/L²) ≠ T, right from lines 1 and 2 (1 of 2).
@@ -372,10 +374,9 @@ fn marks_follow_the_value_the_lines_give() {
         bob,T,\"I_x = 1/4 m r^2\nI_y = m L^2 + 1/2 m r^2\nw2 = r w1/L\nT = 1/2 (I_x w1^2 + I_y w2^2)\"\n\
         cat,E,M_x = I_x wdot_x - (I_y - I_z) w_y w_z\n\
         dan,E,SumM_x = Hdot_x\n";
-    let submissions = dir.0.join("submissions.csv");
-    std::fs::write(&submissions, csv).expect("written");
+    let submissions = dir.write("submissions.csv", csv);
     let out = dir.0.join("out");
-    let (code, stdout, stderr) = mark(&dir.0.join("scheme.toml"), &submissions, &out);
+    let (code, stdout, stderr) = mark(&scheme, &submissions, &out);
     assert_eq!(code, 0, "{stdout}\n{stderr}");
     // bob's R: D_y right (1), C_y = −D_y − ½ m c (α + ω²) right once line 1's D_y is put in,
     // left in α, which R's may_use allows (1); cat's M_x is ΣM_x (2).
@@ -395,16 +396,12 @@ fn marks_follow_the_value_the_lines_give() {
 #[test]
 fn crlf_lines_and_an_unclosed_quote_are_named_where_they_are() {
     let dir = OutputDir::new("export");
-    std::fs::create_dir_all(&dir.0).expect("created");
-    let scheme = dir.0.join("scheme.toml");
-    std::fs::write(
-        &scheme,
+    let scheme = dir.write(
+        "scheme.toml",
         "[[question]]\nid = \"E\"\ncontext = \"principal\"\ngives = \"SumM_x\"\nmarks = 2\n",
-    )
-    .expect("written");
+    );
     let run = |name: &str, csv: &str| {
-        let path = dir.0.join(name);
-        std::fs::write(&path, csv).expect("written");
+        let path = dir.write(name, csv);
         let out = dir.0.join(format!("{name}-out"));
         let (code, _, stderr) = mark(&scheme, &path, &out);
         assert_eq!(code, 0, "{stderr}");
@@ -436,16 +433,13 @@ fn crlf_lines_and_an_unclosed_quote_are_named_where_they_are() {
 #[test]
 fn a_misspelt_quantity_is_refused_at_its_gives() {
     let dir = OutputDir::new("gives");
-    std::fs::create_dir_all(&dir.0).expect("created");
-    let scheme = dir.0.join("scheme.toml");
-    std::fs::write(
-        &scheme,
+    let scheme = dir.write(
+        "scheme.toml",
         format!(
             "[[question]]\nid = \"Q\"\nscene = \"{}/examples/scenes/sp18_4_shaft_reactions.scene\"\ngives = [\"D_y\", \"D_yy\"]\nmarks = 2\n",
             env!("CARGO_MANIFEST_DIR")
         ),
-    )
-    .expect("written");
+    );
     let (code, _, stderr) = kinetics(&[
         "mark",
         scheme.to_str().expect("UTF-8"),
@@ -466,29 +460,24 @@ fn a_misspelt_quantity_is_refused_at_its_gives() {
 #[test]
 fn reversed_statements_either_root_and_an_unread_last_line() {
     let dir = OutputDir::new("roots");
-    std::fs::create_dir_all(&dir.0).expect("created");
     let scenes = format!("{}/examples/scenes", env!("CARGO_MANIFEST_DIR"));
-    let scheme = dir.0.join("scheme.toml");
-    std::fs::write(
-        &scheme,
+    let scheme = dir.write(
+        "scheme.toml",
         format!(
             "[[question]]\nid = \"T\"\nscene = \"{scenes}/sp18_3_rotating_rod.scene\"\ngives = [\"T_BC\", \"A_x\"]\nmarks = 4\n\
              [[question]]\nid = \"V\"\nscene = \"{scenes}/top_slow_and_fast_precession.scene\"\ngives = \"phidot\"\nmarks = 2\n"
         ),
-    )
-    .expect("written");
+    );
     // SP 18.3: T_BC = 1857 N, A_x = −843.4 N. The top: φ̇ = 2.651 rad/s or 142.5 rad/s.
-    let submissions = dir.0.join("submissions.csv");
-    std::fs::write(
-        &submissions,
+    let submissions = dir.write(
+        "submissions.csv",
         "student,question,answer\n\
          a,T,\"1857 N = T_BC\n-843.4 N = A_x\"\n\
          b,V,phidot = 142.5 rad/s\n\
          c,V,phidot = 2.651 rad/s\n\
          e,V,2 phidot = 5.302 rad/s\n\
          d,T,\"T_BC = 1857 N\nA_x = -843.4 N\nT_BC = 1857 N (tension)\"\n",
-    )
-    .expect("written");
+    );
     let out = dir.0.join("out");
     let (code, _, stderr) = mark(&scheme, &submissions, &out);
     assert_eq!(code, 0, "{stderr}");

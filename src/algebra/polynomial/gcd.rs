@@ -175,7 +175,7 @@ fn least_exponents(a: &Polynomial, b: &Polynomial) -> Exponents {
 #[cfg(test)]
 mod tests {
     use super::super::{Budget, Generators, Polynomial};
-    use crate::algebra::Expr;
+    use crate::algebra::{AlgebraError, Expr};
     use proptest::prelude::*;
 
     const NAMES: [&str; 4] = ["a", "b", "x", "y"];
@@ -217,8 +217,17 @@ mod tests {
             let (a, b) = polynomials(&a, &b, &mut budget);
             let shared = (0..a.generators()).find(|&x| a.degree_in(x) > 0 && b.degree_in(x) > 0);
             prop_assume!(shared.is_some());
-            let by_remainders = a.primitive_remainder_gcd(&b, shared.unwrap(), &mut budget).unwrap();
-            prop_assert_eq!(by_remainders, a.gcd(&b, &mut budget).unwrap());
+            // In four generators the sequence's coefficients can grow past the work bound
+            // (a^4 + a^2 x − a + y + 1 and a^5 − a^2 b^3 + b y^2 + b times a b + a y^2 + x − 1
+            // did): then it refuses, and must never answer with another gcd.
+            match a.primitive_remainder_gcd(&b, shared.unwrap(), &mut budget) {
+                Ok(by_remainders) => {
+                    let heuristic = a.gcd(&b, &mut Budget::new("a test")).unwrap();
+                    prop_assert_eq!(by_remainders, heuristic);
+                }
+                Err(AlgebraError::TooMuchWork { .. }) => {}
+                Err(other) => prop_assert!(false, "the remainder sequence failed: {}", other),
+            }
         }
     }
 }

@@ -6,23 +6,28 @@
 //! y₁ = y + h/6 (k₁ + 2k₂ + 2k₃ + k₄)
 //! ```
 //!
-//! Global error `O(h⁴)`; the step's result is projected with [`OdeSystem::project`].
+//! Global error `O(h⁴)`. The increment is added with its rounding carried
+//! ([`compensated`](super::compensated)), and the result projected with
+//! [`OdeSystem::project`].
 
+use super::compensated::CompensatedVector;
 use super::ode::{constant, OdeSystem};
-use nalgebra::{RealField, SVector};
+use nalgebra::RealField;
 
-/// One step of size `h` from `(t, y)`.
-pub fn rk4_step<T, const N: usize, S>(system: &S, t: T, y: &SVector<T, N>, h: T) -> SVector<T, N>
+/// One step of size `h` from `(t, state)`, in place.
+pub fn rk4_step<T, const N: usize, S>(system: &S, t: T, state: &mut CompensatedVector<T, N>, h: T)
 where
     T: RealField + Copy,
     S: OdeSystem<T, N> + ?Sized,
 {
     let half = h * constant::<T>(0.5);
+    let y = *state.value();
+    let y = &y;
     let k1 = system.derivative(t, y);
     let k2 = system.derivative(t + half, &(y + k1 * half));
     let k3 = system.derivative(t + half, &(y + k2 * half));
     let k4 = system.derivative(t + h, &(y + k3 * h));
-    let mut next = y + (k1 + (k2 + k3) * constant::<T>(2.0) + k4) * (h / constant::<T>(6.0));
-    system.project(&mut next);
-    next
+    let increment = (k1 + (k2 + k3) * constant::<T>(2.0) + k4) * (h / constant::<T>(6.0));
+    state.add(&increment);
+    state.map_value(|y| system.project(y));
 }

@@ -41,6 +41,7 @@
 //! given by its full tensor is integrated in its principal frame
 //! ([`BodyInertia::principal_frame`]).
 
+use super::compensated::CompensatedVector;
 use super::ode::constant;
 use crate::numeric::error::NumericError;
 use crate::numeric::rigid_body::inertia::{BodyInertia, PrincipalFrame};
@@ -77,8 +78,9 @@ impl<T: RealField + Copy> std::fmt::Debug for Kick<'_, T> {
 /// Angular momentum in the principal frame, the attitude of the principal frame and the time.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SplittingState<T: RealField + Copy> {
-    /// `H` in principal-frame components.
-    pub momentum: Vector3<T>,
+    /// `H` in principal-frame components, each turn and kick added with its rounding
+    /// carried ([`compensated`](super::compensated)).
+    pub momentum: CompensatedVector<T, 3>,
     /// Maps principal-frame components to fixed-frame ones.
     pub orientation: UnitQuaternion<T>,
     /// The time `t` (the clock of the drift).
@@ -162,7 +164,7 @@ impl<'a, T: RealField + Copy> LiePoissonSplitting<'a, T> {
     pub fn to_splitting_state(&self, time: T, state: &RigidBodyState<T>) -> SplittingState<T> {
         let omega = self.frame.rotation.inverse_transform_vector(&state.omega);
         SplittingState {
-            momentum: omega.component_mul(&self.frame.moments),
+            momentum: CompensatedVector::new(omega.component_mul(&self.frame.moments)),
             orientation: state.orientation * self.frame_rotation,
             time,
         }
@@ -170,7 +172,7 @@ impl<'a, T: RealField + Copy> LiePoissonSplitting<'a, T> {
 
     /// The body-frame state of the splitting's variables.
     pub fn to_rigid_body_state(&self, state: &SplittingState<T>) -> RigidBodyState<T> {
-        let omega = state.momentum.component_div(&self.frame.moments);
+        let omega = state.momentum.value().component_div(&self.frame.moments);
         RigidBodyState {
             omega: self.frame.rotation * omega,
             orientation: state.orientation * self.frame_rotation.inverse(),
@@ -209,16 +211,19 @@ impl<'a, T: RealField + Copy> LiePoissonSplitting<'a, T> {
 
     /// Exact flow of `½ κ_i H_i²` over `h`.
     fn turn_about_axis(&self, state: &mut SplittingState<T>, axis: usize, h: T) {
-        let theta = self.coefficients[axis] * state.momentum[axis] * h;
+        let momentum = *state.momentum.value();
+        let theta = self.coefficients[axis] * momentum[axis] * h;
         // sin θ and the versine 1 − cos θ = 2 sin²(θ/2), both to full relative accuracy:
         // the turn is applied as a small correction, so a rounded cos θ ≈ 1 cannot bias |H|.
         let (sin_half, cos_half) = (theta * constant::<T>(0.5)).sin_cos();
         let sin = constant::<T>(2.0) * sin_half * cos_half;
         let versine = constant::<T>(2.0) * sin_half * sin_half;
         let (j, k) = ((axis + 1) % 3, (axis + 2) % 3);
-        let (hj, hk) = (state.momentum[j], state.momentum[k]);
-        state.momentum[j] = hj - (versine * hj - sin * hk);
-        state.momentum[k] = hk - (versine * hk + sin * hj);
+        let (hj, hk) = (momentum[j], momentum[k]);
+        let mut change = Vector3::zeros();
+        change[j] = -(versine * hj - sin * hk);
+        change[k] = -(versine * hk + sin * hj);
+        state.momentum.add(&change);
         // The same half angle gives the attitude's turn exp(θ e_i / 2) directly.
         let turn = Quaternion::from_parts(cos_half, Vector3::ith(axis, sin_half));
         state.orientation *= UnitQuaternion::new_unchecked(turn);
@@ -226,7 +231,7 @@ impl<'a, T: RealField + Copy> LiePoissonSplitting<'a, T> {
 
     /// Exact flow of `|H|²/(2 I_r)` over `h`.
     fn turn_about_momentum(&self, state: &mut SplittingState<T>, h: T) {
-        let turn = state.momentum * (h / self.frame.moments[self.reference]);
+        let turn = state.momentum.value() * (h / self.frame.moments[self.reference]);
         state.orientation *= UnitQuaternion::from_scaled_axis(turn);
     }
 
@@ -249,6 +254,6 @@ impl<'a, T: RealField + Copy> LiePoissonSplitting<'a, T> {
                     .inverse_transform_vector(&function(state.time, &body_attitude))
             }
         };
-        state.momentum += moment * h;
+        state.momentum.add(&(moment * h));
     }
 }

@@ -25,11 +25,12 @@ use super::sample_sink::{Sample, SampleSink};
 use super::state::{RigidBodyState, STATE_DIMENSION};
 use super::torque::Torque;
 use crate::numeric::error::NumericError;
+use crate::numeric::integrators::compensated::CompensatedVector;
 use crate::numeric::integrators::dop853::{Dop853, Dop853Settings, DEFAULT_MAX_STEPS};
 use crate::numeric::integrators::ode::{constant, to_f64};
 use crate::numeric::integrators::rk4::rk4_step;
 use crate::numeric::integrators::splitting::{LiePoissonSplitting, SplittingOrder, SplittingState};
-use nalgebra::{RealField, SVector, UnitQuaternion};
+use nalgebra::{RealField, UnitQuaternion};
 
 /// Most steps (or samples) a simulation may be asked for.
 const MAX_COUNT: f64 = 1e15;
@@ -370,7 +371,7 @@ fn propagator<'a, T: RealField + Copy>(
             Ok(Box::new(FixedStepPropagator {
                 stepper: Rk4Stepper {
                     rhs: EulerRhs::new(problem.inertia, &problem.torque)?,
-                    y: initial.to_vector(),
+                    y: CompensatedVector::new(initial.to_vector()),
                 },
                 t: start,
                 max_step: step,
@@ -488,18 +489,18 @@ impl<T: RealField + Copy, S: FixedStep<T>> Propagator<T> for FixedStepPropagator
 
 struct Rk4Stepper<'a, T: RealField + Copy> {
     rhs: EulerRhs<'a, T>,
-    y: SVector<T, STATE_DIMENSION>,
+    y: CompensatedVector<T, STATE_DIMENSION>,
 }
 
 impl<T: RealField + Copy> FixedStep<T> for Rk4Stepper<'_, T> {
     const EVALUATIONS_PER_STEP: usize = 4;
 
     fn step(&mut self, time: T, h: T) {
-        self.y = rk4_step(&self.rhs, time, &self.y, h);
+        rk4_step(&self.rhs, time, &mut self.y, h);
     }
 
     fn state(&self) -> RigidBodyState<T> {
-        RigidBodyState::from_vector(&self.y)
+        RigidBodyState::from_vector(self.y.value())
     }
 }
 

@@ -20,8 +20,8 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
     /// seventh-order continuous extension (times outside are clamped to the step). Before
     /// the first step it is the initial state.
     pub fn dense_output<S: OdeSystem<T, N> + ?Sized>(&mut self, system: &S, t: T) -> SVector<T, N> {
-        if t == self.t || self.statistics.accepted_steps == 0 {
-            return self.y;
+        if t == self.t() || self.statistics.accepted_steps == 0 {
+            return *self.y();
         }
         let coefficients = match self.dense {
             Some(coefficients) => coefficients,
@@ -51,7 +51,7 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
         let h = self.last_step;
         let (t_old, y_old) = (self.t_old, self.y_old);
         self.evaluate_stages(system, STAGES + 1..EXTENDED_STAGES, t_old, &y_old, h);
-        let delta = self.y - self.y_old;
+        let delta = self.y() - self.y_old;
         let f_old = self.stages[0];
         let mut coefficients = [SVector::<T, N>::zeros(); 7];
         coefficients[0] = delta;

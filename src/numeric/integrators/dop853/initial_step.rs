@@ -50,9 +50,9 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
     /// Euler step's change and the estimated second derivative's contribution small, bounded
     /// by the whole interval.
     pub(super) fn initial_step<S: OdeSystem<T, N> + ?Sized>(&mut self, system: &S) -> T {
-        let max_step = self.t_end - self.t;
-        let state_norm = self.weighted_norm(&self.y, &self.y);
-        let derivative_norm = self.weighted_norm(&self.derivative, &self.y);
+        let max_step = self.t_end - self.t();
+        let state_norm = self.weighted_norm(self.y(), self.y());
+        let derivative_norm = self.weighted_norm(&self.derivative, self.y());
         let tiny = constant::<T>(1e-5);
         let own_unit = if state_norm > tiny {
             state_norm / derivative_norm
@@ -73,11 +73,11 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
             state_norm / derivative_norm * constant(0.01)
         };
         h = h.min(max_step_in_unit);
-        let euler = self.y + self.derivative * (h * unit);
-        let derivative_after = system.derivative(self.t + h * unit, &euler);
+        let euler = self.y() + self.derivative * (h * unit);
+        let derivative_after = system.derivative(self.t() + h * unit, &euler);
         self.statistics.evaluations += 1;
         // ‖Δf‖ / (h τ) is the second derivative per unit time squared; times τ².
-        let second = self.weighted_norm(&(derivative_after - self.derivative), &self.y) * unit / h;
+        let second = self.weighted_norm(&(derivative_after - self.derivative), self.y()) * unit / h;
         let scale = second.max(derivative_norm);
         let by_second = if scale <= constant(1e-15) {
             (h * constant(1e-3)).max(constant(1e-6))

@@ -45,6 +45,7 @@ mod tableau;
 
 pub use settings::{Dop853Settings, DEFAULT_MAX_STEPS};
 
+use super::compensated::{Compensated, CompensatedVector};
 use super::ode::{to_f64, OdeSystem};
 use crate::numeric::error::NumericError;
 use nalgebra::{RealField, SVector};
@@ -67,8 +68,9 @@ pub struct Dop853Statistics {
 pub struct Dop853<T: RealField + Copy, const N: usize> {
     settings: Dop853Settings<T>,
     t_end: T,
-    t: T,
-    y: SVector<T, N>,
+    /// The time and state, each a sum of steps with its rounding carried.
+    t: Compensated<T>,
+    y: CompensatedVector<T, N>,
     /// `f(t, y)`, the first stage of the next step.
     derivative: SVector<T, N>,
     /// Proposed size of the next step.
@@ -108,8 +110,8 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
         let mut integrator = Self {
             settings,
             t_end,
-            t: t0,
-            y: y0,
+            t: Compensated::new(t0),
+            y: CompensatedVector::new(y0),
             derivative,
             step: T::zero(),
             t_old: t0,
@@ -129,12 +131,12 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
 
     /// Current time.
     pub fn t(&self) -> T {
-        self.t
+        self.t.value()
     }
 
     /// Current state.
     pub fn y(&self) -> &SVector<T, N> {
-        &self.y
+        self.y.value()
     }
 
     /// Steps and evaluations so far.

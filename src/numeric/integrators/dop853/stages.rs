@@ -5,7 +5,8 @@
 //! ```
 //!
 //! with the coefficients of [`tableau`](super::tableau); the point of the row of the weights
-//! `bⱼ` is the eighth-order solution `y₁`.
+//! `bⱼ` is the eighth-order solution `y₁`, whose increment the step adds to `y` with its
+//! rounding carried ([`compensated`](crate::numeric::integrators::compensated)).
 
 use super::tableau::{A, C};
 use super::Dop853;
@@ -13,13 +14,13 @@ use crate::numeric::integrators::ode::{constant, OdeSystem};
 use nalgebra::{RealField, SVector};
 
 impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
-    /// `y + h Σⱼ aᵢⱼ kⱼ` for stage `i` of a step of size `h` from `y`.
-    pub(super) fn stage_point(&self, stage: usize, y: &SVector<T, N>, h: T) -> SVector<T, N> {
+    /// `h Σⱼ aᵢⱼ kⱼ`, the increment of stage `i` of a step of size `h`.
+    pub(super) fn stage_increment(&self, stage: usize, h: T) -> SVector<T, N> {
         let mut sum = SVector::<T, N>::zeros();
         for &(j, a) in A[stage] {
             sum += self.stages[j] * constant::<T>(a);
         }
-        y + sum * h
+        sum * h
     }
 
     /// Evaluates the stages `range` of a step of size `h` from `(t, y)`.
@@ -33,7 +34,7 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
     ) {
         self.statistics.evaluations += range.len();
         for stage in range {
-            let point = self.stage_point(stage, y, h);
+            let point = y + self.stage_increment(stage, h);
             self.stages[stage] = system.derivative(t + constant::<T>(C[stage]) * h, &point);
         }
     }

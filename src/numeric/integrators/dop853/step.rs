@@ -13,6 +13,7 @@
 use super::tableau::STAGES;
 use super::Dop853;
 use crate::numeric::error::NumericError;
+use crate::numeric::integrators::compensated::Compensated;
 use crate::numeric::integrators::ode::{constant, to_f64, OdeSystem};
 use nalgebra::RealField;
 
@@ -33,7 +34,7 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
     /// Takes one accepted step, never past the end time; rejected attempts are retried
     /// with a smaller step.
     pub fn step<S: OdeSystem<T, N> + ?Sized>(&mut self, system: &S) -> Result<(), NumericError> {
-        if self.t >= self.t_end {
+        if self.t() >= self.t_end {
             return Err(NumericError::InvalidInput {
                 what: "step".to_string(),
                 reason: format!(
@@ -50,33 +51,34 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
             if attempts >= self.settings.max_steps {
                 return Err(NumericError::StepLimit {
                     max_steps: self.settings.max_steps,
-                    t: to_f64(self.t),
+                    t: to_f64(self.t()),
                 });
             }
-            let resolvable = self.step.abs() * constant(0.1) > self.t.abs() * uround;
+            let resolvable = self.step.abs() * constant(0.1) > self.t().abs() * uround;
             if !resolvable || !self.step.is_finite() {
                 return Err(NumericError::StepSizeUnderflow {
-                    t: to_f64(self.t),
+                    t: to_f64(self.t()),
                     step: to_f64(self.step),
                 });
             }
-            let remaining = self.t_end - self.t;
+            let remaining = self.t_end - self.t();
             if attempts >= (self.settings.max_steps / HOPELESS_AFTER).max(HOPELESS_MIN_STEPS)
                 && remaining
                     > self.step.abs() * constant(HOPELESS_FACTOR * self.settings.max_steps as f64)
             {
                 return Err(NumericError::StepBudgetHopeless {
                     steps: attempts,
-                    t: to_f64(self.t),
+                    t: to_f64(self.t()),
                     needed: to_f64(remaining / self.step.abs()),
                 });
             }
             let last = self.step * constant(1.01) >= remaining;
             let h = if last { remaining } else { self.step };
-            let (t, y) = (self.t, self.y);
+            let (t, y) = (self.t(), *self.y());
             self.evaluate_stages(system, 1..STAGES, t, &y, h);
-            let mut y_new = self.stage_point(STAGES, &y, h);
-            let error = self.error_norm(&y_new, h);
+            let increment = self.stage_increment(STAGES, h);
+            let mut y_new = self.y.plus(&increment);
+            let error = self.error_norm(&increment, y_new.value(), h);
             // err^⅛ as three square roots, much cheaper than a power.
             let error_root = error.sqrt().sqrt().sqrt();
             if error <= T::one() {
@@ -87,22 +89,28 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
                 if self.last_rejected {
                     next = next.min(h);
                 }
-                system.project(&mut y_new);
-                let t_new = if last { self.t_end } else { self.t + h };
-                let derivative = system.derivative(t_new, &y_new);
+                y_new.map_value(|y| system.project(y));
+                let t_new = if last {
+                    Compensated::new(self.t_end)
+                } else {
+                    self.t.plus(h)
+                };
+                let derivative = system.derivative(t_new.value(), y_new.value());
                 self.statistics.evaluations += 1;
                 self.statistics.accepted_steps += 1;
                 self.stages[STAGES] = derivative;
-                self.t_old = self.t;
-                self.y_old = self.y;
+                self.t_old = self.t();
+                self.y_old = *self.y();
                 self.last_step = h;
                 self.t = t_new;
                 self.y = y_new;
                 self.derivative = derivative;
                 self.step = next;
                 self.last_rejected = false;
-                if !y_new.iter().all(|v| v.is_finite()) {
-                    return Err(NumericError::NonFinite { t: to_f64(t_new) });
+                if !self.y().iter().all(|v| v.is_finite()) {
+                    return Err(NumericError::NonFinite {
+                        t: to_f64(self.t()),
+                    });
                 }
                 return Ok(());
             }

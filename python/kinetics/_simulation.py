@@ -52,9 +52,9 @@ def simulate(
     from t = 0, as ``kinetics simulate``.
 
     Samples every ``every`` seconds (default ``until/100``) up to ``until``, or at the
-    times ``at``. ``method``: ``auto`` (the closed form when torque-free, else dop853),
-    ``exact``, ``dop853`` (with ``rtol``, default 1e-10), ``rk4`` or ``splitting`` (with
-    ``step``, default 1e-3 s).
+    times ``at``. ``method``: ``auto`` (the closed form when torque-free, else dop853, or
+    vern9 below ``rtol`` 1e-9), ``exact``, ``dop853`` or ``vern9`` (with ``rtol``, default
+    1e-10), ``rk4`` or ``splitting`` (with ``step``, default 1e-3 s).
 
     >>> import kinetics
     >>> run = kinetics.simulate("examples/scenes/spun_up_sphere.scene", until=1.0)

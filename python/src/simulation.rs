@@ -9,7 +9,7 @@ use kinetics::{
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-/// The default relative tolerance of dop853 (and of auto when it integrates), and the
+/// The default relative tolerance of dop853 and vern9 (and of auto when it integrates), and the
 /// default step of rk4 and splitting: the command line's.
 const DEFAULT_RTOL: f64 = 1e-10;
 const DEFAULT_STEP: f64 = 1e-3;
@@ -18,7 +18,7 @@ const MAX_SAMPLES: f64 = 10_000_000.0;
 
 /// Simulates the scene `(name, text)` from t = 0: sampled every `every` (default
 /// `until/100`) up to `until`, or at the times `at`; by `method` (`auto`, `exact`, `rk4`,
-/// `dop853`, `splitting`) with `rtol` or `step`. Returns a dict of columns: `t`, `omega`
+/// `dop853`, `vern9`, `splitting`) with `rtol` or `step`. Returns a dict of columns: `t`, `omega`
 /// (body axes, three a sample), `orientation` (the quaternion w, x, y, z), `T`, `H`, and
 /// `method` (`exact` or `integrated`).
 #[pyfunction]
@@ -143,7 +143,7 @@ fn choice(method: &str, rtol: Option<f64>, step: Option<f64>) -> PyResult<Choice
         )))
     };
     match (method, rtol, step) {
-        ("auto" | "dop853" | "exact", _, Some(_)) => {
+        ("auto" | "dop853" | "vern9" | "exact", _, Some(_)) => {
             unused("step", "it chooses its own steps (or has none)")
         }
         ("exact", Some(_), _) => unused("rtol", "the closed form has no tolerance"),
@@ -156,6 +156,10 @@ fn choice(method: &str, rtol: Option<f64>, step: Option<f64>) -> PyResult<Choice
             let rtol = rtol.unwrap_or(DEFAULT_RTOL);
             Ok(Choice::Integrate(Method::dop853(rtol, rtol * 1e-3)))
         }
+        ("vern9", rtol, None) => {
+            let rtol = rtol.unwrap_or(DEFAULT_RTOL);
+            Ok(Choice::Integrate(Method::vern9(rtol, rtol * 1e-3)))
+        }
         ("rk4", None, step) => Ok(Choice::Integrate(Method::Rk4 {
             step: step.unwrap_or(DEFAULT_STEP),
         })),
@@ -164,7 +168,7 @@ fn choice(method: &str, rtol: Option<f64>, step: Option<f64>) -> PyResult<Choice
             order: SplittingOrder::Fourth,
         })),
         (other, _, _) => Err(refused(format!(
-            "method={other:?}: choose auto, exact, rk4, dop853 or splitting"
+            "method={other:?}: choose auto, exact, rk4, dop853, vern9 or splitting"
         ))),
     }
 }

@@ -1,9 +1,9 @@
 //! `kinetics bench work-precision [--until T] [--budget-ms N] [--plot PREFIX]`: run time
-//! against error for every method on the five bodies of the study, as a table and (with the
+//! against error for every method on the six bodies of the study, as a table and (with the
 //! `plot` feature) plots.
 
 use super::error::CliError;
-use kinetics::numeric::work_precision::study::study;
+use kinetics::numeric::work_precision::study::{cases, fastest_within, study};
 use std::time::Duration;
 
 #[derive(clap::Subcommand)]
@@ -28,6 +28,9 @@ pub struct WorkPrecisionArgs {
     #[arg(long)]
     pub plot: Option<std::path::PathBuf>,
 }
+
+/// The error at which the families are compared: tight enough that the higher order pays.
+const EQUAL_ERROR: f64 = 1e-11;
 
 pub fn run(bench: Bench) -> Result<String, CliError> {
     let Bench::WorkPrecision(args) = bench;
@@ -54,6 +57,24 @@ pub fn run(bench: Bench) -> Result<String, CliError> {
             "{:<18} {:<24} {:>14.3e} {:>12.2e} {:>12.2e}\n",
             r.case, r.method, r.seconds_per_run, r.omega_error, r.attitude_error
         ));
+    }
+    out.push_str(&format!(
+        "\nvern9 against dop853, the fastest setting of each with both errors ≤ {EQUAL_ERROR:e}:\n"
+    ));
+    for case in cases() {
+        let fastest = |family| fastest_within(&rows, case.name, family, EQUAL_ERROR);
+        out.push_str(&match (fastest("dop853"), fastest("vern9")) {
+            (Some(dop853), Some(vern9)) => format!(
+                "{:<18} {} {:.3e} s, {} {:.3e} s: vern9 {:.2}× as fast\n",
+                case.name,
+                dop853.method,
+                dop853.seconds_per_run,
+                vern9.method,
+                vern9.seconds_per_run,
+                dop853.seconds_per_run / vern9.seconds_per_run
+            ),
+            _ => format!("{:<18} not reached by both\n", case.name),
+        });
     }
     out.push_str(&format!("\nt from 0 to {} s, 100 samples; ", args.until));
     out.push_str(&notes.join("; "));

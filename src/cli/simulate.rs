@@ -5,7 +5,7 @@
 //! Each row is formatted and written as its sample arrives; only the plot (`--plot`, with
 //! the `plot` feature) keeps points, a bounded number of them. A scene with `euler angles`
 //! is a heavy top, and its rows are its Eulerian angles (`simulate_top`). `--rtol` belongs to dop853
-//! (and to auto, which may integrate with it) and `--step` to rk4 and splitting: a flag the
+//! and vern9 (and to auto, which may integrate with them) and `--step` to rk4 and splitting: a flag the
 //! chosen method does not use is refused with the reason, not ignored.
 //!
 //! Nothing is written before everything that can be checked is: the flags (by name, see
@@ -32,6 +32,7 @@ pub enum MethodName {
     Exact,
     Rk4,
     Dop853,
+    Vern9,
     Splitting,
 }
 
@@ -63,10 +64,11 @@ pub struct Args {
     /// Sample at these times (s), comma-separated, not negative and increasing.
     #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
     pub at: Option<Vec<f64>>,
-    /// auto: the closed form when the body is torque-free, dop853 otherwise.
+    /// auto: the closed form when the body is torque-free, otherwise vern9 below --rtol 1e-9
+    /// (as by default) and dop853 above.
     #[arg(long, value_enum, default_value_t = MethodName::Auto)]
     pub method: MethodName,
-    /// Relative tolerance of dop853 (and of auto when it integrates); default 1e-10.
+    /// Relative tolerance of dop853 and vern9 (and of auto when it integrates); default 1e-10.
     #[arg(long, conflicts_with = "step", allow_negative_numbers = true)]
     pub rtol: Option<f64>,
     /// Step of rk4 and splitting (s), positive; default 1e-3.
@@ -85,7 +87,7 @@ pub struct Args {
     pub force: bool,
 }
 
-/// Relative tolerance of dop853 (and of auto) without `--rtol`.
+/// Relative tolerance of dop853 and vern9 (and of auto) without `--rtol`.
 const DEFAULT_RTOL: f64 = 1e-10;
 /// Step of rk4 and splitting without `--step` (s).
 const DEFAULT_STEP: f64 = 1e-3;
@@ -111,7 +113,7 @@ fn method_choice(
             Some(_) => refuse(
                 "--step",
                 "auto",
-                "auto takes the closed form or dop853, which chooses its own steps; give \
+                "auto takes the closed form or an adaptive pair, which chooses its own steps; give \
                  --rtol, or choose --method rk4 or splitting",
             ),
             None => Ok(Choice::Auto {
@@ -130,17 +132,25 @@ fn method_choice(
                 None => Ok(Choice::Exact),
             }
         }
-        MethodName::Dop853 => match step {
-            Some(_) => refuse(
-                "--step",
-                "dop853",
-                "dop853 chooses its own steps to meet --rtol (default 1e-10)",
-            ),
-            None => {
-                let rtol = rtol.unwrap_or(DEFAULT_RTOL);
-                Ok(Choice::Integrate(Method::dop853(rtol, rtol * 1e-3)))
+        MethodName::Dop853 | MethodName::Vern9 => {
+            let vern9 = method == MethodName::Vern9;
+            let name = if vern9 { "vern9" } else { "dop853" };
+            match step {
+                Some(_) => refuse(
+                    "--step",
+                    name,
+                    &format!("{name} chooses its own steps to meet --rtol (default 1e-10)"),
+                ),
+                None => {
+                    let rtol = rtol.unwrap_or(DEFAULT_RTOL);
+                    Ok(Choice::Integrate(if vern9 {
+                        Method::vern9(rtol, rtol * 1e-3)
+                    } else {
+                        Method::dop853(rtol, rtol * 1e-3)
+                    }))
+                }
             }
-        },
+        }
         MethodName::Rk4 => match rtol {
             Some(_) => refuse("--rtol", "rk4", fixed_steps),
             None => Ok(Choice::Integrate(Method::Rk4 {

@@ -16,7 +16,7 @@ pub enum NumericError {
     /// The closed form of torque-free motion asked of a body whose loads have a moment
     /// about G.
     #[error(
-        "method exact: the closed form exists only for a torque-free body; use dop853, rk4 or splitting"
+        "method exact: the closed form exists only for a torque-free body; use dop853, vern9, rk4 or splitting"
     )]
     NotTorqueFree,
     /// An adaptive integrator used up its budget of steps before reaching the end time.

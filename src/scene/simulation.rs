@@ -152,7 +152,7 @@ pub fn located(scene: &Scene, error: &NumericError) -> Option<Diagnostic> {
             loads_place(scene),
             error.to_string(),
             "these loads have a moment about G, so the motion is not torque-free; the method \
-             auto integrates it with dop853",
+             auto integrates it (vern9 below --rtol 1e-9, dop853 above)",
         ));
     }
     let help = match error {

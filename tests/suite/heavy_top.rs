@@ -2,7 +2,8 @@
 //! with the weight's moment, the angles read from the attitude), against the chapter's
 //! results and an independent integration of the Eulerian-angle equations themselves.
 
-use kinetics::numeric::integrators::dop853::{Dop853, Dop853Settings};
+use kinetics::numeric::integrators::adaptive::AdaptiveSettings;
+use kinetics::numeric::integrators::dop853::Dop853;
 use kinetics::numeric::integrators::ode::OdeSystem;
 use kinetics::numeric::rigid_body::eulerian_angles::{AnglesAlongMotion, EulerianAngles};
 use kinetics::numeric::rigid_body::exact_propagation::{simulate_choice, Choice, MethodUsed};
@@ -230,7 +231,7 @@ fn the_angles_agree_with_the_eulerian_angle_equations_integrated_directly() {
         initial.phi_dot,
         initial.psi_dot,
     ]);
-    let settings = Dop853Settings {
+    let settings = AdaptiveSettings {
         rtol: 1e-13,
         atol: 1e-15,
         max_steps: 10_000_000,

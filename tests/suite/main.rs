@@ -10,6 +10,7 @@ mod common;
 use common::counting_allocator::Counting;
 
 mod about_fixed_point;
+mod accurate_integration;
 mod algebra_properties;
 mod bad_scenes;
 mod balancing_request;

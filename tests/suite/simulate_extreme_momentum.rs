@@ -94,6 +94,11 @@ fn choices(lambda: f64) -> Vec<(&'static str, Choice, f64)> {
             Choice::Integrate(Method::dop853(1e-12, 0.0)),
             0.0,
         ),
+        (
+            "vern9 (atol 0)",
+            Choice::Integrate(Method::vern9(1e-12, 0.0)),
+            0.0,
+        ),
         // The tolerances of `kinetics simulate --method dop853 --rtol 1e-12`.
         (
             "dop853",

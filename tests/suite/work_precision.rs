@@ -30,9 +30,9 @@ const SPACING: f64 = UNTIL / 100.0;
 const ROUND_OFF: f64 = 1e-12;
 
 /// The integrator families, each run on every body at three or more settings.
-const INTEGRATORS: [&str; 4] = ["dop853", "rk4", "splitting2", "splitting4"];
+const INTEGRATORS: [&str; 5] = ["dop853", "vern9", "rk4", "splitting2", "splitting4"];
 
-/// The order of convergence of a fixed-step family (none for the adaptive DOP853).
+/// The order of convergence of a fixed-step family (none for the adaptive pairs).
 fn order(family: &str) -> Option<f64> {
     match family {
         "rk4" | "splitting4" => Some(4.0),
@@ -47,6 +47,7 @@ fn tightest_bound(family: &str) -> f64 {
     match family {
         "exact" => 1e-12,     // 6.4e-15 (intermediate-axis attitude)
         "dop853" => 1e-10,    // rtol 1e-13: 1.2e-12 (forced attitude); generic 3.1e-13
+        "vern9" => 1e-12,     // rtol 1e-13: 1.9e-14 (time-forced attitude); generic 1.4e-14
         "rk4" => 1e-9,        // h = 0.003: 1.6e-11 (time-forced attitude)
         "splitting4" => 1e-7, // h = 0.01: 4.9e-9 (time-forced |Δω|)
         "splitting2" => 1e-5, // h = 0.001: 4.1e-7 (time-forced |Δω|)

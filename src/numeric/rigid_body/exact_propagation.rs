@@ -14,10 +14,16 @@ use super::torque_free::TorqueFree;
 use crate::numeric::error::NumericError;
 use nalgebra::{Rotation3, UnitQuaternion};
 
+/// Below this relative tolerance `auto` integrates with Verner's 9(8) pair rather than
+/// DOP853: DifferentialEquations.jl's rule, and where `kinetics bench work-precision` finds it
+/// reaching the same error in less time.
+pub const VERNER_BELOW_RTOL: f64 = 1e-9;
+
 /// Which method to use.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Choice {
-    /// The exact solution when the body is torque-free, otherwise DOP853 at this tolerance.
+    /// The exact solution when the body is torque-free, otherwise DOP853 at this tolerance
+    /// (Verner's 9(8) pair below [`VERNER_BELOW_RTOL`]).
     Auto { rtol: f64 },
     /// The closed-form torque-free motion (an error when there is a torque).
     Exact,
@@ -143,6 +149,7 @@ pub fn simulate_choice<K: SampleSink<f64> + ?Sized>(
     let method = match *choice {
         Choice::Exact => None,
         Choice::Auto { .. } if matches!(problem.torque, Torque::None) => None,
+        Choice::Auto { rtol } if rtol < VERNER_BELOW_RTOL => Some(Method::vern9(rtol, rtol * 1e-3)),
         Choice::Auto { rtol } => Some(Method::dop853(rtol, rtol * 1e-3)),
         Choice::Integrate(m) => Some(m),
     };

@@ -13,8 +13,9 @@
 //! times; adding a method is one [`Method`] variant and one `Propagator`):
 //! * [`Method::Rk4`]: classical Runge–Kutta; between two sample times it takes equal steps
 //!   no longer than `step`, landing on each sample time.
-//! * [`Method::Dop853`]: adaptive Dormand–Prince 8(5,3); samples come from its dense output,
-//!   so the step sequence does not depend on the sampling.
+//! * [`Method::Dop853`], [`Method::Vern9`]: adaptive Dormand–Prince 8(5,3) and Verner 9(8);
+//!   samples come from their dense output, so the step sequence does not depend on the
+//!   sampling.
 //! * [`Method::Splitting`]: the structure-preserving Lie–Poisson splitting (torque-free, or a
 //!   moment that does not depend on `ω`: constant, or a function of time or attitude), second
 //!   or fourth order, equal steps like `Rk4`.
@@ -25,11 +26,15 @@ use super::sample_sink::{Sample, SampleSink};
 use super::state::{RigidBodyState, STATE_DIMENSION};
 use super::torque::Torque;
 use crate::numeric::error::NumericError;
+use crate::numeric::integrators::adaptive::{
+    Adaptive, AdaptiveSettings, EmbeddedPair, DEFAULT_MAX_STEPS,
+};
 use crate::numeric::integrators::compensated::CompensatedVector;
-use crate::numeric::integrators::dop853::{Dop853, Dop853Settings, DEFAULT_MAX_STEPS};
+use crate::numeric::integrators::dop853::DormandPrince853;
 use crate::numeric::integrators::ode::{constant, to_f64};
 use crate::numeric::integrators::rk4::rk4_step;
 use crate::numeric::integrators::splitting::{LiePoissonSplitting, SplittingOrder, SplittingState};
+use crate::numeric::integrators::vern9::Verner98;
 use nalgebra::{RealField, UnitQuaternion};
 
 /// Most steps (or samples) a simulation may be asked for.
@@ -61,6 +66,8 @@ pub enum Method<T> {
     Rk4 { step: T },
     /// Adaptive DOP853 with relative and absolute tolerances and a budget of steps.
     Dop853 { rtol: T, atol: T, max_steps: usize },
+    /// Adaptive Verner 9(8), the same settings as `Dop853`.
+    Vern9 { rtol: T, atol: T, max_steps: usize },
     /// Lie–Poisson splitting of the given order with steps of at most `step`.
     Splitting { step: T, order: SplittingOrder },
 }
@@ -69,6 +76,15 @@ impl<T> Method<T> {
     /// DOP853 with the default step budget [`DEFAULT_MAX_STEPS`].
     pub fn dop853(rtol: T, atol: T) -> Self {
         Method::Dop853 {
+            rtol,
+            atol,
+            max_steps: DEFAULT_MAX_STEPS,
+        }
+    }
+
+    /// Verner's 9(8) pair with the default step budget [`DEFAULT_MAX_STEPS`].
+    pub fn vern9(rtol: T, atol: T) -> Self {
+        Method::Vern9 {
             rtol,
             atol,
             max_steps: DEFAULT_MAX_STEPS,
@@ -395,27 +411,55 @@ fn propagator<'a, T: RealField + Copy>(
             rtol,
             atol,
             max_steps,
-        } => {
-            let settings = Dop853Settings {
+        } => adaptive_propagator::<DormandPrince853, T>(
+            problem,
+            initial,
+            end,
+            AdaptiveSettings {
                 rtol,
                 atol,
                 max_steps,
-            };
-            settings.validate()?;
-            let rhs = EulerRhs::new(problem.inertia, &problem.torque)?;
-            let y0 = initial.to_vector();
-            let integrator = if end > start {
-                Some(Dop853::new(&rhs, start, y0, end, settings)?)
-            } else {
-                None
-            };
-            Ok(Box::new(Dop853Propagator {
-                rhs,
-                integrator,
-                initial,
-            }))
-        }
+            },
+        ),
+        Method::Vern9 {
+            rtol,
+            atol,
+            max_steps,
+        } => adaptive_propagator::<Verner98, T>(
+            problem,
+            initial,
+            end,
+            AdaptiveSettings {
+                rtol,
+                atol,
+                max_steps,
+            },
+        ),
     }
+}
+
+/// The propagator of an adaptive pair `P` from `initial` up to `end`.
+fn adaptive_propagator<'a, P: EmbeddedPair + 'a, T: RealField + Copy>(
+    problem: &'a Problem<T>,
+    initial: RigidBodyState<T>,
+    end: T,
+    settings: AdaptiveSettings<T>,
+) -> Result<Box<dyn Propagator<T> + 'a>, NumericError> {
+    settings.validate()?;
+    let rhs = EulerRhs::new(problem.inertia, &problem.torque)?;
+    let (start, y0) = (problem.start_time, initial.to_vector());
+    let integrator = if end > start {
+        Some(Adaptive::<P, T, STATE_DIMENSION>::new(
+            &rhs, start, y0, end, settings,
+        )?)
+    } else {
+        None
+    };
+    Ok(Box::new(AdaptivePropagator {
+        rhs,
+        integrator,
+        initial,
+    }))
 }
 
 fn validate_fixed_step<T: RealField + Copy>(step: T, span: T) -> Result<(), NumericError> {
@@ -523,14 +567,14 @@ impl<T: RealField + Copy> FixedStep<T> for SplittingStepper<'_, T> {
     }
 }
 
-struct Dop853Propagator<'a, T: RealField + Copy> {
+struct AdaptivePropagator<'a, P: EmbeddedPair, T: RealField + Copy> {
     rhs: EulerRhs<'a, T>,
     /// `None` when the only sample is at the start.
-    integrator: Option<Dop853<T, STATE_DIMENSION>>,
+    integrator: Option<Adaptive<P, T, STATE_DIMENSION>>,
     initial: RigidBodyState<T>,
 }
 
-impl<T: RealField + Copy> Propagator<T> for Dop853Propagator<'_, T> {
+impl<P: EmbeddedPair, T: RealField + Copy> Propagator<T> for AdaptivePropagator<'_, P, T> {
     fn advance_to(&mut self, t: T) -> Result<RigidBodyState<T>, NumericError> {
         let Some(integrator) = &mut self.integrator else {
             return Ok(self.initial);

@@ -51,7 +51,7 @@ fn oscillating_couple() -> HarmonicMoment {
     }
 }
 
-/// The five bodies of the work-precision study.
+/// The six bodies of the work-precision study.
 pub fn cases() -> Vec<Case> {
     let free = |name, moments, omega0| Case {
         name,
@@ -75,6 +75,15 @@ pub fn cases() -> Vec<Case> {
             Vector3::new(1.0, 2.0, 3.0),
             Vector3::new(1e-3, 1.0, 1e-3),
         ),
+        // Near the separatrix but not so near that f64 cannot follow it for a thousand
+        // seconds: at ω₀ = (1e-3, 1, 1e-3) one rounding of ω_x (1e-19) moves ω(1000) by
+        // 3e-12, and the rounding of every evaluation of f leaves any f64 integrator near
+        // 1e-8 there; here it is 3e-14.
+        free(
+            "near-separatrix",
+            Vector3::new(1.0, 2.0, 3.0),
+            Vector3::new(1e-2, 1.0, 1e-2),
+        ),
         Case {
             name: "forced",
             moments: Vector3::new(1.0, 2.0, 3.0),
@@ -96,10 +105,16 @@ pub fn choices(forced: bool) -> Vec<(String, Choice)> {
     if !forced {
         out.push(("exact".to_string(), Choice::Exact));
     }
-    for rtol in [1e-6, 1e-8, 1e-10, 1e-12, 1e-13] {
+    for rtol in [1e-6, 1e-8, 1e-10, 1e-11, 1e-12, 1e-13] {
         out.push((
             format!("dop853 rtol={rtol:e}"),
             Choice::Integrate(Method::dop853(rtol, rtol * 1e-3)),
+        ));
+    }
+    for rtol in [1e-8, 1e-10, 1e-11, 1e-12, 1e-13] {
+        out.push((
+            format!("vern9 rtol={rtol:e}"),
+            Choice::Integrate(Method::vern9(rtol, rtol * 1e-3)),
         ));
     }
     for step in [0.1, 0.03, 0.01, 0.003] {
@@ -120,6 +135,24 @@ pub fn choices(forced: bool) -> Vec<(String, Choice)> {
         }
     }
     out
+}
+
+/// The fastest run of a method family (the word before its setting, `dop853`, `vern9`, …) on
+/// body `case` whose `|Δω|` and attitude errors are both at most `error`: the family's cost of
+/// that accuracy, for comparing families at equal error.
+pub fn fastest_within<'a>(
+    rows: &'a [Row],
+    case: &str,
+    family: &str,
+    error: f64,
+) -> Option<&'a Row> {
+    rows.iter()
+        .filter(|r| {
+            r.case == case
+                && r.method.split(' ').next() == Some(family)
+                && r.omega_error.max(r.attitude_error) <= error
+        })
+        .min_by(|a, b| a.seconds_per_run.total_cmp(&b.seconds_per_run))
 }
 
 /// One line of the table.

@@ -1,17 +1,16 @@
-//! One accepted step of DOP853 and the step-size controller (Hairer, Nørsett & Wanner,
-//! *Solving Ordinary Differential Equations I*, 2nd ed., sections II.4 and II.10):
+//! One accepted step of an adaptive pair and the step-size controller (Hairer, Nørsett &
+//! Wanner, *Solving Ordinary Differential Equations I*, 2nd ed., sections II.4 and II.10):
 //!
 //! ```text
-//! accept when err ≤ 1;   h_next = h / clamp(err^⅛ / 0.9, 1/6, 3)
+//! accept when err ≤ 1;   h_next = h / clamp(err^(1/p) / 0.9, 1/6, 3)     p the pair's order
 //! ```
 //!
 //! after a rejection the next step may not grow, and a rejected step is retried with
-//! `h / min(err^⅛ / 0.9, 3)` (the largest cut for a non-finite estimate). The last step ends
+//! `h / min(err^(1/p) / 0.9, 3)` (the largest cut for a non-finite estimate). The last step ends
 //! exactly at `t_end`; the derivative at the end of an accepted step is the first stage of
 //! the next (FSAL).
 
-use super::tableau::STAGES;
-use super::Dop853;
+use super::{Adaptive, EmbeddedPair};
 use crate::numeric::error::NumericError;
 use crate::numeric::integrators::compensated::Compensated;
 use crate::numeric::integrators::ode::{constant, to_f64, OdeSystem};
@@ -30,7 +29,7 @@ const HOPELESS_AFTER: usize = 100;
 const HOPELESS_MIN_STEPS: usize = 100;
 const HOPELESS_FACTOR: f64 = 1000.0;
 
-impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
+impl<P: EmbeddedPair, T: RealField + Copy, const N: usize> Adaptive<P, T, N> {
     /// Takes one accepted step, never past the end time; rejected attempts are retried
     /// with a smaller step.
     pub fn step<S: OdeSystem<T, N> + ?Sized>(&mut self, system: &S) -> Result<(), NumericError> {
@@ -43,7 +42,7 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
                 ),
             });
         }
-        self.dense = None;
+        self.dense.clear();
         self.stages[0] = self.derivative;
         let uround = T::default_epsilon();
         loop {
@@ -75,12 +74,14 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
             let last = self.step * constant(1.01) >= remaining;
             let h = if last { remaining } else { self.step };
             let (t, y) = (self.t(), *self.y());
-            self.evaluate_stages(system, 1..STAGES, t, &y, h);
-            let increment = self.stage_increment(STAGES, h);
+            self.evaluate_stages(system, 1..P::STAGES, t, &y, h);
+            let increment = self.stage_increment(P::STAGES, h);
             let mut y_new = self.y.plus(&increment);
-            let error = self.error_norm(&increment, y_new.value(), h);
-            // err^⅛ as three square roots, much cheaper than a power.
-            let error_root = error.sqrt().sqrt().sqrt();
+            let weights = y.zip_map(y_new.value(), |y, y_new| {
+                self.settings.atol + self.settings.rtol * y.abs().max(y_new.abs())
+            });
+            let error = P::error_norm(&self.stages, &increment, &weights, h);
+            let error_root = P::error_root(error);
             if error <= T::one() {
                 let ratio = (error_root / constant(SAFETY))
                     .max(constant(1.0 / MAX_RATIO))
@@ -98,7 +99,7 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
                 let derivative = system.derivative(t_new.value(), y_new.value());
                 self.statistics.evaluations += 1;
                 self.statistics.accepted_steps += 1;
-                self.stages[STAGES] = derivative;
+                self.stages[P::STAGES] = derivative;
                 self.t_old = self.t();
                 self.y_old = *self.y();
                 self.last_step = h;

@@ -1,11 +1,11 @@
-//! The starting step of DOP853: Hairer's `HINIT` (Hairer, Nørsett & Wanner, *Solving Ordinary
+//! The starting step of an adaptive integration: Hairer's `HINIT` (Hairer, Nørsett & Wanner, *Solving Ordinary
 //! Differential Equations I*, 2nd ed., section II.4), run in the problem's own time unit `τ`:
 //!
 //! ```text
 //! τ  = d₀/d₁,  d₀ = ‖y₀‖,  d₁ = ‖f₀‖     (1/d₁ if d₀ ≤ 1e-5; t_end − t₀ if not finite, > 0)
 //! h₀ = min(0.01 d₀/(d₁τ), (t_end − t₀)/τ)           (1e-6 for the first if d₀ or d₁τ ≤ 1e-5)
 //! d₂ = ‖f(t₀ + h₀τ, y₀ + h₀τ f₀) − f₀‖ / (h₀τ)
-//! h  = min(100 h₀, (0.01 / max(d₁τ, d₂τ²))^⅛, (t_end − t₀)/τ) · τ
+//! h  = min(100 h₀, (0.01 / max(d₁τ, d₂τ²))^(1/p), (t_end − t₀)/τ) · τ    p the pair's order
 //!                                     (max(1e-6, 1e-3 h₀) for the second if max ≤ 1e-15)
 //! ```
 //!
@@ -13,11 +13,11 @@
 //! without overflow or underflow.
 
 use super::scaled_norm::scaled_norm;
-use super::Dop853;
+use super::{Adaptive, EmbeddedPair};
 use crate::numeric::integrators::ode::{constant, OdeSystem};
 use nalgebra::{RealField, SVector};
 
-impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
+impl<P: EmbeddedPair, T: RealField + Copy, const N: usize> Adaptive<P, T, N> {
     /// Error-scaled norm `sqrt(Σ(vᵢ/sᵢ)²)` with weights `sᵢ = atol + rtol |yᵢ|`, computed
     /// without overflow or underflow (see [`scaled_norm`]): for a derivative the ratios are
     /// rates, `1/rtol` times the problem's frequency, and for a body spinning at 1e150 rad/s
@@ -82,7 +82,7 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
         let by_second = if scale <= constant(1e-15) {
             (h * constant(1e-3)).max(constant(1e-6))
         } else {
-            (constant::<T>(0.01) / scale).powf(constant(1.0 / 8.0))
+            (constant::<T>(0.01) / scale).powf(constant(1.0 / f64::from(P::ORDER)))
         };
         (h * constant(100.0)).min(by_second).min(max_step_in_unit) * unit
     }

@@ -8,16 +8,15 @@
 //! `bⱼ` is the eighth-order solution `y₁`, whose increment the step adds to `y` with its
 //! rounding carried ([`compensated`](crate::numeric::integrators::compensated)).
 
-use super::tableau::{A, C};
-use super::Dop853;
+use super::{Adaptive, EmbeddedPair};
 use crate::numeric::integrators::ode::{constant, OdeSystem};
 use nalgebra::{RealField, SVector};
 
-impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
+impl<P: EmbeddedPair, T: RealField + Copy, const N: usize> Adaptive<P, T, N> {
     /// `h Σⱼ aᵢⱼ kⱼ`, the increment of stage `i` of a step of size `h`.
     pub(super) fn stage_increment(&self, stage: usize, h: T) -> SVector<T, N> {
         let mut sum = SVector::<T, N>::zeros();
-        for &(j, a) in A[stage] {
+        for &(j, a) in P::A[stage] {
             sum += self.stages[j] * constant::<T>(a);
         }
         sum * h
@@ -35,7 +34,7 @@ impl<T: RealField + Copy, const N: usize> Dop853<T, N> {
         self.statistics.evaluations += range.len();
         for stage in range {
             let point = y + self.stage_increment(stage, h);
-            self.stages[stage] = system.derivative(t + constant::<T>(C[stage]) * h, &point);
+            self.stages[stage] = system.derivative(t + constant::<T>(P::C[stage]) * h, &point);
         }
     }
 }

@@ -1,4 +1,4 @@
-//! Tolerances and step budget of DOP853: the relative and absolute tolerances of the weights
+//! Tolerances and step budget of an adaptive integration: the relative and absolute tolerances of the weights
 //! `sᵢ = atol + rtol · max(|yᵢ|, |y₁ᵢ|)` the error estimate is measured in, and the most steps
 //! one integration may take. `rtol ≥ 10 ε` (a tighter tolerance is below the rounding of
 //! the step itself), `atol ≥ 0`.
@@ -14,9 +14,9 @@ use nalgebra::RealField;
 /// for 1 s took 7.5 million steps, 3.6 s); a looser `rtol` or a shorter interval is the way.
 pub const DEFAULT_MAX_STEPS: usize = 1_000_000;
 
-/// Tolerances and step budget of [`Dop853`](super::Dop853).
+/// Tolerances and step budget of an [`Adaptive`](super::Adaptive) integration.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Dop853Settings<T> {
+pub struct AdaptiveSettings<T> {
     /// Relative tolerance; at least 10 machine epsilons of the scalar.
     pub rtol: T,
     /// Absolute tolerance, non-negative.
@@ -25,7 +25,7 @@ pub struct Dop853Settings<T> {
     pub max_steps: usize,
 }
 
-impl<T: RealField + Copy> Dop853Settings<T> {
+impl<T: RealField + Copy> AdaptiveSettings<T> {
     /// Tolerances with the [`DEFAULT_MAX_STEPS`] budget.
     pub fn new(rtol: T, atol: T) -> Self {
         Self {

@@ -11,6 +11,7 @@ pub mod derivation;
 pub mod equations_of_motion;
 pub mod euler;
 pub mod eulerian_angles;
+mod exact_principal;
 pub mod fixed_axis;
 pub mod gyroscope;
 pub mod impulse_momentum;

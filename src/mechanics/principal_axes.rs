@@ -104,7 +104,7 @@ fn null_vector(matrix: &Matrix3<f64>) -> Option<Vector3<f64>> {
 }
 
 /// Two unit vectors `u, w` such that `(axis, u, w)` is a right-handed orthonormal triad.
-fn orthonormal_complement(axis: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
+pub(super) fn orthonormal_complement(axis: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
     let least_aligned = axis.iamin();
     let u = axis.cross(&Vector3::ith(least_aligned, 1.0)).normalize();
     let w = axis.cross(&u);

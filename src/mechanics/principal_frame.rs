@@ -22,6 +22,7 @@
 //! givens that need one. Equal moments are said so: every axis in their plane is principal.
 
 use super::derivation::{Derivation, Relation, Step};
+use super::exact_principal::{rational_frame, ExactMatrix};
 use super::inertia::InertiaTensor;
 use super::principal_axes::principal_axes;
 use super::validation::PhysicsError;
@@ -30,6 +31,7 @@ use crate::algebra::{
     four_significant_figures, vector, AlgebraError, Axis, Domains, Expr, Matrix, Symbol, Vector, Q,
 };
 use nalgebra::Matrix3;
+use num_rational::BigRational;
 use std::cmp::Ordering;
 
 /// Principal moments, ascending, and principal axes forming a right-handed orthonormal
@@ -60,9 +62,9 @@ impl From<AlgebraError> for PrincipalError {
     }
 }
 
-/// Relative difference below which two numeric moments are one (the rounding of the
-/// givens' values and of the solution is some 1e-16 of the largest moment).
-const EQUAL_MOMENTS: f64 = 1e-12;
+/// Two moments compared by their values (`compare`) are one when they differ by no more
+/// than this many roundings of the larger: each is a short expression in the givens' values.
+const COMPARED_ROUNDINGS: f64 = 64.0;
 
 /// The principal frame of `tensor` about `point` (`G`, `O`), with its steps. `values` gives
 /// the givens' values (SI) where the scene has them.
@@ -318,8 +320,8 @@ fn proper_third(
 }
 
 /// The order of two moments: proved from the domains (their difference's sign), else from
-/// the givens' values; equal when the difference is zero, or when the values differ by no
-/// more than rounding.
+/// the givens' values: exactly when the difference is rational in the decimals written,
+/// otherwise equal when the values differ by no more than rounding.
 fn compare(
     a: &Expr,
     b: &Expr,
@@ -345,8 +347,14 @@ fn compare(
     if !missing.is_empty() {
         return Err(PrincipalError::NeedsValues(sorted(missing)));
     }
+    // With the decimals written, a rational difference is decided exactly.
+    let decimal = |s: Symbol| values(s).and_then(exact);
+    if let Some(q) = difference.subs(&decimal)?.as_num() {
+        return Ok((Q::ZERO.cmp(q), Decided::ByValues));
+    }
     let (x, y) = (a.eval(values)?, b.eval(values)?);
-    let order = if (x - y).abs() <= EQUAL_MOMENTS * x.abs().max(y.abs()) {
+    let bound = COMPARED_ROUNDINGS * f64::EPSILON * x.abs().max(y.abs());
+    let order = if (x - y).abs() <= bound {
         Ordering::Equal
     } else {
         x.total_cmp(&y)
@@ -378,18 +386,69 @@ fn numeric_frame(
         .iter()
         .map(|e| e.eval(values))
         .collect::<Result<Vec<f64>, _>>()?;
-    let found =
-        principal_axes(&Matrix3::from_iterator(entries)).map_err(PrincipalError::Physics)?;
+    let entries = Matrix3::from_iterator(entries);
+    let found = principal_axes(&entries).map_err(PrincipalError::Physics)?;
     let number = |x: f64| exact(x).unwrap_or_else(Expr::zero);
-    let r = found.rotation.matrix();
     let m = found.moments;
-    let equal = [0, 1].map(|k| m[k + 1] - m[k] <= EQUAL_MOMENTS * m[2].abs());
+    let rational = exact_entries(&matrix, values)?;
+    let frame = rational.and_then(|exact| rational_frame(&exact, [m[0], m[1], m[2]]));
+    let (moments, axes, equal) = match frame {
+        Some(frame) => (frame.moments, frame.axes, frame.equal),
+        None => {
+            let r = found.rotation.matrix();
+            let bound = eigenvalue_rounding_bound(&matrix, &entries);
+            (
+                [m[0], m[1], m[2]],
+                [0, 1, 2].map(|k| r.column(k).into_owned()),
+                [0, 1].map(|k| m[k + 1] - m[k] <= bound),
+            )
+        }
+    };
     Ok(PrincipalFrame {
-        moments: [0, 1, 2].map(|k| number(m[k])),
-        axes: [0, 1, 2].map(|k| Vector::from_fn(|row, _| number(r[(row, k)]))),
+        moments: moments.map(number),
+        axes: axes.map(|e| Vector::from_fn(|row, _| number(e[row]))),
         remark: equal_remark(equal),
     })
 }
+
+/// The tensor's entries as exact rationals when the givens' values (the decimals written)
+/// make every entry one; `None` when an entry is irrational (a root, a function).
+fn exact_entries(
+    matrix: &Matrix,
+    values: &dyn Fn(Symbol) -> Option<f64>,
+) -> Result<Option<ExactMatrix>, PrincipalError> {
+    let decimal = |s: Symbol| values(s).and_then(exact);
+    let mut out: ExactMatrix = Default::default();
+    for row in 0..3 {
+        for column in 0..3 {
+            let entry = matrix[(row, column)].subs(&decimal)?;
+            let Some(q) = entry.as_num() else {
+                return Ok(None);
+            };
+            let (numerator, denominator) = q.parts();
+            out[row][column] = BigRational::new(numerator, denominator);
+        }
+    }
+    Ok(Some(out))
+}
+
+/// How far two computed moments of a tensor with irrational entries may be apart and still
+/// be one: Weyl's bound on the eigenvalues' change, the rounding of each entry's evaluation
+/// (about one rounding per operation written, of the entry's size) plus the eigenvalue
+/// computation's own (a few roundings of the tensor's norm, nalgebra's symmetric
+/// eigensolver being backward stable).
+fn eigenvalue_rounding_bound(matrix: &Matrix, entries: &Matrix3<f64>) -> f64 {
+    let evaluation: f64 = matrix
+        .iter()
+        .zip(entries.iter())
+        .map(|(e, x)| (e.node_count() as f64) * f64::EPSILON * x.abs())
+        .sum();
+    evaluation + EIGENSOLVER_ROUNDINGS * f64::EPSILON * entries.norm()
+}
+
+/// Roundings of the tensor's norm the symmetric eigensolver may make (three sweeps of Jacobi
+/// rotations on a 3 × 3 tensor, with room).
+const EIGENSOLVER_ROUNDINGS: f64 = 32.0;
 
 /// `I_1 = I_2`: the axes in the plane normal to `e_3` are all principal; and so on.
 fn equal_remark(equal: [bool; 2]) -> Option<String> {

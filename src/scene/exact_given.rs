@@ -23,6 +23,17 @@ impl Scene {
         let (factor, pi_power) = self.unit_system.exact_of_one(&written.unit)?;
         Some(Expr::num(&number * &factor) * Expr::pi().powi(pi_power))
     }
+
+    /// Whether `e` is zero: as an expression, or with every given's exact value in place, so
+    /// that a tie the values make (`I_x = I_y` for a box with `a = b`) is decided exactly,
+    /// however small the difference between values that are not equal.
+    pub fn is_exactly_zero(&self, e: &Expr) -> bool {
+        let exact = |s: Symbol| self.exact_given(s);
+        e.expand().is_ok_and(|x| x.is_zero())
+            || e.subs(&exact)
+                .and_then(|x| x.expand())
+                .is_ok_and(|x| x.is_zero())
+    }
 }
 
 #[cfg(test)]

@@ -76,6 +76,7 @@ mod polynomial_solve;
 mod principal_axes;
 mod principal_axes_acceptance;
 mod principal_scenes;
+mod principal_ties;
 mod print_parse_properties;
 mod python_package;
 mod quick_use;

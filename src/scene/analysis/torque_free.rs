@@ -33,8 +33,8 @@ impl Analyser<'_> {
         }
         let inertia = self.body(at)?.inertia.clone();
         let [i_x, i_y, i_z] = inertia.moments.clone();
-        let equal = (&i_x - &i_y).expand().is_ok_and(|d| d.is_zero());
-        if !equal || inertia.products.iter().any(|p| !p.is_zero()) {
+        let equal = scene.is_exactly_zero(&(&i_x - &i_y));
+        if !equal || inertia.products.iter().any(|p| !scene.is_exactly_zero(p)) {
             return Err(self.fail(
                 at,
                 "precession needs a body axisymmetric about z (I_x = I_y about G, no products of inertia), and this body is not",

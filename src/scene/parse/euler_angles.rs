@@ -211,13 +211,7 @@ impl Reader<'_> {
         let inertia = scene.inertia_of_body(about_o).map_err(algebra)?.0;
         let about = if about_o { "O" } else { "G" };
         let [i_x, i_y, _] = &inertia.moments;
-        let exact = |s: Symbol| scene.exact_given(s);
-        let is_zero = |e: &Expr| -> bool {
-            e.expand().is_ok_and(|x| x.is_zero())
-                || e.subs(&exact)
-                    .and_then(|x| x.expand())
-                    .is_ok_and(|x| x.is_zero())
-        };
+        let is_zero = |e: &Expr| scene.is_exactly_zero(e);
         let broken = if !is_zero(&(i_x - i_y)) {
             Some(format!("I_x ≠ I_y about {about}"))
         } else {

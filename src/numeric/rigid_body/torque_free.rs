@@ -39,8 +39,8 @@
 
 use crate::numeric::error::NumericError;
 use crate::numeric::rigid_body::elliptic::{
-    complete_first_kind, complete_third_kind, first_kind_from_sines, jacobi, third_kind_from_sines,
-    EllipticParameter,
+    complete_first_kind, complete_third_kind, first_kind_from_sines, half_period_sign,
+    third_kind_from_sines, EllipticParameter, JacobiFunctions,
 };
 use crate::numeric::rigid_body::inertia::validate_free_body;
 use crate::numeric::scalar::double_double::DoubleDouble as Dd;
@@ -139,7 +139,7 @@ struct EllipticMotion {
 enum Phase {
     /// m < 1: sn, cn, dn with half-period 2K and the reduced third-kind integral.
     Periodic {
-        parameter: EllipticParameter,
+        functions: Box<JacobiFunctions>,
         half_period: Dd,
         half_period_integral: Dd,
         integral0: Dd,
@@ -469,7 +469,7 @@ impl EllipticMotion {
             (
                 tau0,
                 Phase::Periodic {
-                    parameter,
+                    functions: Box::new(JacobiFunctions::new(&parameter)),
                     half_period,
                     half_period_integral,
                     integral0,
@@ -505,25 +505,24 @@ impl EllipticMotion {
         let a = &self.amplitude;
         match &self.phase {
             Phase::Periodic {
-                parameter,
+                functions,
                 half_period,
                 ..
             } => {
-                let half_periods = (tau / *half_period).round();
+                // τ = 2K·j + r: j from the leading parts (a double-double division costs a
+                // fifth of the point), r exact in double-double; an estimate one off at a
+                // boundary leaves |r| a rounding past K, which the functions take as well.
+                let half_periods = Dd::from_f64((tau.hi() / half_period.hi()).round());
                 let r = (tau - half_periods * *half_period).to_f64();
-                let f = jacobi(r, parameter);
+                let (sn, cn, dn) = functions.sn_cn_dn(r);
                 // sn and cn change sign over each half-period 2K, dn does not.
-                let parity = if half_periods.to_f64().rem_euclid(2.0) == 0.0 {
-                    1.0
-                } else {
-                    -1.0
-                };
+                let parity = half_period_sign(half_periods.hi());
                 PhasePoint {
-                    omega: Vector3::new(parity * a.x * f.cn, parity * a.y * f.sn, a.z * f.dn),
+                    omega: Vector3::new(parity * a.x * cn, parity * a.y * sn, a.z * dn),
                     half_periods,
-                    sn: f.sn,
-                    cn: f.cn,
-                    dn: f.dn,
+                    sn,
+                    cn,
+                    dn,
                 }
             }
             Phase::Separatrix { .. } => {

@@ -411,30 +411,24 @@ fn propagator<'a, T: RealField + Copy>(
             rtol,
             atol,
             max_steps,
-        } => adaptive_propagator::<DormandPrince853, T>(
-            problem,
-            initial,
-            end,
-            AdaptiveSettings {
-                rtol,
-                atol,
-                max_steps,
-            },
-        ),
-        Method::Vern9 {
+        }
+        | Method::Vern9 {
             rtol,
             atol,
             max_steps,
-        } => adaptive_propagator::<Verner98, T>(
-            problem,
-            initial,
-            end,
-            AdaptiveSettings {
+        } => {
+            let settings = AdaptiveSettings {
                 rtol,
                 atol,
                 max_steps,
-            },
-        ),
+            };
+            match method {
+                Method::Vern9 { .. } => {
+                    adaptive_propagator::<Verner98, T>(problem, initial, end, settings)
+                }
+                _ => adaptive_propagator::<DormandPrince853, T>(problem, initial, end, settings),
+            }
+        }
     }
 }
 

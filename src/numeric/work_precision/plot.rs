@@ -150,9 +150,21 @@ fn draw_chart(panel: &DrawingArea<SVGBackend, Shift>, chart: &Chart) -> Result<(
     legend.draw(&below, series)
 }
 
-/// The colour of the `k`-th series, in its line and in the legend.
+/// The colour of the `k`-th series, in its line and in the legend: Okabe and Ito's palette
+/// for readers with colour-vision deficiency, without its yellow (unreadable on white, where
+/// `Palette99`'s third colour put the vern9 line).
 fn colour(k: usize) -> RGBAColor {
-    Palette99::pick(k).to_rgba()
+    const OKABE_ITO: [(u8, u8, u8); 7] = [
+        (0x00, 0x72, 0xB2), // blue
+        (0xD5, 0x5E, 0x00), // vermillion
+        (0x00, 0x9E, 0x73), // bluish green
+        (0xCC, 0x79, 0xA7), // reddish purple
+        (0xE6, 0x9F, 0x00), // orange
+        (0x56, 0xB4, 0xE9), // sky blue
+        (0x00, 0x00, 0x00), // black
+    ];
+    let (r, g, b) = OKABE_ITO[k % OKABE_ITO.len()];
+    RGBColor(r, g, b).to_rgba()
 }
 
 /// The legend, under the chart's axes and outside its plotting area, so that it covers no

@@ -226,7 +226,7 @@ pub fn work_precision(prefix: &Path, rows: &[Row]) -> Result<(), String> {
     for case in cases {
         let mut series: Vec<Series> = Vec::new();
         for r in rows.iter().filter(|r| r.case == case) {
-            let family = r.method.split(' ').next().unwrap_or("method").to_string();
+            let family = r.family.to_string();
             let point = (r.seconds_per_run.log10(), r.omega_error.max(1e-17).log10());
             match series.iter_mut().find(|s| s.name == family) {
                 Some(s) => s.points.push(point),

@@ -139,7 +139,7 @@ struct EllipticMotion {
 enum Phase {
     /// m < 1: sn, cn, dn with half-period 2K and the reduced third-kind integral.
     Periodic {
-        functions: Box<JacobiFunctions>,
+        functions: JacobiFunctions,
         half_period: Dd,
         half_period_integral: Dd,
         integral0: Dd,
@@ -469,7 +469,7 @@ impl EllipticMotion {
             (
                 tau0,
                 Phase::Periodic {
-                    functions: Box::new(JacobiFunctions::new(&parameter)),
+                    functions: JacobiFunctions::new(&parameter),
                     half_period,
                     half_period_integral,
                     integral0,

@@ -99,45 +99,67 @@ pub fn cases() -> Vec<Case> {
     ]
 }
 
+/// One method at one setting: its family (`dop853`, `rk4`, …), its label in the table
+/// (the family and the setting, `dop853 rtol=1e-12`) and what runs.
+pub struct Setting {
+    pub family: &'static str,
+    pub label: String,
+    pub choice: Choice,
+}
+
 /// The methods and settings compared.
-pub fn choices(forced: bool) -> Vec<(String, Choice)> {
+pub fn choices(forced: bool) -> Vec<Setting> {
     let mut out = Vec::new();
-    if !forced {
-        out.push(("exact".to_string(), Choice::Exact));
-    }
+    let mut push = |family, setting: String, method| {
+        out.push(Setting {
+            family,
+            label: format!("{family} {setting}"),
+            choice: Choice::Integrate(method),
+        })
+    };
     for rtol in [1e-6, 1e-8, 1e-10, 1e-11, 1e-12, 1e-13] {
-        out.push((
-            format!("dop853 rtol={rtol:e}"),
-            Choice::Integrate(Method::dop853(rtol, rtol * 1e-3)),
-        ));
+        push(
+            "dop853",
+            format!("rtol={rtol:e}"),
+            Method::dop853(rtol, rtol * 1e-3),
+        );
     }
     for rtol in [1e-8, 1e-10, 1e-11, 1e-12, 1e-13] {
-        out.push((
-            format!("vern9 rtol={rtol:e}"),
-            Choice::Integrate(Method::vern9(rtol, rtol * 1e-3)),
-        ));
+        push(
+            "vern9",
+            format!("rtol={rtol:e}"),
+            Method::vern9(rtol, rtol * 1e-3),
+        );
     }
     for step in [0.1, 0.03, 0.01, 0.003] {
-        out.push((
-            format!("rk4 h={step}"),
-            Choice::Integrate(Method::Rk4 { step }),
-        ));
+        push("rk4", format!("h={step}"), Method::Rk4 { step });
     }
-    for (order, name, steps) in [
+    for (order, family, steps) in [
         (SplittingOrder::Second, "splitting2", [0.1, 0.01, 0.001]),
         (SplittingOrder::Fourth, "splitting4", [0.1, 0.03, 0.01]),
     ] {
         for step in steps {
-            out.push((
-                format!("{name} h={step}"),
-                Choice::Integrate(Method::Splitting { step, order }),
-            ));
+            push(
+                family,
+                format!("h={step}"),
+                Method::Splitting { step, order },
+            );
         }
+    }
+    if !forced {
+        out.insert(
+            0,
+            Setting {
+                family: "exact",
+                label: "exact".to_string(),
+                choice: Choice::Exact,
+            },
+        );
     }
     out
 }
 
-/// The fastest run of a method family (the word before its setting, `dop853`, `vern9`, …) on
+/// The fastest run of a method family (`dop853`, `vern9`, …) on
 /// body `case` whose `|Δω|` and attitude errors are both at most `error`: the family's cost of
 /// that accuracy, for comparing families at equal error.
 pub fn fastest_within<'a>(
@@ -148,9 +170,7 @@ pub fn fastest_within<'a>(
 ) -> Option<&'a Row> {
     rows.iter()
         .filter(|r| {
-            r.case == case
-                && r.method.split(' ').next() == Some(family)
-                && r.omega_error.max(r.attitude_error) <= error
+            r.case == case && r.family == family && r.omega_error.max(r.attitude_error) <= error
         })
         .min_by(|a, b| a.seconds_per_run.total_cmp(&b.seconds_per_run))
 }
@@ -159,6 +179,9 @@ pub fn fastest_within<'a>(
 #[derive(Debug, Clone)]
 pub struct Row {
     pub case: &'static str,
+    /// The method's family, as in [`Setting::family`].
+    pub family: &'static str,
+    /// The method and its setting, as in [`Setting::label`].
     pub method: String,
     pub seconds_per_run: f64,
     pub omega_error: f64,
@@ -245,13 +268,13 @@ pub fn study(
             Some((_, bodies)) => bodies.push(case.name),
             None => sources.push((source, vec![case.name])),
         }
-        for (method, choice) in choices(!matches!(case.load, Load::None)) {
-            progress(&format!("{} / {method}", case.name));
+        for setting in choices(!matches!(case.load, Load::None)) {
+            progress(&format!("{} / {}", case.name, setting.label));
             let started = Instant::now();
             let mut runs = 0u32;
             let mut states = Vec::new();
             while runs == 0 || started.elapsed() < budget {
-                states = run(&case, &choice, &times)?;
+                states = run(&case, &setting.choice, &times)?;
                 runs += 1;
             }
             let seconds_per_run = started.elapsed().as_secs_f64() / runs as f64;
@@ -267,7 +290,8 @@ pub fn study(
                 .fold(0.0, f64::max);
             rows.push(Row {
                 case: case.name,
-                method,
+                family: setting.family,
+                method: setting.label,
                 seconds_per_run,
                 omega_error,
                 attitude_error,

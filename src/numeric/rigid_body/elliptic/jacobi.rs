@@ -82,14 +82,21 @@ impl LandenChain {
     }
 }
 
-/// The Jacobi functions of one parameter, set up once: the quarter period `K`, and the theta
-/// series of the nome where it is small enough, else the Landen chain.
+/// The Jacobi functions of one parameter, set up once: the quarter period `K` and how the
+/// reduced argument is evaluated.
 #[derive(Debug, Clone)]
 pub struct JacobiFunctions {
     mc: f64,
-    chain: LandenChain,
     quarter_period: f64,
-    theta: Option<ThetaSeries>,
+    evaluation: Evaluation,
+}
+
+/// The theta series of the nome where it is small enough, else the Landen chain.
+#[derive(Debug, Clone)]
+enum Evaluation {
+    Theta(ThetaSeries),
+    /// Boxed: 32 levels of the mean, five times the series' size.
+    Landen(Box<LandenChain>),
 }
 
 impl JacobiFunctions {
@@ -99,17 +106,19 @@ impl JacobiFunctions {
         let chain = LandenChain::new(parameter);
         let quarter_period = chain.quarter_period();
         // K' = K(m'), from the mean of 1 and √m; q = exp(−πK'/K), 0 at m = 0.
-        let theta = EllipticParameter::from_complement(parameter.m())
+        let nome = EllipticParameter::from_complement(parameter.m())
             .ok()
             .map(|complementary| LandenChain::new(&complementary).quarter_period())
             .map(|k_prime| (-PI * k_prime / quarter_period).exp())
-            .filter(|q| mc > 0.0 && *q <= MAX_NOME)
-            .map(ThetaSeries::new);
+            .filter(|q| mc > 0.0 && *q <= MAX_NOME);
+        let evaluation = match nome {
+            Some(q) => Evaluation::Theta(ThetaSeries::new(q)),
+            None => Evaluation::Landen(Box::new(chain)),
+        };
         JacobiFunctions {
             mc,
-            chain,
             quarter_period,
-            theta,
+            evaluation,
         }
     }
 
@@ -145,8 +154,8 @@ impl JacobiFunctions {
         let r = u - 2.0 * k * j;
         let parity = half_period_sign(j);
         let (sign, v) = (r.signum(), r.abs().min(k));
-        let (sn, cn, dn) = match &self.theta {
-            Some(theta) => {
+        let (sn, cn, dn) = match &self.evaluation {
+            Evaluation::Theta(theta) => {
                 // z = πv/(2K) in [0, π/2], from the nearer end.
                 let (s, c) = if v <= k / 2.0 {
                     (FRAC_PI_2 * v / k).sin_cos()
@@ -156,12 +165,12 @@ impl JacobiFunctions {
                 };
                 theta.sn_cn_dn(s, c, self.mc)
             }
-            None if v <= k / 2.0 => {
-                let (sn, cn) = self.chain.sn_cn(v);
+            Evaluation::Landen(chain) if v <= k / 2.0 => {
+                let (sn, cn) = chain.sn_cn(v);
                 (sn, cn, (cn * cn + self.mc * sn * sn).sqrt())
             }
-            None => {
-                let (sn_w, cn_w) = self.chain.sn_cn(k - v);
+            Evaluation::Landen(chain) => {
+                let (sn_w, cn_w) = chain.sn_cn(k - v);
                 let dn_w = (cn_w * cn_w + self.mc * sn_w * sn_w).sqrt();
                 let root_mc = self.mc.sqrt();
                 (cn_w / dn_w, root_mc * sn_w / dn_w, root_mc / dn_w)

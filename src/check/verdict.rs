@@ -23,7 +23,7 @@ use crate::algebra::{Role, Symbol};
 use crate::mechanics::slip::Slip;
 use crate::parse::claim::{Claim, ClaimSide};
 use crate::parse::Diagnostic;
-use crate::parse::{parse_claim_with_units, Follows};
+use crate::parse::{ClaimSyntax, Follows};
 use crate::scene::named_unit::NamedUnit;
 use crate::scene::units::{dimension_with, Dimension};
 use crate::scene::units_in_math::{in_system, marker_dimension};
@@ -151,12 +151,13 @@ impl Report {
 /// quantity with a value in each solution of a scene's equations holds when it holds in
 /// one of them (the top's slow or fast precession), and says which.
 pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report, Diagnostic> {
-    let first = check_in_solution(context, source_name, text, 0)?;
+    let syntax = ClaimSyntax::parse(source_name, text)?;
+    let first = check_in_solution(context, &syntax, source_name, text, 0)?;
     if first.verdict == Verdict::Holds {
         return Ok(first);
     }
     for k in 1..first.solutions {
-        let report = check_in_solution(context, source_name, text, k)?;
+        let report = check_in_solution(context, &syntax, source_name, text, k)?;
         if report.verdict == Verdict::Holds {
             return Ok(report);
         }
@@ -167,11 +168,12 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
 /// [`check`] with each name in the solution `k` of the scene's equations.
 fn check_in_solution(
     context: &Context,
+    syntax: &ClaimSyntax,
     source_name: &str,
     text: &str,
     k: usize,
 ) -> Result<Report, Diagnostic> {
-    let (claim, wrote_unit) = read(context, source_name, text, k)?;
+    let (claim, wrote_unit) = read(context, syntax, k)?;
     let solutions = claim
         .resolved_names()
         .map(|n| context.solution_count(n))
@@ -214,7 +216,7 @@ fn check_in_solution(
         .collect();
     report.verdict = overall(&report.components);
     if report.verdict == Verdict::Differs {
-        report.slip = slip_reading(context, &claim, source_name, text, &report);
+        report.slip = slip_reading(context, &claim, syntax, source_name, text, &report);
     }
     Ok(report)
 }
@@ -223,8 +225,7 @@ fn check_in_solution(
 /// and whether it writes a unit (`1857 N`).
 fn read(
     context: &Context,
-    source_name: &str,
-    text: &str,
+    syntax: &ClaimSyntax,
     solution: usize,
 ) -> Result<(Claim, bool), Diagnostic> {
     let wrote_unit = std::cell::Cell::new(false);
@@ -234,7 +235,7 @@ fn read(
         unit
     };
     let resolve = |name: &str| context.name_in_solution(name, solution);
-    let claim = parse_claim_with_units(source_name, text, &resolve, Some(&unit))?;
+    let claim = syntax.read(&resolve, Some(&unit))?;
     Ok((claim, wrote_unit.get()))
 }
 
@@ -337,11 +338,12 @@ fn compared(
 /// only its reading is sought.
 fn holding_by_values(
     context: &Context,
+    syntax: &ClaimSyntax,
     source_name: &str,
     text: &str,
     solution: usize,
 ) -> Option<Vec<Compared>> {
-    let (claim, _) = read(context, source_name, text, solution).ok()?;
+    let (claim, _) = read(context, syntax, solution).ok()?;
     let compared = compared(context, &claim, source_name, text).ok()?;
     let seed = seed_of(text);
     let holds = compared.iter().all(|pair| match &pair.numbers {
@@ -359,6 +361,7 @@ fn holding_by_values(
 fn slip_reading(
     context: &Context,
     claim: &Claim,
+    syntax: &ClaimSyntax,
     source_name: &str,
     text: &str,
     report: &Report,
@@ -371,7 +374,7 @@ fn slip_reading(
             return None;
         }
         let slipped = context.slipped(slip)?;
-        let as_slipped = holding_by_values(slipped, source_name, text, report.solution)?;
+        let as_slipped = holding_by_values(slipped, syntax, source_name, text, report.solution)?;
         // A claim whose claimed side names what the slip changes, and whose every side the
         // slip makes zero (`Hdot_z = I_xz alpha - I_xy w^2` with the products of inertia
         // dropped), holds there vacuously: it is not explained (`B_y = 0` is).

@@ -184,10 +184,12 @@ fn checked(args: &Args) -> Result<ExitCode, CliError> {
     let domains = context.domains();
     let mut stdout = String::new();
     let mut stderr = String::new();
+    // Each claim's report is written in parallel too: for a class set the writing is a
+    // fifth of the work, and written in turn it halved what the second core could save.
     match args.format {
         super::show::Format::Json => {
             let claims: Vec<serde_json::Value> = claims
-                .iter()
+                .par_iter()
                 .zip(&outcomes)
                 .map(|(w, o)| match o {
                     Ok(r) => {
@@ -195,13 +197,14 @@ fn checked(args: &Args) -> Result<ExitCode, CliError> {
                         j["line"] = w.line.into();
                         j
                     }
-                    Err(d) => {
-                        stderr.push_str(&d.render());
-                        serde_json::json!({"line": w.line, "claim": w.text, "verdict": "error",
-                            "reading": null, "error": d.to_string(), "components": [], "odd_term": null})
-                    }
+                    Err(d) => serde_json::json!({"line": w.line, "claim": w.text,
+                        "verdict": "error", "reading": null, "error": d.to_string(),
+                        "components": [], "odd_term": null}),
                 })
                 .collect();
+            for d in outcomes.iter().filter_map(|o| o.as_ref().err()) {
+                stderr.push_str(&d.render());
+            }
             let summary = serde_json::json!({"holds": holds, "differs": differs,
                 "undecided": undecided, "errors": errors});
             stdout = serde_json::json!({"context": context.description, "claims": claims,
@@ -209,13 +212,19 @@ fn checked(args: &Args) -> Result<ExitCode, CliError> {
             .to_string();
         }
         format => {
-            for (w, o) in claims.iter().zip(&outcomes) {
-                match (o, format) {
-                    (Ok(r), super::show::Format::Latex) => {
-                        stdout.push_str(&report::latex(r, &w.label, domains))
-                    }
-                    (Ok(r), _) => stdout.push_str(&report::text(r, &w.label, domains)),
-                    (Err(d), _) => stderr.push_str(&d.render()),
+            let written: Vec<Result<String, String>> = claims
+                .par_iter()
+                .zip(&outcomes)
+                .map(|(w, o)| match (o, format) {
+                    (Ok(r), super::show::Format::Latex) => Ok(report::latex(r, &w.label, domains)),
+                    (Ok(r), _) => Ok(report::text(r, &w.label, domains)),
+                    (Err(d), _) => Err(d.render()),
+                })
+                .collect();
+            for text in written {
+                match text {
+                    Ok(report) => stdout.push_str(&report),
+                    Err(diagnostic) => stderr.push_str(&diagnostic),
                 }
             }
             let noun = if claims.len() == 1 { "claim" } else { "claims" };

@@ -96,32 +96,77 @@ pub fn parse_claim_with_units(
     resolve: &dyn Fn(&str) -> Name,
     units: Option<Units>,
 ) -> Result<Claim, Diagnostic> {
-    check_input(source_name, source)?;
-    let equals = the_equals_sign(source_name, source)?;
-    let parsed = parse_checked(Rule::claim_input, source_name, source)?;
-    let mut sides = parsed
-        .flat_map(Pair::into_inner)
-        .filter(|p| p.as_rule() == Rule::expr);
-    let (Some(lhs), Some(rhs)) = (sides.next(), sides.next()) else {
-        return Err(Diagnostic::at(
+    ClaimSyntax::parse(source_name, source)?.read(resolve, units)
+}
+
+/// A claim's text parsed, its names not yet given values: read once, then
+/// [`read`](ClaimSyntax::read) in each context the checker tries (a solution of the scene's
+/// equations, the context of a slip), where a name may stand for another value.
+#[derive(Clone)]
+pub struct ClaimSyntax<'s> {
+    source_name: &'s str,
+    source: &'s str,
+    lhs: WrittenSide,
+    rhs: WrittenSide,
+}
+
+/// One side's parse tree and the span of its text, blanks at the ends left out.
+#[derive(Clone)]
+struct WrittenSide {
+    node: Node,
+    span: Span,
+}
+
+impl<'s> ClaimSyntax<'s> {
+    /// Parses `lhs = rhs`: an error at the place of a missing, second or lonely `=`, or of
+    /// the syntax error.
+    pub fn parse(source_name: &'s str, source: &'s str) -> Result<Self, Diagnostic> {
+        check_input(source_name, source)?;
+        let equals = the_equals_sign(source_name, source)?;
+        let parsed = parse_checked(Rule::claim_input, source_name, source)?;
+        let mut sides = parsed
+            .flat_map(Pair::into_inner)
+            .filter(|p| p.as_rule() == Rule::expr)
+            .map(|expr| WrittenSide {
+                span: trimmed(source, (expr.as_span().start(), expr.as_span().end())),
+                node: to_ast(expr.into_inner(), source_name, source),
+            });
+        let (Some(lhs), Some(rhs)) = (sides.next(), sides.next()) else {
+            return Err(Diagnostic::at(
+                source_name,
+                source,
+                equals,
+                equals + 1,
+                "a claim is an equation: expected a side on each side of '='",
+            )
+            .with_help(EQUATION_HELP));
+        };
+        Ok(ClaimSyntax {
             source_name,
             source,
-            equals,
-            equals + 1,
-            "a claim is an equation: expected a side on each side of '='",
-        )
-        .with_help(EQUATION_HELP));
-    };
-    let mut lowering = Lowering {
-        source_name,
-        source,
-        names: Some(Names::new(resolve)),
-        units,
-    };
-    let lhs = side(&mut lowering, lhs)?;
-    let rhs = side(&mut lowering, rhs)?;
-    check_kinds(&lowering, &lhs, &rhs)?;
-    Ok(Claim { lhs, rhs })
+            lhs,
+            rhs,
+        })
+    }
+
+    /// The claim with each name as `resolve` gives it and a name after a number as `units`
+    /// gives it (see [`parse_claim`]).
+    pub fn read(
+        &self,
+        resolve: &dyn Fn(&str) -> Name,
+        units: Option<Units>,
+    ) -> Result<Claim, Diagnostic> {
+        let mut lowering = Lowering {
+            source_name: self.source_name,
+            source: self.source,
+            names: Some(Names::new(resolve)),
+            units,
+        };
+        let lhs = side(&mut lowering, self.lhs.clone())?;
+        let rhs = side(&mut lowering, self.rhs.clone())?;
+        check_kinds(&lowering, &lhs, &rhs)?;
+        Ok(Claim { lhs, rhs })
+    }
 }
 
 /// The place of the claim's one `=`: none, a second one, or an empty side is an error.
@@ -148,10 +193,9 @@ fn the_equals_sign(source_name: &str, source: &str) -> Result<usize, Diagnostic>
 
 /// One side: its value, its text's span, its top-level terms as written, and the derived
 /// names it uses.
-fn side(lowering: &mut Lowering, expr: Pair<Rule>) -> Result<ClaimSide, Diagnostic> {
+fn side(lowering: &mut Lowering, written: WrittenSide) -> Result<ClaimSide, Diagnostic> {
     let source = lowering.source;
-    let span = trimmed(source, (expr.as_span().start(), expr.as_span().end()));
-    let node = to_ast(expr.into_inner(), lowering.source_name, source);
+    let WrittenSide { node, span } = written;
     let written_sum = !node.is_parenthesised_list();
     let (value, terms) = match node.ast {
         Ast::Sum(items) if written_sum => {

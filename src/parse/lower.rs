@@ -26,6 +26,7 @@ pub(super) type Span = (usize, usize);
 /// The parse tree of one expression before it becomes an [`Expr`]. Sums, products and
 /// chains of cross products are flat lists, so a long chain `a + b + c + ...` is one node,
 /// not a deep tree.
+#[derive(Clone)]
 pub(super) enum Ast {
     Number(Q),
     Symbol(String),
@@ -44,6 +45,7 @@ pub(super) enum Ast {
 
 /// A node of the parse tree with the byte span of the text it was read from (a parenthesis
 /// included), so that an error of the algebra points at, and quotes, what the user wrote.
+#[derive(Clone)]
 pub(super) struct Node {
     pub(super) ast: Ast,
     pub(super) span: Span,

@@ -13,7 +13,7 @@ mod lower;
 mod names;
 mod units_after_numbers;
 
-pub use claim::{parse_claim, parse_claim_with_units};
+pub use claim::{parse_claim, parse_claim_with_units, ClaimSyntax};
 pub use diagnostic::Diagnostic;
 pub use expression::{
     parse_equation, parse_expression, parse_expression_with_units, parse_statement, Equation,

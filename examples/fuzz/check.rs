@@ -7,6 +7,7 @@
 
 use crate::target::{located, printed, Outcome};
 use kinetics::check::context::Context;
+use kinetics::check::forms::Forms;
 use kinetics::check::report;
 use kinetics::check::verdict::check;
 use kinetics::scene::parse_scene;
@@ -59,9 +60,9 @@ fn in_context(context: &Context, claim: &str) -> Outcome {
             return Err(located(&d, claim, false));
         }
     };
-    let domains = context.domains();
-    printed(&report::text(&report, LABEL, domains), claim)?;
-    printed(&report::latex(&report, LABEL, domains), claim)?;
-    printed(&report::json(&report, domains).to_string(), claim)?;
+    let forms = Forms::new(context.domains());
+    printed(&report::text(&report, LABEL, &forms), claim)?;
+    printed(&report::latex(&report, LABEL, &forms), claim)?;
+    printed(&report::json(&report, &forms).to_string(), claim)?;
     Ok(())
 }

@@ -6,6 +6,7 @@ pub mod context;
 pub mod derivation;
 pub mod diagnosis;
 pub mod dimension;
+pub mod forms;
 pub mod report;
 pub mod second_opinion;
 pub mod verdict;

@@ -1,20 +1,19 @@
 //! A check's report as a person reads it: text, LaTeX, or JSON.
 //!
 //! Each differing component shows the correct form beside the claimed one, both in the
-//! textbook's form ([`presented`]), the residual `claimed − correct`, the wrong, missing
+//! textbook's form ([`Forms`]), the residual `claimed − correct`, the wrong, missing
 //! and extra terms, and the reading of the slip when one fits.
 //!
-//! A report stays short and quick however large the claim: a form over [`PRESENTED_SIZE`]
-//! (or that would multiply out to over [`PRESENTED_TERMS`]) is shown in canonical order (simplifying it for reading would take longer than the
-//! check), and a list of wrong, missing or extra terms shows its first [`LISTED_TERMS`] and
-//! counts the rest (`(a+b+c+d)^21 = 1/T` has thousands, each over T's denominator).
+//! A report stays short and quick however large the claim: a large form is shown in
+//! canonical order ([`Forms`]), and a list of wrong, missing or extra terms shows its first
+//! [`LISTED_TERMS`] and counts the rest (`(a+b+c+d)^21 = 1/T` has thousands, each over T's denominator).
 
 use super::diagnosis::Diagnosis;
 use super::dimension::OddTerm;
+use super::forms::Forms;
 use super::verdict::{Component, Numbers, Piece, Report, Verdict};
 use crate::algebra::significant_figures;
-use crate::algebra::{Axis, Domains, Expr};
-use crate::mechanics::derivation::presented;
+use crate::algebra::{Axis, Expr};
 use crate::parse::parse_expression;
 use crate::print::{self, markup, Notation};
 use serde_json::{json, Value as Json};
@@ -39,26 +38,11 @@ fn axis_name(axis: Option<Axis>) -> &'static str {
     }
 }
 
-/// The largest form (in [`Expr::has_at_most_size`]'s measure) shown in the textbook's form.
-const PRESENTED_SIZE: usize = 2000;
-/// The most terms a form shown in the textbook's form may multiply out to (estimated
-/// first): simplifying cancels, which multiplies out numerator and denominator.
-const PRESENTED_TERMS: f64 = 2000.0;
 /// The most terms a list of wrong, missing or extra terms shows.
 const LISTED_TERMS: usize = 12;
 
-/// The form a report shows: the textbook's, or the canonical one past [`PRESENTED_SIZE`]
-/// or [`PRESENTED_TERMS`].
-fn readable(e: &Expr, domains: &Domains) -> Expr {
-    if e.has_at_most_size(PRESENTED_SIZE) && e.estimated_expanded_terms() <= PRESENTED_TERMS {
-        presented(e, domains)
-    } else {
-        e.clone()
-    }
-}
-
-fn shown(e: &Expr, axis: Option<Axis>, notation: Notation, domains: &Domains) -> String {
-    print::render(&readable(e, domains), notation, axis.unwrap_or(Axis::Z))
+fn shown(e: &Expr, axis: Option<Axis>, notation: Notation, forms: &Forms) -> String {
+    print::render(&forms.readable(e), notation, axis.unwrap_or(Axis::Z))
 }
 
 /// The terms a list shows, and how many more it has.
@@ -112,13 +96,8 @@ fn component_label(report: &Report, axis: Option<Axis>) -> String {
 
 /// What the slip changes in a component, in the givens' names and, for a claim in
 /// numbers, in value: `correct − claimed = -1/8*m*c*w^2 (-59.25 N)`.
-fn piece_text(
-    piece: &Piece,
-    c: Option<&Component>,
-    notation: Notation,
-    domains: &Domains,
-) -> String {
-    let form = shown(&piece.in_symbols, piece.axis, notation, domains);
+fn piece_text(piece: &Piece, c: Option<&Component>, notation: Notation, forms: &Forms) -> String {
+    let form = shown(&piece.in_symbols, piece.axis, notation, forms);
     let value = piece
         .value
         .zip(c.and_then(|c| c.numbers.as_ref()))
@@ -168,7 +147,7 @@ pub fn numbers_sentence(n: &Numbers) -> String {
 /// The claim's report in text: the verdict, where the claim was written and the claim, then
 /// for each component that does not hold the claimed and the correct forms, the residual and
 /// the diagnosis.
-pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
+pub fn text(report: &Report, label: &str, forms: &Forms) -> String {
     let mut out = format!("{} ({label}): {}\n", report.verdict.word(), report.claim);
     if let Some(odd) = &report.odd_term {
         out.push_str(&format!("  inhomogeneous: {}\n", odd_term_sentence(odd)));
@@ -183,12 +162,12 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
             // A claim that differs, decided in numbers: the correct value in the givens'
             // names first, where it has any (what the student derives), then the numbers.
             if !n.holds() && !c.correct_in_symbols.symbols().is_empty() {
-                let form = shown(&c.correct_in_symbols, c.axis, Notation::Text, domains);
+                let form = shown(&c.correct_in_symbols, c.axis, Notation::Text, forms);
                 out.push_str(&format!("  {}, correct: {form}\n", of(c)));
             }
             out.push_str(&format!("  {}: {}\n", of(c), numbers_sentence(n)));
             if let Some(d) = term_by_term(report, c) {
-                out.push_str(&diagnosis_text(d, c, domains));
+                out.push_str(&diagnosis_text(d, c, forms));
             }
         }
     }
@@ -200,20 +179,20 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
             out.push_str(&format!(
                 "    {}: {}\n",
                 component_label(report, piece.axis),
-                piece_text(piece, c, Notation::Text, domains)
+                piece_text(piece, c, Notation::Text, forms)
             ));
         }
     }
     for c in not_holding(report).filter(|c| c.numbers.is_none()) {
         let of = of(c);
-        let form = |e: &Expr| shown(e, c.axis, Notation::Text, domains);
+        let form = |e: &Expr| shown(e, c.axis, Notation::Text, forms);
         out.push_str(&format!("  {of}, as claimed: {}\n", form(&c.claimed)));
         out.push_str(&format!("  {of}, correct:    {}\n", form(&c.correct)));
         if let Some(why) = &c.undecided_because {
             out.push_str(&format!("  undecided: {why}\n"));
         }
         if let Some(d) = term_by_term(report, c) {
-            out.push_str(&diagnosis_text(d, c, domains));
+            out.push_str(&diagnosis_text(d, c, forms));
         }
     }
     out
@@ -222,10 +201,10 @@ pub fn text(report: &Report, label: &str, domains: &Domains) -> String {
 /// What each component that does not hold should read: `D_y, correct: -3*M/(16*c) - …`
 /// (in the givens' names, and in numbers for a claim written in them). In LaTeX
 /// (`notation`), the label in words and the form as `$…$`.
-pub fn correct_forms(report: &Report, notation: Notation, domains: &Domains) -> Vec<String> {
+pub fn correct_forms(report: &Report, notation: Notation, forms: &Forms) -> Vec<String> {
     not_holding(report)
         .map(|c| {
-            let form = shown(&c.correct_in_symbols, c.axis, notation, domains);
+            let form = shown(&c.correct_in_symbols, c.axis, notation, forms);
             let value = c
                 .numbers
                 .as_ref()
@@ -254,11 +233,11 @@ fn odd_term_sentence(odd: &OddTerm) -> String {
     }
 }
 
-fn terms_text(terms: &[Expr], c: &Component, domains: &Domains) -> String {
+fn terms_text(terms: &[Expr], c: &Component, forms: &Forms) -> String {
     let (terms, more) = listed(terms);
     let mut out = terms
         .iter()
-        .map(|t| shown(t, c.axis, Notation::Text, domains))
+        .map(|t| shown(t, c.axis, Notation::Text, forms))
         .collect::<Vec<_>>()
         .join(", ");
     if more > 0 {
@@ -267,13 +246,13 @@ fn terms_text(terms: &[Expr], c: &Component, domains: &Domains) -> String {
     out
 }
 
-fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
+fn diagnosis_text(d: &Diagnosis, c: &Component, forms: &Forms) -> String {
     let mut out = String::new();
     // In the givens' names: a claim decided in numbers is diagnosed in them.
     let residual = &c.claimed_in_symbols - &c.correct_in_symbols;
     out.push_str(&format!(
         "  residual (claimed - correct): {}\n",
-        shown(&residual, c.axis, Notation::Text, domains)
+        shown(&residual, c.axis, Notation::Text, forms)
     ));
     if let Some(r) = &d.reading {
         out.push_str(&format!(
@@ -286,8 +265,8 @@ fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
     for w in wrong {
         out.push_str(&format!(
             "  wrong term: {} (correct: {})\n",
-            shown(&w.claimed, c.axis, Notation::Text, domains),
-            shown(&w.correct, c.axis, Notation::Text, domains)
+            shown(&w.claimed, c.axis, Notation::Text, forms),
+            shown(&w.correct, c.axis, Notation::Text, forms)
         ));
     }
     if more > 0 {
@@ -296,11 +275,11 @@ fn diagnosis_text(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
     if !d.missing.is_empty() {
         out.push_str(&format!(
             "  missing: {}\n",
-            terms_text(&d.missing, c, domains)
+            terms_text(&d.missing, c, forms)
         ));
     }
     if !d.extra.is_empty() {
-        out.push_str(&format!("  extra: {}\n", terms_text(&d.extra, c, domains)));
+        out.push_str(&format!("  extra: {}\n", terms_text(&d.extra, c, forms)));
     }
     out
 }
@@ -323,7 +302,7 @@ fn side_latex(report: &Report) -> String {
 
 /// The claim's report in LaTeX: a paragraph with the verdict, and for each component that
 /// does not hold an `align*` of the claimed and the correct forms.
-pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
+pub fn latex(report: &Report, label: &str, forms: &Forms) -> String {
     let reading = report
         .reading()
         .map(|r| format!(" ({})", r.replace('-', " ")))
@@ -358,7 +337,7 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
             out.push_str(&format!(
                 "{}: {}.\n",
                 markup::latex_words(&component_label(report, piece.axis)),
-                piece_text(piece, c, Notation::Latex, domains)
+                piece_text(piece, c, Notation::Latex, forms)
             ));
         }
     }
@@ -370,7 +349,7 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
                 print::latex(&Expr::symbol(axis_name(c.axis)))
             ),
         };
-        let form = |e: &Expr| shown(e, c.axis, Notation::Latex, domains);
+        let form = |e: &Expr| shown(e, c.axis, Notation::Latex, forms);
         out.push_str("\\begin{align*}\n");
         out.push_str(&format!(
             "  {of} &= {} && \\text{{as claimed}} \\\\\n",
@@ -391,7 +370,7 @@ pub fn latex(report: &Report, label: &str, domains: &Domains) -> String {
             out.push_str(&format!("Undecided: {}.\n", markup::latex_words(why)));
         }
         if let Some(d) = term_by_term(report, c) {
-            out.push_str(&diagnosis_latex(d, c, domains));
+            out.push_str(&diagnosis_latex(d, c, forms));
         }
     }
     out
@@ -410,8 +389,8 @@ fn in_component(explanation: &str, c: &Component) -> String {
 }
 
 /// The reading's explanation, then the wrong, missing and extra terms, typeset.
-fn diagnosis_latex(d: &Diagnosis, c: &Component, domains: &Domains) -> String {
-    let math = |e: &Expr| format!("${}$", shown(e, c.axis, Notation::Latex, domains));
+fn diagnosis_latex(d: &Diagnosis, c: &Component, forms: &Forms) -> String {
+    let math = |e: &Expr| format!("${}$", shown(e, c.axis, Notation::Latex, forms));
     let list = |terms: &[Expr]| terms.iter().map(math).collect::<Vec<_>>().join(", ");
     let mut parts = Vec::new();
     if let Some(r) = &d.reading {
@@ -450,28 +429,28 @@ fn explanation_latex(explanation: &str) -> String {
 }
 
 /// The form in text and in LaTeX, simplified once for both.
-fn both(e: &Expr, axis: Option<Axis>, domains: &Domains) -> Json {
-    let (form, axis) = (readable(e, domains), axis.unwrap_or(Axis::Z));
+fn both(e: &Expr, axis: Option<Axis>, forms: &Forms) -> Json {
+    let (form, axis) = (forms.readable(e), axis.unwrap_or(Axis::Z));
     json!({
         "text": print::render(&form, Notation::Text, axis),
         "latex": print::render(&form, Notation::Latex, axis),
     })
 }
 
-fn diagnosis_json(d: &Diagnosis, axis: Option<Axis>, domains: &Domains) -> Json {
+fn diagnosis_json(d: &Diagnosis, axis: Option<Axis>, forms: &Forms) -> Json {
     let list = |terms: &[Expr]| -> Vec<Json> {
         listed(terms)
             .0
             .iter()
-            .map(|t| both(t, axis, domains))
+            .map(|t| both(t, axis, forms))
             .collect()
     };
     json!({
         "reading": d.reading.as_ref().map(|r| r.name),
         "explanation": d.reading.as_ref().map(|r| r.explanation.clone()),
         "wrong": listed(&d.wrong).0.iter().map(|w| json!({
-            "claimed": both(&w.claimed, axis, domains),
-            "correct": both(&w.correct, axis, domains),
+            "claimed": both(&w.claimed, axis, forms),
+            "correct": both(&w.correct, axis, forms),
         })).collect::<Vec<_>>(),
         "missing": list(&d.missing),
         "extra": list(&d.extra),
@@ -493,7 +472,7 @@ fn odd_term_json(odd: &OddTerm) -> Json {
 }
 
 /// The claim's report as a JSON object (its `line` and `error` added by the caller).
-pub fn json(report: &Report, domains: &Domains) -> Json {
+pub fn json(report: &Report, forms: &Forms) -> Json {
     json!({
         "claim": report.claim,
         "verdict": report.verdict.word(),
@@ -512,16 +491,16 @@ pub fn json(report: &Report, domains: &Domains) -> Json {
             "explanation_latex": markup::latex(slip.slip.concept()),
             "pieces": slip.pieces.iter().map(|piece| json!({
                 "axis": piece.axis.map(|a| ["x", "y", "z"][a as usize]),
-                "form": both(&piece.in_symbols, piece.axis, domains),
+                "form": both(&piece.in_symbols, piece.axis, forms),
                 "value": piece.value,
             })).collect::<Vec<_>>(),
         })),
         "components": report.components.iter().map(|c| json!({
             "axis": c.axis.map(|a| ["x", "y", "z"][a as usize]),
             "verdict": c.verdict.word(),
-            "claimed": both(&c.claimed, c.axis, domains),
-            "correct": both(&c.correct, c.axis, domains),
-            "residual": both(&(&c.claimed - &c.correct), c.axis, domains),
+            "claimed": both(&c.claimed, c.axis, forms),
+            "correct": both(&c.correct, c.axis, forms),
+            "residual": both(&(&c.claimed - &c.correct), c.axis, forms),
             "undecided_because": c.undecided_because,
             "numbers": c.numbers.as_ref().map(|n| json!({
                 "correct": n.correct,
@@ -531,7 +510,7 @@ pub fn json(report: &Report, domains: &Domains) -> Json {
                 "unit": n.unit.as_ref().map(ToString::to_string),
                 "sentence": numbers_sentence(n),
             })),
-            "diagnosis": c.diagnosis.as_ref().map(|d| diagnosis_json(d, c.axis, domains)),
+            "diagnosis": c.diagnosis.as_ref().map(|d| diagnosis_json(d, c.axis, forms)),
         })).collect::<Vec<_>>(),
     })
 }

@@ -9,6 +9,7 @@ use super::error::CliError;
 use super::input::read_file;
 use kinetics::algebra::work::Budget;
 use kinetics::check::context::{Context, DEFAULT_RELATIVE_TOLERANCE};
+use kinetics::check::forms::Forms;
 use kinetics::check::report;
 use kinetics::check::verdict::{check, Report, Verdict};
 use kinetics::parse::Diagnostic;
@@ -181,7 +182,7 @@ fn checked(args: &Args) -> Result<ExitCode, CliError> {
         count(Verdict::Undecided),
     );
     let errors = outcomes.iter().filter(|o| o.is_err()).count();
-    let domains = context.domains();
+    let forms = Forms::new(context.domains());
     let mut stdout = String::new();
     let mut stderr = String::new();
     // Each claim's report is written in parallel too: for a class set the writing is a
@@ -193,7 +194,7 @@ fn checked(args: &Args) -> Result<ExitCode, CliError> {
                 .zip(&outcomes)
                 .map(|(w, o)| match o {
                     Ok(r) => {
-                        let mut j = report::json(r, domains);
+                        let mut j = report::json(r, &forms);
                         j["line"] = w.line.into();
                         j
                     }
@@ -216,8 +217,8 @@ fn checked(args: &Args) -> Result<ExitCode, CliError> {
                 .par_iter()
                 .zip(&outcomes)
                 .map(|(w, o)| match (o, format) {
-                    (Ok(r), super::show::Format::Latex) => Ok(report::latex(r, &w.label, domains)),
-                    (Ok(r), _) => Ok(report::text(r, &w.label, domains)),
+                    (Ok(r), super::show::Format::Latex) => Ok(report::latex(r, &w.label, &forms)),
+                    (Ok(r), _) => Ok(report::text(r, &w.label, &forms)),
                     (Err(d), _) => Err(d.render()),
                 })
                 .collect();

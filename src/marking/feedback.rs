@@ -9,6 +9,7 @@ use super::{marks_text, Answer, Class};
 use crate::check::context::Context;
 use crate::check::derivation::report::{algebra_words, line_list};
 use crate::check::derivation::{Judgement, LineCheck};
+use crate::check::forms::Forms;
 use crate::check::report;
 
 /// The feedback page of student `k`.
@@ -189,7 +190,7 @@ fn marked_blocks(question: &Question, context: &Context, marked: &Marked) -> Vec
                 blocks.push(Block::Preformatted(report::text(
                     r,
                     &format!("line {}", c.line.number),
-                    context.domains(),
+                    &Forms::new(context.domains()),
                 )));
                 if let Some(words) = r.reading().and_then(|name| question.feedback.get(name)) {
                     blocks.push(Block::Quote(format!("Your instructor: {words}")));

@@ -212,7 +212,8 @@ fn a_claim_in_names_missing_a_small_term_differs() {
     // 61.5 J is 0.502 % from 61.810 J: said with the figures that tell it from 0.5 %.
     let near = check(&c, "test", "T = 61.5").unwrap_or_else(|d| panic!("{}", d.render()));
     assert_eq!(near.verdict, Verdict::Differs);
-    let report = kinetics::check::report::text(&near, "claim", c.domains());
+    let forms = kinetics::check::forms::Forms::new(c.domains());
+    let report = kinetics::check::report::text(&near, "claim", &forms);
     assert!(
         report.contains("61.5 J is 0.502 % from the exact 61.81 J; the tolerance is 0.5 %"),
         "{report}"

@@ -4,6 +4,7 @@
 
 use super::{first_slip, Judgement, LineCheck};
 use crate::algebra::Domains;
+use crate::check::forms::Forms;
 use crate::check::report;
 use crate::print::{markup, Notation};
 use serde_json::{json, Value as Json};
@@ -20,6 +21,7 @@ pub fn line_list(lines: &[usize]) -> String {
 
 /// The part's report in text.
 pub fn text(checked: &[LineCheck], source_name: &str, domains: &Domains) -> String {
+    let forms = Forms::new(domains);
     let mut out = String::new();
     for c in checked {
         let label = format!("{source_name}:{}", c.line.number);
@@ -34,12 +36,12 @@ pub fn text(checked: &[LineCheck], source_name: &str, domains: &Domains) -> Stri
                 out.push_str(&format!(
                     "  right from {from}, which differs: it carries that slip, and is otherwise correct\n"
                 ));
-                for form in report::correct_forms(r, Notation::Text, domains) {
+                for form in report::correct_forms(r, Notation::Text, &forms) {
                     out.push_str(&format!("  {form}\n"));
                 }
             }
             (Ok(r), _) => {
-                let text = report::text(r, &label, domains);
+                let text = report::text(r, &label, &forms);
                 let (head, rest) = text.split_once('\n').unwrap_or((&text, ""));
                 out.push_str(head);
                 out.push('\n');
@@ -58,6 +60,7 @@ pub fn text(checked: &[LineCheck], source_name: &str, domains: &Domains) -> Stri
 /// The part's report in LaTeX: a paragraph a line (a carried line says which line it
 /// follows from and gives the correct form), then the summary as a comment.
 pub fn latex(checked: &[LineCheck], source_name: &str, domains: &Domains) -> String {
+    let forms = Forms::new(domains);
     let mut out = String::new();
     for c in checked {
         let label = format!("{source_name}:{}", c.line.number);
@@ -75,12 +78,12 @@ pub fn latex(checked: &[LineCheck], source_name: &str, domains: &Domains) -> Str
                 out.push_str(&format!(
                     "\\paragraph{{{label_tex} follows from {from}.}} \\texttt{{{text_tex}}}\nRight from {from}, which differs: it carries that slip, and is otherwise correct.\n"
                 ));
-                for form in report::correct_forms(r, Notation::Latex, domains) {
+                for form in report::correct_forms(r, Notation::Latex, &forms) {
                     out.push_str(&format!("{form}.\n"));
                 }
             }
             (Ok(r), _) => {
-                out.push_str(&report::latex(r, &label, domains));
+                out.push_str(&report::latex(r, &label, &forms));
                 if let Some(words) = algebra_words(c) {
                     out.push_str(&format!("{}.\n", markup::latex_words(&words)));
                 }
@@ -162,11 +165,12 @@ pub fn summary(checked: &[LineCheck]) -> String {
 
 /// The part's report as JSON: each line's check and what it follows from, and the first slip.
 pub fn json(checked: &[LineCheck], domains: &Domains) -> Json {
+    let forms = Forms::new(domains);
     let lines: Vec<Json> = checked
         .iter()
         .map(|c| {
             let mut j = match &c.outcome {
-                Ok(r) => report::json(r, domains),
+                Ok(r) => report::json(r, &forms),
                 Err(d) => {
                     json!({"claim": c.line.text, "reading": Json::Null, "error": d.to_string()})
                 }

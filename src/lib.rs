@@ -123,6 +123,7 @@ pub use check::derivation::{
     check_derivation, first_slip, parts as derivation_parts, DerivationCheck, Judgement, Line,
     LineCheck,
 };
+pub use check::forms::Forms;
 pub use check::report::{
     latex as claim_report_latex, numbers_sentence as claim_numbers_sentence,
     text as claim_report_text,

@@ -6,7 +6,7 @@ use crate::error::{refused, scene_error};
 use crate::expression::tree;
 use kinetics::{
     check_claim, claim_numbers_sentence, claim_report_latex, claim_report_text, markup_html,
-    parse_scene, render_expr, Axis, Context, Diagnostic, Input, Notation,
+    parse_scene, render_expr, Axis, Context, Diagnostic, Forms, Input, Notation,
     DEFAULT_RELATIVE_TOLERANCE,
 };
 use pyo3::prelude::*;
@@ -36,6 +36,7 @@ pub fn check<'py>(
         .detach(|| Input::expression(label, claim).within(|| check_claim(&context, label, claim)))
         .map_err(|d| scene_error(&d))?;
     let domains = context.domains();
+    let forms = Forms::new(domains);
     let d = PyDict::new(py);
     d.set_item("claim", &report.claim)?;
     d.set_item("verdict", report.verdict.word())?;
@@ -53,11 +54,11 @@ pub fn check<'py>(
     d.set_item("claimed_side", &report.claimed_side)?;
     d.set_item(
         "report",
-        claim_report_text(&report, label, domains).trim_end(),
+        claim_report_text(&report, label, &forms).trim_end(),
     )?;
     d.set_item(
         "report_latex",
-        claim_report_latex(&report, label, domains).trim_end(),
+        claim_report_latex(&report, label, &forms).trim_end(),
     )?;
     let components = PyList::empty(py);
     for c in &report.components {

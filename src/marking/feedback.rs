@@ -6,16 +6,16 @@ use super::answer::{Marked, Standing, Step};
 use super::document::{Block, Document, Inline};
 use super::scheme::{Question, Scheme};
 use super::{marks_text, Answer, Class};
-use crate::check::context::Context;
 use crate::check::derivation::report::{algebra_words, line_list};
 use crate::check::derivation::{Judgement, LineCheck};
 use crate::check::forms::Forms;
 use crate::check::report;
 
-/// The feedback page of student `k`.
+/// The feedback page of student `k`; `forms` are those of each question's context, shared
+/// by the whole class (its students' wrong lines meet the same correct forms).
 pub fn feedback(
     scheme: &Scheme,
-    contexts: &[Context],
+    forms: &[Forms],
     class: &Class,
     k: usize,
     submissions_name: &str,
@@ -60,7 +60,7 @@ pub fn feedback(
                     "Your answer (line {line} of {submissions_name}):"
                 ))]));
                 blocks.push(Block::Preformatted(text.clone()));
-                blocks.extend(marked_blocks(question, &contexts[q], marked));
+                blocks.extend(marked_blocks(question, &forms[q], marked));
             }
         }
     }
@@ -140,7 +140,7 @@ fn step_words(question: &Question, marked: &Marked, step: &Step) -> String {
 }
 
 /// The blocks of a marked answer: its lines, its steps, and each wrong line's report.
-fn marked_blocks(question: &Question, context: &Context, marked: &Marked) -> Vec<Block> {
+fn marked_blocks(question: &Question, forms: &Forms, marked: &Marked) -> Vec<Block> {
     let mut blocks = Vec::new();
     let rows = marked
         .lines
@@ -190,7 +190,7 @@ fn marked_blocks(question: &Question, context: &Context, marked: &Marked) -> Vec
                 blocks.push(Block::Preformatted(report::text(
                     r,
                     &format!("line {}", c.line.number),
-                    &Forms::new(context.domains()),
+                    forms,
                 )));
                 if let Some(words) = r.reading().and_then(|name| question.feedback.get(name)) {
                     blocks.push(Block::Quote(format!("Your instructor: {words}")));

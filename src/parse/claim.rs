@@ -149,6 +149,16 @@ impl<'s> ClaimSyntax<'s> {
         })
     }
 
+    /// The name of the claim's source, for its errors.
+    pub fn source_name(&self) -> &'s str {
+        self.source_name
+    }
+
+    /// The claim's text as written.
+    pub fn text(&self) -> &'s str {
+        self.source
+    }
+
     /// The claim with each name as `resolve` gives it and a name after a number as `units`
     /// gives it (see [`parse_claim`]).
     pub fn read(

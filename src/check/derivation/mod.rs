@@ -13,8 +13,8 @@ pub mod report;
 mod world;
 
 use super::context::Context;
-use super::verdict::{check, Report, Verdict};
-use crate::parse::{parse_claim_with_units, Diagnostic, Follows};
+use super::verdict::{check_parsed, Report, Verdict};
+use crate::parse::{ClaimSyntax, Diagnostic, Follows};
 pub use world::Given;
 use world::World;
 
@@ -126,9 +126,12 @@ pub fn check_derivation(
         let mut part: Vec<LineCheck> = Vec::with_capacity(lines.len());
         for line in lines {
             let earlier: Vec<&LineCheck> = checked.iter().flatten().chain(&part).collect();
-            let c = check_line(context, &world, &earlier, source_name, line);
-            if c.outcome.is_ok() {
-                world.take(line.number, source_name, &line.text, &c.follows_from);
+            // Parsed once, the line is read in the mechanics, in the world of the earlier
+            // lines and for what it gives the world.
+            let syntax = ClaimSyntax::parse(source_name, &line.text);
+            let c = check_line(context, &world, &earlier, line, syntax.as_ref());
+            if let (Ok(syntax), true) = (&syntax, c.outcome.is_ok()) {
+                world.take(line.number, syntax, &c.follows_from);
             }
             part.push(c);
         }
@@ -145,25 +148,29 @@ fn check_line(
     context: &Context,
     world: &World,
     earlier: &[&LineCheck],
-    source_name: &str,
     line: &Line,
+    syntax: Result<&ClaimSyntax, &Diagnostic>,
 ) -> LineCheck {
-    let outcome = check(context, source_name, &line.text).map_err(|mut d| {
-        d.line = line.number;
-        Box::new(d)
-    });
+    let outcome = syntax
+        .map_err(Diagnostic::clone)
+        .and_then(|syntax| check_parsed(context, syntax))
+        .map_err(|mut d| {
+            d.line = line.number;
+            Box::new(d)
+        });
     let mut c = LineCheck {
         line: line.clone(),
         outcome,
         follows_from: Vec::new(),
         does_not_follow: Vec::new(),
     };
-    if c.outcome
+    let differs = c
+        .outcome
         .as_ref()
-        .is_ok_and(|r| r.verdict == Verdict::Differs)
-    {
-        let names = names_written(context, source_name, &line.text);
-        c.follows_from = carried(context, world, earlier, source_name, &line.text, &names);
+        .is_ok_and(|r| r.verdict == Verdict::Differs);
+    if let (Ok(syntax), true) = (syntax, differs) {
+        let names = names_written(context, syntax);
+        c.follows_from = carried(context, world, earlier, syntax, &names);
         if c.follows_from.is_empty() && !names.is_empty() && world.all_met(&names) {
             c.does_not_follow = world.lines_under(names.iter()).into_iter().collect();
         }
@@ -177,8 +184,7 @@ fn carried(
     context: &Context,
     world: &World,
     earlier: &[&LineCheck],
-    source_name: &str,
-    text: &str,
+    syntax: &ClaimSyntax,
     names: &[String],
 ) -> Vec<usize> {
     let values = world.values();
@@ -199,17 +205,17 @@ fn carried(
         return Vec::new();
     }
     let in_world = context.with_names(&values);
-    match check(&in_world, source_name, text) {
+    match check_parsed(&in_world, syntax) {
         Ok(r) if r.verdict == Verdict::Holds => under,
         _ => Vec::new(),
     }
 }
 
-/// The derived names `text` writes.
-fn names_written(context: &Context, source_name: &str, text: &str) -> Vec<String> {
+/// The derived names the line writes.
+fn names_written(context: &Context, syntax: &ClaimSyntax) -> Vec<String> {
     let resolve = |name: &str| context.name(name);
     let unit = |name: &str, follows: Follows| context.unit(name, follows);
-    match parse_claim_with_units(source_name, text, &resolve, Some(&unit)) {
+    match syntax.read(&resolve, Some(&unit)) {
         Ok(claim) => claim.resolved_names().cloned().collect(),
         Err(_) => Vec::new(),
     }

@@ -20,7 +20,7 @@ use crate::algebra::{AlgebraError, Expr, Symbol};
 use crate::check::context::Context;
 use crate::check::verdict::{is_zero, plain_value, value_and_scale};
 use crate::parse::claim::{Claim, Name};
-use crate::parse::{parse_claim_with_units, Follows};
+use crate::parse::{ClaimSyntax, Follows};
 use crate::scene::units_in_math::in_system;
 use std::collections::{BTreeSet, HashMap, HashSet};
 
@@ -94,8 +94,8 @@ impl<'c> World<'c> {
     /// value into the world. A line that cannot be read, fixes nothing new (every unknown it
     /// holds is fixed) or is not linear in any of its unknowns leaves the world as it was.
     /// `carried`: the earlier lines whose slip the line carries, which what it fixes rests on.
-    pub fn take(&mut self, line: usize, source_name: &str, text: &str, carried: &[usize]) {
-        let Some((claim, written)) = self.read(source_name, text) else {
+    pub fn take(&mut self, line: usize, syntax: &ClaimSyntax, carried: &[usize]) {
+        let Some((claim, written)) = self.read(syntax) else {
             return;
         };
         let residual = &claim.lhs.value - &claim.rhs.value;
@@ -121,7 +121,7 @@ impl<'c> World<'c> {
 
     /// The claim read with each derived scalar as its unknown, in the context's units, and
     /// the unknowns in the order written (left side first).
-    fn read(&mut self, source_name: &str, text: &str) -> Option<(Claim, Vec<Symbol>)> {
+    fn read(&mut self, syntax: &ClaimSyntax) -> Option<(Claim, Vec<Symbol>)> {
         let context = self.context;
         let met = std::cell::RefCell::new(Vec::new());
         let resolve = |name: &str| match context.derived_scalar(name) {
@@ -132,7 +132,7 @@ impl<'c> World<'c> {
             None => context.name(name),
         };
         let unit = |name: &str, follows: Follows| context.unit(name, follows);
-        let claim = parse_claim_with_units(source_name, text, &resolve, Some(&unit)).ok()?;
+        let claim = syntax.read(&resolve, Some(&unit)).ok()?;
         let written: Vec<Symbol> = met
             .into_inner()
             .into_iter()

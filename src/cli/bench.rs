@@ -3,6 +3,7 @@
 //! `plot` feature) plots.
 
 use super::error::CliError;
+use kinetics::numeric::work_precision::equal_error::time_at;
 use kinetics::numeric::work_precision::study::{cases, fastest_within, study};
 use std::time::Duration;
 
@@ -74,6 +75,28 @@ pub fn run(bench: Bench) -> Result<String, CliError> {
                 dop853.seconds_per_run / vern9.seconds_per_run
             ),
             _ => format!("{:<18} not reached by both\n", case.name),
+        });
+    }
+    out.push_str(&format!(
+        "\nvern9 against dop853 at equal error {EQUAL_ERROR:e}, each one's time read off its \
+         line between the settings that bracket it (log-log):\n"
+    ));
+    for case in cases() {
+        let at_equal_error = |family: &str| {
+            let points: Vec<(f64, f64)> = rows
+                .iter()
+                .filter(|r| r.case == case.name && r.family == family)
+                .map(|r| (r.omega_error.max(r.attitude_error), r.seconds_per_run))
+                .collect();
+            time_at(&points, EQUAL_ERROR)
+        };
+        out.push_str(&match (at_equal_error("dop853"), at_equal_error("vern9")) {
+            (Some(dop853), Some(vern9)) => format!(
+                "{:<18} dop853 {dop853:.3e} s, vern9 {vern9:.3e} s: vern9 {:.2}× as fast\n",
+                case.name,
+                dop853 / vern9
+            ),
+            _ => format!("{:<18} not bracketed by both\n", case.name),
         });
     }
     out.push_str(&format!("\nt from 0 to {} s, 100 samples; ", args.until));

@@ -4,5 +4,6 @@
 //! - `plot.rs`: SVG line charts (also the simulation's ω(t)); feature `plot`
 
 #[cfg(feature = "plot")]
+pub mod equal_error;
 pub mod plot;
 pub mod study;

@@ -157,13 +157,12 @@ pub fn check(context: &Context, source_name: &str, text: &str) -> Result<Report,
 /// [`check`] of a claim already parsed (a derivation's line, checked again in the world of
 /// the earlier lines, is parsed once).
 pub fn check_parsed(context: &Context, syntax: &ClaimSyntax) -> Result<Report, Diagnostic> {
-    let (source_name, text) = (syntax.source_name(), syntax.text());
-    let first = check_in_solution(context, syntax, source_name, text, 0)?;
+    let first = check_in_solution(context, syntax, 0)?;
     if first.verdict == Verdict::Holds {
         return Ok(first);
     }
     for k in 1..first.solutions {
-        let report = check_in_solution(context, syntax, source_name, text, k)?;
+        let report = check_in_solution(context, syntax, k)?;
         if report.verdict == Verdict::Holds {
             return Ok(report);
         }
@@ -175,10 +174,9 @@ pub fn check_parsed(context: &Context, syntax: &ClaimSyntax) -> Result<Report, D
 fn check_in_solution(
     context: &Context,
     syntax: &ClaimSyntax,
-    source_name: &str,
-    text: &str,
     k: usize,
 ) -> Result<Report, Diagnostic> {
+    let (source_name, text) = (syntax.source_name(), syntax.text());
     let (claim, wrote_unit) = read(context, syntax, k)?;
     let solutions = claim
         .resolved_names()
@@ -222,7 +220,7 @@ fn check_in_solution(
         .collect();
     report.verdict = overall(&report.components);
     if report.verdict == Verdict::Differs {
-        report.slip = slip_reading(context, &claim, syntax, source_name, text, &report);
+        report.slip = slip_reading(context, &claim, syntax, &report);
     }
     Ok(report)
 }
@@ -345,10 +343,9 @@ fn compared(
 fn holding_by_values(
     context: &Context,
     syntax: &ClaimSyntax,
-    source_name: &str,
-    text: &str,
     solution: usize,
 ) -> Option<Vec<Compared>> {
+    let (source_name, text) = (syntax.source_name(), syntax.text());
     let (claim, _) = read(context, syntax, solution).ok()?;
     let compared = compared(context, &claim, source_name, text).ok()?;
     let seed = seed_of(text);
@@ -368,8 +365,6 @@ fn slip_reading(
     context: &Context,
     claim: &Claim,
     syntax: &ClaimSyntax,
-    source_name: &str,
-    text: &str,
     report: &Report,
 ) -> Option<SlipReading> {
     Slip::ALL.into_iter().find_map(|slip| {
@@ -380,7 +375,7 @@ fn slip_reading(
             return None;
         }
         let slipped = context.slipped(slip)?;
-        let as_slipped = holding_by_values(slipped, syntax, source_name, text, report.solution)?;
+        let as_slipped = holding_by_values(slipped, syntax, report.solution)?;
         // A claim whose claimed side names what the slip changes, and whose every side the
         // slip makes zero (`Hdot_z = I_xz alpha - I_xy w^2` with the products of inertia
         // dropped), holds there vacuously: it is not explained (`B_y = 0` is).

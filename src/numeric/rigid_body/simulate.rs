@@ -411,24 +411,30 @@ fn propagator<'a, T: RealField + Copy>(
             rtol,
             atol,
             max_steps,
-        }
-        | Method::Vern9 {
-            rtol,
-            atol,
-            max_steps,
-        } => {
-            let settings = AdaptiveSettings {
+        } => adaptive_propagator::<DormandPrince853, T>(
+            problem,
+            initial,
+            end,
+            AdaptiveSettings {
                 rtol,
                 atol,
                 max_steps,
-            };
-            match method {
-                Method::Vern9 { .. } => {
-                    adaptive_propagator::<Verner98, T>(problem, initial, end, settings)
-                }
-                _ => adaptive_propagator::<DormandPrince853, T>(problem, initial, end, settings),
-            }
-        }
+            },
+        ),
+        Method::Vern9 {
+            rtol,
+            atol,
+            max_steps,
+        } => adaptive_propagator::<Verner98, T>(
+            problem,
+            initial,
+            end,
+            AdaptiveSettings {
+                rtol,
+                atol,
+                max_steps,
+            },
+        ),
     }
 }
 

@@ -110,6 +110,13 @@ pub struct Setting {
 /// The methods and settings compared.
 pub fn choices(forced: bool) -> Vec<Setting> {
     let mut out = Vec::new();
+    if !forced {
+        out.push(Setting {
+            family: "exact",
+            label: "exact".to_string(),
+            choice: Choice::Exact,
+        });
+    }
     let mut push = |family, setting: String, method| {
         out.push(Setting {
             family,
@@ -145,16 +152,6 @@ pub fn choices(forced: bool) -> Vec<Setting> {
                 Method::Splitting { step, order },
             );
         }
-    }
-    if !forced {
-        out.insert(
-            0,
-            Setting {
-                family: "exact",
-                label: "exact".to_string(),
-                choice: Choice::Exact,
-            },
-        );
     }
     out
 }

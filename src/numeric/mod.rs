@@ -5,6 +5,7 @@
 //! - [`integrators`]: the ODE integrators and the high-precision reference
 //! - [`rigid_body`]: the body's state, inertia and moment, its exact and simulated motion
 //! - [`rounding_error`]: an expression in double-double with a bound on its rounding error
+//! - [`splitmix`]: a small deterministic pseudorandom generator
 //! - [`work_precision`]: time against error for every method, and its plots
 
 pub mod error;
@@ -12,6 +13,7 @@ pub mod integrators;
 pub mod rigid_body;
 pub mod rounding_error;
 pub mod scalar;
+pub mod splitmix;
 pub mod tape;
 pub mod work_precision;
 

@@ -14,6 +14,7 @@
 use crate::algebra::{Domain, Domains, Expr, Symbol};
 use crate::numeric::rounding_error::bounded;
 use crate::numeric::scalar::double_double::DoubleDouble;
+use crate::numeric::splitmix::SplitMix64;
 use num_traits::{Float, Zero};
 
 /// How many points must agree for [`Opinion::Zero`].
@@ -70,7 +71,7 @@ pub fn second_opinion(lhs: &Expr, rhs: &Expr, domains: &Domains, seed: u64) -> O
             break;
         }
         for (v, &positive) in values.iter_mut().zip(&positive) {
-            *v = random.value(positive);
+            *v = value(&mut random, positive);
         }
         let value = |s: Symbol| {
             let at = symbols.iter().position(|&t| t == s)?;
@@ -169,29 +170,15 @@ impl Difference {
     }
 }
 
-/// Steele, Lea and Flood's splitmix64: a 64-bit state advanced by a constant, each output
-/// a mix of the state.
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    /// A multiple of [`GRID`] uniform in [0.5, 3] when `positive`, else in ±[0.2, 3].
-    fn value(&mut self, positive: bool) -> f64 {
-        let bits = self.next();
-        let low: f64 = if positive { 0.5 } else { 0.2 };
-        let (low, high) = ((low / GRID).ceil() as u64, (3.0 / GRID) as u64);
-        let magnitude = (low + (bits >> 1) % (high - low + 1)) as f64 * GRID;
-        if positive || bits & 1 == 0 {
-            magnitude
-        } else {
-            -magnitude
-        }
+/// A multiple of [`GRID`] uniform in [0.5, 3] when `positive`, else in ±[0.2, 3].
+fn value(random: &mut SplitMix64, positive: bool) -> f64 {
+    let bits = random.next_u64();
+    let low: f64 = if positive { 0.5 } else { 0.2 };
+    let (low, high) = ((low / GRID).ceil() as u64, (3.0 / GRID) as u64);
+    let magnitude = (low + (bits >> 1) % (high - low + 1)) as f64 * GRID;
+    if positive || bits & 1 == 0 {
+        magnitude
+    } else {
+        -magnitude
     }
 }

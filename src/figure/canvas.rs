@@ -17,6 +17,11 @@ use crate::scene::model::Scene;
 
 /// The room left around the drawing, in figure units.
 const MARGIN: f64 = 6.0;
+/// The room each label is given among the marks, in square figure units, and how much larger
+/// than [`MARKS_WIDTH`] a crowded drawing may grow for it (to 340 units, 255 pt: still
+/// narrower than a page's text).
+const ROOM_PER_LABEL: f64 = 4000.0;
+const MOST_GROWTH: f64 = 1.3;
 /// An arrow lies along a line when it is within this of parallel to it, its tail within
 /// this share of its length of the line, and it runs over this share of its length beside it.
 const ALONG_DEG: f64 = 6.0;
@@ -347,8 +352,9 @@ impl<'s> Canvas<'s> {
     }
 
     /// The figure: every mark scaled so the drawing is [`MARKS_WIDTH`] wide or [`MARKS_HEIGHT`]
-    /// high (a tall one the area of that square, up to [`MARKS_TALLEST`]), and those drawn
-    /// beside a line shifted, then the labels placed.
+    /// high (a tall one the area of that square, up to [`MARKS_TALLEST`]), larger when each
+    /// label would have less than [`ROOM_PER_LABEL`] (up to [`MOST_GROWTH`] times), and those
+    /// drawn beside a line shifted, then the labels placed.
     pub fn finish(self) -> Figure {
         let mut marks: Vec<(Mark, P2)> = self
             .behind
@@ -375,6 +381,10 @@ impl<'s> Canvas<'s> {
             (false, true) => MARKS_HEIGHT / h,
             (false, false) => 1.0,
         };
+        // A crowded drawing is drawn larger, so each label keeps its room.
+        let area = (w * scale).max(1.0) * (h * scale).max(1.0);
+        let crowding = (self.wanted.len() as f64 * ROOM_PER_LABEL / area).sqrt();
+        let scale = scale * crowding.clamp(1.0, MOST_GROWTH);
         let marks: Vec<Mark> = marks
             .into_iter()
             .map(|(m, shift)| moved(m, |p| p.times(scale).plus(shift)))

@@ -21,6 +21,9 @@ use crate::scene::model::Scene;
 const CHAIN_GAP: f64 = 0.5;
 const EXTENSION_GAP: f64 = 0.05;
 const EXTENSION_PAST: f64 = 0.06;
+/// The least share of `down`'s drawn length across the shaft's drawn line for the chain to
+/// clear the loads on the page.
+const ACROSS_THE_PAGE: f64 = 0.25;
 
 /// The chain of spans along the shaft whose unit axis is `a` (along one of the frame's axes),
 /// clear of the body and of the `loads`' arrows (their ends).
@@ -124,11 +127,7 @@ fn chain(
         })
         .min_by(|p, q| canvas.project(*p).y.total_cmp(&canvas.project(*q).y))
         .unwrap_or([0.0, 0.0, -1.0]);
-    let lowest = loads
-        .iter()
-        .map(|p| view::dot(*p, down))
-        .fold(0.0, f64::max);
-    let offset = body.along(down).max(lowest) + CHAIN_GAP * reach;
+    let offset = clearance(canvas, body, loads, a, down) + CHAIN_GAP * reach;
     let foot = |s: f64| scaled(a, s);
     for (s, _) in &stations {
         let from = add(foot(*s), scaled(down, EXTENSION_GAP * reach));
@@ -146,6 +145,45 @@ fn chain(
     for (w, span) in stations.windows(2).zip(&spans) {
         let middle = chain((w[0].0 + w[1].0) / 2.0);
         canvas.label_dimension(super::arrows::label(span), middle, down);
+    }
+}
+
+/// How far along `down` a line parallel to the shaft `a` must stand to pass, on the page,
+/// beyond the body and every load's arrow (their `loads` ends): an arrow along y drawn down
+/// the page ends below a chain that only cleared it along `down` in space, and its label
+/// had to stand far off. With `n` the page's normal to the shaft on the chain's side,
+///
+/// ```text
+/// offset = max over points p of (P(p) · n) / (P(down) · n),   P the projection,
+/// ```
+///
+/// and at least how far the body goes along `down` in space.
+fn clearance(canvas: &Canvas, body: &Extent, loads: &[P3], a: P3, down: P3) -> f64 {
+    let shaft = canvas.project(a);
+    let below = canvas.project(down);
+    let normal = shaft.normal();
+    let n = match normal.x * below.x + normal.y * below.y < 0.0 {
+        true => normal.times(-1.0),
+        false => normal,
+    };
+    let per_unit = n.x * below.x + n.y * below.y;
+    let on_page = |p: &P3| {
+        let q = canvas.project(*p);
+        (q.x * n.x + q.y * n.y) / per_unit
+    };
+    let in_space = body.along(down);
+    match per_unit > ACROSS_THE_PAGE * below.length() {
+        true => body
+            .samples
+            .iter()
+            .chain(loads)
+            .map(on_page)
+            .fold(in_space, f64::max),
+        // `down` drawn nearly along the shaft: clearing the page would take it far away.
+        false => loads
+            .iter()
+            .map(|p| view::dot(*p, down))
+            .fold(in_space, f64::max),
     }
 }
 

@@ -1,13 +1,16 @@
 //! Where each label stands: near its anchor (an arrow's head, a point, an edge's middle), on
-//! the side it wants if that is free. Every candidate round the anchor, ring by ring, is
-//! scored — overlapping a label placed before it weighs most, then standing on the body,
-//! then crossing a stroke, then standing nearer another label's anchor than its own (a reader
-//! would give it to the wrong arrow), then its distance and its turn from the wanted side —
-//! and the cheapest wins: a label crosses a thin line before it drifts away from its arrow.
+//! the side it wants if that is free. Each label's spots round its anchor, ring by ring, are
+//! scored — standing too close to another label weighs most, then standing on the body, then
+//! crossing a stroke (a load's arrow or a rod more than a hairline), then standing nearer
+//! another label's anchor than its own (a reader would give it to the wrong arrow), then its
+//! distance and its turn from the wanted side — and the placing of all of them together is
+//! made cheap: each placed in turn, then annealed, then polished by single and paired moves,
+//! so a point's letter does not take the spot an arrow's label needs and push it far away.
 
 use super::canvas::points_of;
 use super::view::P2;
 use super::{Label, Mark, Stroke, FONT_SIZE};
+use crate::numeric::splitmix::SplitMix64;
 use crate::print::markup;
 
 /// Room between a label's box and its text, and the least room between two labels' boxes.
@@ -21,7 +24,7 @@ const TURNS_DEG: [f64; 10] = [
 /// What each fault costs, in figure units of distance.
 const OVER_LABEL: f64 = 1000.0;
 const ON_BODY: f64 = 40.0;
-const CROSSING: f64 = 12.0;
+const CROSSING: f64 = 25.0;
 const NEARER_ANOTHER: f64 = 80.0;
 const PER_DEGREE: f64 = 0.08;
 const PER_UNIT: f64 = 1.5;
@@ -67,7 +70,11 @@ struct Surroundings<'a> {
     anchors: Vec<P2>,
 }
 
-/// Every wanted label placed among `marks`: the dimensions first, then the others in order.
+/// Every wanted label placed among `marks`, so that the sum of their costs is low: each
+/// placed in turn (the dimensions first, then the others in order) where it costs least among
+/// those placed before it, then the placing improved until no label gains by moving alone or
+/// by moving the one label that stands where it would rather be (a point's letter sitting on
+/// an arrow's free end, which pushed the arrow's label far away).
 pub fn place(wanted: &[Wanted], marks: &[Mark]) -> Vec<Label> {
     let around = Surroundings {
         strokes: marks.iter().flat_map(segments).collect(),
@@ -84,42 +91,228 @@ pub fn place(wanted: &[Wanted], marks: &[Mark]) -> Vec<Label> {
             .collect(),
         anchors: wanted.iter().map(|w| w.anchor).collect(),
     };
+    let sizes: Vec<(f64, f64)> = wanted.iter().map(|w| half_size(&w.markup)).collect();
+    let spots = wanted
+        .iter()
+        .enumerate()
+        .map(|(k, w)| spots(w, sizes[k], &around, k))
+        .collect();
+    let mut layout = Layout {
+        spots,
+        sizes,
+        chosen: vec![None; wanted.len()],
+    };
     // The dimensions first, each on its line while that is free; then the rest, in order.
     let mut order: Vec<usize> = (0..wanted.len()).collect();
     order.sort_by_key(|k| wanted[*k].names != Names::Dimension);
-    let mut placed: Vec<Label> = Vec::new();
-    for (k, w) in order.iter().map(|k| (*k, &wanted[*k])) {
-        let (hw, hh) = half_size(&w.markup);
-        let mut best = (f64::INFINITY, w.anchor);
-        for (centre, distance, turn) in candidates(w, hw, hh) {
-            // A point's letter (G, O, A), a part's size or a dimension hugs what it names.
-            let per_unit = match w.names {
-                Names::Beside => PER_UNIT,
-                Names::OnBody | Names::Dimension => PER_UNIT * POINT_TIGHTER,
-            };
+    for k in order {
+        layout.chosen[k] = Some(layout.cheapest(k));
+    }
+    layout.improve();
+    wanted
+        .iter()
+        .enumerate()
+        .map(|(k, w)| Label {
+            markup: w.markup.clone(),
+            centre: layout.chosen[k].map_or(w.anchor, |s| layout.spots[k][s].centre),
+            half_width: layout.sizes[k].0,
+            half_height: layout.sizes[k].1,
+        })
+        .collect()
+}
+
+/// Where a label may stand, and what standing there costs before other labels are counted.
+struct Spot {
+    centre: P2,
+    cost: f64,
+}
+
+/// The spots of every label round its anchor, with their costs: its distance (more for what
+/// hugs its anchor, and past [`FAR`] its square too), its turn from the wanted side, and its
+/// faults among the strokes, the faces and the other anchors.
+fn spots(w: &Wanted, (hw, hh): (f64, f64), around: &Surroundings, own: usize) -> Vec<Spot> {
+    // A point's letter (G, O, A), a part's size or a dimension hugs what it names.
+    let per_unit = match w.names {
+        Names::Beside | Names::Dimension => PER_UNIT,
+        Names::OnBody => PER_UNIT * POINT_TIGHTER,
+    };
+    candidates(w, hw, hh)
+        .into_iter()
+        .map(|(centre, distance, turn)| {
             // Far from its anchor a label no longer reads as its own: each unit costs more.
             let far = (distance - FAR).max(0.0);
             let cost = per_unit * distance
                 + PER_FAR_SQUARED * far * far
                 + PER_DEGREE * turn.abs()
-                + faults(centre, (hw, hh), &placed, &around, (k, w));
-            if cost < best.0 {
-                best = (cost, centre);
+                + faults(centre, (hw, hh), around, (own, w));
+            Spot { centre, cost }
+        })
+        .collect()
+}
+
+/// The labels' spots and the one each stands on; the cost of a placing is the sum of its
+/// spots' costs and [`OVER_LABEL`] for each pair of labels too close.
+struct Layout {
+    spots: Vec<Vec<Spot>>,
+    sizes: Vec<(f64, f64)>,
+    chosen: Vec<Option<usize>>,
+}
+
+/// Sweeps of [`Layout::improve`] at most (each lowers the cost; a few settle it).
+const SWEEPS: usize = 12;
+/// A move must gain more than this to be made.
+const GAIN: f64 = 1e-9;
+/// The annealing's schedule: its first temperature (a rise of this cost is taken about one
+/// time in three), the share kept each round, the rounds at most, the tries a round makes for
+/// each label, and the seed of its draws.
+const HOT: f64 = 200.0;
+const COOLING: f64 = 0.9;
+const ROUNDS: usize = 80;
+const TRIES_PER_LABEL: usize = 30;
+const SEED: u64 = 0x6b69_6e65_7469_6373;
+
+impl Layout {
+    /// Whether label `a` on spot `sa` and label `b` on spot `sb` stand too close.
+    fn clash(&self, (a, sa): (usize, usize), (b, sb): (usize, usize)) -> bool {
+        let (ca, cb) = (self.spots[a][sa].centre, self.spots[b][sb].centre);
+        let ((wa, ha), (wb, hb)) = (self.sizes[a], self.sizes[b]);
+        (ca.x - cb.x).abs() < wa + wb + BETWEEN_LABELS
+            && (ca.y - cb.y).abs() < ha + hb + BETWEEN_LABELS
+    }
+
+    /// The placed labels other than `k` that label `k` on spot `s` clashes with.
+    fn clashes(&self, k: usize, s: usize) -> impl Iterator<Item = usize> + '_ {
+        self.chosen
+            .iter()
+            .enumerate()
+            .filter_map(move |(j, chosen)| {
+                let sj = (*chosen)?;
+                (j != k && self.clash((k, s), (j, sj))).then_some(j)
+            })
+    }
+
+    /// What label `k` costs on spot `s` among the labels placed.
+    fn cost(&self, k: usize, s: usize) -> f64 {
+        self.spots[k][s].cost + OVER_LABEL * self.clashes(k, s).count() as f64
+    }
+
+    /// The spot where label `k` costs least among the labels placed (the first of equals).
+    fn cheapest(&self, k: usize) -> usize {
+        (0..self.spots[k].len())
+            .map(|s| (s, self.cost(k, s)))
+            .fold((0, f64::INFINITY), |best, (s, c)| match c < best.1 {
+                true => (s, c),
+                false => best,
+            })
+            .0
+    }
+
+    /// Anneals the placing, then moves labels while its cost falls: a label alone to its
+    /// cheapest spot, or a label to a spot where one other label stands in its way, that one
+    /// moved to its own cheapest spot, when the two together gain.
+    fn improve(&mut self) {
+        self.anneal();
+        for _ in 0..SWEEPS {
+            let mut moved = false;
+            for k in 0..self.chosen.len() {
+                moved |= self.move_alone(k) || self.move_with_blocker(k);
+            }
+            if !moved {
+                return;
             }
         }
-        placed.push(Label {
-            markup: w.markup.clone(),
-            centre: best.1,
-            half_width: hw,
-            half_height: hh,
-        });
     }
-    // Back in the order asked for.
-    let mut labels: Vec<Option<Label>> = (0..wanted.len()).map(|_| None).collect();
-    for (k, label) in order.into_iter().zip(placed) {
-        labels[k] = Some(label);
+
+    /// Simulated annealing, as Christensen, Marks and Shieber found best for placing labels
+    /// (*An empirical study of algorithms for point-feature label placement*, ACM Transactions
+    /// on Graphics 14 (1995)): a label drawn at random tries a spot drawn at random, taken when
+    /// the placing's cost falls and, when it rises by `Δ`, with probability `exp(−Δ/T)`; the
+    /// temperature `T` falls by [`COOLING`] each round of [`TRIES_PER_LABEL`] tries a label,
+    /// from [`HOT`] until a round takes nothing. The cheapest placing met is kept. The draws
+    /// come from a fixed seed: the same figure every time.
+    fn anneal(&mut self) {
+        let n = self.chosen.len();
+        let Some(mut chosen) = self.chosen.iter().copied().collect::<Option<Vec<usize>>>() else {
+            return;
+        };
+        if n < 2 {
+            return;
+        }
+        let mut random = SplitMix64(SEED);
+        let (mut total, mut best_total, mut best) = (0.0, 0.0, chosen.clone());
+        let mut temperature = HOT;
+        for _ in 0..ROUNDS {
+            let mut taken = 0;
+            for _ in 0..TRIES_PER_LABEL * n {
+                let k = random.below(n);
+                let s = random.below(self.spots[k].len());
+                let rise = self.cost(k, s) - self.cost(k, chosen[k]);
+                if rise <= 0.0 || random.unit() < (-rise / temperature).exp() {
+                    chosen[k] = s;
+                    self.chosen[k] = Some(s);
+                    total += rise;
+                    taken += 1;
+                    if total < best_total - GAIN {
+                        (best_total, best) = (total, chosen.clone());
+                    }
+                }
+            }
+            if taken == 0 {
+                break;
+            }
+            temperature *= COOLING;
+        }
+        self.chosen = best.into_iter().map(Some).collect();
     }
-    labels.into_iter().flatten().collect()
+
+    fn move_alone(&mut self, k: usize) -> bool {
+        let Some(now) = self.chosen[k] else {
+            return false;
+        };
+        let best = self.cheapest(k);
+        let gains = self.cost(k, best) < self.cost(k, now) - GAIN;
+        if gains {
+            self.chosen[k] = Some(best);
+        }
+        gains
+    }
+
+    /// Label `k` to the spot that gains most when the one label in its way moves too.
+    fn move_with_blocker(&mut self, k: usize) -> bool {
+        let Some(now) = self.chosen[k] else {
+            return false;
+        };
+        let before_k = self.cost(k, now);
+        let mut best: Option<(f64, usize, usize, usize)> = None;
+        for s in 0..self.spots[k].len() {
+            if self.spots[k][s].cost >= before_k - GAIN {
+                continue;
+            }
+            let blockers: Vec<usize> = self.clashes(k, s).take(2).collect();
+            let [j] = blockers[..] else {
+                continue;
+            };
+            let Some(now_j) = self.chosen[j] else {
+                continue;
+            };
+            let shared = |clash: bool| if clash { OVER_LABEL } else { 0.0 };
+            let before = before_k + self.cost(j, now_j) - shared(self.clash((k, now), (j, now_j)));
+            self.chosen[k] = Some(s);
+            let to = self.cheapest(j);
+            let after = self.cost(k, s) + self.cost(j, to) - shared(self.clash((k, s), (j, to)));
+            self.chosen[k] = Some(now);
+            let gain = before - after;
+            if gain > GAIN && best.is_none_or(|(g, ..)| gain > g) {
+                best = Some((gain, s, j, to));
+            }
+        }
+        let Some((_, s, j, to)) = best else {
+            return false;
+        };
+        self.chosen[k] = Some(s);
+        self.chosen[j] = Some(to);
+        true
+    }
 }
 
 /// The centres tried round the anchor (a dimension's first on it), with their gap and turn
@@ -145,16 +338,10 @@ fn candidates(w: &Wanted, hw: f64, hh: f64) -> Vec<(P2, f64, f64)> {
     out
 }
 
-/// The cost of a box's faults: labels it overlaps, faces it stands on, strokes it crosses,
-/// (unless it names something on the body) and standing nearer another label's anchor than
-/// label `own`'s.
-fn faults(
-    c: P2,
-    (hw, hh): (f64, f64),
-    placed: &[Label],
-    around: &Surroundings,
-    (own, w): (usize, &Wanted),
-) -> f64 {
+/// The cost of a box's faults apart from other labels: faces it stands on (unless it names
+/// something on the body), strokes it crosses (but a dimension's own line, which it breaks),
+/// and standing nearer another label's anchor than label `own`'s.
+fn faults(c: P2, (hw, hh): (f64, f64), around: &Surroundings, (own, w): (usize, &Wanted)) -> f64 {
     let mine = around.anchors[own];
     let distance_to_box = |p: P2| {
         let dx = ((p.x - c.x).abs() - hw).max(0.0);
@@ -169,32 +356,6 @@ fn faults(
     });
     // What stands on the body (its anchor on a face) is named on the body.
     let on_body = w.names == Names::OnBody || around.faces.iter().any(|f| inside(mine, f));
-    let faces: &[&[P2]] = match on_body {
-        true => &[],
-        false => &around.faces,
-    };
-    // A dimension's own line, through its anchor, is broken by it, not crossed.
-    let broken = (w.names == Names::Dimension).then_some(mine);
-    overlap(c, (hw, hh), placed, faces, (&around.strokes, broken))
-        + if nearer_another { NEARER_ANOTHER } else { 0.0 }
-}
-
-/// How badly a box overlaps what is there: a label, a body's face, a stroke (but those
-/// through the point `broken`, a dimension's own line).
-fn overlap(
-    c: P2,
-    (hw, hh): (f64, f64),
-    placed: &[Label],
-    faces: &[&[P2]],
-    (strokes, broken): (&[(P2, P2, f64)], Option<P2>),
-) -> f64 {
-    let labels = placed
-        .iter()
-        .filter(|l| {
-            (l.centre.x - c.x).abs() < l.half_width + hw + BETWEEN_LABELS
-                && (l.centre.y - c.y).abs() < l.half_height + hh + BETWEEN_LABELS
-        })
-        .count();
     let corners = [
         P2::new(c.x - hw, c.y - hh),
         P2::new(c.x + hw, c.y - hh),
@@ -202,17 +363,25 @@ fn overlap(
         P2::new(c.x - hw, c.y + hh),
         c,
     ];
-    let inside_faces = faces
-        .iter()
-        .filter(|f| corners.iter().any(|p| inside(*p, f)))
-        .count();
-    let crossed: f64 = strokes
+    let inside_faces = match on_body {
+        true => 0,
+        false => around
+            .faces
+            .iter()
+            .filter(|f| corners.iter().any(|p| inside(*p, f)))
+            .count(),
+    };
+    let broken = (w.names == Names::Dimension).then_some(mine);
+    let crossed: f64 = around
+        .strokes
         .iter()
         .filter(|(a, b, _)| crosses_box(*a, *b, c, hw, hh))
         .filter(|(a, b, _)| broken.is_none_or(|p| !through(p, *a, *b)))
         .map(|(_, _, weight)| weight)
         .sum();
-    OVER_LABEL * labels as f64 + ON_BODY * inside_faces as f64 + CROSSING * crossed
+    ON_BODY * inside_faces as f64
+        + CROSSING * crossed
+        + if nearer_another { NEARER_ANOTHER } else { 0.0 }
 }
 
 /// The segments a mark draws (its path, its arrow's line and heads, a dot's box diagonal),
@@ -225,7 +394,11 @@ fn segments(mark: &Mark) -> Vec<(P2, P2, f64)> {
         }
         s
     };
-    let weight = |stroke: &Stroke| (stroke.width / Stroke::OUTLINE.width).max(1.0);
+    // A load's arrow under a label reads as labelled by it: as costly as a rod.
+    let weight = |stroke: &Stroke| match stroke.accent {
+        true => Stroke::ROD.width / Stroke::OUTLINE.width,
+        false => (stroke.width / Stroke::OUTLINE.width).max(1.0),
+    };
     match mark {
         Mark::Path {
             points,

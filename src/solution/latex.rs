@@ -43,7 +43,14 @@ pub(super) fn page(page: &Page, standalone: bool) -> String {
 fn section(out: &mut String, section: &Section) {
     match &section.heading {
         Heading::Answers => return,
-        Heading::Statement => {}
+        Heading::Statement => {
+            if let [Block::Words(words), Block::Figure(drawn)] = &section.blocks[..] {
+                if let Some(side_by_side) = beside(words, drawn) {
+                    out.push_str(&side_by_side);
+                    return;
+                }
+            }
+        }
         Heading::Given => out.push_str("\\paragraph{Given}\n"),
         Heading::Find => out.push_str("\\paragraph{Find}\n"),
         Heading::Step { number, title } => out.push_str(&format!(
@@ -84,6 +91,48 @@ pub(super) fn figure(drawn: &crate::figure::Figure) -> String {
         "\\begin{{center}}\n{}\n\\end{{center}}\n\n",
         crate::figure::tikz::tikz(drawn)
     )
+}
+
+/// The page's text width (A4 less two 25 mm margins), the body's font size and line
+/// height, the gap between the statement and its figure, and the narrowest column the
+/// statement is set in.
+const TEXT_WIDTH_PT: f64 = 455.24;
+const FONT_PT: f64 = 11.0;
+const LINE_PT: f64 = 13.6;
+const GUTTER_PT: f64 = 12.0;
+const NARROWEST_PT: f64 = 150.0;
+/// What a paragraph loses to its line breaks, and the space `center` puts about the figure.
+const RAGGED: f64 = 1.15;
+const CENTER_SKIPS_PT: f64 = 20.0;
+
+/// The statement in a column beside its figure, as a textbook sets a problem, when that
+/// takes less height than the statement above the figure (a narrow figure, a short
+/// statement): the statement's lines estimated from its width in em,
+///
+/// ```text
+/// beside  = max(⌈w·f·r / (T − W − g)⌉ · ℓ, H)      stacked = ⌈w·f·r / T⌉ · ℓ + H + s
+/// ```
+///
+/// (`w` the words' width in em, `f` the font size, `r` the ragged loss, `T` the text width,
+/// `W` × `H` the figure, `g` the gutter, `ℓ` the line height, `s` the centring's skips).
+fn beside(words: &str, drawn: &crate::figure::Figure) -> Option<String> {
+    let (width, height) = (
+        (drawn.max.x - drawn.min.x) * 0.75,
+        (drawn.max.y - drawn.min.y) * 0.75,
+    );
+    let column = TEXT_WIDTH_PT - width - GUTTER_PT;
+    let text_pt = markup::svg(words).1 * FONT_PT * RAGGED;
+    let lines = |room: f64| (text_pt / room).ceil() * LINE_PT;
+    if column < NARROWEST_PT
+        || lines(column).max(height) >= lines(TEXT_WIDTH_PT) + height + CENTER_SKIPS_PT
+    {
+        return None;
+    }
+    Some(format!(
+        "\\noindent\\begin{{minipage}}[t]{{\\dimexpr\\linewidth-{width:.1}pt-{GUTTER_PT}pt\\relax}}\\vspace{{0pt}}\\raggedright\n{}\n\\end{{minipage}}\\hfill\\begin{{minipage}}[t]{{{width:.1}pt}}\\vspace{{0pt}}\n{}\n\\end{{minipage}}\n\n",
+        markup::latex(words),
+        crate::figure::tikz::tikz(drawn)
+    ))
 }
 
 /// Items of inline maths as a sentence: `$a$, $b$.` and a blank line.

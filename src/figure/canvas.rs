@@ -205,21 +205,12 @@ impl<'s> Canvas<'s> {
     pub fn beside(&self, from: P3, to: P3, away: P3) -> P2 {
         let none = P2::new(0.0, 0.0);
         let (p0, p1) = (self.project(from), self.project(to));
-        let length = p1.minus(p0).length();
-        let Some(u) = p1.minus(p0).unit() else {
-            return none;
-        };
-        let cross = |a: P2, b: P2| a.x * b.y - a.y * b.x;
         let dot = |a: P2, b: P2| a.x * b.x + a.y * b.y;
         for (a, b) in &self.clear {
-            let Some(v) = b.minus(*a).unit() else {
-                continue;
-            };
-            let parallel = cross(u, v).abs() < ALONG_DEG.to_radians().sin();
-            let on = cross(p0.minus(*a), v).abs() < ON_LINE * length;
-            let (t0, t1) = (dot(p0.minus(*a), v), dot(p1.minus(*a), v));
-            let shared = t0.max(t1).min(b.minus(*a).length()) - t0.min(t1).max(0.0);
-            if parallel && on && shared > OVERLAPPING * length {
+            if along((p0, p1), (*a, *b)) {
+                let Some(v) = b.minus(*a).unit() else {
+                    continue;
+                };
                 let n = v.normal();
                 let side = dot(n, p0.minus(self.project(away)));
                 return match side < 0.0 || (side == 0.0 && n.x < 0.0) {
@@ -229,6 +220,16 @@ impl<'s> Canvas<'s> {
             }
         }
         none
+    }
+
+    /// Whether an arrow drawn in front (a load, a rate) lies along the line from `from` to
+    /// `to` as drawn: a dimension's extension line there would run over it.
+    pub fn arrow_along(&self, from: P3, to: P3) -> bool {
+        let line = (self.project(from), self.project(to));
+        self.front.iter().any(|(mark, _)| match mark {
+            Mark::Arrow { from, via, to, .. } if via.is_empty() => along((*from, *to), line),
+            _ => false,
+        })
     }
 
     /// A straight arrow between two of the scene's points.
@@ -415,6 +416,23 @@ impl<'s> Canvas<'s> {
             scale,
         }
     }
+}
+
+/// Whether the segment `p` lies along the segment `line` as drawn: within [`ALONG_DEG`] of
+/// parallel, its start within [`ON_LINE`] of its length from the line, and running beside
+/// it over more than [`OVERLAPPING`] of its length.
+fn along((p0, p1): (P2, P2), (a, b): (P2, P2)) -> bool {
+    let cross = |a: P2, b: P2| a.x * b.y - a.y * b.x;
+    let dot = |a: P2, b: P2| a.x * b.x + a.y * b.y;
+    let length = p1.minus(p0).length();
+    let (Some(u), Some(v)) = (p1.minus(p0).unit(), b.minus(a).unit()) else {
+        return false;
+    };
+    let parallel = cross(u, v).abs() < ALONG_DEG.to_radians().sin();
+    let on = cross(p0.minus(a), v).abs() < ON_LINE * length;
+    let (t0, t1) = (dot(p0.minus(a), v), dot(p1.minus(a), v));
+    let shared = t0.max(t1).min(b.minus(a).length()) - t0.min(t1).max(0.0);
+    parallel && on && shared > OVERLAPPING * length
 }
 
 /// The positive axis a vector lies along (either way), if it lies along one.

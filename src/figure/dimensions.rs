@@ -117,22 +117,41 @@ fn chain(
     }
     // Below the body: of the frame's directions square to the shaft on the side no axis is
     // drawn (−x, −y, −z, so an extension line from O never runs along one), the one drawn
-    // most nearly down.
-    let down = (0..3)
+    // most nearly down whose extension lines run over no arrow (a reaction into its
+    // bearing, a rate drawn down from O); the lowest when each would.
+    let mut downs: Vec<P3> = (0..3)
         .filter(|j| *j != k)
         .map(|j| {
             let mut e = [0.0; 3];
             e[j] = -1.0;
             e
         })
-        .min_by(|p, q| canvas.project(*p).y.total_cmp(&canvas.project(*q).y))
-        .unwrap_or([0.0, 0.0, -1.0]);
-    let offset = clearance(canvas, body, loads, a, down) + CHAIN_GAP * reach;
+        .collect();
+    downs.sort_by(|p, q| canvas.project(*p).y.total_cmp(&canvas.project(*q).y));
     let foot = |s: f64| scaled(a, s);
-    for (s, _) in &stations {
-        let from = add(foot(*s), scaled(down, EXTENSION_GAP * reach));
-        let to = add(foot(*s), scaled(down, offset + EXTENSION_PAST * reach));
-        canvas.path(Layer::Behind, &[from, to], false, Stroke::DIMENSION);
+    let extensions = |down: P3| {
+        let offset = clearance(canvas, body, loads, a, down) + CHAIN_GAP * reach;
+        let lines: Vec<[P3; 2]> = stations
+            .iter()
+            .map(|(s, _)| {
+                [
+                    add(foot(*s), scaled(down, EXTENSION_GAP * reach)),
+                    add(foot(*s), scaled(down, offset + EXTENSION_PAST * reach)),
+                ]
+            })
+            .collect();
+        (down, offset, lines)
+    };
+    let Some((down, offset, lines)) = downs
+        .iter()
+        .map(|d| extensions(*d))
+        .find(|(_, _, lines)| !lines.iter().any(|[p, q]| canvas.arrow_along(*p, *q)))
+        .or_else(|| downs.first().map(|d| extensions(*d)))
+    else {
+        return;
+    };
+    for line in &lines {
+        canvas.path(Layer::Behind, line, false, Stroke::DIMENSION);
     }
     let chain = |s: f64| add(foot(s), scaled(down, offset));
     let (first, last) = (stations[0].0, stations[stations.len() - 1].0);

@@ -1047,3 +1047,44 @@ fn axes_in_front_of_the_body_are_drawn_over_it() {
         .any(|(from, to)| near(*to, x_tip) && !near(*from, o));
     assert!(again, "x drawn again in front from where it leaves the box");
 }
+
+/// A dimension's extension line is drawn on a side where no arrow runs along it: in SP 18.2
+/// and 18.5, ω₂ is drawn down from O, and the span OG = L below the disk would run its line
+/// from O over that arrow; in the horizontal wheel gyroscope the weight at G would lie on
+/// G's. Checked on the drawing itself: no dimension stroke is parallel to an arrow (within
+/// a degree) with both of the arrow's ends within a unit of its line and beside it.
+#[test]
+fn extension_lines_run_over_no_arrow() {
+    for name in [
+        "sp18_2_rolling_disk",
+        "sp18_5_disk_reactions",
+        "wheel_gyroscope_horizontal",
+    ] {
+        let drawn = figure(&example(name)).unwrap();
+        let dimensions = two_point_paths(&drawn, Stroke::DIMENSION);
+        assert!(!dimensions.is_empty(), "{name}: dimensioned");
+        for (a, b) in &dimensions {
+            let d = b.minus(*a);
+            let across = |p: P2| ((p.x - a.x) * d.y - (p.y - a.y) * d.x).abs() / d.length();
+            let along = |p: P2| ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / d.length();
+            for mark in &drawn.marks {
+                let Mark::Arrow { from, via, to, .. } = mark else {
+                    continue;
+                };
+                if !via.is_empty() {
+                    continue;
+                }
+                let (s, t) = (along(*from), along(*to));
+                let beside = s.max(t) > 0.0 && s.min(t) < d.length();
+                assert!(
+                    !(across(*from) < 1.0 && across(*to) < 1.0 && beside),
+                    "{name}: an arrow from ({:.1}, {:.1}) to ({:.1}, {:.1}) lies on an extension line",
+                    from.x,
+                    from.y,
+                    to.x,
+                    to.y
+                );
+            }
+        }
+    }
+}

@@ -9,7 +9,7 @@
 
 use super::canvas::points_of;
 use super::view::P2;
-use super::{Label, Mark, Stroke, FONT_SIZE};
+use super::{Label, Mark, Role, Stroke, FONT_SIZE};
 use crate::numeric::splitmix::SplitMix64;
 use crate::print::markup;
 
@@ -168,6 +168,11 @@ const GAIN: f64 = 1e-9;
 const HOT: f64 = 200.0;
 const COOLING: f64 = 0.9;
 const ROUNDS: usize = 80;
+/// Where the annealing stops (a rise of one unit of cost taken one time in e; the polish
+/// after it finds the nearest minimum), and a rise so large against the temperature that it
+/// is never taken (`exp(−20)`).
+const COLD: f64 = 1.0;
+const HOPELESS: f64 = 20.0;
 const TRIES_PER_LABEL: usize = 30;
 const SEED: u64 = 0x6b69_6e65_7469_6373;
 
@@ -228,7 +233,7 @@ impl Layout {
     /// on Graphics 14 (1995)): a label drawn at random tries a spot drawn at random, taken when
     /// the placing's cost falls and, when it rises by `Δ`, with probability `exp(−Δ/T)`; the
     /// temperature `T` falls by [`COOLING`] each round of [`TRIES_PER_LABEL`] tries a label,
-    /// from [`HOT`] until a round takes nothing. The cheapest placing met is kept. The draws
+    /// from [`HOT`] to [`COLD`] or until a round takes nothing. The cheapest placing met is kept. The draws
     /// come from a fixed seed: the same figure every time.
     fn anneal(&mut self) {
         let n = self.chosen.len();
@@ -240,14 +245,30 @@ impl Layout {
         }
         let mut random = SplitMix64(SEED);
         let (mut total, mut best_total, mut best) = (0.0, 0.0, chosen.clone());
+        // What each label costs where it stands, kept as labels move.
+        let mut now: Vec<f64> = (0..n).map(|k| self.cost(k, chosen[k])).collect();
         let mut temperature = HOT;
         for _ in 0..ROUNDS {
             let mut taken = 0;
             for _ in 0..TRIES_PER_LABEL * n {
                 let k = random.below(n);
                 let s = random.below(self.spots[k].len());
-                let rise = self.cost(k, s) - self.cost(k, chosen[k]);
+                // A spot dearer on its own than the label is now by far is not taken.
+                if self.spots[k][s].cost - now[k] > HOPELESS * temperature {
+                    continue;
+                }
+                let rise = self.cost(k, s) - now[k];
                 if rise <= 0.0 || random.unit() < (-rise / temperature).exp() {
+                    for (j, cost) in now.iter_mut().enumerate().filter(|(j, _)| *j != k) {
+                        let sj = chosen[j];
+                        if self.clash((k, chosen[k]), (j, sj)) {
+                            *cost -= OVER_LABEL;
+                        }
+                        if self.clash((k, s), (j, sj)) {
+                            *cost += OVER_LABEL;
+                        }
+                    }
+                    now[k] += rise;
                     chosen[k] = s;
                     self.chosen[k] = Some(s);
                     total += rise;
@@ -257,10 +278,10 @@ impl Layout {
                     }
                 }
             }
-            if taken == 0 {
+            temperature *= COOLING;
+            if taken == 0 || temperature < COLD {
                 break;
             }
-            temperature *= COOLING;
         }
         self.chosen = best.into_iter().map(Some).collect();
     }
@@ -346,12 +367,12 @@ fn faults(c: P2, (hw, hh): (f64, f64), around: &Surroundings, (own, w): (usize, 
     let distance_to_box = |p: P2| {
         let dx = ((p.x - c.x).abs() - hw).max(0.0);
         let dy = ((p.y - c.y).abs() - hh).max(0.0);
-        dx.hypot(dy)
+        (dx * dx + dy * dy).sqrt()
     };
     let own_distance = distance_to_box(mine);
     let nearer_another = around.anchors.iter().enumerate().any(|(k, a)| {
         k != own
-            && (a.x - mine.x).hypot(a.y - mine.y) > 1.0
+            && (a.x - mine.x).powi(2) + (a.y - mine.y).powi(2) > 1.0
             && distance_to_box(*a) + 2.0 < own_distance
     });
     // What stands on the body (its anchor on a face) is named on the body.
@@ -375,6 +396,13 @@ fn faults(c: P2, (hw, hh): (f64, f64), around: &Surroundings, (own, w): (usize, 
     let crossed: f64 = around
         .strokes
         .iter()
+        // Most strokes are nowhere near: their extents do not meet the box.
+        .filter(|(a, b, _)| {
+            a.x.max(b.x) >= c.x - hw
+                && a.x.min(b.x) <= c.x + hw
+                && a.y.max(b.y) >= c.y - hh
+                && a.y.min(b.y) <= c.y + hh
+        })
         .filter(|(a, b, _)| crosses_box(*a, *b, c, hw, hh))
         .filter(|(a, b, _)| broken.is_none_or(|p| !through(p, *a, *b)))
         .map(|(_, _, weight)| weight)
@@ -394,11 +422,10 @@ fn segments(mark: &Mark) -> Vec<(P2, P2, f64)> {
         }
         s
     };
-    // A load's arrow under a label reads as labelled by it: as costly as a rod.
-    let weight = |stroke: &Stroke| match stroke.accent {
-        true => Stroke::ROD.width / Stroke::OUTLINE.width,
-        false => (stroke.width / Stroke::OUTLINE.width).max(1.0),
-    };
+    let weight = |stroke: &Stroke| (stroke.width / Stroke::OUTLINE.width).max(1.0);
+    // A vector's arrow (a load, ω, v̄; not an axis) under a label reads as labelled by it:
+    // as costly as a rod.
+    let vector = Stroke::ROD.width / Stroke::OUTLINE.width;
     match mark {
         Mark::Path {
             points,
@@ -406,8 +433,12 @@ fn segments(mark: &Mark) -> Vec<(P2, P2, f64)> {
             stroke,
             ..
         } => chain(points, *closed, weight(stroke)),
-        Mark::Arrow { stroke, .. } => {
-            let mut s = chain(&mark.line(), false, weight(stroke));
+        Mark::Arrow { stroke, role, .. } => {
+            let line = match role {
+                Role::Axis => weight(stroke),
+                _ => vector,
+            };
+            let mut s = chain(&mark.line(), false, line);
             for head in mark.heads() {
                 s.extend(chain(&head, true, 1.0));
             }

@@ -30,6 +30,14 @@ pub enum Format {
     HtmlFragment,
 }
 
+impl Format {
+    /// Whether the page shows the scene's figure (text and JSON have none, so it is not
+    /// drawn for them).
+    fn shows_figure(self) -> bool {
+        !matches!(self, Format::Text | Format::Json)
+    }
+}
+
 /// The two sides of a relation in the chosen notation, presented about its axis.
 pub fn relation(r: &Relation, notation: Notation) -> (String, String) {
     (
@@ -85,7 +93,10 @@ pub fn render_beside(
         let results = results(scene, analysis, &dims);
         // A scene the figure cannot be drawn for (a size without a number) has its page
         // without one; `kinetics figure` says why.
-        let drawn = crate::figure::figure(scene).ok();
+        let drawn = format
+            .shows_figure()
+            .then(|| crate::figure::figure(scene).ok())
+            .flatten();
         let mut page = solution_page(scene, analysis, &results, drawn.as_ref());
         page.figure_file = figure_file;
         match format {
@@ -139,7 +150,10 @@ pub fn render_numbers_beside(
         let dims = scene_dimensions(scene);
         let results = results(scene, analysis, &dims);
         let steps = super::engineer::intermediate(scene, analysis, &dims);
-        let drawn = crate::figure::figure(scene).ok();
+        let drawn = format
+            .shows_figure()
+            .then(|| crate::figure::figure(scene).ok())
+            .flatten();
         let mut page = super::engineer::numbers_page(scene, &results, &steps, drawn.as_ref());
         page.figure_file = figure_file;
         match format {

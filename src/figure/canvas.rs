@@ -418,9 +418,9 @@ impl<'s> Canvas<'s> {
     }
 }
 
-/// Whether the segment `p` lies along the segment `line` as drawn: within [`ALONG_DEG`] of
-/// parallel, its start within [`ON_LINE`] of its length from the line, and running beside
-/// it over more than [`OVERLAPPING`] of its length.
+/// Whether the drawn segment from `p0` to `p1` lies along the one from `a` to `b`: within
+/// [`ALONG_DEG`] of parallel, its start within [`ON_LINE`] of its length from that line, and
+/// running beside it over more than [`OVERLAPPING`] of its length.
 fn along((p0, p1): (P2, P2), (a, b): (P2, P2)) -> bool {
     let cross = |a: P2, b: P2| a.x * b.y - a.y * b.x;
     let dot = |a: P2, b: P2| a.x * b.x + a.y * b.y;

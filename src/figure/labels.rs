@@ -51,7 +51,8 @@ pub enum Names {
     /// stand on a face.
     OnBody,
     /// A dimension: first of all on its own line at its middle, which the label's halo breaks,
-    /// as a textbook sets a dimension's figure; it hugs its anchor.
+    /// as a textbook sets a dimension's figure; else beside it, as freely as an arrow's
+    /// label (just outside its line reads as well as on it).
     Dimension,
 }
 
@@ -72,9 +73,9 @@ struct Surroundings<'a> {
 
 /// Every wanted label placed among `marks`, so that the sum of their costs is low: each
 /// placed in turn (the dimensions first, then the others in order) where it costs least among
-/// those placed before it, then the placing improved until no label gains by moving alone or
-/// by moving the one label that stands where it would rather be (a point's letter sitting on
-/// an arrow's free end, which pushed the arrow's label far away).
+/// those placed before it, then the placing annealed and improved until no label gains by
+/// moving alone or by moving the one label that stands where it would rather be (a point's
+/// letter sitting on an arrow's free end, which pushed the arrow's label far away).
 pub fn place(wanted: &[Wanted], marks: &[Mark]) -> Vec<Label> {
     let around = Surroundings {
         strokes: marks.iter().flat_map(segments).collect(),
@@ -131,7 +132,7 @@ struct Spot {
 /// hugs its anchor, and past [`FAR`] its square too), its turn from the wanted side, and its
 /// faults among the strokes, the faces and the other anchors.
 fn spots(w: &Wanted, (hw, hh): (f64, f64), around: &Surroundings, own: usize) -> Vec<Spot> {
-    // A point's letter (G, O, A), a part's size or a dimension hugs what it names.
+    // A point's letter (G, O, A) or a part's size hugs what it names.
     let per_unit = match w.names {
         Names::Beside | Names::Dimension => PER_UNIT,
         Names::OnBody => PER_UNIT * POINT_TIGHTER,
@@ -162,12 +163,11 @@ struct Layout {
 const SWEEPS: usize = 12;
 /// A move must gain more than this to be made.
 const GAIN: f64 = 1e-9;
-/// The annealing's schedule: its first temperature (a rise of this cost is taken about one
-/// time in three), the share kept each round, the rounds at most, the tries a round makes for
-/// each label, and the seed of its draws.
+/// The annealing's schedule: its first temperature (a rise of this cost is taken one time in
+/// e), the share kept each round, the tries a round makes for each label, and the seed of its
+/// draws.
 const HOT: f64 = 200.0;
 const COOLING: f64 = 0.9;
-const ROUNDS: usize = 80;
 /// Where the annealing stops (a rise of one unit of cost taken one time in e; the polish
 /// after it finds the nearest minimum), and a rise so large against the temperature that it
 /// is never taken (`exp(−20)`).
@@ -248,7 +248,7 @@ impl Layout {
         // What each label costs where it stands, kept as labels move.
         let mut now: Vec<f64> = (0..n).map(|k| self.cost(k, chosen[k])).collect();
         let mut temperature = HOT;
-        for _ in 0..ROUNDS {
+        while temperature >= COLD {
             let mut taken = 0;
             for _ in 0..TRIES_PER_LABEL * n {
                 let k = random.below(n);
@@ -279,7 +279,7 @@ impl Layout {
                 }
             }
             temperature *= COOLING;
-            if taken == 0 || temperature < COLD {
+            if taken == 0 {
                 break;
             }
         }
@@ -413,7 +413,8 @@ fn faults(c: P2, (hw, hh): (f64, f64), around: &Surroundings, (own, w): (usize, 
 }
 
 /// The segments a mark draws (its path, its arrow's line and heads, a dot's box diagonal),
-/// each weighted by its stroke's width against an outline's.
+/// each weighted by its stroke's width against an outline's, a vector's arrow (not an
+/// axis) as a rod.
 fn segments(mark: &Mark) -> Vec<(P2, P2, f64)> {
     let chain = |points: &[P2], closed: bool, weight: f64| {
         let mut s: Vec<(P2, P2, f64)> = points.windows(2).map(|w| (w[0], w[1], weight)).collect();

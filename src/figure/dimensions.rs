@@ -142,15 +142,16 @@ fn chain(
             .collect();
         (down, offset, lines)
     };
-    let Some((down, offset, lines)) = downs
+    let sides: Vec<(P3, f64, Vec<[P3; 2]>)> = downs.iter().map(|d| extensions(*d)).collect();
+    let Some((down, offset, lines)) = sides
         .iter()
-        .map(|d| extensions(*d))
         .find(|(_, _, lines)| !lines.iter().any(|[p, q]| canvas.arrow_along(*p, *q)))
-        .or_else(|| downs.first().map(|d| extensions(*d)))
+        .or(sides.first())
     else {
         return;
     };
-    for line in &lines {
+    let (down, offset) = (*down, *offset);
+    for line in lines {
         canvas.path(Layer::Behind, line, false, Stroke::DIMENSION);
     }
     let chain = |s: f64| add(foot(s), scaled(down, offset));

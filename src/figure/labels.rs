@@ -237,44 +237,47 @@ impl Layout {
     /// come from a fixed seed: the same figure every time.
     fn anneal(&mut self) {
         let n = self.chosen.len();
-        let Some(mut chosen) = self.chosen.iter().copied().collect::<Option<Vec<usize>>>() else {
-            return;
-        };
-        if n < 2 {
+        if n < 2 || self.chosen.contains(&None) {
             return;
         }
         let mut random = SplitMix64(SEED);
-        let (mut total, mut best_total, mut best) = (0.0, 0.0, chosen.clone());
+        let (mut total, mut best_total, mut best) = (0.0, 0.0, self.chosen.clone());
         // What each label costs where it stands, kept as labels move.
-        let mut now: Vec<f64> = (0..n).map(|k| self.cost(k, chosen[k])).collect();
+        let mut now: Vec<f64> = (0..n)
+            .map(|k| self.chosen[k].map_or(0.0, |at| self.cost(k, at)))
+            .collect();
         let mut temperature = HOT;
         while temperature >= COLD {
             let mut taken = 0;
             for _ in 0..TRIES_PER_LABEL * n {
                 let k = random.below(n);
                 let s = random.below(self.spots[k].len());
+                let Some(at) = self.chosen[k] else {
+                    continue;
+                };
                 // A spot dearer on its own than the label is now by far is not taken.
                 if self.spots[k][s].cost - now[k] > HOPELESS * temperature {
                     continue;
                 }
                 let rise = self.cost(k, s) - now[k];
                 if rise <= 0.0 || random.unit() < (-rise / temperature).exp() {
-                    for (j, cost) in now.iter_mut().enumerate().filter(|(j, _)| *j != k) {
-                        let sj = chosen[j];
-                        if self.clash((k, chosen[k]), (j, sj)) {
-                            *cost -= OVER_LABEL;
+                    for j in (0..n).filter(|j| *j != k) {
+                        let Some(sj) = self.chosen[j] else {
+                            continue;
+                        };
+                        if self.clash((k, at), (j, sj)) {
+                            now[j] -= OVER_LABEL;
                         }
                         if self.clash((k, s), (j, sj)) {
-                            *cost += OVER_LABEL;
+                            now[j] += OVER_LABEL;
                         }
                     }
                     now[k] += rise;
-                    chosen[k] = s;
                     self.chosen[k] = Some(s);
                     total += rise;
                     taken += 1;
                     if total < best_total - GAIN {
-                        (best_total, best) = (total, chosen.clone());
+                        (best_total, best) = (total, self.chosen.clone());
                     }
                 }
             }
@@ -283,7 +286,7 @@ impl Layout {
                 break;
             }
         }
-        self.chosen = best.into_iter().map(Some).collect();
+        self.chosen = best;
     }
 
     fn move_alone(&mut self, k: usize) -> bool {

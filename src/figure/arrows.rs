@@ -163,11 +163,9 @@ impl Drawn<'_> {
             side,
         );
         canvas.label_beside(label, free, outward, side);
-        // A later load along this one's line is drawn beside it (a normal force under a
-        // weight), not over it.
-        if load {
-            canvas.keep_clear(from, to);
-        }
+        // A later vector along this one's line is drawn beside it (a normal force under a
+        // weight, v̄ the way ω points from G), not over it.
+        canvas.keep_arrow_clear(from, to, side);
         Some(Arrow {
             direction: u,
             length: stretched(canvas, u, length),

@@ -7,8 +7,8 @@ use super::labels::{self, Names, Wanted};
 use super::sizes::Sizes;
 use super::view::{self, View, P2, P3};
 use super::{
-    Figure, FigureError, Label, Mark, Role, Stroke, BESIDE, MARKS_HEIGHT, MARKS_TALLEST,
-    MARKS_WIDTH,
+    Figure, FigureError, Label, Mark, Role, Stroke, ARROWS_APART, BESIDE, MARKS_HEIGHT,
+    MARKS_TALLEST, MARKS_WIDTH,
 };
 use crate::algebra::{Expr, Vector};
 use crate::mechanics::eulerian_angles::EulerianAngles;
@@ -40,8 +40,17 @@ pub struct Canvas<'s> {
     /// that sets it beside a line it would lie along.
     front: Vec<(Mark, P2)>,
     wanted: Vec<(Wanted, P2)>,
-    /// The lines, as drawn, a load's arrow is kept off: the axes, the rods, the shaft.
-    clear: Vec<(P2, P2)>,
+    /// The lines, as drawn, a vector's arrow is kept off: the axes, the rods, the shaft, and
+    /// the vectors' arrows drawn before it.
+    clear: Vec<Kept>,
+}
+
+/// A line an arrow is not drawn along: as drawn (before scaling), the shift it was drawn at
+/// (in figure units), and how far from it an arrow beside it stands.
+struct Kept {
+    line: (P2, P2),
+    shift: P2,
+    apart: f64,
 }
 
 /// Where a mark goes.
@@ -193,33 +202,65 @@ impl<'s> Canvas<'s> {
         self.push(layer, mark, P2::new(0.0, 0.0));
     }
 
-    /// The line from `a` to `b` (an axis, a rod, the shaft) is one a load is not drawn along.
+    /// The line from `a` to `b` (an axis, a rod, the shaft) is one a vector's arrow is not
+    /// drawn along, but [`BESIDE`] it.
     pub fn keep_clear(&mut self, a: P3, b: P3) {
-        let line = (self.project(a), self.project(b));
-        self.clear.push(line);
+        self.clear.push(Kept {
+            line: (self.project(a), self.project(b)),
+            shift: P2::new(0.0, 0.0),
+            apart: BESIDE,
+        });
     }
 
-    /// Where an arrow from `from` to `to` would lie along a line kept clear (parallel to it,
-    /// on it, and over a fifth of its length): the unit normal to that line on the side away
-    /// from `away`, to draw it [`BESIDE`] the line; else zero.
+    /// The arrow from `from` to `to`, drawn `shift` over, is one a later vector's arrow is
+    /// drawn [`ARROWS_APART`] beside, not over (ω and v̄ the same way from G, a normal force
+    /// under a weight).
+    pub fn keep_arrow_clear(&mut self, from: P3, to: P3, shift: P2) {
+        self.clear.push(Kept {
+            line: (self.project(from), self.project(to)),
+            shift,
+            apart: ARROWS_APART,
+        });
+    }
+
+    /// The shift, in figure units, that sets an arrow from `from` to `to` beside the lines
+    /// kept clear it would lie along (parallel to each, on it, and over a fifth of its
+    /// length): across them, as little as leaves each line its room ([`BESIDE`] a line,
+    /// [`ARROWS_APART`] from an arrow), on the side away from `away` where both are as near;
+    /// zero where it lies along none.
     pub fn beside(&self, from: P3, to: P3, away: P3) -> P2 {
-        let none = P2::new(0.0, 0.0);
         let (p0, p1) = (self.project(from), self.project(to));
         let dot = |a: P2, b: P2| a.x * b.x + a.y * b.y;
-        for (a, b) in &self.clear {
-            if along((p0, p1), (*a, *b)) {
-                let Some(v) = b.minus(*a).unit() else {
-                    continue;
-                };
-                let n = v.normal();
-                let side = dot(n, p0.minus(self.project(away)));
-                return match side < 0.0 || (side == 0.0 && n.x < 0.0) {
-                    true => n.times(-1.0),
-                    false => n,
-                };
-            }
-        }
-        none
+        let under: Vec<&Kept> = self
+            .clear
+            .iter()
+            .filter(|k| along((p0, p1), k.line))
+            .collect();
+        let Some(n) = under
+            .iter()
+            .find_map(|k| k.line.1.minus(k.line.0).unit())
+            .map(|v| v.normal())
+        else {
+            return P2::new(0.0, 0.0);
+        };
+        let side = dot(n, p0.minus(self.project(away)));
+        let n = match side < 0.0 || (side == 0.0 && n.x < 0.0) {
+            true => n.times(-1.0),
+            false => n,
+        };
+        // Each line's place across, and the room it keeps; the nearest free place is at 0 or
+        // at the edge of one line's room.
+        let kept: Vec<(f64, f64)> = under.iter().map(|k| (dot(k.shift, n), k.apart)).collect();
+        let free = |x: f64| {
+            kept.iter()
+                .all(|(at, apart)| (x - at).abs() >= apart - 1e-9)
+        };
+        let across = std::iter::once(0.0)
+            .chain(kept.iter().flat_map(|(at, apart)| [at + apart, at - apart]))
+            .filter(|x| free(*x))
+            .min_by(|a, b| a.abs().total_cmp(&b.abs()).then(b.total_cmp(a)))
+            .unwrap_or(0.0);
+        n.times(across)
     }
 
     /// Whether an arrow drawn in front (a load, a rate) lies along the line from `from` to
@@ -245,8 +286,8 @@ impl<'s> Canvas<'s> {
         self.arrow_beside(layer, from, to, double, stroke, role, P2::new(0.0, 0.0));
     }
 
-    /// A straight arrow between two of the scene's points, drawn `side` times [`BESIDE`]
-    /// figure units over (see [`Canvas::beside`]).
+    /// A straight arrow between two of the scene's points, drawn `shift` figure units over
+    /// (see [`Canvas::beside`]).
     #[allow(clippy::too_many_arguments)]
     pub fn arrow_beside(
         &mut self,
@@ -256,7 +297,7 @@ impl<'s> Canvas<'s> {
         double: bool,
         stroke: Stroke,
         role: Role,
-        side: P2,
+        shift: P2,
     ) {
         let (from, to) = (self.project(from), self.project(to));
         let mark = Mark::Arrow {
@@ -267,7 +308,7 @@ impl<'s> Canvas<'s> {
             stroke,
             role,
         };
-        self.push(layer, mark, side.times(BESIDE));
+        self.push(layer, mark, shift);
     }
 
     /// A curved arrow [`TURN`] of the way round the circle of `radius` about `centre` in the
@@ -318,8 +359,8 @@ impl<'s> Canvas<'s> {
     }
 
     /// A label for an arrow drawn beside a line ([`Canvas::arrow_beside`]), shifted with it.
-    pub fn label_beside(&mut self, markup: String, anchor: P3, direction: P3, side: P2) {
-        self.want(markup, anchor, direction, Names::Beside, side.times(BESIDE));
+    pub fn label_beside(&mut self, markup: String, anchor: P3, direction: P3, shift: P2) {
+        self.want(markup, anchor, direction, Names::Beside, shift);
     }
 
     /// A label of something on the body (G, a named point, a part's size), which may stand

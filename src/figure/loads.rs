@@ -117,18 +117,6 @@ impl Rays<'_> {
         self.body.along(d).max(shaft).max(claims)
     }
 
-    /// Where, from the point `at` along `d`, a vector starts clear of the arrows already
-    /// drawn from it along that line (at the point when there are none).
-    fn past_arrows(&self, at: P3, d: P3) -> P3 {
-        let start = self
-            .arrows
-            .iter()
-            .filter(|(p, a, _)| *p == at && view::dot(*a, d) > 0.99)
-            .map(|(_, _, length)| length + RAY_GAP * self.body.reach)
-            .fold(0.0, f64::max);
-        add(at, scaled(d, start))
-    }
-
     /// Notes the arrows drawn along their lines out of the point `at`, starting at `from`.
     fn drawn_from(&mut self, at: P3, from: P3, drew: &Drew) {
         let offset = view::norm(sub(from, at));
@@ -260,9 +248,9 @@ fn omega(
             (true, true) if !rays.ends.is_empty() => {
                 scaled(d, rays.claim(d, stretched(canvas, d, length)))
             }
-            // From O (else G), past an arrow already drawn from it along the same line.
-            (true, _) => rays.past_arrows([0.0; 3], d),
-            (false, _) => rays.past_arrows(body.centre, d),
+            // From O (else G); beside an arrow already drawn from it along the same line.
+            (true, _) => [0.0; 3],
+            (false, _) => body.centre,
         };
         let drawn = Drawn {
             from,
@@ -318,12 +306,10 @@ fn motion_of_g(
         let Some(v) = vector.filter(|v| v.iter().any(|c| !c.is_zero())) else {
             continue;
         };
-        let d = view::unit(canvas.vector(v, what)?);
         let length = OMEGA_LENGTH * body.reach;
-        // From G, past what is drawn from it along the same line (ω, v̄ along it).
-        let start = rays.past_arrows(body.centre, d);
+        // From G, beside what is drawn from it along the same line (ω, v̄ along it).
         let drawn = Drawn {
-            from: start,
+            from: body.centre,
             length,
             double,
             stroke: Stroke::MOTION,
@@ -333,7 +319,7 @@ fn motion_of_g(
             body,
         };
         let drew = drawn.vector(canvas, v, name, unknowns, what)?;
-        rays.drawn_from(body.centre, start, &drew);
+        rays.drawn_from(body.centre, body.centre, &drew);
     }
     Ok(())
 }

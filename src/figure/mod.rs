@@ -42,6 +42,10 @@ pub const FACE_OPACITY: f64 = 0.82;
 /// How far a load's arrow is drawn beside a line it would lie along (an axis, a rod, the
 /// shaft), in figure units: a reaction along the shaft, a weight along a rod.
 pub const BESIDE: f64 = 6.0;
+/// How far apart two arrows along one line are drawn (ω and v̄ the same way from G, a weight
+/// over a normal force), in figure units: their heads, [`HEAD_HALF_WIDTH`] to a side, a few
+/// units clear of each other.
+pub const ARROWS_APART: f64 = 10.0;
 /// An arrow head's length and half width.
 pub const HEAD_LENGTH: f64 = 8.0;
 pub const HEAD_HALF_WIDTH: f64 = 3.0;

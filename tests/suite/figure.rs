@@ -8,7 +8,9 @@ use crate::common::binary::{kinetics, scene};
 use crate::common::chromium::chromium;
 use crate::common::examples::example_scenes;
 use kinetics::figure::sizes::Sizes;
-use kinetics::figure::{figure, Dashes, Figure, Label, Mark, Role, Stroke, BESIDE, P2};
+use kinetics::figure::{
+    figure, Dashes, Figure, Label, Mark, Role, Stroke, ARROWS_APART, BESIDE, P2,
+};
 use kinetics::{Expr, Scene, Symbol};
 
 /// Every example scene, parsed, with its file stem.
@@ -88,11 +90,21 @@ fn every_example_has_a_figure_whose_labels_are_apart_and_inside_it() {
 }
 
 /// Whether an arrow's end `end` (its other end `other`) is at the point `at`, or beside it:
-/// [`BESIDE`] from it square to the arrow, as a load is drawn beside a line it would lie on.
+/// square to the arrow, [`BESIDE`] a line it would lie on or [`ARROWS_APART`] from an arrow
+/// there (a weight beside a normal force), or beside both, on one side or either side.
 fn at_or_beside(end: P2, other: P2, at: P2) -> bool {
     let (off, along) = (end.minus(at), other.minus(end));
     let square = (off.x * along.x + off.y * along.y).abs() < 1e-6 * along.length();
-    near(end, at) || ((off.length() - BESIDE).abs() < 1e-6 && square)
+    let places = (0..=1).flat_map(|lines| {
+        (0..=2).flat_map(move |arrows| {
+            let (l, a) = (f64::from(lines) * BESIDE, f64::from(arrows) * ARROWS_APART);
+            [l + a, (l - a).abs()]
+        })
+    });
+    let beside = places
+        .filter(|d| *d > 0.0)
+        .any(|d| (off.length() - d).abs() < 1e-6);
+    near(end, at) || (beside && square)
 }
 
 /// No load's arrow lies along an axis, a rod or the shaft, where the reader could not see it:

@@ -275,7 +275,7 @@ fn omega(
 /// The mass centre's velocity where the scene gives it (v̄, labelled so), and the motion
 /// just before an impact (`before vbar = v0*i`, `before omega = w0*k`, labelled by its
 /// magnitude, v₀ and ω₀): a velocity an arrow from G, an angular velocity a double arrow from
-/// G, each past the arrows already drawn along its line from G.
+/// G, each beside the arrows already drawn along its line from G.
 fn motion_of_g(
     canvas: &mut Canvas,
     scene: &Scene,

@@ -16,6 +16,10 @@ use crate::scene::model::{Part, Scene};
 const CIRCLE_POINTS: usize = 48;
 /// A point mass's dot radius, in figure units.
 const POINT_MASS_RADIUS: f64 = 3.5;
+/// The steps, in shares of the reach, a line out of the body is followed in until it leaves
+/// the body's outline on the page, and the most of them.
+const OUT_STEP: f64 = 0.05;
+const OUT_STEPS: u32 = 40;
 
 /// Where the body is: points on its outline, its mass centre G and its reach (the farthest
 /// outline point from O or G, the length every arrow is drawn in proportion to).
@@ -72,6 +76,18 @@ impl Extent {
             .iter()
             .map(|p| view::dot(*p, d))
             .fold(0.0, f64::max)
+    }
+
+    /// How far the body goes along the unit vector `d` from the origin as drawn: past
+    /// [`Extent::along`], on to where the line comes out of the body's outline on the page (a
+    /// thin disk's axis seen through its face), in steps of [`OUT_STEP`] of the reach.
+    pub fn drawn_along(&self, canvas: &Canvas, d: P3) -> f64 {
+        let start = self.along(d);
+        let step = OUT_STEP * self.reach;
+        (0..=OUT_STEPS)
+            .map(|k| start + step * f64::from(k))
+            .find(|t| !self.covers(canvas, scaled(d, *t)))
+            .unwrap_or(start + step * f64::from(OUT_STEPS))
     }
 
     /// Whether the point `p` is inside one of the solid parts (a plate, disk, box, …; not a

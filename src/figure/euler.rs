@@ -1,6 +1,7 @@
 //! A gyroscope's or top's Eulerian angles (§18.9): the fixed vertical Z (along K, drawn up)
 //! as a centre line from O, the angle θ from it to the axis of symmetry z as an arc, the
-//! precession φ̇ a curved arrow about Z above the body, the spin ψ̇ one about z past it.
+//! precession φ̇ a curved arrow about Z above the body and whatever is drawn up along Z, the
+//! spin ψ̇ one about z past the body and whatever is drawn along z.
 
 use super::body::Extent;
 use super::canvas::{Canvas, Layer};
@@ -9,18 +10,33 @@ use super::{FigureError, Role, Stroke};
 use crate::algebra::Expr;
 use crate::mechanics::eulerian_angles::EulerianAngles;
 
-/// Lengths in proportion to the body's reach.
+/// Lengths in proportion to the body's reach: the vertical at least [`VERTICAL`] long and
+/// [`PAST_RATE`] past φ̇'s curve, which stands [`PRECESSION_AT`] up it or higher (above ψ̇
+/// where θ is small), θ's arc, and the curves' radius.
 const VERTICAL: f64 = 1.35;
+const PAST_RATE: f64 = 0.15;
+pub const PRECESSION_AT: f64 = VERTICAL - PAST_RATE;
 const ARC_RADIUS: f64 = 0.3;
-const RATE_RADIUS: f64 = 0.12;
+pub const RATE_RADIUS: f64 = 0.12;
 
-pub fn angles(canvas: &mut Canvas, body: &Extent) -> Result<(), FigureError> {
-    let angles = EulerianAngles::chapter();
-    let theta = canvas.value(&Expr::sym(angles.nutation), "theta")?;
-    let k = [0.0, theta.sin(), theta.cos()];
+/// The fixed vertical K, the unit vector the precession is about, at the figure's θ.
+pub fn vertical(canvas: &Canvas) -> Result<P3, FigureError> {
+    let theta = canvas.value(&Expr::sym(EulerianAngles::chapter().nutation), "theta")?;
+    Ok([0.0, theta.sin(), theta.cos()])
+}
+
+/// The vertical, θ, and the rates: φ̇ about K at `precession` from O, ψ̇ about z at `spin`
+/// from O (each past what is drawn along its line).
+pub fn angles(
+    canvas: &mut Canvas,
+    body: &Extent,
+    precession: f64,
+    spin: f64,
+) -> Result<(), FigureError> {
+    let k = vertical(canvas)?;
     let z = [0.0, 0.0, 1.0];
     let reach = body.reach;
-    let top = scaled(k, VERTICAL * reach);
+    let top = scaled(k, (VERTICAL * reach).max(precession + PAST_RATE * reach));
     canvas.path(Layer::Behind, &[[0.0; 3], top], false, Stroke::CENTRE_LINE);
     canvas.keep_clear([0.0; 3], top);
     canvas.label("$Z$".into(), top, k);
@@ -37,16 +53,9 @@ pub fn angles(canvas: &mut Canvas, body: &Extent) -> Result<(), FigureError> {
     canvas.path(Layer::Front, &arc, false, Stroke::MOTION);
     let middle = arc[arc.len() / 2];
     canvas.label(r"$\theta$".into(), middle, middle);
-    let phi = add(top, scaled(k, -0.15 * reach));
-    rate(canvas, phi, k, RATE_RADIUS * reach, r"$\dot\phi$");
-    let past = body.along(z) + 0.2 * reach;
-    rate(
-        canvas,
-        scaled(z, past),
-        z,
-        RATE_RADIUS * reach,
-        r"$\dot\psi$",
-    );
+    let r = RATE_RADIUS * reach;
+    rate(canvas, scaled(k, precession), k, r, r"$\dot\phi$");
+    rate(canvas, scaled(z, spin), z, r, r"$\dot\psi$");
     Ok(())
 }
 

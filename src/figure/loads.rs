@@ -68,6 +68,15 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         canvas.label_on_body(named(&p.name), at, sub(at, body.centre));
     }
     let loaded = loads(canvas, scene, body, &unknowns, &mut rays)?;
+    // The Eulerian rates past everything drawn along their lines, each a curve round it.
+    if scene.euler_angles.is_some() {
+        let r = super::euler::RATE_RADIUS * body.reach;
+        let k = super::euler::vertical(canvas)?;
+        let high = super::euler::PRECESSION_AT * body.reach;
+        let precession = rays.claim(canvas, k, high, 2.0 * r) + r;
+        let spin = rays.claim(canvas, [0.0, 0.0, 1.0], 0.0, 2.0 * r) + r;
+        super::euler::angles(canvas, body, precession, spin)?;
+    }
     // The dimensions after the loads, clear of their arrows, so the loads' labels are placed
     // first.
     match shaft_line(&rays.ends) {
@@ -82,7 +91,8 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
 }
 
 /// The rays out of O along which vectors are drawn past the body (ω along a fixed axis, a
-/// couple): each claim starts past the body, the shaft and the claims before it.
+/// couple): each claim starts past the body, the shaft and the claims before it; an arrow
+/// already drawn from O along it (a force at O) is not passed but drawn beside.
 struct Rays<'b> {
     body: &'b Extent,
     ends: Vec<P3>,
@@ -93,43 +103,42 @@ struct Rays<'b> {
 }
 
 impl Rays<'_> {
-    /// How far the body, the shaft, the claims and the arrows from O go along the unit
-    /// vector `d`.
-    fn end(&self, d: P3) -> f64 {
+    /// How far the body (as drawn), the shaft and the claims go along the unit vector `d`.
+    fn claimed(&self, canvas: &Canvas, d: P3) -> f64 {
         let shaft = self
             .ends
             .iter()
             .map(|p| view::dot(*p, d))
             .fold(0.0, f64::max);
-        let from_o = self
-            .arrows
-            .iter()
-            .filter(|(at, _, _)| *at == [0.0; 3])
-            .map(|(_, c, end)| (*c, *end));
         let claims = self
             .claimed
             .iter()
-            .copied()
-            .chain(from_o)
             .filter(|(c, _)| view::dot(*c, d) > 0.99)
-            .map(|(_, end)| end)
+            .map(|(_, end)| *end)
             .fold(0.0, f64::max);
-        self.body.along(d).max(shaft).max(claims)
+        self.body.drawn_along(canvas, d).max(shaft).max(claims)
     }
 
-    /// Notes the arrows drawn along their lines out of the point `at`, starting at `from`.
-    fn drawn_from(&mut self, at: P3, from: P3, drew: &Drew) {
-        let offset = view::norm(sub(from, at));
-        self.arrows.extend(
-            drew.arrows
-                .iter()
-                .map(|a| (at, a.direction, offset + a.length)),
-        );
+    /// How far everything drawn along the unit vector `d` goes: the claims and the arrows
+    /// from O.
+    fn end(&self, canvas: &Canvas, d: P3) -> f64 {
+        self.arrows
+            .iter()
+            .filter(|(at, c, _)| *at == [0.0; 3] && view::dot(*c, d) > 0.99)
+            .map(|(_, _, end)| *end)
+            .fold(self.claimed(canvas, d), f64::max)
     }
 
-    /// The start, from O along `d`, of a vector `length` long drawn past everything there.
-    fn claim(&mut self, d: P3, length: f64) -> f64 {
-        let start = self.end(d) + RAY_GAP * self.body.reach;
+    /// Notes the arrows drawn from the point `at` along their lines.
+    fn drawn_from(&mut self, at: P3, drew: &Drew) {
+        self.arrows
+            .extend(drew.arrows.iter().map(|a| (at, a.direction, a.length)));
+    }
+
+    /// The start, from O along `d`, of a vector `length` long drawn past the body, the shaft
+    /// and the claims there, and `least` from O or more.
+    fn claim(&mut self, canvas: &Canvas, d: P3, least: f64, length: f64) -> f64 {
+        let start = (self.claimed(canvas, d) + RAY_GAP * self.body.reach).max(least);
         self.claimed.push((d, start + length));
         start
     }
@@ -138,7 +147,7 @@ impl Rays<'_> {
 /// The axes x, y, z from O past the body and whatever is drawn along them, O and G.
 fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays) {
     for (e, name) in UNIT.iter().zip(["x", "y", "z"]) {
-        let tip = scaled(*e, rays.end(*e) + AXIS_BEYOND * body.reach);
+        let tip = scaled(*e, rays.end(canvas, *e) + AXIS_BEYOND * body.reach);
         canvas.arrow(
             Layer::Behind,
             [0.0; 3],
@@ -246,7 +255,7 @@ fn omega(
         // Drawn whole along a fixed axis past the shaft.
         let from = match (scene.fixed_point, drawn_whole(vector, unknowns)) {
             (true, true) if !rays.ends.is_empty() => {
-                scaled(d, rays.claim(d, stretched(canvas, d, length)))
+                scaled(d, rays.claim(canvas, d, 0.0, stretched(canvas, d, length)))
             }
             // From O (else G); beside an arrow already drawn from it along the same line.
             (true, _) => [0.0; 3],
@@ -267,7 +276,7 @@ fn omega(
             true => [0.0; 3],
             false => body.centre,
         };
-        rays.drawn_from(origin, from, &drew);
+        rays.drawn_from(origin, &drew);
     }
     Ok(())
 }
@@ -319,7 +328,7 @@ fn motion_of_g(
             body,
         };
         let drew = drawn.vector(canvas, v, name, unknowns, what)?;
-        rays.drawn_from(body.centre, body.centre, &drew);
+        rays.drawn_from(body.centre, &drew);
     }
     Ok(())
 }
@@ -350,7 +359,7 @@ fn loads(
         ends.extend(drew.arrows.iter().flat_map(|a| a.ends));
         // Drawn from O, a force's arrows push what is drawn along their rays past them.
         if at == [0.0; 3] {
-            rays.drawn_from(at, at, &drew);
+            rays.drawn_from(at, &drew);
         }
         // Drawn by components (C_y, C_z), a force is named at its point (the bearing C),
         // unless the name is a word (`pin`) or the point has its letter already (O, G) and
@@ -382,15 +391,16 @@ fn loads(
             // textbook draws the torque that drives a shaft.
             if shaft_line(&rays.ends).is_some_and(|a| view::dot(a, d).abs() > 1.0 - 1e-9) {
                 let r = TURNING_RADIUS * reach;
-                let centre = scaled(d, rays.claim(d, 2.0 * r) + r);
+                let centre = scaled(d, rays.claim(canvas, d, 0.0, 2.0 * r) + r);
                 let start = canvas.turning_arrow(centre, d, r, Stroke::LOAD, Role::Couple);
                 let name = whole_label(&part, value, None);
                 canvas.label(label(&name), start, sub(start, centre));
                 continue;
             }
             let length = COUPLE_LENGTH * reach;
+            let start = rays.claim(canvas, d, 0.0, stretched(canvas, d, length));
             let drawn = Drawn {
-                from: scaled(d, rays.claim(d, stretched(canvas, d, length))),
+                from: scaled(d, start),
                 length,
                 double: true,
                 stroke: Stroke::LOAD,

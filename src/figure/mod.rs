@@ -210,9 +210,6 @@ pub fn figure(scene: &Scene) -> Result<Figure, FigureError> {
     let sizes = sizes::Sizes::of(scene);
     let mut canvas = Canvas::new(scene, &sizes)?;
     let body = body::draw(&mut canvas, scene)?;
-    if scene.euler_angles.is_some() {
-        euler::angles(&mut canvas, &body)?;
-    }
     ground::draw(&mut canvas, scene, &body)?;
     turns::draw(&mut canvas, scene, &body)?;
     loads::draw(&mut canvas, scene, &body)?;

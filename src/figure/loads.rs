@@ -62,8 +62,11 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
     }
     omega(canvas, scene, body, &unknowns, &mut rays)?;
     motion_of_g(canvas, scene, body, &unknowns, &mut rays)?;
+    // A point the scene names at O (the pin A of SP 18.3) is lettered by its name, not O.
+    let mut origin_named = false;
     for p in &scene.points {
         let at = canvas.vector(&p.position, &p.name)?;
+        origin_named |= view::norm(at) < 1e-9 * body.reach;
         canvas.dot(at, 2.5);
         canvas.label_on_body(named(&p.name), at, sub(at, body.centre));
     }
@@ -86,7 +89,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         }
         None => super::dimensions::to_mass_centre(canvas, scene, body, &loaded)?,
     }
-    axes(canvas, scene, body, &rays);
+    axes(canvas, scene, body, &rays, origin_named);
     Ok(())
 }
 
@@ -144,8 +147,9 @@ impl Rays<'_> {
     }
 }
 
-/// The axes x, y, z from O past the body and whatever is drawn along them, O and G.
-fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays) {
+/// The axes x, y, z from O past the body and whatever is drawn along them, O (unless
+/// `origin_named`: a point the scene names stands there) and G.
+fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays, origin_named: bool) {
     for (e, name) in UNIT.iter().zip(["x", "y", "z"]) {
         let tip = scaled(*e, rays.end(canvas, *e) + AXIS_BEYOND * body.reach);
         canvas.arrow(
@@ -172,7 +176,7 @@ fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays) {
         true => sub(p, body.centre),
         false => [-1.0, -1.0, -1.0],
     };
-    if scene.fixed_point || apart {
+    if (scene.fixed_point || apart) && !origin_named {
         canvas.label("$O$".into(), [0.0; 3], away([0.0; 3]));
     }
     // A page that works about G away from O: the axes Gx'y'z' too, dashed.

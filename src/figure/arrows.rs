@@ -17,6 +17,10 @@ const PAST_BODY: f64 = 0.2;
 const INSIDE: f64 = 0.05;
 /// The most steps of a quarter of [`PAST_BODY`] a load at a hidden point is lengthened by.
 const LONGEST_STEPS: u32 = 60;
+/// How far toward the mass centre, in shares of the reach, a load along a line must point
+/// to be drawn into its point: a reaction at a bearing a little below the body's middle
+/// (C_z in SP 18.4) is drawn out from its bearing, as a textbook draws it.
+const TOWARD_BODY: f64 = 0.15;
 /// The least share of its length a vector is drawn at, however the view foreshortens it.
 const SHORTEST_DRAWN: f64 = 0.6;
 
@@ -131,10 +135,11 @@ impl Drawn<'_> {
         let length = self.length_from(canvas, u, into_point, load);
         let (mut from, mut to, mut free) = self.ends(canvas, u, length, into_point);
         // Nothing is drawn along an axis, a rod or the shaft, but beside it; a load along
-        // such a line toward the body (a bearing's thrust along the shaft) comes into its
-        // point from outside too.
+        // such a line toward the body (a bearing's thrust along the shaft, by more than
+        // [`TOWARD_BODY`]) comes into its point from outside too.
         let mut side = canvas.beside(from, to, self.body.centre);
-        let toward_body = view::dot(u, sub(self.body.centre, self.from)) > 0.0;
+        let toward = view::dot(u, sub(self.body.centre, self.from));
+        let toward_body = toward > TOWARD_BODY * self.body.reach;
         if load && !into_point && toward_body && side.length() > 0.0 {
             into_point = true;
             (from, to, free) = self.ends(canvas, u, length, into_point);

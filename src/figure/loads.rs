@@ -62,15 +62,18 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
     }
     omega(canvas, scene, body, &unknowns, &mut rays)?;
     motion_of_g(canvas, scene, body, &unknowns, &mut rays)?;
-    // A point the scene names at O (the pin A of SP 18.3) is lettered by its name, not O.
-    let mut origin_named = false;
+    let mut lettered = Vec::new();
     for p in &scene.points {
         let at = canvas.vector(&p.position, &p.name)?;
-        origin_named |= view::norm(at) < 1e-9 * body.reach;
+        lettered.push(at);
         canvas.dot(at, 2.5);
         canvas.label_on_body(named(&p.name), at, sub(at, body.centre));
     }
     let loaded = loads(canvas, scene, body, &unknowns, &mut rays)?;
+    lettered.extend(loaded.lettered);
+    // A point named at O (the pin A of SP 18.3, the bearing C of SP 18.4) is lettered by its
+    // name, not O.
+    let origin_named = lettered.iter().any(|p| view::norm(*p) < 1e-9 * body.reach);
     // The Eulerian rates past everything drawn along their lines, each a curve round it.
     if scene.euler_angles.is_some() {
         let r = super::euler::RATE_RADIUS * body.reach;
@@ -84,10 +87,10 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
     // first.
     match shaft_line(&rays.ends) {
         Some(along) => {
-            super::dimensions::along_shaft(canvas, scene, body, along, &loaded)?;
+            super::dimensions::along_shaft(canvas, scene, body, along, &loaded.ends)?;
             super::dimensions::radii(canvas, scene, body, along)?;
         }
-        None => super::dimensions::to_mass_centre(canvas, scene, body, &loaded)?,
+        None => super::dimensions::to_mass_centre(canvas, scene, body, &loaded.ends)?,
     }
     axes(canvas, scene, body, &rays, origin_named);
     Ok(())
@@ -148,7 +151,7 @@ impl Rays<'_> {
 }
 
 /// The axes x, y, z from O past the body and whatever is drawn along them, O (unless
-/// `origin_named`: a point the scene names stands there) and G.
+/// `origin_named`: a point named by the scene or a load stands there) and G.
 fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays, origin_named: bool) {
     for (e, name) in UNIT.iter().zip(["x", "y", "z"]) {
         let tip = scaled(*e, rays.end(canvas, *e) + AXIS_BEYOND * body.reach);
@@ -337,16 +340,23 @@ fn motion_of_g(
     Ok(())
 }
 
-/// The forces, couples and impulses; the ends of the forces' and impulses' arrows.
+/// What the loads' drawing came to: the ends of the forces' and impulses' arrows, and the
+/// points lettered with a load's name (the bearing C).
+struct Loaded {
+    ends: Vec<P3>,
+    lettered: Vec<P3>,
+}
+
+/// The forces, couples and impulses.
 fn loads(
     canvas: &mut Canvas,
     scene: &Scene,
     body: &Extent,
     unknowns: &[Symbol],
     rays: &mut Rays,
-) -> Result<Vec<P3>, FigureError> {
+) -> Result<Loaded, FigureError> {
     let reach = body.reach;
-    let mut ends = Vec::new();
+    let (mut ends, mut named_at) = (Vec::new(), Vec::new());
     for f in &scene.forces {
         let at = canvas.vector(&f.point, &f.name)?;
         let drawn = Drawn {
@@ -371,6 +381,7 @@ fn loads(
         let bearing = on_shaft(at, &rays.ends, reach);
         if !drew.whole && !is_word(&f.name) && (bearing || !lettered(at, body)) {
             canvas.label(named(&f.name), at, sub(at, body.centre));
+            named_at.push(at);
         }
     }
     for (k, c) in scene.couples.iter().enumerate() {
@@ -438,9 +449,13 @@ fn loads(
         // Drawn by its components, a named impulse is named at its point (as a force is).
         if let (false, Some(name), false) = (drew.whole, &name, lettered(at, body)) {
             canvas.label(named(name), at, sub(at, body.centre));
+            named_at.push(at);
         }
     }
-    Ok(ends)
+    Ok(Loaded {
+        ends,
+        lettered: named_at,
+    })
 }
 
 /// With a fixed point and ω along a fixed direction: the axis through O as a centre line,

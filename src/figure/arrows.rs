@@ -21,6 +21,11 @@ const LONGEST_STEPS: u32 = 60;
 /// to be drawn into its point: a reaction at a bearing a little below the body's middle
 /// (C_z in SP 18.4) is drawn out from its bearing, as a textbook draws it.
 const TOWARD_BODY: f64 = 0.15;
+/// How near, in shares of the reach, an arrow's head may come to another's, and the
+/// lengths tried (in shares of its own) when it comes nearer.
+const HEADS_APART: f64 = 0.1;
+const SHORTER: f64 = 0.7;
+const LONGER: f64 = 1.3;
 /// The least share of its length a vector is drawn at, however the view foreshortens it.
 const SHORTEST_DRAWN: f64 = 0.6;
 
@@ -132,7 +137,7 @@ impl Drawn<'_> {
         // outside, as a textbook draws it, not across the body.
         let pushes = load && self.body.goes_into(self.from, u, INSIDE * self.body.reach);
         let mut into_point = self.into_point || pushes;
-        let length = self.length_from(canvas, u, into_point, load);
+        let mut length = self.length_from(canvas, u, into_point, load);
         let (mut from, mut to, mut free) = self.ends(canvas, u, length, into_point);
         // Nothing is drawn along an axis, a rod or the shaft, but beside it; a load along
         // such a line toward the body (a bearing's thrust along the shaft, by more than
@@ -144,6 +149,20 @@ impl Drawn<'_> {
             into_point = true;
             (from, to, free) = self.ends(canvas, u, length, into_point);
             side = canvas.beside(from, to, self.body.centre);
+        }
+        // A free head landing on another arrow's head (a weight's on a reaction's) is drawn
+        // shorter, else longer, so the two are told apart.
+        let apart = HEADS_APART * self.body.reach;
+        if !into_point && canvas.head_near(to, apart) {
+            let other = [SHORTER, LONGER]
+                .map(|k| k * length)
+                .into_iter()
+                .find(|l| !canvas.head_near(self.ends(canvas, u, *l, false).1, apart));
+            if let Some(l) = other {
+                length = l;
+                (from, to, free) = self.ends(canvas, u, length, false);
+                side = canvas.beside(from, to, self.body.centre);
+            }
         }
         let outward = match into_point {
             true => scaled(u, -1.0),

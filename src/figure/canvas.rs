@@ -263,6 +263,16 @@ impl<'s> Canvas<'s> {
         n.times(across)
     }
 
+    /// Whether the head of an arrow drawn in front (a load, a rate) is within `distance` (in
+    /// the scene's length, as drawn, before any shift beside a line) of the scene's point `p`.
+    pub fn head_near(&self, p: P3, distance: f64) -> bool {
+        let at = self.project(p);
+        self.front.iter().any(|(mark, _)| match mark {
+            Mark::Arrow { to, .. } => to.minus(at).length() < distance,
+            _ => false,
+        })
+    }
+
     /// Whether an arrow drawn in front (a load, a rate) lies along the line from `from` to
     /// `to` as drawn: a dimension's extension line there would run over it.
     pub fn arrow_along(&self, from: P3, to: P3) -> bool {

@@ -16,6 +16,9 @@ use crate::print::markup;
 /// Room between a label's box and its text, and the least room between two labels' boxes.
 const PADDING: f64 = 2.0;
 const BETWEEN_LABELS: f64 = 3.0;
+/// A label's height in ems, with scripts or a fraction and without.
+const SCRIPTED_HEIGHT: f64 = 1.5;
+const PLAIN_HEIGHT: f64 = 1.1;
 /// The gaps tried between the anchor and the box, and the turns from the wanted side.
 const GAPS: [f64; 10] = [1.5, 4.0, 7.0, 10.0, 14.0, 19.0, 26.0, 34.0, 44.0, 56.0];
 const TURNS_DEG: [f64; 10] = [
@@ -56,11 +59,20 @@ pub enum Names {
     Dimension,
 }
 
-/// The size of a label's box: its text's width and a line's height (1.5 em: a serif's
-/// ascent and descent with a subscript's drop), padded.
+/// The size of a label's box: its text's width and its height, padded: a line's (1.5 em, a
+/// serif's ascent and descent with a subscript's drop or a fraction's height) where its
+/// mathematics sets anything off the line, else a letter's with its accent (1.1 em), so a
+/// plain `ω` or `G` stands as near its anchor as it looks.
 pub fn half_size(markup_text: &str) -> (f64, f64) {
     let (_, em) = markup::svg(markup_text);
-    (em * FONT_SIZE / 2.0 + PADDING, 0.75 * FONT_SIZE + PADDING)
+    let lines = match markup::off_the_line(markup_text) {
+        true => SCRIPTED_HEIGHT,
+        false => PLAIN_HEIGHT,
+    };
+    (
+        em * FONT_SIZE / 2.0 + PADDING,
+        lines / 2.0 * FONT_SIZE + PADDING,
+    )
 }
 
 /// What a label is placed among: the strokes, the body's faces and every label's anchor.

@@ -1100,3 +1100,33 @@ fn extension_lines_run_over_no_arrow() {
         }
     }
 }
+
+/// A label's box is as tall as its text: a plain letter's (`G`, `ω`) is shorter than one
+/// with a script or a fraction (`B_y`, `¼L`), so a plain letter stands as near its anchor as
+/// it looks, and a subscript's drop still has its room.
+#[test]
+fn a_plain_letter_has_a_shorter_box_than_a_scripted_label() {
+    let mut plain = Vec::new();
+    let mut scripted = Vec::new();
+    for (name, scene) in examples() {
+        for l in figure(&scene).unwrap().labels {
+            let maths = l.markup.trim_matches('$');
+            let off_line = ["_", "^", r"\frac", r"\tfrac"]
+                .iter()
+                .any(|s| maths.contains(s));
+            let one_letter = maths.chars().count() == 1 || maths == r"\omega";
+            match (off_line, one_letter) {
+                (true, _) => scripted.push((name.clone(), l.markup, l.half_height)),
+                (false, true) => plain.push((name.clone(), l.markup, l.half_height)),
+                _ => {}
+            }
+        }
+    }
+    assert!(!plain.is_empty() && !scripted.is_empty());
+    let tallest_plain = plain.iter().map(|p| p.2).fold(0.0, f64::max);
+    let shortest_scripted = scripted.iter().map(|s| s.2).fold(f64::INFINITY, f64::min);
+    assert!(
+        tallest_plain < shortest_scripted,
+        "plain {plain:?} against scripted {scripted:?}"
+    );
+}

@@ -84,6 +84,24 @@ pub fn mathml(title: &str) -> String {
     render(title, html::words_in_maths, html::maths_in_maths)
 }
 
+/// Whether a title's mathematics sets anything off its line, a script or a fraction: a
+/// figure's label then stands in a taller box.
+pub fn off_the_line(title: &str) -> bool {
+    fn any_off(nodes: &[Node]) -> bool {
+        nodes.iter().any(|n| match n {
+            Node::Scripts { .. } | Node::Fraction { .. } => true,
+            Node::Face(_, inner) | Node::Accent(_, inner) | Node::Group(inner) => any_off(inner),
+            _ => false,
+        })
+    }
+    parse::parse(title).is_ok_and(|segments| {
+        segments.iter().any(|s| match s {
+            Segment::Maths(nodes) => any_off(nodes),
+            Segment::Words(_) => false,
+        })
+    })
+}
+
 /// The text of an SVG `<text>` element (a figure's label), and its width in ems: words and
 /// mathematics as text, a script a smaller `<tspan>` off the baseline.
 pub fn svg(title: &str) -> (String, f64) {

@@ -27,6 +27,9 @@ const MOST_GROWTH: f64 = 1.3;
 const ALONG_DEG: f64 = 6.0;
 const ON_LINE: f64 = 0.05;
 const OVERLAPPING: f64 = 0.2;
+/// An arrow runs on from another's end when the gap between them is less than this share of
+/// its length.
+const MEETING: f64 = 0.1;
 /// The share of a turn a curved arrow about a line goes round.
 const TURN: f64 = 0.8;
 
@@ -46,11 +49,13 @@ pub struct Canvas<'s> {
 }
 
 /// A line an arrow is not drawn along: as drawn (before scaling), the shift it was drawn at
-/// (in figure units), and how far from it an arrow beside it stands.
+/// (in figure units), how far from it an arrow beside it stands, and whether an arrow running
+/// on from its end is set beside it too (an arrow's line, not an axis's).
 struct Kept {
     line: (P2, P2),
     shift: P2,
     apart: f64,
+    not_continued: bool,
 }
 
 /// Where a mark goes.
@@ -209,23 +214,25 @@ impl<'s> Canvas<'s> {
             line: (self.project(a), self.project(b)),
             shift: P2::new(0.0, 0.0),
             apart: BESIDE,
+            not_continued: false,
         });
     }
 
     /// The arrow from `from` to `to`, drawn `shift` over, is one a later vector's arrow is
-    /// drawn [`ARROWS_APART`] beside, not over (ω and v̄ the same way from G, a normal force
-    /// under a weight).
+    /// drawn [`ARROWS_APART`] beside, not over or on from its end (ω and v̄ the same way from
+    /// G, a normal force under a weight, a reaction's head at the tail of ω).
     pub fn keep_arrow_clear(&mut self, from: P3, to: P3, shift: P2) {
         self.clear.push(Kept {
             line: (self.project(from), self.project(to)),
             shift,
             apart: ARROWS_APART,
+            not_continued: true,
         });
     }
 
     /// The shift, in figure units, that sets an arrow from `from` to `to` beside the lines
     /// kept clear it would lie along (parallel to each, on it, and over a fifth of its
-    /// length): across them, as little as leaves each line its room ([`BESIDE`] a line,
+    /// length; or, an arrow's, running on from its end): across them, as little as leaves each line its room ([`BESIDE`] a line,
     /// [`ARROWS_APART`] from an arrow), on the side away from `away` where both are as near;
     /// zero where it lies along none.
     pub fn beside(&self, from: P3, to: P3, away: P3) -> P2 {
@@ -234,7 +241,10 @@ impl<'s> Canvas<'s> {
         let under: Vec<&Kept> = self
             .clear
             .iter()
-            .filter(|k| along((p0, p1), k.line))
+            .filter(|k| match k.not_continued {
+                true => along_or_meeting((p0, p1), k.line),
+                false => along((p0, p1), k.line),
+            })
             .collect();
         let Some(n) = under
             .iter()
@@ -472,18 +482,30 @@ impl<'s> Canvas<'s> {
 /// Whether the drawn segment from `p0` to `p1` lies along the one from `a` to `b`: within
 /// [`ALONG_DEG`] of parallel, its start within [`ON_LINE`] of its length from that line, and
 /// running beside it over more than [`OVERLAPPING`] of its length.
-fn along((p0, p1): (P2, P2), (a, b): (P2, P2)) -> bool {
+fn along(segment: (P2, P2), line: (P2, P2)) -> bool {
+    shared(segment, line).is_some_and(|share| share > OVERLAPPING)
+}
+
+/// Whether the drawn segment from `p0` to `p1` lies along the one from `a` to `b` or runs on
+/// from its end (a gap of less than [`MEETING`] of its length): one arrow after another on a
+/// line reads as one long arrow.
+fn along_or_meeting(segment: (P2, P2), line: (P2, P2)) -> bool {
+    shared(segment, line).is_some_and(|share| share > -MEETING)
+}
+
+/// How much of its length the segment from `p0` to `p1` runs beside the one from `a` to `b`
+/// (less than zero: the gap between them along the line), where it is within [`ALONG_DEG`]
+/// of parallel to it and its start within [`ON_LINE`] of its length from that line.
+fn shared((p0, p1): (P2, P2), (a, b): (P2, P2)) -> Option<f64> {
     let cross = |a: P2, b: P2| a.x * b.y - a.y * b.x;
     let dot = |a: P2, b: P2| a.x * b.x + a.y * b.y;
     let length = p1.minus(p0).length();
-    let (Some(u), Some(v)) = (p1.minus(p0).unit(), b.minus(a).unit()) else {
-        return false;
-    };
+    let (u, v) = (p1.minus(p0).unit()?, b.minus(a).unit()?);
     let parallel = cross(u, v).abs() < ALONG_DEG.to_radians().sin();
     let on = cross(p0.minus(a), v).abs() < ON_LINE * length;
     let (t0, t1) = (dot(p0.minus(a), v), dot(p1.minus(a), v));
-    let shared = t0.max(t1).min(b.minus(a).length()) - t0.min(t1).max(0.0);
-    parallel && on && shared > OVERLAPPING * length
+    let run = t0.max(t1).min(b.minus(a).length()) - t0.min(t1).max(0.0);
+    (parallel && on).then_some(run / length)
 }
 
 /// The positive axis a vector lies along (either way), if it lies along one.

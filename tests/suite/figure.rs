@@ -1130,3 +1130,49 @@ fn a_plain_letter_has_a_shorter_box_than_a_scripted_label() {
         "plain {plain:?} against scripted {scripted:?}"
     );
 }
+
+/// No two vectors' arrows are drawn on one line over each other or one running on from the
+/// other's end (ω and v̄ the same way from G, a reaction's head at ω's tail): a reader would
+/// take them for one arrow. Each pair of straight arrows that are not axes is checked: if
+/// they are parallel and on one line, the gap between them along it is a real gap.
+#[test]
+fn no_two_arrows_read_as_one() {
+    let mut failures = Vec::new();
+    for (name, scene) in examples() {
+        let drawn = figure(&scene).unwrap();
+        let arrows: Vec<(P2, P2)> = drawn
+            .marks
+            .iter()
+            .filter_map(|m| match m {
+                Mark::Arrow {
+                    from,
+                    via,
+                    to,
+                    role,
+                    ..
+                } if via.is_empty() && *role != Role::Axis => Some((*from, *to)),
+                _ => None,
+            })
+            .collect();
+        for (i, (a0, a1)) in arrows.iter().enumerate() {
+            for (b0, b1) in &arrows[i + 1..] {
+                let Some(u) = a1.minus(*a0).unit() else {
+                    continue;
+                };
+                let cross = |p: P2| (p.x - a0.x) * u.y - (p.y - a0.y) * u.x;
+                let t = |p: P2| (p.x - a0.x) * u.x + (p.y - a0.y) * u.y;
+                // On one line: both ends of the other within a hairline of this one's line.
+                if cross(*b0).abs() > 1.0 || cross(*b1).abs() > 1.0 {
+                    continue;
+                }
+                let (lo, hi) = (t(*b0).min(t(*b1)), t(*b0).max(t(*b1)));
+                let length = a1.minus(*a0).length();
+                let gap = (lo - length).max(-hi);
+                if gap < 2.0 {
+                    failures.push(format!("{name}: arrows {a0:?}→{a1:?} and {b0:?}→{b1:?}"));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}

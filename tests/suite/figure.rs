@@ -902,50 +902,6 @@ fn the_unbalance_radii_are_dimensioned() {
     }
 }
 
-/// No two vectors of the motion (ω, α, Ω, v̄, the motion before a blow) are drawn over one
-/// another: two arrows on one line cover separate stretches of it (a free body's v̄ along
-/// its ω is drawn past it, not on it), in every example.
-#[test]
-fn no_two_motion_arrows_are_drawn_over_one_another() {
-    let motion = |r: &Role| {
-        matches!(
-            r,
-            Role::AngularVelocity | Role::AngularAcceleration | Role::FrameRate | Role::Velocity
-        )
-    };
-    for (name, scene) in examples() {
-        let drawn = figure(&scene).unwrap();
-        let arrows: Vec<(P2, P2)> = drawn
-            .marks
-            .iter()
-            .filter_map(|m| match m {
-                Mark::Arrow {
-                    from,
-                    to,
-                    via,
-                    role,
-                    ..
-                } if via.is_empty() && motion(role) => Some((*from, *to)),
-                _ => None,
-            })
-            .collect();
-        for (k, (a0, a1)) in arrows.iter().enumerate() {
-            let d = a1.minus(*a0);
-            let u = d.unit().unwrap();
-            let across = |p: P2| (p.minus(*a0).x * u.y - p.minus(*a0).y * u.x).abs();
-            let along = |p: P2| p.minus(*a0).x * u.x + p.minus(*a0).y * u.y;
-            for (b0, b1) in &arrows[k + 1..] {
-                if across(*b0) > 1e-6 || across(*b1) > 1e-6 {
-                    continue;
-                }
-                let (lo, hi) = (along(*b0).min(along(*b1)), along(*b0).max(along(*b1)));
-                let overlap = hi.min(d.length()) - lo.max(0.0);
-                assert!(overlap < 1e-6, "{name}: two motion arrows over one another");
-            }
-        }
-    }
-}
-
 /// The floor a body rolls on is drawn where the scene holds its lowest point still: SP 18.2's
 /// disk at (L, −r, 0) stands on a patch of the plane y = −r centred there; a falling plate
 /// held at the corner it strikes (a blow there) gets none, the scene shaping no ledge.

@@ -49,13 +49,29 @@ pub struct Canvas<'s> {
 }
 
 /// A line an arrow is not drawn along: as drawn (before scaling), the shift it was drawn at
-/// (in figure units), how far from it an arrow beside it stands, and whether an arrow running
-/// on from its end is set beside it too (an arrow's line, not an axis's).
+/// (in figure units), and whether it is an arrow's (else an axis's, a rod's, the shaft's).
 struct Kept {
     line: (P2, P2),
     shift: P2,
-    apart: f64,
-    not_continued: bool,
+    arrow: bool,
+}
+
+impl Kept {
+    /// How far an arrow beside it stands: [`ARROWS_APART`] from an arrow, [`BESIDE`] a line.
+    fn apart(&self) -> f64 {
+        match self.arrow {
+            true => ARROWS_APART,
+            false => BESIDE,
+        }
+    }
+
+    /// Whether the drawn segment lies along it, or (an arrow's) runs on from its end.
+    fn under(&self, segment: (P2, P2)) -> bool {
+        match self.arrow {
+            true => along_or_meeting(segment, self.line),
+            false => along(segment, self.line),
+        }
+    }
 }
 
 /// Where a mark goes.
@@ -213,8 +229,7 @@ impl<'s> Canvas<'s> {
         self.clear.push(Kept {
             line: (self.project(a), self.project(b)),
             shift: P2::new(0.0, 0.0),
-            apart: BESIDE,
-            not_continued: false,
+            arrow: false,
         });
     }
 
@@ -225,27 +240,19 @@ impl<'s> Canvas<'s> {
         self.clear.push(Kept {
             line: (self.project(from), self.project(to)),
             shift,
-            apart: ARROWS_APART,
-            not_continued: true,
+            arrow: true,
         });
     }
 
     /// The shift, in figure units, that sets an arrow from `from` to `to` beside the lines
     /// kept clear it would lie along (parallel to each, on it, and over a fifth of its
-    /// length; or, an arrow's, running on from its end): across them, as little as leaves each line its room ([`BESIDE`] a line,
-    /// [`ARROWS_APART`] from an arrow), on the side away from `away` where both are as near;
-    /// zero where it lies along none.
+    /// length; or, an arrow's, running on from its end): across them, as little as leaves
+    /// each line its room ([`BESIDE`] a line, [`ARROWS_APART`] from an arrow), on the side
+    /// away from `away` where both are as near; zero where it lies along none.
     pub fn beside(&self, from: P3, to: P3, away: P3) -> P2 {
         let (p0, p1) = (self.project(from), self.project(to));
         let dot = |a: P2, b: P2| a.x * b.x + a.y * b.y;
-        let under: Vec<&Kept> = self
-            .clear
-            .iter()
-            .filter(|k| match k.not_continued {
-                true => along_or_meeting((p0, p1), k.line),
-                false => along((p0, p1), k.line),
-            })
-            .collect();
+        let under: Vec<&Kept> = self.clear.iter().filter(|k| k.under((p0, p1))).collect();
         let Some(n) = under
             .iter()
             .find_map(|k| k.line.1.minus(k.line.0).unit())
@@ -260,7 +267,7 @@ impl<'s> Canvas<'s> {
         };
         // Each line's place across, and the room it keeps; the nearest free place is at 0 or
         // at the edge of one line's room.
-        let kept: Vec<(f64, f64)> = under.iter().map(|k| (dot(k.shift, n), k.apart)).collect();
+        let kept: Vec<(f64, f64)> = under.iter().map(|k| (dot(k.shift, n), k.apart())).collect();
         let free = |x: f64| {
             kept.iter()
                 .all(|(at, apart)| (x - at).abs() >= apart - 1e-9)

@@ -10,12 +10,11 @@ use super::{FigureError, Role, Stroke};
 use crate::algebra::Expr;
 use crate::mechanics::eulerian_angles::EulerianAngles;
 
-/// Lengths in proportion to the body's reach: the vertical at least [`VERTICAL`] long and
-/// [`PAST_RATE`] past φ̇'s curve, which stands [`PRECESSION_AT`] up it or higher (above ψ̇
-/// where θ is small), θ's arc, and the curves' radius.
-const VERTICAL: f64 = 1.35;
+/// Lengths in proportion to the body's reach: φ̇'s curve stands [`PRECESSION_AT`] up the
+/// vertical or higher (above ψ̇ where θ is small), the vertical runs [`PAST_RATE`] past it;
+/// θ's arc, and the curves' radius.
+pub const PRECESSION_AT: f64 = 1.2;
 const PAST_RATE: f64 = 0.15;
-pub const PRECESSION_AT: f64 = VERTICAL - PAST_RATE;
 const ARC_RADIUS: f64 = 0.3;
 pub const RATE_RADIUS: f64 = 0.12;
 
@@ -36,7 +35,7 @@ pub fn angles(
     let k = vertical(canvas)?;
     let z = [0.0, 0.0, 1.0];
     let reach = body.reach;
-    let top = scaled(k, (VERTICAL * reach).max(precession + PAST_RATE * reach));
+    let top = scaled(k, precession + PAST_RATE * reach);
     canvas.path(Layer::Behind, &[[0.0; 3], top], false, Stroke::CENTRE_LINE);
     canvas.keep_clear([0.0; 3], top);
     canvas.label("$Z$".into(), top, k);

@@ -245,8 +245,8 @@ impl Layout {
     /// on Graphics 14 (1995)): a label drawn at random tries a spot drawn at random, taken when
     /// the placing's cost falls and, when it rises by `Δ`, with probability `exp(−Δ/T)`; the
     /// temperature `T` falls by [`COOLING`] each round of [`TRIES_PER_LABEL`] tries a label,
-    /// from [`HOT`] to [`COLD`] or until a round takes nothing. The cheapest placing met is kept. The draws
-    /// come from a fixed seed: the same figure every time.
+    /// from [`HOT`] to [`COLD`] or until a round takes nothing. The cheapest placing met is
+    /// kept. The draws come from a fixed seed: the same figure every time.
     fn anneal(&mut self) {
         let n = self.chosen.len();
         if n < 2 || self.chosen.contains(&None) {

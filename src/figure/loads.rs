@@ -259,14 +259,17 @@ fn omega(
     let length = OMEGA_LENGTH * body.reach;
     for (vector, name, role, also) in rates.into_iter().flatten() {
         let d = view::unit(canvas.vector(vector, name)?);
-        // Drawn whole along a fixed axis past the shaft.
-        let from = match (scene.fixed_point, drawn_whole(vector, unknowns)) {
-            (true, true) if !rays.ends.is_empty() => {
-                scaled(d, rays.claim(canvas, d, 0.0, stretched(canvas, d, length)))
-            }
-            // From O (else G); beside an arrow already drawn from it along the same line.
-            (true, _) => [0.0; 3],
-            (false, _) => body.centre,
+        // From O (else G), beside an arrow already drawn from it along the same line; drawn
+        // whole along a fixed axis, past the shaft.
+        let origin = match scene.fixed_point {
+            true => [0.0; 3],
+            false => body.centre,
+        };
+        let past_shaft =
+            scene.fixed_point && drawn_whole(vector, unknowns) && !rays.ends.is_empty();
+        let from = match past_shaft {
+            true => scaled(d, rays.claim(canvas, d, 0.0, stretched(canvas, d, length))),
+            false => origin,
         };
         let drawn = Drawn {
             from,
@@ -279,11 +282,9 @@ fn omega(
             body,
         };
         let drew = drawn.vector(canvas, vector, Some(name), unknowns, name)?;
-        let origin = match scene.fixed_point {
-            true => [0.0; 3],
-            false => body.centre,
-        };
-        rays.drawn_from(origin, &drew);
+        if !past_shaft {
+            rays.drawn_from(origin, &drew);
+        }
     }
     Ok(())
 }

@@ -102,11 +102,13 @@ impl Drawn<'_> {
             let label = also(None, whole_label(v, value, name));
             return Ok(Drew {
                 whole: true,
-                arrows: self.arrow(canvas, value, label).into_iter().collect(),
+                arrows: self.arrow(canvas, value, label, true).into_iter().collect(),
             });
         }
         let mut arrows = Vec::new();
-        for k in nonzero(v) {
+        let components = nonzero(v);
+        let alone = components.len() == 1;
+        for k in components {
             let mut d = [0.0; 3];
             d[k] = value[k].signum();
             if d[k] == 0.0 {
@@ -117,7 +119,7 @@ impl Drawn<'_> {
                 // A component that is not one symbol is named by the vector's name.
                 (None, Some(n)) => symbol(&format!("{n}_{}", ["x", "y", "z"][k])),
             };
-            arrows.extend(self.arrow(canvas, d, also(Some(k), first)));
+            arrows.extend(self.arrow(canvas, d, also(Some(k), first), alone));
         }
         Ok(Drew {
             whole: false,
@@ -126,8 +128,16 @@ impl Drawn<'_> {
     }
 
     /// One arrow along `direction`, its label at its free end; its unit direction and the
-    /// length it was drawn at.
-    fn arrow(&self, canvas: &mut Canvas, direction: P3, label: String) -> Option<Arrow> {
+    /// length it was drawn at. Not `alone` (one of a vector's components at its point), it
+    /// is drawn from the point, as a textbook draws a reaction's components: their heads
+    /// brought into one point would knot there.
+    fn arrow(
+        &self,
+        canvas: &mut Canvas,
+        direction: P3,
+        label: String,
+        alone: bool,
+    ) -> Option<Arrow> {
         let u = view::unit(direction);
         if view::norm(u) == 0.0 {
             return None;
@@ -136,7 +146,7 @@ impl Drawn<'_> {
         // A load pushing on a face (a floor's normal force) comes into its point from
         // outside, as a textbook draws it, not across the body.
         let pushes = load && self.body.goes_into(self.from, u, INSIDE * self.body.reach);
-        let mut into_point = self.into_point || pushes;
+        let mut into_point = alone && (self.into_point || pushes);
         let mut length = self.length_from(canvas, u, into_point, load);
         let (mut from, mut to, mut free) = self.ends(canvas, u, length, into_point);
         // Nothing is drawn along an axis, a rod or the shaft, but beside it; a load along
@@ -145,7 +155,7 @@ impl Drawn<'_> {
         let mut side = canvas.beside(from, to, self.body.centre);
         let toward = view::dot(u, sub(self.body.centre, self.from));
         let toward_body = toward > TOWARD_BODY * self.body.reach;
-        if load && !into_point && toward_body && side.length() > 0.0 {
+        if alone && load && !into_point && toward_body && side.length() > 0.0 {
             into_point = true;
             (from, to, free) = self.ends(canvas, u, length, into_point);
             side = canvas.beside(from, to, self.body.centre);

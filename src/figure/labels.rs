@@ -16,9 +16,6 @@ use crate::print::markup;
 /// Room between a label's box and its text, and the least room between two labels' boxes.
 const PADDING: f64 = 2.0;
 const BETWEEN_LABELS: f64 = 3.0;
-/// A label's height in ems, with scripts or a fraction and without.
-const SCRIPTED_HEIGHT: f64 = 1.5;
-const PLAIN_HEIGHT: f64 = 1.1;
 /// The gaps tried between the anchor and the box, and the turns from the wanted side.
 const GAPS: [f64; 10] = [1.5, 4.0, 7.0, 10.0, 14.0, 19.0, 26.0, 34.0, 44.0, 56.0];
 const TURNS_DEG: [f64; 10] = [
@@ -59,19 +56,15 @@ pub enum Names {
     Dimension,
 }
 
-/// The size of a label's box: its text's width and its height, padded: a line's (1.5 em, a
-/// serif's ascent and descent with a subscript's drop or a fraction's height) where its
-/// mathematics sets anything off the line, else a letter's with its accent (1.1 em), so a
-/// plain `ω` or `G` stands as near its anchor as it looks.
+/// Half the size of a label's box: its text's ink (its width, its height above the baseline
+/// and its depth below, a subscript's drop and an accent included), padded; so a plain `G`
+/// stands as near its anchor as it looks, and `B_y` is no further from its arrow's head
+/// than its letters are.
 pub fn half_size(markup_text: &str) -> (f64, f64) {
-    let (_, em) = markup::svg(markup_text);
-    let lines = match markup::off_the_line(markup_text) {
-        true => SCRIPTED_HEIGHT,
-        false => PLAIN_HEIGHT,
-    };
+    let (_, ink) = markup::svg(markup_text);
     (
-        em * FONT_SIZE / 2.0 + PADDING,
-        lines / 2.0 * FONT_SIZE + PADDING,
+        ink.width * FONT_SIZE / 2.0 + PADDING,
+        (ink.above + ink.below) * FONT_SIZE / 2.0 + PADDING,
     )
 }
 

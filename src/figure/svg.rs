@@ -1,6 +1,6 @@
 //! A figure as an SVG element (inline in an HTML page, or a file beside a Markdown page):
 //! y turned down, strokes black or the accent colour, faces white, an impulse's head open,
-//! each label a `<text>` centred on its box, in a serif italic, with a white halo (a white
+//! each label a `<text>` whose ink is centred on its box, in a serif italic, with a white halo (a white
 //! stroke painted under its glyphs) so a line passing under it breaks there, as a textbook
 //! knocks the lines out behind its lettering.
 
@@ -38,14 +38,17 @@ fn element(figure: &Figure, namespace: &str) -> String {
     out.push_str("</g>\n");
     let _ = writeln!(
         out,
-        "<g font-family=\"'Latin Modern Roman', 'Times New Roman', serif\" font-style=\"italic\" font-size=\"{FONT_SIZE}\" text-anchor=\"middle\" dominant-baseline=\"central\" stroke=\"white\" stroke-width=\"{HALO}\" stroke-linejoin=\"round\" paint-order=\"stroke\">"
+        "<g font-family=\"'Latin Modern Roman', 'Times New Roman', serif\" font-style=\"italic\" font-size=\"{FONT_SIZE}\" text-anchor=\"middle\" stroke=\"white\" stroke-width=\"{HALO}\" stroke-linejoin=\"round\" paint-order=\"stroke\">"
     );
     for label in &figure.labels {
-        let (text, _) = markup::svg(&label.markup);
+        // The baseline where the ink (a subscript's drop under it, an accent over it) is
+        // centred on the box.
+        let (text, ink) = markup::svg(&label.markup);
+        let baseline = label.centre.y - (ink.above - ink.below) * FONT_SIZE / 2.0;
         let _ = writeln!(
             out,
             "<text x=\"{:.2}\" y=\"{:.2}\">{text}</text>",
-            label.centre.x, -label.centre.y
+            label.centre.x, -baseline
         );
     }
     out.push_str("</g>\n</svg>");

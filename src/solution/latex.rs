@@ -121,7 +121,7 @@ fn beside(words: &str, drawn: &crate::figure::Figure) -> Option<String> {
         (drawn.max.y - drawn.min.y) * 0.75,
     );
     let column = TEXT_WIDTH_PT - width - GUTTER_PT;
-    let text_pt = markup::svg(words).1 * FONT_PT * RAGGED;
+    let text_pt = markup::svg(words).1.width * FONT_PT * RAGGED;
     let lines = |room: f64| (text_pt / room).ceil() * LINE_PT;
     if column < NARROWEST_PT
         || lines(column).max(height) >= lines(TEXT_WIDTH_PT) + height + CENTER_SKIPS_PT

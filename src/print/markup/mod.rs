@@ -29,6 +29,7 @@ mod text;
 
 pub use parse::{MarkupError, MarkupErrorKind};
 use parse::{Node, Segment};
+pub use svg::Ink;
 
 /// Unicode plain text: `(Ḣ_G)_Gxyz = [I]{ω̇}`.
 pub fn text(title: &str) -> String {
@@ -84,29 +85,11 @@ pub fn mathml(title: &str) -> String {
     render(title, html::words_in_maths, html::maths_in_maths)
 }
 
-/// Whether a title's mathematics sets anything off its line, a script or a fraction: a
-/// figure's label then stands in a taller box.
-pub fn off_the_line(title: &str) -> bool {
-    fn any_off(nodes: &[Node]) -> bool {
-        nodes.iter().any(|n| match n {
-            Node::Scripts { .. } | Node::Fraction { .. } => true,
-            Node::Face(_, inner) | Node::Accent(_, inner) | Node::Group(inner) => any_off(inner),
-            _ => false,
-        })
-    }
-    parse::parse(title).is_ok_and(|segments| {
-        segments.iter().any(|s| match s {
-            Segment::Maths(nodes) => any_off(nodes),
-            Segment::Words(_) => false,
-        })
-    })
-}
-
-/// The text of an SVG `<text>` element (a figure's label), and its width in ems: words and
+/// The text of an SVG `<text>` element (a figure's label), and its ink in ems: words and
 /// mathematics as text, a script a smaller `<tspan>` off the baseline.
-pub fn svg(title: &str) -> (String, f64) {
+pub fn svg(title: &str) -> (String, Ink) {
     let mut out = String::new();
-    let mut width = 0.0;
+    let mut ink = Ink::default();
     match parse::parse(title) {
         Ok(segments) => {
             for segment in &segments {
@@ -118,19 +101,19 @@ pub fn svg(title: &str) -> (String, f64) {
                         out.push_str("<tspan font-style=\"normal\">");
                         svg::escaped(&mut out, &plain);
                         out.push_str("</tspan>");
-                        width += svg::words_em(&plain);
+                        ink = ink.then(svg::words(&plain));
                     }
-                    Segment::Maths(nodes) => width += svg::maths(&mut out, nodes),
+                    Segment::Maths(nodes) => ink = ink.then(svg::maths(&mut out, nodes)),
                 }
             }
         }
         Err(_) => {
             let plain = visible_words(title);
             svg::escaped(&mut out, &plain);
-            width = svg::words_em(&plain);
+            ink = svg::words(&plain);
         }
     }
-    (out, width)
+    (out, ink)
 }
 
 fn visible_words(words: &str) -> String {

@@ -1,40 +1,159 @@
 //! A title's mathematics as the text of an SVG `<text>` element (a figure's label): letters
 //! as they are (the element sets them in italics), a subscript or superscript a smaller
 //! `<tspan>` shifted off the baseline, an accent its combining character (`φ̇`); and the
-//! width it takes, in ems, for placing it before any browser lays it out.
+//! ink it takes, in ems — its width, and how far it stands above and below its baseline —
+//! for placing it before any browser lays it out.
 
 use super::parse::Node;
 use super::text;
 
-/// The widths, in ems, of a serif italic's letter, digit, operator and space (generous: the
-/// widest of Latin Modern and DejaVu Serif, the fallback a browser may use), and the size
-/// of a script.
+/// The width, in ems, of a character of words set upright (generous: the widest of Latin
+/// Modern and DejaVu Serif, the fallback a browser may use).
 const LETTER_EM: f64 = 0.62;
+/// The advances, in ems, of Latin Modern Roman Italic's capitals A to Z and small letters a
+/// to z (`lmroman10-italic.otf`, rounded up): a `W` is half as wide again as a letter's
+/// [`LETTER_EM`], an `i` half as wide.
+const CAPITALS_EM: [f64; 26] = [
+    0.75, 0.71, 0.73, 0.77, 0.69, 0.66, 0.78, 0.75, 0.4, 0.54, 0.78, 0.64, 0.91, 0.75, 0.78, 0.69,
+    0.78, 0.74, 0.57, 0.73, 0.75, 0.75, 1.01, 0.75, 0.75, 0.62,
+];
+const SMALL_EM: [f64; 26] = [
+    0.52, 0.47, 0.47, 0.52, 0.47, 0.32, 0.47, 0.52, 0.32, 0.32, 0.47, 0.27, 0.83, 0.57, 0.52, 0.52,
+    0.47, 0.43, 0.42, 0.34, 0.55, 0.47, 0.67, 0.47, 0.5, 0.42,
+];
+/// The advance of a letter the browser takes from another face (a Greek letter): the widest
+/// of them, `ω` and `Δ`.
+const OTHER_LETTER_EM: f64 = 0.82;
+/// The widths, in ems, of a digit, an operator and a space, and the size of a script.
 const DIGIT_EM: f64 = 0.6;
 const OPERATOR_EM: f64 = 0.7;
 const SPACE_EM: f64 = 0.25;
 const SCRIPT_SIZE: f64 = 0.7;
+/// How far a subscript's baseline is lowered and a superscript's raised, in ems of the
+/// script: near TeX's (a subscript's top at the letter's middle, not below its foot, which
+/// is where a browser's `baseline-shift="sub"` sets it).
+const SUBSCRIPT_DROP: f64 = 0.45;
+const SUPERSCRIPT_RISE: f64 = 0.55;
+/// How high, in ems, a capital or a tall letter stands, an accent over it, an operator; and
+/// how low a letter with a descender (`y`, `φ`) or an operator reaches.
+const LETTER_HEIGHT: f64 = 0.7;
+const ACCENTED_HEIGHT: f64 = 0.92;
+const OPERATOR_HEIGHT: f64 = 0.6;
+const DESCENDER: f64 = 0.22;
+const OPERATOR_DEPTH: f64 = 0.1;
+/// The letters, Latin and Greek, whose descender reaches below the baseline.
+const DESCENDING: &str = "fgjpqyβγζημξρςφχψ";
 
-/// Appends the nodes' SVG text; returns their width in ems.
-pub fn maths(out: &mut String, nodes: &[Node]) -> f64 {
-    nodes.iter().map(|n| one(out, n)).sum()
+/// The ink of a piece of text, in ems: its width, and how far it stands above and reaches
+/// below its baseline.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Ink {
+    pub width: f64,
+    pub above: f64,
+    pub below: f64,
 }
 
-fn one(out: &mut String, node: &Node) -> f64 {
+impl Ink {
+    /// `self` and then `next` on the same baseline.
+    pub(super) fn then(self, next: Ink) -> Ink {
+        Ink {
+            width: self.width + next.width,
+            above: self.above.max(next.above),
+            below: self.below.max(next.below),
+        }
+    }
+
+    /// A script's ink: at [`SCRIPT_SIZE`], its baseline `rise` ems of the script above the
+    /// line's (below where negative).
+    fn script(self, rise: f64) -> Ink {
+        let shift = rise * SCRIPT_SIZE;
+        Ink {
+            width: self.width * SCRIPT_SIZE,
+            above: (self.above * SCRIPT_SIZE + shift).max(0.0),
+            below: (self.below * SCRIPT_SIZE - shift).max(0.0),
+        }
+    }
+
+    /// Plain text's ink: each character's width, its letters' height (more under an
+    /// accent) and their descenders'.
+    fn of_words(words: &str) -> Ink {
+        words
+            .chars()
+            .map(|c| match c {
+                c if c.is_alphabetic() => Ink {
+                    width: advance(c),
+                    above: LETTER_HEIGHT,
+                    below: if DESCENDING.contains(c) {
+                        DESCENDER
+                    } else {
+                        0.0
+                    },
+                },
+                c if c.is_ascii_digit() => Ink {
+                    width: DIGIT_EM,
+                    above: LETTER_HEIGHT,
+                    below: 0.0,
+                },
+                ' ' => Ink {
+                    width: SPACE_EM,
+                    ..Ink::default()
+                },
+                // A combining accent takes no room of its own, but stands over its letter.
+                '\u{300}'..='\u{36f}' => Ink {
+                    above: ACCENTED_HEIGHT,
+                    ..Ink::default()
+                },
+                _ => Ink {
+                    width: OPERATOR_EM,
+                    above: OPERATOR_HEIGHT,
+                    below: OPERATOR_DEPTH,
+                },
+            })
+            .fold(Ink::default(), Ink::then)
+    }
+}
+
+/// A letter's advance in ems: Latin Modern's for a Latin letter, else [`OTHER_LETTER_EM`].
+fn advance(letter: char) -> f64 {
+    match letter {
+        'A'..='Z' => CAPITALS_EM[letter as usize - 'A' as usize],
+        'a'..='z' => SMALL_EM[letter as usize - 'a' as usize],
+        _ => OTHER_LETTER_EM,
+    }
+}
+
+/// Words' ink: each character as wide as a letter (generous: words are set upright in a
+/// proportional face, their spaces too), as high and as deep as their letters.
+pub fn words(words: &str) -> Ink {
+    Ink {
+        width: words.chars().count() as f64 * LETTER_EM,
+        ..Ink::of_words(words)
+    }
+}
+
+/// Appends the nodes' SVG text; returns their ink.
+pub fn maths(out: &mut String, nodes: &[Node]) -> Ink {
+    nodes
+        .iter()
+        .map(|n| one(out, n))
+        .fold(Ink::default(), Ink::then)
+}
+
+fn one(out: &mut String, node: &Node) -> Ink {
     match node {
         Node::Scripts { base, sub, sup } => {
-            let mut width = one(out, base);
-            for (script, shift) in [(sub, "sub"), (sup, "super")] {
+            let mut ink = one(out, base);
+            for (script, rise) in [(sub, -SUBSCRIPT_DROP), (sup, SUPERSCRIPT_RISE)] {
                 if let Some(script) = script {
                     out.push_str(&format!(
-                        "<tspan baseline-shift=\"{shift}\" font-size=\"{}%\">",
+                        "<tspan baseline-shift=\"{rise}em\" font-size=\"{}%\">",
                         (SCRIPT_SIZE * 100.0) as u32
                     ));
-                    width += SCRIPT_SIZE * maths(out, script);
+                    ink = ink.then(maths(out, script).script(rise));
                     out.push_str("</tspan>");
                 }
             }
-            width
+            ink
         }
         Node::Group(body) | Node::Face(_, body) => maths(out, body),
         Node::Function(name) => {
@@ -45,27 +164,21 @@ fn one(out: &mut String, node: &Node) -> f64 {
             out.push_str("<tspan font-style=\"normal\">");
             out.push_str(name);
             out.push_str("</tspan> ");
-            (name.len() as f64 + 1.0) * DIGIT_EM
+            Ink {
+                width: (name.len() as f64 + 1.0) * DIGIT_EM,
+                above: LETTER_HEIGHT,
+                below: DESCENDER,
+            }
         }
         // The minus sign, not the hyphen typed (`L − z₂`), as the HTML writer draws it.
         Node::Operator('-') => {
             out.push('−');
-            OPERATOR_EM
+            Ink::of_words("−")
         }
         other => {
             let plain = text::maths(std::slice::from_ref(other));
             escaped(out, &plain);
-            plain
-                .chars()
-                .map(|c| match c {
-                    c if c.is_alphabetic() => LETTER_EM,
-                    c if c.is_ascii_digit() => DIGIT_EM,
-                    ' ' => SPACE_EM,
-                    // A combining accent takes no room of its own.
-                    '\u{300}'..='\u{36f}' => 0.0,
-                    _ => OPERATOR_EM,
-                })
-                .sum()
+            Ink::of_words(&plain)
         }
     }
 }
@@ -80,11 +193,6 @@ pub fn escaped(out: &mut String, words: &str) {
             c => out.push(c),
         }
     }
-}
-
-/// Words' width in ems.
-pub fn words_em(words: &str) -> f64 {
-    words.chars().count() as f64 * LETTER_EM
 }
 
 #[cfg(test)]

@@ -119,10 +119,19 @@ impl<'s> Canvas<'s> {
             }
         };
         let mut directions = vec![[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-        if let (Some(omega), None) = (&scene.omega, &scene.euler_angles) {
-            let w = canvas.vector(omega, "omega")?;
-            if view::norm(w) > 0.0 {
-                directions.push(w);
+        // ω and v̄, each drawn as one arrow where it is given: seen end-on, one is a dot.
+        let unknowns = super::loads::magnitudes(scene);
+        let omega = scene
+            .omega
+            .as_ref()
+            .filter(|_| scene.euler_angles.is_none());
+        for (v, name) in [(omega, "omega"), (scene.vbar.as_ref(), "vbar")] {
+            let Some(v) = v.filter(|v| super::arrows::drawn_whole(v, &unknowns)) else {
+                continue;
+            };
+            let d = canvas.vector(v, name)?;
+            if view::norm(d) > 0.0 {
+                directions.push(d);
             }
         }
         // O, G and the points the scene names: drawn apart where they are apart.

@@ -540,7 +540,7 @@ fn fixed_axis(
 
 /// The unknowns that are magnitudes (an unknown angle only turns a vector, which is drawn
 /// at the angle's size): a vector holding one is drawn by its components.
-fn magnitudes(scene: &Scene) -> Vec<Symbol> {
+pub(super) fn magnitudes(scene: &Scene) -> Vec<Symbol> {
     scene
         .unknowns
         .iter()

@@ -1,9 +1,10 @@
 //! The numbers a figure is drawn with: each given's value; a symbolic length a default, the
 //! same wherever the symbol stands (the first symbolic length four times the largest length
 //! given, or 1 without one, the next ones in other proportions, so `a × b` is no square; a
-//! round shape's radius smaller, so a disk on an axle of length L is no wheel of radius L); any
-//! other symbol (a mass, a force's magnitude, an unknown, the time t) 1, and an angle
-//! without a value 30°.
+//! round shape's radius smaller, so a disk on an axle of length L is no wheel of radius L); a
+//! rate, a velocity or an angular velocity, in other proportions again, so that ω and v̄ given
+//! by their components point different ways, as a textbook draws them; any other symbol (a
+//! mass, a force's magnitude, an unknown, the time t) 1, and an angle without a value 30°.
 //! Only directions and sizes matter to a drawing: a force is drawn at one length whatever its
 //! magnitude.
 
@@ -18,6 +19,10 @@ use std::collections::HashMap;
 /// round shapes among them, and the others (a rod's length, a side, a position).
 const RADII: [f64; 3] = [0.4, 0.25, 0.3];
 const LENGTHS: [f64; 5] = [1.0, 0.6, 0.8, 1.3, 0.45];
+/// The proportions of the symbolic rates, in the order they are given: in the textbook's
+/// view `v_x, v_y, v_z` and `w_x, w_y, w_z` are drawn over 20° apart and from every axis, and
+/// two thirds of their length (a vector of equal components points nearly at the eye).
+const RATES: [f64; 6] = [0.2, 1.2, 0.5, 0.3, 0.8, 1.2];
 
 /// The value of every symbol a scene's figure evaluates.
 pub struct Sizes {
@@ -49,7 +54,7 @@ impl Sizes {
             .filter_map(|p| p.shape.radius())
             .filter_map(Expr::as_symbol)
             .collect();
-        let (mut radius_count, mut length_count) = (0, 0);
+        let (mut radius_count, mut length_count, mut rate_count) = (0, 0, 0);
         let declared = scene
             .givens
             .iter()
@@ -64,6 +69,11 @@ impl Sizes {
                     };
                     *count += 1;
                     base * proportions[(*count - 1) % proportions.len()]
+                } else if dimension == Dimension::VELOCITY
+                    || dimension == Dimension::ANGULAR_VELOCITY
+                {
+                    rate_count += 1;
+                    RATES[(rate_count - 1) % RATES.len()]
                 } else if dimension == Dimension::NONE || symbol == theta {
                     30f64.to_radians()
                 } else {

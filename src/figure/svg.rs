@@ -1,8 +1,8 @@
 //! A figure as an SVG element (inline in an HTML page, or a file beside a Markdown page):
 //! y turned down, strokes black or the accent colour, faces white, an impulse's head open,
-//! each label a `<text>` whose ink is centred on its box, in a serif italic, with a white halo (a white
-//! stroke painted under its glyphs) so a line passing under it breaks there, as a textbook
-//! knocks the lines out behind its lettering.
+//! each label a `<text>` whose ink is centred on its box, in a serif italic, on a white box
+//! and with a white halo (a white stroke painted under its glyphs) so a line passing under it
+//! breaks there, as a textbook knocks the lines out behind its lettering.
 
 use super::{Dashes, Figure, Mark, Stroke, FACE_OPACITY, FONT_SIZE};
 use crate::print::markup;
@@ -10,6 +10,9 @@ use std::fmt::Write;
 
 /// The width of the white stroke under a label's glyphs, in figure units.
 const HALO: f64 = 3.0;
+/// How far inside a label's box the white box knocked out behind it stands: about a unit
+/// round its ink, as TikZ's `inner sep` leaves round a node's text.
+const KNOCKED_OUT_INSET: f64 = 1.0;
 
 /// The accent colour of the loads.
 pub const ACCENT: &str = "#0b5cad";
@@ -34,6 +37,24 @@ fn element(figure: &Figure, namespace: &str) -> String {
     out.push_str("<g fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n");
     for mark in &figure.marks {
         self::mark(&mut out, mark);
+    }
+    out.push_str("</g>\n");
+    // A white box behind each label, so that no line drawn under it runs on between its
+    // glyphs (a dimension's line through `L − z₂` read as a plus), as the TikZ node's fill.
+    out.push_str("<g fill=\"white\">\n");
+    for label in &figure.labels {
+        let (w, h) = (
+            label.half_width - KNOCKED_OUT_INSET,
+            label.half_height - KNOCKED_OUT_INSET,
+        );
+        let _ = writeln!(
+            out,
+            "<rect x=\"{:.2}\" y=\"{:.2}\" width=\"{:.2}\" height=\"{:.2}\"/>",
+            label.centre.x - w,
+            -label.centre.y - h,
+            2.0 * w,
+            2.0 * h
+        );
     }
     out.push_str("</g>\n");
     let _ = writeln!(

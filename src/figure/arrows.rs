@@ -11,8 +11,8 @@ use super::{Dashes, FigureError, Role, Stroke};
 use crate::algebra::{Expr, Symbol, Vector};
 use crate::print::{self, markup};
 
-/// How far a load at a point inside the body reaches past its outline, and how deep inside
-/// a point is for that.
+/// How far a vector at a point inside the body reaches past its outline, and how deep
+/// inside a point is for that.
 const PAST_BODY: f64 = 0.2;
 const INSIDE: f64 = 0.05;
 /// The most steps of a quarter of [`PAST_BODY`] a load at a hidden point is lengthened by.
@@ -208,21 +208,19 @@ impl Drawn<'_> {
     }
 
     /// The length of an arrow along the unit `u` from the point (into it when `into_point`):
-    /// a load at a point inside the body (the body on both sides of it, as at G) or out of
-    /// sight behind it (a box's far corner) reaches out past it, so its free end and its
-    /// label stand clear of the body.
+    /// a vector at a point inside the body (the body on both sides of it, as ω at a
+    /// sphere's or a box's G) or a load out of sight behind it (a box's far corner) reaches
+    /// out past it, so its free end and its label stand clear of the body.
     fn length_from(&self, canvas: &Canvas, u: P3, into_point: bool, load: bool) -> f64 {
         let outward = match into_point {
             true => scaled(u, -1.0),
             false => u,
         };
         let (reach, depth) = (self.body.reach, INSIDE * self.body.reach);
-        if !load {
-            self.length
-        } else if self.body.surrounds(self.from, outward, depth) {
+        if self.body.surrounds(self.from, outward, depth) {
             let past = self.body.beyond(canvas, self.from, outward) + PAST_BODY * reach;
             self.length.max(past)
-        } else if self.body.hides(canvas, self.from, depth) {
+        } else if load && self.body.hides(canvas, self.from, depth) {
             // Out from behind the body: as long as it takes its free end to clear it.
             let step = PAST_BODY * reach / 4.0;
             let clear = |l: &f64| {

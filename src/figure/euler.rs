@@ -1,14 +1,18 @@
 //! A gyroscope's or top's Eulerian angles (§18.9): the fixed vertical Z (along K, drawn up)
 //! as a centre line from O, the angle θ from it to the axis of symmetry z as an arc, the
 //! precession φ̇ a curved arrow about Z above the body and whatever is drawn up along Z, the
-//! spin ψ̇ one about z past the body and whatever is drawn along z.
+//! spin ψ̇ one about z past the body and whatever is drawn along z; and ω where the scene
+//! states it by its components, with the angle it makes with z (§18.11's γ).
 
 use super::body::Extent;
 use super::canvas::{Canvas, Layer};
 use super::view::{self, add, scaled, P3};
 use super::{FigureError, Role, Stroke};
-use crate::algebra::Expr;
+use crate::algebra::{Expr, Vector};
 use crate::mechanics::eulerian_angles::EulerianAngles;
+use crate::scene::kinematic_constraints::OMEGA_COMPONENTS;
+use crate::scene::model::{ConstraintKind, Scene};
+use crate::scene::units::Dimension;
 
 /// Lengths in proportion to the body's reach: φ̇'s curve stands [`PRECESSION_AT`] up the
 /// vertical or higher (above ψ̇ where θ is small), the vertical runs [`PAST_RATE`] past it;
@@ -17,6 +21,8 @@ pub const PRECESSION_AT: f64 = 1.2;
 const PAST_RATE: f64 = 0.15;
 const ARC_RADIUS: f64 = 0.3;
 pub const RATE_RADIUS: f64 = 0.12;
+/// The radius of the arc of ω's angle from z, outside θ's (Z may stand between z and ω).
+const OMEGA_ARC_RADIUS: f64 = 0.45;
 
 /// The fixed vertical K, the unit vector the precession is about, at the figure's θ.
 pub fn vertical(canvas: &Canvas) -> Result<P3, FigureError> {
@@ -62,4 +68,68 @@ pub fn angles(
 fn rate(canvas: &mut Canvas, centre: P3, axis: P3, r: f64, label: &str) {
     let start = canvas.turning_arrow(centre, axis, r, Stroke::MOTION, Role::Rate);
     canvas.label(label.into(), start, view::sub(start, centre));
+}
+
+/// ω where the scene states it by its components (`constraint omega_y = w*sin(gamma)`,
+/// `constraint omega_z = w*cos(gamma)`): its components along y and z, and along x too
+/// unless the precession is steady (then ω_x = θ̇ = 0). None where they are not all stated.
+pub fn stated_omega(scene: &Scene) -> Option<Vector> {
+    let steady = scene.euler_angles.as_ref()?.steady;
+    let mut omega = Vector::from_element(Expr::zero());
+    let mut stated = [false; 3];
+    for c in &scene.constraints {
+        let ConstraintKind::Equation(lhs, rhs) = &c.kind else {
+            continue;
+        };
+        let component = lhs
+            .as_symbol()
+            .and_then(|s| OMEGA_COMPONENTS.iter().position(|n| *n == s.name()));
+        if let Some(k) = component {
+            omega[k] = rhs.clone();
+            stated[k] = true;
+        }
+    }
+    (stated[1] && stated[2] && (stated[0] || steady)).then_some(omega)
+}
+
+/// The arc from z to ω drawn from O (`w`, at the figure's sizes), labelled with the given
+/// angle its components are written in whose value is the angle between them (γ in
+/// `w sin γ j + w cos γ k`); nothing where no such angle is given. The arc's radius, if
+/// drawn.
+pub fn omega_angle(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    body: &Extent,
+    omega: &Vector,
+) -> Result<Option<f64>, FigureError> {
+    let z = [0.0, 0.0, 1.0];
+    let w = view::unit(canvas.vector(omega, "omega")?);
+    let square = view::cross(z, w);
+    if view::norm(square) < 1e-9 {
+        return Ok(None);
+    }
+    let between = view::dot(z, w).clamp(-1.0, 1.0).acos();
+    let mut written: Vec<_> = omega.iter().flat_map(|c| c.symbols()).collect();
+    written.dedup();
+    let mut angle = None;
+    for s in written {
+        let is_angle = scene.dimension(s) == Some(Dimension::NONE);
+        if is_angle && (canvas.value(&Expr::sym(s), "omega")? - between).abs() < 1e-9 {
+            angle = Some(s);
+            break;
+        }
+    }
+    let Some(angle) = angle else {
+        return Ok(None);
+    };
+    let a = view::unit(square);
+    let radius = OMEGA_ARC_RADIUS * body.reach;
+    super::turns::arc(canvas, [0.0; 3], z, a, between, radius);
+    let middle = super::turns::turned(z, a, between / 2.0);
+    canvas.label(
+        super::arrows::label(&Expr::sym(angle)),
+        scaled(middle, radius),
+        middle,
+    );
+    Ok(Some(radius))
 }

@@ -61,6 +61,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         canvas.keep_clear([0.0; 3], scaled(e, AXES_KEPT_CLEAR * body.reach));
     }
     omega(canvas, scene, body, &unknowns, &mut rays)?;
+    let omega_arc = stated_omega(canvas, scene, body, &unknowns, &mut rays)?;
     motion_of_g(canvas, scene, body, &unknowns, &mut rays)?;
     let mut lettered = Vec::new();
     for p in &scene.points {
@@ -80,7 +81,9 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         let k = super::euler::vertical(canvas)?;
         let high = super::euler::PRECESSION_AT * body.reach;
         let precession = rays.claim(canvas, k, high, 2.0 * r) + r;
-        let spin = rays.claim(canvas, [0.0, 0.0, 1.0], 0.0, 2.0 * r) + r;
+        // ψ̇ past the arc of ω's angle from z too.
+        let past_arc = omega_arc.map_or(0.0, |radius| radius + r);
+        let spin = rays.claim(canvas, [0.0, 0.0, 1.0], past_arc, 2.0 * r) + r;
         super::euler::angles(canvas, body, precession, spin)?;
     }
     // The dimensions after the loads, clear of their arrows, so the loads' labels are placed
@@ -287,6 +290,33 @@ fn omega(
         }
     }
     Ok(())
+}
+
+/// ω a scene with Eulerian angles states by its components (§18.11's disk: ω at the angle γ
+/// from its axis), from O, and the angle; the radius of the angle's arc, if drawn.
+fn stated_omega(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    body: &Extent,
+    unknowns: &[Symbol],
+    rays: &mut Rays,
+) -> Result<Option<f64>, FigureError> {
+    let Some(omega) = super::euler::stated_omega(scene) else {
+        return Ok(None);
+    };
+    let drawn = Drawn {
+        from: [0.0; 3],
+        length: OMEGA_LENGTH * body.reach,
+        double: true,
+        stroke: Stroke::MOTION,
+        role: Role::AngularVelocity,
+        into_point: false,
+        also: None,
+        body,
+    };
+    let drew = drawn.vector(canvas, &omega, Some("omega"), unknowns, "omega")?;
+    rays.drawn_from([0.0; 3], &drew);
+    super::euler::omega_angle(canvas, scene, body, &omega)
 }
 
 /// The mass centre's velocity where the scene gives it (v̄, labelled so), and the motion

@@ -4,7 +4,8 @@
 //! round shape's radius smaller, so a disk on an axle of length L is no wheel of radius L); a
 //! rate, a velocity or an angular velocity, in other proportions again, so that ω and v̄ given
 //! by their components point different ways, as a textbook draws them; any other symbol (a
-//! mass, a force's magnitude, an unknown, the time t) 1, and an angle without a value 30°.
+//! mass, a force's magnitude, an unknown, the time t) 1, and an angle without a value 30°,
+//! or another where an angle is given at about 30° (so θ and the γ given are told apart).
 //! Only directions and sizes matter to a drawing: a force is drawn at one length whatever its
 //! magnitude.
 
@@ -23,6 +24,10 @@ const LENGTHS: [f64; 5] = [1.0, 0.6, 0.8, 1.3, 0.45];
 /// view `v_x, v_y, v_z` and `w_x, w_y, w_z` are drawn over 20° apart and from every axis, and
 /// two thirds of their length (a vector of equal components points nearly at the eye).
 const RATES: [f64; 6] = [0.2, 1.2, 0.5, 0.3, 0.8, 1.2];
+/// The angles, in degrees, an angle without a value is drawn at: the first further than
+/// [`ANGLES_APART_DEG`] from every angle given.
+const ANGLES_DEG: [f64; 4] = [30.0, 20.0, 40.0, 15.0];
+const ANGLES_APART_DEG: f64 = 5.0;
 
 /// The value of every symbol a scene's figure evaluates.
 pub struct Sizes {
@@ -55,6 +60,23 @@ impl Sizes {
             .filter_map(Expr::as_symbol)
             .collect();
         let (mut radius_count, mut length_count, mut rate_count) = (0, 0, 0);
+        let given_angles: Vec<f64> = scene
+            .givens
+            .iter()
+            .filter(|g| g.dimension == Dimension::NONE)
+            .filter_map(|g| g.value)
+            .collect();
+        let apart = |a: &f64| {
+            given_angles
+                .iter()
+                .all(|g| (g - a.to_radians()).abs() > ANGLES_APART_DEG.to_radians())
+        };
+        let angle = ANGLES_DEG
+            .iter()
+            .copied()
+            .find(apart)
+            .unwrap_or(ANGLES_DEG[0])
+            .to_radians();
         let declared = scene
             .givens
             .iter()
@@ -75,7 +97,7 @@ impl Sizes {
                     rate_count += 1;
                     RATES[(rate_count - 1) % RATES.len()]
                 } else if dimension == Dimension::NONE || symbol == theta {
-                    30f64.to_radians()
+                    angle
                 } else {
                     1.0
                 }

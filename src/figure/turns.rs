@@ -76,6 +76,12 @@ fn mark(canvas: &mut Canvas, centre: P3, from: P3, a: P3, theta: f64, radius: f6
         let tip = add(centre, scaled(d, radius * LINE_PAST_ARC));
         canvas.path(Layer::Front, &[centre, tip], false, Stroke::CENTRE_LINE);
     }
+    arc(canvas, centre, from, a, theta, radius);
+}
+
+/// The arc of `radius` about `centre` from the unit `from` through `theta` about the unit `a`
+/// (square to `from`).
+pub fn arc(canvas: &mut Canvas, centre: P3, from: P3, a: P3, theta: f64, radius: f64) {
     let arc: Vec<P3> = (0..=ARC_POINTS)
         .map(|s| {
             let t = theta * s as f64 / ARC_POINTS as f64;
@@ -86,7 +92,7 @@ fn mark(canvas: &mut Canvas, centre: P3, from: P3, a: P3, theta: f64, radius: f6
 }
 
 /// `v` turned through `theta` about the unit `a` (Rodrigues).
-fn turned(v: P3, a: P3, theta: f64) -> P3 {
+pub fn turned(v: P3, a: P3, theta: f64) -> P3 {
     let (c, s) = (theta.cos(), theta.sin());
     add(
         add(scaled(v, c), scaled(cross(a, v), s)),

@@ -1175,3 +1175,42 @@ fn no_two_arrows_read_as_one() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// §18.11's disk stated by its ω (`constraint omega_y = w*sin(gamma)`, `omega_z =
+/// w*cos(gamma)`): ω is drawn from G along `sin γ j + cos γ k` (γ = 30° given; θ, unknown,
+/// is drawn at another angle so the two are told apart), and γ labels its angle from z.
+#[test]
+fn a_disk_stated_by_its_omega_shows_omega_at_gamma_from_its_axis() {
+    let scene = example("torque_free_disk_from_omega");
+    let drawn = figure(&scene).unwrap();
+    let gamma = 30f64.to_radians();
+    let along = drawn
+        .at([0.0, gamma.sin(), gamma.cos()])
+        .minus(drawn.at([0.0; 3]));
+    let omega = drawn.marks.iter().find_map(|m| match m {
+        Mark::Arrow {
+            role: Role::AngularVelocity,
+            from,
+            to,
+            ..
+        } => Some((*from, *to)),
+        _ => None,
+    });
+    let (from, to) = omega.expect("ω is drawn");
+    assert!(near(from, drawn.at([0.0; 3])), "ω from G: {from:?}");
+    let d = to.minus(from);
+    let sine = (d.x * along.y - d.y * along.x) / (d.length() * along.length());
+    assert!(
+        sine.abs() < 1e-9 && d.x * along.x + d.y * along.y > 0.0,
+        "ω along sin γ j + cos γ k: {d:?} against {along:?}"
+    );
+    let labels: Vec<&str> = drawn.labels.iter().map(|l| l.markup.as_str()).collect();
+    assert!(labels.contains(&r"$\gamma$"), "γ labelled: {labels:?}");
+    let theta = Sizes::of(&scene)
+        .of_expr(&Expr::sym(Symbol::new("theta")))
+        .unwrap();
+    assert!(
+        (theta - gamma).abs() > 5f64.to_radians(),
+        "θ drawn at {theta}"
+    );
+}

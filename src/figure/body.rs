@@ -164,8 +164,9 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
                 placed.centre,
             );
         }
-        for size in placed.named_sizes(canvas, &part.shape, &what)? {
-            if let Some([a, b]) = size.radius {
+        let alone = scene.parts.len() == 1;
+        for size in placed.named_sizes(canvas, &part.shape, alone, &what)? {
+            if let Some([a, b]) = size.line {
                 marks.push(open_path(canvas, &[a, b], Stroke::AXIS));
             }
             canvas.label_on_body(size.label, size.at, size.outward);
@@ -200,12 +201,13 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
 }
 
 /// A length of a shape written as one symbol, labelled with it where it shows: a rod's or a
-/// side's by its middle, a radius by a thin line from the centre to the rim.
+/// side's by its middle, a radius by a thin line from the centre to the rim, a cone's height
+/// by one along its axis.
 struct NamedSize {
     label: String,
     at: P3,
     outward: P3,
-    radius: Option<[P3; 2]>,
+    line: Option<[P3; 2]>,
 }
 
 /// A part's mass centre and its own axes in the frame.
@@ -332,11 +334,13 @@ impl Placed {
     }
 
     /// The shape's lengths that are one symbol (`rod(c)`, `plate(a, b)`, `disk(r)`), each
-    /// labelled with it.
+    /// labelled with it: a rod's at its middle, or where its middle is the body's mass centre
+    /// (`alone`, the body's one part), lettered G, half way from there to its end.
     fn named_sizes(
         &self,
         canvas: &Canvas,
         shape: &Shape,
+        alone: bool,
         what: &str,
     ) -> Result<Vec<NamedSize>, FigureError> {
         let [x, y, _] = self.axes;
@@ -353,19 +357,25 @@ impl Placed {
             })
             .unwrap_or(a);
         let mut out = Vec::new();
-        let mut name = |e: &crate::algebra::Expr, at: P3, outward: P3, radius: Option<[P3; 2]>| {
+        let mut name = |e: &crate::algebra::Expr, at: P3, outward: P3, line: Option<[P3; 2]>| {
             if e.as_symbol().is_some() {
                 out.push(NamedSize {
                     label: super::arrows::label(e),
                     at,
                     outward,
-                    radius,
+                    line,
                 });
             }
         };
         let len = |e| canvas.value(e, what);
         match shape {
-            Shape::SlenderRod { length } => name(length, self.centre, u, None),
+            Shape::SlenderRod { length } => {
+                let off_centre = match alone {
+                    true => len(length)? / 4.0,
+                    false => 0.0,
+                };
+                name(length, add(self.centre, scaled(x, off_centre)), u, None);
+            }
             Shape::ThinPlate { a, b } => {
                 let (ha, hb) = (len(a)? / 2.0, len(b)? / 2.0);
                 name(a, self.at(0.0, -hb, 0.0), scaled(y, -1.0), None);
@@ -401,13 +411,16 @@ impl Placed {
             Shape::SolidCone { radius, height } => {
                 let (r, h) = (len(radius)?, len(height)?);
                 let base = add(self.centre, scaled(x, 0.25 * h));
+                let apex = add(self.centre, scaled(x, -0.75 * h));
                 name(
                     radius,
                     add(base, scaled(u, r / 2.0)),
                     u,
                     Some([base, add(base, scaled(u, r))]),
                 );
-                name(height, add(self.centre, scaled(u, r / 2.0)), u, None);
+                // The height along the axis, from the apex to the base's centre.
+                let middle = add(self.centre, scaled(x, -0.25 * h));
+                name(height, middle, scaled(u, -1.0), Some([apex, base]));
             }
             Shape::Gyration { .. } | Shape::Explicit(_) | Shape::PointMass => {}
         }

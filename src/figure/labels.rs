@@ -28,6 +28,9 @@ const CROSSING: f64 = 25.0;
 const NEARER_ANOTHER: f64 = 80.0;
 const PER_DEGREE: f64 = 0.08;
 const PER_UNIT: f64 = 1.5;
+/// How near its anchor a line passes that does not part a label from it (a line through
+/// the anchor).
+const THROUGH_ANCHOR: f64 = 1.5;
 /// Past this distance from its anchor, a label's distance costs its square too.
 const FAR: f64 = 20.0;
 const PER_FAR_SQUARED: f64 = 0.1;
@@ -415,8 +418,22 @@ fn faults(c: P2, (hw, hh): (f64, f64), around: &Surroundings, (own, w): (usize, 
         .filter(|(a, b, _)| broken.is_none_or(|p| !through(p, *a, *b)))
         .map(|(_, _, weight)| weight)
         .sum();
+    // A stroke between the label and what it names (an arrow passing between G's dot and
+    // its letter) parts them: the letter reads as the arrow's. Lines through the anchor (G's
+    // axes, a rod it lies on, its own arrow) do not.
+    let nearest = P2::new(
+        mine.x.clamp(c.x - hw, c.x + hw),
+        mine.y.clamp(c.y - hh, c.y + hh),
+    );
+    let parted: f64 = around
+        .strokes
+        .iter()
+        .filter(|(a, b, _)| !near_segment(mine, *a, *b, THROUGH_ANCHOR))
+        .filter(|(a, b, _)| segments_cross(mine, nearest, *a, *b))
+        .map(|(_, _, weight)| weight)
+        .sum();
     ON_BODY * inside_faces as f64
-        + CROSSING * crossed
+        + CROSSING * (crossed + parted)
         + if nearer_another { NEARER_ANOTHER } else { 0.0 }
 }
 
@@ -462,10 +479,21 @@ fn segments(mark: &Mark) -> Vec<(P2, P2, f64)> {
 
 /// Whether the segment from `a` to `b` passes through the point `p` (within a hairline).
 fn through(p: P2, a: P2, b: P2) -> bool {
+    near_segment(p, a, b, 0.5)
+}
+
+/// Whether the segment from `a` to `b` passes within `within` of the point `p`.
+fn near_segment(p: P2, a: P2, b: P2, within: f64) -> bool {
     let d = b.minus(a);
     let t = ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / (d.x * d.x + d.y * d.y).max(1e-300);
     let foot = a.plus(d.times(t.clamp(0.0, 1.0)));
-    foot.minus(p).length() < 0.5
+    foot.minus(p).length() < within
+}
+
+/// Whether the segments `p q` and `a b` cross (each one's ends on either side of the other).
+fn segments_cross(p: P2, q: P2, a: P2, b: P2) -> bool {
+    let side = |o: P2, u: P2, v: P2| (u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x);
+    side(p, q, a) * side(p, q, b) < 0.0 && side(a, b, p) * side(a, b, q) < 0.0
 }
 
 /// Whether `p` is inside the polygon (even-odd).

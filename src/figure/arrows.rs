@@ -129,8 +129,9 @@ impl Drawn<'_> {
 
     /// One arrow along `direction`, its label at its free end; its unit direction and the
     /// length it was drawn at. Not `alone` (one of a vector's components at its point), it
-    /// is drawn from the point, as a textbook draws a reaction's components: their heads
-    /// brought into one point would knot there.
+    /// is drawn from the point, as a textbook draws a reaction's components (their heads
+    /// brought into one point would knot there), unless it runs along a line of the body
+    /// toward it (a bearing's thrust along the shaft, drawn into the bearing).
     fn arrow(
         &self,
         canvas: &mut Canvas,
@@ -155,7 +156,10 @@ impl Drawn<'_> {
         let mut side = canvas.beside(from, to, self.body.centre);
         let toward = view::dot(u, sub(self.body.centre, self.from));
         let toward_body = toward > TOWARD_BODY * self.body.reach;
-        if alone && load && !into_point && toward_body && side.length() > 0.0 {
+        // At O a component lies along an axis, beside which it is drawn from its point.
+        let at_origin = view::norm(self.from) < INSIDE * self.body.reach;
+        let along_body_line = side.length() > 0.0 && (alone || !at_origin);
+        if load && !into_point && toward_body && along_body_line {
             into_point = true;
             (from, to, free) = self.ends(canvas, u, length, into_point);
             side = canvas.beside(from, to, self.body.centre);

@@ -82,9 +82,10 @@ pub enum Layer {
 }
 
 impl<'s> Canvas<'s> {
-    /// The canvas of `scene` with its up drawn up: the fixed vertical K of the Eulerian
-    /// angles, else against the weight (a force holding `g`, or named `W`, `W_1`, `weight`),
-    /// else the axis the frame turns about (a precession about the vertical), else z.
+    /// The canvas of `scene` with its up drawn up: the axis the scene says is up (`up y`),
+    /// else the fixed vertical K of the Eulerian angles, else against the weight (a force
+    /// holding `g`, or named `W`, `W_1`, `weight`), else the axis the frame turns about (a
+    /// precession about the vertical), else z.
     pub fn new(scene: &Scene, sizes: &'s Sizes) -> Result<Canvas<'s>, FigureError> {
         let mut canvas = Canvas {
             sizes,
@@ -95,7 +96,11 @@ impl<'s> Canvas<'s> {
             wanted: Vec::new(),
             clear: Vec::new(),
         };
-        let up = if scene.euler_angles.is_some() {
+        let up = if let Some(axis) = scene.up {
+            let mut up = [0.0; 3];
+            up[axis.index()] = 1.0;
+            up
+        } else if scene.euler_angles.is_some() {
             let theta = canvas.value(&Expr::sym(EulerianAngles::chapter().nutation), "theta")?;
             [0.0, theta.sin(), theta.cos()]
         } else {

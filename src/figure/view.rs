@@ -1,14 +1,15 @@
 //! The projection of a figure: an orthographic view from in front, to the right and above,
-//! the textbook's near-isometric one, turned a little (of a few azimuths and elevations) where
-//! it would see a direction that matters end-on or draw two along one line. With z up, x comes toward the reader (drawn down
-//! and to the left), y goes to the right and z straight up; a circle is drawn as the ellipse
-//! it projects to and a sphere as a circle.
+//! the textbook's near-isometric one, turned a little (of a few azimuths and elevations)
+//! where it would see a direction that matters end-on or draw two along one line. With z
+//! up, x comes toward the reader (drawn down and to the left), y goes to the right and z
+//! straight up; a circle is drawn as the ellipse it projects to and a sphere as a circle.
 //!
-//! The scene's "up" is z unless its axes say otherwise: the fixed vertical K of the Eulerian
-//! angles (`K = sin θ j + cos θ k`), or the direction a weight (a force holding `g`) points
-//! against. The view turns that direction up: `p ↦ (R·p) projected`, R the cyclic turn of
-//! the axes when y (or x) is up — a y-up problem in the textbook's layout, z toward the
-//! reader, x to the right — else the rotation that takes `up` to z by the shortest turn.
+//! The scene's "up" is z unless the scene says otherwise (`up y`) or its axes do: the fixed
+//! vertical K of the Eulerian angles (`K = sin θ j + cos θ k`), or the direction a weight (a
+//! force holding `g`) points against. The view turns that direction up: `p ↦ (R·p)
+//! projected`, R the cyclic turn of the axes when y (or x) is up — a y-up problem in the
+//! textbook's layout, z toward the reader, x to the right — else the rotation that takes
+//! `up` to z by the shortest turn.
 
 /// A point or direction in the scene's frame, in its length unit.
 pub type P3 = [f64; 3];

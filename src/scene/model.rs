@@ -5,7 +5,7 @@
 use super::named_unit::NamedUnit;
 use super::unit_system::UnitSystem;
 use super::units::Dimension;
-use crate::algebra::{AlgebraError, Domain, Domains, Expr, Symbol, Vector, Q};
+use crate::algebra::{AlgebraError, Axis, Domain, Domains, Expr, Symbol, Vector, Q};
 use crate::mechanics::composite_body::composite_body;
 use crate::mechanics::eulerian_angles::EulerianAngles;
 use crate::mechanics::inertia::{InertiaTensor, MassPart};
@@ -401,6 +401,9 @@ pub struct Scene {
     pub parts: Vec<Part>,
     /// Whether the origin O is a fixed point of the body.
     pub fixed_point: bool,
+    /// `up y`: the axis drawn up in the figure (the vertical of a problem whose axes have y
+    /// up), where the scene says.
+    pub up: Option<Axis>,
     /// `about G`: with a fixed point, derive about the mass centre G (`H_G`, then
     /// `H_O = H_G + r̄ × m v̄`, `ΣM_O = Ḣ_G + r̄ × m ā`) instead of about O with `[I_O]`.
     pub about_mass_centre: bool,

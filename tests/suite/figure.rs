@@ -1214,3 +1214,21 @@ fn a_disk_stated_by_its_omega_shows_omega_at_gamma_from_its_axis() {
         "θ drawn at {theta}"
     );
 }
+
+/// `up y` turns the figure so that y is drawn straight up (the plate that falls along −y
+/// lies flat, as its problem has it), where the scene has no weight to say so.
+#[test]
+fn a_scene_saying_up_y_is_drawn_with_y_up() {
+    let scene = example("plate_falls_on_corner");
+    assert_eq!(scene.up, Some(kinetics::Axis::Y));
+    let drawn = figure(&scene).unwrap();
+    let y = drawn.at([0.0, 1.0, 0.0]).minus(drawn.at([0.0; 3]));
+    assert!(y.x.abs() < 1e-9 && y.y > 0.0, "y drawn {y:?}");
+    let without = kinetics::parse_scene("plate", &scene.source.replace("up y\n", "")).unwrap();
+    let z = figure(&without).unwrap();
+    let z_up = z.at([0.0, 0.0, 1.0]).minus(z.at([0.0; 3]));
+    assert!(
+        z_up.x.abs() < 1e-9 && z_up.y > 0.0,
+        "without it z is up: {z_up:?}"
+    );
+}

@@ -136,6 +136,7 @@ fn read_scene(
             givens: vec![],
             parts: vec![],
             fixed_point: false,
+            up: None,
             about_mass_centre: false,
             euler_angles: None,
             omega: None,
@@ -227,6 +228,10 @@ impl Reader<'_> {
             Rule::given => self.given(inner)?,
             Rule::body => self.body(inner, at)?,
             Rule::fixed_point => self.scene.fixed_point = true,
+            Rule::up => {
+                self.only_once(self.scene.up.is_some(), at)?;
+                self.scene.up = Some(orientation::frame_axis(&inner[0]));
+            }
             Rule::about_g => {
                 self.only_once(self.scene.about_mass_centre, at)?;
                 self.scene.about_mass_centre = true

@@ -125,7 +125,7 @@ impl Reader<'_> {
     }
 }
 
-fn frame_axis(p: &Pair<Rule>) -> Axis {
+pub(super) fn frame_axis(p: &Pair<Rule>) -> Axis {
     match p.as_str() {
         "y" => Axis::Y,
         "z" => Axis::Z,

@@ -5,7 +5,7 @@
 use crate::parse::Diagnostic;
 
 /// Each statement with the form it is written in, for the hint of a syntax error.
-const STATEMENT_FORMS: [(&str, &str); 19] = [
+const STATEMENT_FORMS: [(&str, &str); 20] = [
     ("title", "title Sample Problem 18.4"),
     (
         "statement",
@@ -22,6 +22,7 @@ const STATEMENT_FORMS: [(&str, &str); 19] = [
     ),
     ("fixed", "fixed point"),
     ("about", "about G"),
+    ("up", "up y"),
     ("omega", "omega = w1*i - w2*j"),
     ("omegadot", "omegadot = alpha*i"),
     ("frame", "frame rate = -w2*j  or  frame body-fixed"),

@@ -92,7 +92,7 @@ pub fn stated_omega(scene: &Scene) -> Option<Vector> {
     (stated[1] && stated[2] && (stated[0] || steady)).then_some(omega)
 }
 
-/// The arc from z to ω drawn from O (`w`, at the figure's sizes), labelled with the given
+/// The arc from z to `omega` (at the figure's sizes) drawn about O, labelled with the given
 /// angle its components are written in whose value is the angle between them (γ in
 /// `w sin γ j + w cos γ k`); nothing where no such angle is given. The arc's radius, if
 /// drawn.
@@ -109,10 +109,8 @@ pub fn omega_angle(
         return Ok(None);
     }
     let between = view::dot(z, w).clamp(-1.0, 1.0).acos();
-    let mut written: Vec<_> = omega.iter().flat_map(|c| c.symbols()).collect();
-    written.dedup();
     let mut angle = None;
-    for s in written {
+    for s in omega.iter().flat_map(|c| c.symbols()) {
         let is_angle = scene.dimension(s) == Some(Dimension::NONE);
         if is_angle && (canvas.value(&Expr::sym(s), "omega")? - between).abs() < 1e-9 {
             angle = Some(s);

@@ -131,12 +131,18 @@ pub fn words(words: &str) -> Ink {
     }
 }
 
-/// Appends the nodes' SVG text; returns their ink.
+/// Appends the nodes' SVG text; returns their ink. A function's argument stands a space
+/// after its name, its parenthesis right after it (`sin pt`, `sin(pt)`).
 pub fn maths(out: &mut String, nodes: &[Node]) -> Ink {
-    nodes
-        .iter()
-        .map(|n| one(out, n))
-        .fold(Ink::default(), Ink::then)
+    let mut ink = Ink::default();
+    for (k, node) in nodes.iter().enumerate() {
+        ink = ink.then(one(out, node));
+        let parenthesis = matches!(nodes.get(k + 1), Some(Node::Operator('(')));
+        if matches!(node, Node::Function(_)) && !parenthesis {
+            out.push(' ');
+        }
+    }
+    ink
 }
 
 fn one(out: &mut String, node: &Node) -> Ink {
@@ -163,7 +169,7 @@ fn one(out: &mut String, node: &Node) -> Ink {
             }
             out.push_str("<tspan font-style=\"normal\">");
             out.push_str(name);
-            out.push_str("</tspan> ");
+            out.push_str("</tspan>");
             Ink {
                 width: (name.len() as f64 + 1.0) * DIGIT_EM,
                 above: LETTER_HEIGHT,
@@ -197,6 +203,14 @@ pub fn escaped(out: &mut String, words: &str) {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_function_takes_its_parenthesis_without_a_space_and_a_bare_argument_with_one() {
+        let (text, _) = crate::print::markup::svg(r"$M_0 \sin(p t)$");
+        assert!(text.ends_with("sin</tspan>(pt)"), "{text}");
+        let (text, _) = crate::print::markup::svg(r"$\sin \theta$");
+        assert!(text.ends_with("sin</tspan> θ"), "{text}");
+    }
+
     #[test]
     fn a_difference_is_written_with_the_minus_sign() {
         let (text, _) = crate::print::markup::svg("$L - z_2$");

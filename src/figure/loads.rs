@@ -199,10 +199,10 @@ fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays, origin_n
             canvas.label(format!("${name}'$"), tip, *e);
         }
     }
-    if apart || !scene.fixed_point {
-        canvas.dot(body.centre, 2.5);
-        canvas.label_on_body("$G$".into(), body.centre, [-1.0, -1.0, -1.0]);
-    }
+    // G always: at a fixed point O too (a plate spinning about its fixed mass centre), both
+    // letters stand there.
+    canvas.dot(body.centre, 2.5);
+    canvas.label_on_body("$G$".into(), body.centre, [-1.0, -1.0, -1.0]);
 }
 
 /// ω (unless the Eulerian angles give it), and the frame's Ω where it differs: along a fixed

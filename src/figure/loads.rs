@@ -60,8 +60,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
     for e in UNIT {
         canvas.keep_clear([0.0; 3], scaled(e, AXES_KEPT_CLEAR * body.reach));
     }
-    omega(canvas, scene, body, &unknowns, &mut rays)?;
-    let omega_arc = stated_omega(canvas, scene, body, &unknowns, &mut rays)?;
+    let omega_arc = omega(canvas, scene, body, &unknowns, &mut rays)?;
     motion_of_g(canvas, scene, body, &unknowns, &mut rays)?;
     let mut lettered = Vec::new();
     for p in &scene.points {
@@ -205,18 +204,21 @@ fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays, origin_n
     canvas.label_on_body("$G$".into(), body.centre, [-1.0, -1.0, -1.0]);
 }
 
-/// ω (unless the Eulerian angles give it), and the frame's Ω where it differs: along a fixed
-/// axis past the shaft and the body, so it is not lost on the shaft; else from the fixed
-/// point, or from G.
+/// ω (with Eulerian angles, only where the scene states its components, §18.11's disk
+/// given ω at the angle γ from its axis, then with that angle), and the frame's Ω where it
+/// differs: along a fixed axis past the shaft and the body, so it is not lost on the shaft;
+/// else from the fixed point, or from G. The radius of the angle's arc, if drawn.
 fn omega(
     canvas: &mut Canvas,
     scene: &Scene,
     body: &Extent,
     unknowns: &[Symbol],
     rays: &mut Rays,
-) -> Result<(), FigureError> {
-    let (Some(omega), None) = (&scene.omega, &scene.euler_angles) else {
-        return Ok(());
+) -> Result<Option<f64>, FigureError> {
+    let stated = super::euler::stated_omega(scene);
+    let omega = match (&scene.omega, &scene.euler_angles, &stated) {
+        (Some(omega), None, _) | (_, Some(_), Some(omega)) => omega,
+        _ => return Ok(None),
     };
     let omega_whole = drawn_whole(omega, unknowns);
     // Ω where the frame does not turn with the body; drawn on ω's arrow where it is one of
@@ -289,34 +291,10 @@ fn omega(
             rays.drawn_from(origin, &drew);
         }
     }
-    Ok(())
-}
-
-/// ω a scene with Eulerian angles states by its components (§18.11's disk: ω at the angle γ
-/// from its axis), from O, and the angle; the radius of the angle's arc, if drawn.
-fn stated_omega(
-    canvas: &mut Canvas,
-    scene: &Scene,
-    body: &Extent,
-    unknowns: &[Symbol],
-    rays: &mut Rays,
-) -> Result<Option<f64>, FigureError> {
-    let Some(omega) = super::euler::stated_omega(scene) else {
-        return Ok(None);
-    };
-    let drawn = Drawn {
-        from: [0.0; 3],
-        length: OMEGA_LENGTH * body.reach,
-        double: true,
-        stroke: Stroke::MOTION,
-        role: Role::AngularVelocity,
-        into_point: false,
-        also: None,
-        body,
-    };
-    let drew = drawn.vector(canvas, &omega, Some("omega"), unknowns, "omega")?;
-    rays.drawn_from([0.0; 3], &drew);
-    super::euler::omega_angle(canvas, scene, body, &omega)
+    match &stated {
+        Some(omega) => super::euler::omega_angle(canvas, scene, body, omega),
+        None => Ok(None),
+    }
 }
 
 /// The mass centre's velocity where the scene gives it (v̄, labelled so), and the motion

@@ -191,9 +191,21 @@ impl Drawn<'_> {
             },
             false => self.stroke,
         };
+        // A motion vector from a point inside the body (ω at a box's G) goes under its faces
+        // until it comes out of sight's way, as the axes do.
+        let mut shown_from = from;
+        let depth = INSIDE * self.body.reach;
+        if !load && !into_point && self.body.surrounds(self.from, u, depth) {
+            let drawn = view::norm(sub(to, from));
+            let hidden = self.body.hidden_along(canvas, from, u, drawn);
+            if hidden > 0.0 && hidden < drawn {
+                shown_from = add(from, scaled(u, hidden));
+                canvas.path_beside(Layer::Behind, &[from, shown_from], false, stroke, side);
+            }
+        }
         canvas.arrow_beside(
             Layer::Front,
-            from,
+            shown_from,
             to,
             self.double,
             stroke,

@@ -28,6 +28,8 @@ pub struct Extent {
     pub centre: P3,
     pub reach: f64,
     solids: Vec<Solid>,
+    /// The rods, end to end, and the point masses, a point twice.
+    lines: Vec<[P3; 2]>,
 }
 
 /// A part with room inside (not a rod or a point mass): its outline's points, its centre and
@@ -57,6 +59,15 @@ impl Solid {
             };
             let x = view::dot(sub(p, self.centre), *a);
             x >= lo - margin && x <= hi + margin
+        })
+    }
+
+    /// Whether the part has room across each of its axes (a box, a disk; not a plate, on
+    /// whose face a line in its plane is drawn).
+    fn thick(&self) -> bool {
+        self.axes.iter().all(|a| {
+            let (lo, hi) = self.span(*a, self.centre);
+            hi - lo > 0.0
         })
     }
 
@@ -113,6 +124,38 @@ impl Extent {
             .any(|s| !s.within(p, -depth) && s.within(stepped, 0.0))
     }
 
+    /// How far along the unit vector `d` a line from the point `p` (G inside a box) runs out
+    /// of sight: inside a part with room across each axis, or behind one as drawn (a step
+    /// toward the eye from it goes into the part), in steps of [`OUT_STEP`] of the reach up
+    /// to `length`. A plate hides nothing: a line in its plane is drawn on its face.
+    pub fn hidden_along(&self, canvas: &Canvas, p: P3, d: P3, length: f64) -> f64 {
+        let step = OUT_STEP * self.reach;
+        let eye = canvas.view().toward_eye();
+        let in_a_solid = |q: P3| self.solids.iter().any(|s| s.thick() && s.within(q, 0.0));
+        let hidden = |t: f64| {
+            let q = add(p, scaled(d, t));
+            self.covers(canvas, q)
+                && (0..=2 * OUT_STEPS).any(|k| in_a_solid(add(q, scaled(eye, step * f64::from(k)))))
+        };
+        let steps = (length / step).floor() as u32;
+        (0..=steps)
+            .map(|k| step * f64::from(k))
+            .take_while(|t| hidden(*t))
+            .last()
+            .unwrap_or(0.0)
+    }
+
+    /// Whether the body reaches the point `p`, within `margin`: it is in a part's box (in
+    /// the part's own axes), or on a rod, or at a point mass.
+    pub fn reaches(&self, p: P3, margin: f64) -> bool {
+        self.solids.iter().any(|s| s.within(p, margin))
+            || self.lines.iter().any(|[a, b]| {
+                let along = sub(*b, *a);
+                let t = view::dot(sub(p, *a), along) / view::dot(along, along).max(1e-300);
+                view::norm(sub(p, add(*a, scaled(along, t.clamp(0.0, 1.0))))) <= margin
+            })
+    }
+
     /// Whether the body, as drawn, covers the point `p` (it projects inside the hull of the
     /// body's outline).
     pub fn covers(&self, canvas: &Canvas, p: P3) -> bool {
@@ -147,6 +190,7 @@ impl Extent {
 pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
     let mut samples = Vec::new();
     let mut solids = Vec::new();
+    let mut lines = Vec::new();
     let loaded = canvas.loaded_points(scene)?;
     let (mut mass, mut moment) = (0.0, [0.0; 3]);
     for (k, part) in scene.parts.iter().enumerate() {
@@ -172,14 +216,16 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
             canvas.label_on_body(size.label, size.at, size.outward);
         }
         if let (Shape::SlenderRod { .. }, [a, b]) = (&part.shape, &outline[..]) {
-            canvas.keep_clear(*a, *b);
+            canvas.keep_clear(*a, *b, Stroke::ROD);
         }
-        if !matches!(part.shape, Shape::SlenderRod { .. } | Shape::PointMass) {
-            solids.push(Solid {
+        match (&part.shape, &outline[..]) {
+            (Shape::SlenderRod { .. }, [a, b]) => lines.push([*a, *b]),
+            (Shape::PointMass, _) => lines.push([placed.centre; 2]),
+            _ => solids.push(Solid {
                 samples: outline.clone(),
                 centre: placed.centre,
                 axes: placed.axes,
-            });
+            }),
         }
         samples.extend(outline);
         canvas.part(placed.centre, marks);
@@ -197,6 +243,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
         centre,
         reach: if reach > 0.0 { reach } else { 1.0 },
         solids,
+        lines,
     })
 }
 

@@ -32,11 +32,15 @@ const OVERLAPPING: f64 = 0.2;
 const MEETING: f64 = 0.1;
 /// The share of a turn a curved arrow about a line goes round.
 const TURN: f64 = 0.8;
+/// The pieces a bar (a shaft, an axle) is drawn in, each at its own depth among the parts.
+const BAR_PIECES: usize = 12;
 
 pub struct Canvas<'s> {
     sizes: &'s Sizes,
     view: View,
-    behind: Vec<Mark>,
+    /// The marks under the parts (the axes, the lines inside the body), each with its shift,
+    /// as `front`'s.
+    behind: Vec<(Mark, P2)>,
     /// Each part's marks with the depth of its centre.
     parts: Vec<(f64, Vec<Mark>)>,
     /// The loads and the motion, each with the shift (in figure units, made after scaling)
@@ -49,19 +53,22 @@ pub struct Canvas<'s> {
 }
 
 /// A line an arrow is not drawn along: as drawn (before scaling), the shift it was drawn at
-/// (in figure units), and whether it is an arrow's (else an axis's, a rod's, the shaft's).
+/// (in figure units), whether it is an arrow's (else an axis's, a rod's, the shaft's) and
+/// its stroke's width.
 struct Kept {
     line: (P2, P2),
     shift: P2,
     arrow: bool,
+    width: f64,
 }
 
 impl Kept {
-    /// How far an arrow beside it stands: [`ARROWS_APART`] from an arrow, [`BESIDE`] a line.
+    /// How far an arrow beside it stands: [`ARROWS_APART`] from an arrow, [`BESIDE`] a
+    /// line's edge.
     fn apart(&self) -> f64 {
         match self.arrow {
             true => ARROWS_APART,
-            false => BESIDE,
+            false => BESIDE + self.width / 2.0,
         }
     }
 
@@ -220,13 +227,26 @@ impl<'s> Canvas<'s> {
 
     fn push(&mut self, layer: Layer, mark: Mark, shift: P2) {
         match layer {
-            Layer::Behind => self.behind.push(mark),
+            Layer::Behind => self.behind.push((mark, shift)),
             Layer::Front => self.front.push((mark, shift)),
         }
     }
 
     /// A polyline (or polygon) through the scene's points.
     pub fn path(&mut self, layer: Layer, points: &[P3], closed: bool, stroke: Stroke) {
+        self.path_beside(layer, points, closed, stroke, P2::new(0.0, 0.0));
+    }
+
+    /// A polyline through the scene's points, drawn `shift` figure units over (the part
+    /// inside the body of an arrow drawn beside a line).
+    pub fn path_beside(
+        &mut self,
+        layer: Layer,
+        points: &[P3],
+        closed: bool,
+        stroke: Stroke,
+        shift: P2,
+    ) {
         let points = points.iter().map(|p| self.project(*p)).collect();
         let mark = Mark::Path {
             points,
@@ -234,16 +254,17 @@ impl<'s> Canvas<'s> {
             filled: false,
             stroke,
         };
-        self.push(layer, mark, P2::new(0.0, 0.0));
+        self.push(layer, mark, shift);
     }
 
-    /// The line from `a` to `b` (an axis, a rod, the shaft) is one a vector's arrow is not
-    /// drawn along, but [`BESIDE`] it.
-    pub fn keep_clear(&mut self, a: P3, b: P3) {
+    /// The line from `a` to `b` (an axis, a rod, the shaft), drawn with `stroke`, is one a
+    /// vector's arrow is not drawn along, but [`BESIDE`] its edge.
+    pub fn keep_clear(&mut self, a: P3, b: P3, stroke: Stroke) {
         self.clear.push(Kept {
             line: (self.project(a), self.project(b)),
             shift: P2::new(0.0, 0.0),
             arrow: false,
+            width: stroke.width,
         });
     }
 
@@ -255,6 +276,7 @@ impl<'s> Canvas<'s> {
             line: (self.project(from), self.project(to)),
             shift,
             arrow: true,
+            width: Stroke::MOTION.width,
         });
     }
 
@@ -387,6 +409,28 @@ impl<'s> Canvas<'s> {
         self.push(Layer::Front, Mark::Dot { at, radius }, P2::new(0.0, 0.0));
     }
 
+    /// A straight bar from `a` to `b` (a shaft, an axle) in pieces, each drawn among the
+    /// parts at its own depth: it passes behind a disk on it and in front of it where it
+    /// comes out.
+    pub fn bar(&mut self, a: P3, b: P3, stroke: Stroke) {
+        let at = |j: usize| {
+            view::add(
+                a,
+                view::scaled(view::sub(b, a), j as f64 / BAR_PIECES as f64),
+            )
+        };
+        for k in 0..BAR_PIECES {
+            let (q0, q1) = (at(k), at(k + 1));
+            let piece = Mark::Path {
+                points: vec![self.project(q0), self.project(q1)],
+                closed: false,
+                filled: false,
+                stroke,
+            };
+            self.part(view::scaled(view::add(q0, q1), 0.5), vec![piece]);
+        }
+    }
+
     /// A part's marks, drawn after the parts farther from the eye than `centre`.
     pub fn part(&mut self, centre: P3, marks: Vec<Mark>) {
         let depth = self.view.depth(centre);
@@ -439,11 +483,7 @@ impl<'s> Canvas<'s> {
     /// label would have less than [`ROOM_PER_LABEL`] (up to [`MOST_GROWTH`] times), and those
     /// drawn beside a line shifted, then the labels placed.
     pub fn finish(self) -> Figure {
-        let mut marks: Vec<(Mark, P2)> = self
-            .behind
-            .into_iter()
-            .map(|m| (m, P2::new(0.0, 0.0)))
-            .collect();
+        let mut marks = self.behind;
         let mut parts = self.parts;
         parts.sort_by(|a, b| a.0.total_cmp(&b.0));
         marks.extend(

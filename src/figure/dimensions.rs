@@ -5,8 +5,8 @@
 //! `L/2`). Drawn only when every span is written in the scene's symbols: a span known only as
 //! a number has no name to show. And each point mass's radius from the shaft (an unbalance's
 //! e₁), a line from the axis out to it labelled with its length; about a fixed point with no
-//! shaft, the distance from O to G along an axis (an axle's length L). Each label stands on
-//! its dimension line, which its halo breaks.
+//! shaft, the distance from O to G along an axis (an axle's length L), by the axle where one
+//! is drawn. Each label stands on its dimension line, which its halo breaks.
 
 use super::body::Extent;
 use super::canvas::{Canvas, Layer};
@@ -69,12 +69,14 @@ pub fn along_shaft(
 }
 
 /// About a fixed point with no shaft, G on one of the frame's axes at a distance the scene
-/// writes in its symbols (SP 18.2's axle OG, L): a dimension from O to G.
+/// writes in its symbols (SP 18.2's axle OG, L): that distance by the `link` from O where
+/// one is drawn, else a dimension from O to G.
 pub fn to_mass_centre(
     canvas: &mut Canvas,
     scene: &Scene,
     body: &Extent,
     loads: &[P3],
+    link: Option<[P3; 2]>,
 ) -> Result<(), FigureError> {
     let [part] = &scene.parts[..] else {
         return Ok(());
@@ -92,6 +94,14 @@ pub fn to_mass_centre(
         true => part.position[k].clone(),
         false => -&part.position[k],
     };
+    if distance.symbols().is_empty() {
+        return Ok(());
+    }
+    if let Some(link) = link {
+        let (at, side) = super::link::middle(canvas, link);
+        canvas.label(super::arrows::label(&distance), at, side);
+        return Ok(());
+    }
     let stations = vec![(0.0, Expr::zero()), (g[k].abs(), distance)];
     chain(canvas, body, loads, (a, k), stations);
     Ok(())

@@ -43,7 +43,7 @@ pub fn angles(
     let reach = body.reach;
     let top = scaled(k, precession + PAST_RATE * reach);
     canvas.path(Layer::Behind, &[[0.0; 3], top], false, Stroke::CENTRE_LINE);
-    canvas.keep_clear([0.0; 3], top);
+    canvas.keep_clear([0.0; 3], top, Stroke::CENTRE_LINE);
     canvas.label("$Z$".into(), top, k);
     // θ: the arc from K to z, its label outside the middle.
     let arc: Vec<P3> = (0..=24)

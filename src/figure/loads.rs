@@ -20,7 +20,7 @@ use super::arrows::{
 use super::body::{circle, Extent};
 use super::canvas::{Canvas, Layer};
 use super::view::{self, add, scaled, sub, P3};
-use super::{FigureError, Mark, Role, Stroke};
+use super::{FigureError, Role, Stroke};
 use crate::algebra::{Expr, Symbol, Vector};
 use crate::scene::model::Scene;
 use crate::scene::units::Dimension;
@@ -37,19 +37,22 @@ const AXES_KEPT_CLEAR: f64 = 10.0;
 /// The length of the axes Gx'y'z' drawn when the page works about G away from O.
 const G_AXIS: f64 = 0.5;
 const BEARING_RADIUS: f64 = 0.07;
-/// The pieces a shaft is drawn in, each at its own depth among the parts.
-const SHAFT_PIECES: usize = 12;
 const BEARING_LENGTH: f64 = 0.1;
 /// The radius of a couple's curved arrow round the shaft.
 const TURNING_RADIUS: f64 = 0.12;
 
 const UNIT: [P3; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 
-/// Everything drawn besides the body: the fixed axis with its shaft and bearings, ω, the
-/// named points, the forces, couples and impulses, then the axes past all of it.
+/// Everything drawn besides the body: the fixed axis with its shaft and bearings (else the
+/// link to a pivot the body does not reach), ω, the named points, the forces, couples and
+/// impulses, then the axes past all of it.
 pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
     let unknowns = magnitudes(scene);
     let shaft = fixed_axis(canvas, scene, body, &unknowns)?;
+    let link = match shaft.is_empty() {
+        true => super::link::draw(canvas, scene, body),
+        false => None,
+    };
     let mut rays = Rays {
         body,
         ends: shaft,
@@ -58,7 +61,11 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
     };
     // The axes run from O past everything drawn along them.
     for e in UNIT {
-        canvas.keep_clear([0.0; 3], scaled(e, AXES_KEPT_CLEAR * body.reach));
+        canvas.keep_clear(
+            [0.0; 3],
+            scaled(e, AXES_KEPT_CLEAR * body.reach),
+            Stroke::AXIS,
+        );
     }
     let omega_arc = omega(canvas, scene, body, &unknowns, &mut rays)?;
     motion_of_g(canvas, scene, body, &unknowns, &mut rays)?;
@@ -92,7 +99,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
             super::dimensions::along_shaft(canvas, scene, body, along, &loaded.ends)?;
             super::dimensions::radii(canvas, scene, body, along)?;
         }
-        None => super::dimensions::to_mass_centre(canvas, scene, body, &loaded.ends)?,
+        None => super::dimensions::to_mass_centre(canvas, scene, body, &loaded.ends, link)?,
     }
     axes(canvas, scene, body, &rays, origin_named);
     Ok(())
@@ -205,7 +212,8 @@ fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays, origin_n
 }
 
 /// ω (with Eulerian angles, only where the scene states its components, §18.11's disk
-/// given ω at the angle γ from its axis, then with that angle), and the frame's Ω where it
+/// given ω at the angle γ from its axis, then with that angle; after an impact, only where
+/// it is known), and the frame's Ω where it
 /// differs: along a fixed axis past the shaft and the body, so it is not lost on the shaft;
 /// else from the fixed point, or from G. The radius of the angle's arc, if drawn.
 fn omega(
@@ -220,6 +228,11 @@ fn omega(
         (Some(omega), None, _) | (_, Some(_), Some(omega)) => omega,
         _ => return Ok(None),
     };
+    // Where the scene gives the motion before an impact, the figure shows that (ω₀); an
+    // unknown ω after it is the answer, as an unknown v̄ is.
+    if scene.omega_before.is_some() && holds_any(omega, unknowns) {
+        return Ok(None);
+    }
     let omega_whole = drawn_whole(omega, unknowns);
     // Ω where the frame does not turn with the body; drawn on ω's arrow where it is one of
     // ω's components (Ω = −ω₂ j), labelled with both (ω₂, Ω).
@@ -503,7 +516,7 @@ fn fixed_axis(
             false,
             Stroke::CENTRE_LINE,
         );
-        canvas.keep_clear(scaled(a, lo), scaled(a, hi));
+        canvas.keep_clear(scaled(a, lo), scaled(a, hi), Stroke::CENTRE_LINE);
         if bearings.len() >= 2 {
             let along: Vec<f64> = bearings
                 .iter()
@@ -516,19 +529,8 @@ fn fixed_axis(
                     (l.min(*s), h.max(*s))
                 });
             let (p0, p1) = (scaled(a, s0), scaled(a, s1));
-            // In pieces, each drawn by its own depth: the shaft passes behind a disk on it
-            // and in front of it where it comes out.
-            for k in 0..SHAFT_PIECES {
-                let at = |j: usize| scaled(a, s0 + (s1 - s0) * j as f64 / SHAFT_PIECES as f64);
-                let (q0, q1) = (at(k), at(k + 1));
-                let piece = Mark::Path {
-                    points: vec![canvas.project(q0), canvas.project(q1)],
-                    closed: false,
-                    filled: false,
-                    stroke: Stroke::SHAFT,
-                };
-                canvas.part(scaled(add(q0, q1), 0.5), vec![piece]);
-            }
+            canvas.bar(p0, p1, Stroke::SHAFT);
+            canvas.keep_clear(p0, p1, Stroke::SHAFT);
             ends = vec![p0, p1];
         }
         for b in bearings {

@@ -16,6 +16,7 @@ mod dimensions;
 mod euler;
 mod ground;
 mod labels;
+mod link;
 mod loads;
 pub mod sizes;
 pub mod svg;
@@ -40,8 +41,9 @@ pub const FONT_SIZE: f64 = 14.0;
 /// How much a face hides what is behind it: the axes and parts behind a body show faintly.
 pub const FACE_OPACITY: f64 = 0.82;
 /// How far a load's arrow is drawn beside a line it would lie along (an axis, a rod, the
-/// shaft), in figure units: a reaction along the shaft, a weight along a rod.
-pub const BESIDE: f64 = 6.0;
+/// shaft), in figure units from the line's edge: a reaction along the shaft, a weight along
+/// a rod, ω along an axle.
+pub const BESIDE: f64 = 5.6;
 /// How far apart two arrows along one line are drawn (ω and v̄ the same way from G, a weight
 /// over a normal force), in figure units: their heads, [`HEAD_HALF_WIDTH`] to a side, a few
 /// units clear of each other.

@@ -89,15 +89,36 @@ fn every_example_has_a_figure_whose_labels_are_apart_and_inside_it() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
+/// The strokes of the lines an arrow is drawn beside, not along: the axes, the centre lines,
+/// the rods, the shaft and an axle.
+const KEPT_CLEAR: [Stroke; 4] = [
+    Stroke::AXIS,
+    Stroke::CENTRE_LINE,
+    Stroke::ROD,
+    Stroke::SHAFT,
+];
+
+/// How far an arrow beside a line drawn with `stroke` stands from the line's middle.
+fn beside(stroke: Stroke) -> f64 {
+    BESIDE + stroke.width / 2.0
+}
+
+/// The farthest an arrow beside a line stands from the line's middle.
+fn farthest_beside() -> f64 {
+    KEPT_CLEAR.map(beside).into_iter().fold(0.0, f64::max)
+}
+
 /// Whether an arrow's end `end` (its other end `other`) is at the point `at`, or beside it:
-/// square to the arrow, [`BESIDE`] a line it would lie on or [`ARROWS_APART`] from an arrow
-/// there (a weight beside a normal force), or beside both, on one side or either side.
+/// square to the arrow, [`BESIDE`] the edge of a line it would lie on or [`ARROWS_APART`]
+/// from an arrow there (a weight beside a normal force), or beside both, on one side or
+/// either side.
 fn at_or_beside(end: P2, other: P2, at: P2) -> bool {
     let (off, along) = (end.minus(at), other.minus(end));
     let square = (off.x * along.x + off.y * along.y).abs() < 1e-6 * along.length();
-    let places = (0..=1).flat_map(|lines| {
+    let lines = std::iter::once(0.0).chain(KEPT_CLEAR.map(beside));
+    let places = lines.flat_map(|l| {
         (0..=2).flat_map(move |arrows| {
-            let (l, a) = (f64::from(lines) * BESIDE, f64::from(arrows) * ARROWS_APART);
+            let a = f64::from(arrows) * ARROWS_APART;
             [l + a, (l - a).abs()]
         })
     });
@@ -662,7 +683,7 @@ fn the_frame_rate_is_drawn_where_it_differs_from_omega() {
                 let (tail, along) = (from.minus(o), to.minus(*from));
                 // On the ray, or beside it where it is an axis.
                 let on_the_ray = (tail.x * e.y - tail.y * e.x).abs()
-                    <= (BESIDE + 1e-6) * e.length()
+                    <= (farthest_beside() + 1e-6) * e.length()
                     && tail.x * e.x + tail.y * e.y >= 0.0;
                 on_the_ray
                     && (along.x * e.y - along.y * e.x).abs() < 1e-6 * along.length() * e.length()
@@ -801,15 +822,176 @@ fn the_motion_before_an_impact_is_drawn() {
         })
     });
     assert!(along_x, "v̄₀ from G along x");
-    for name in ["v0", "w0"] {
-        let label = format!(
+    let latex = |name: &str| {
+        format!(
             "${}$",
             kinetics::print::latex(&Expr::sym(Symbol::new(name)))
-        );
+        )
+    };
+    for name in ["v0", "w0"] {
+        let label = latex(name);
         assert!(
             drawn.labels.iter().any(|l| l.markup == label),
             "{label} labelled"
         );
+    }
+    // The unknown ω = w k after the blow is the answer, not the statement: only ω₀ is drawn.
+    let rates = drawn
+        .marks
+        .iter()
+        .filter(|m| {
+            matches!(
+                m,
+                Mark::Arrow {
+                    role: Role::AngularVelocity,
+                    ..
+                }
+            )
+        })
+        .count();
+    assert_eq!(rates, 1, "ω₀ alone");
+    assert!(
+        !drawn.labels.iter().any(|l| l.markup == latex("w")),
+        "no ω after"
+    );
+}
+
+/// A body pivoted at a point it does not reach hangs on a link of negligible mass, drawn
+/// from O to it as SP 18.2 draws its axle OG: a bar in the shaft's stroke along OG from O to
+/// G on the disk, labelled L by its middle; a top's stem from O up its axis to the disk; a
+/// box's arm from O to its bottom face. A body that reaches O (the cone on its apex, the box
+/// on its corner) has none.
+#[test]
+fn a_body_pivoted_off_itself_hangs_on_a_link_from_o() {
+    for (name, length) in [
+        ("sp18_2_rolling_disk", Some("L")),
+        ("sp18_5_disk_reactions", Some("L")),
+        ("top_steady_tilt", None),
+        ("box_centre_on_axis", None),
+    ] {
+        let scene = example(name);
+        let drawn = figure(&scene).unwrap();
+        let (o, g) = (
+            drawn.at([0.0; 3]),
+            drawn_at(&drawn, &scene, &scene.parts[0].position),
+        );
+        let og = g.minus(o);
+        let t = |p: P2| (p.minus(o).x * og.x + p.minus(o).y * og.y) / (og.x * og.x + og.y * og.y);
+        let off = |p: P2| (p.minus(o).x * og.y - p.minus(o).y * og.x).abs() / og.length();
+        let bar = two_point_paths(&drawn, Stroke::SHAFT);
+        assert!(!bar.is_empty(), "{name}: a link drawn");
+        for (a, b) in &bar {
+            for p in [*a, *b] {
+                assert!(off(p) < 1e-6, "{name}: the link on OG");
+                assert!(
+                    (-1e-9..=1.0 + 1e-9).contains(&t(p)),
+                    "{name}: the link between O and G"
+                );
+            }
+        }
+        assert!(
+            bar.iter().any(|(a, _)| near(*a, o)),
+            "{name}: the link from O"
+        );
+        let end = bar.iter().map(|(_, b)| t(*b)).fold(0.0, f64::max);
+        match name {
+            // The arm meets the box at its bottom face, c/2 below G at L above O.
+            "box_centre_on_axis" => assert!(end > 0.8 && end < 1.0, "{name}: to the box, {end}"),
+            _ => assert!((end - 1.0).abs() < 1e-9, "{name}: on to G, {end}"),
+        }
+        if let Some(length) = length {
+            let label = format!(
+                "${}$",
+                kinetics::print::latex(&Expr::sym(Symbol::new(length)))
+            );
+            let middle = o.plus(og.times(0.5));
+            let by_the_middle = drawn
+                .labels
+                .iter()
+                .any(|l| l.markup == label && l.centre.minus(middle).length() < 0.25 * og.length());
+            assert!(by_the_middle, "{name}: {label} by the link's middle");
+        }
+    }
+    for name in ["cone_rolling_about_apex", "box_about_body_diagonal"] {
+        let drawn = figure(&example(name)).unwrap();
+        assert!(
+            two_point_paths(&drawn, Stroke::SHAFT).is_empty(),
+            "{name}: no link"
+        );
+    }
+}
+
+/// ω at the mass centre inside a box goes under the box's faces until it comes out of one,
+/// as the axes do, and is drawn in front from there: in the torque-free box, whose ω lies
+/// nearly along y, a line in ω's stroke from G (beside the y axis), drawn before (under) the
+/// box's outline, runs to the tail of ω's double arrow, within a step of the reach (a
+/// twentieth) short of where ω's line leaves the face y = b/2. A flat plate hides nothing:
+/// SP 18.1's ω components start at G.
+#[test]
+fn omega_inside_a_box_goes_under_its_faces() {
+    let scene = example("free_body");
+    let drawn = figure(&scene).unwrap();
+    let value = |name: &str| {
+        let given = scene.givens.iter().find(|g| g.symbol == Symbol::new(name));
+        given
+            .and_then(|g| g.value)
+            .unwrap_or_else(|| panic!("no {name}"))
+    };
+    let (a, b, c) = (value("a"), value("b"), value("c"));
+    let omega = [value("w_1"), value("w_2"), value("w_3")];
+    // Where ω's line from G (the origin) leaves the face y = b/2 of the box a × b × c.
+    let exit = omega.map(|w| w * (b / 2.0) / omega[1]);
+    let step = 0.05 * (a * a + b * b + c * c).sqrt() / 2.0;
+    let o = drawn.at([0.0; 3]);
+    let unit_drawn = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+        .map(|e| drawn.at(e).minus(o).length())
+        .into_iter()
+        .sum::<f64>();
+    let (index, tail) = drawn
+        .marks
+        .iter()
+        .enumerate()
+        .find_map(|(k, m)| match m {
+            Mark::Arrow {
+                role: Role::AngularVelocity,
+                from,
+                ..
+            } => Some((k, *from)),
+            _ => None,
+        })
+        .expect("ω drawn");
+    let short = tail.minus(drawn.at(exit)).length();
+    assert!(
+        short <= step * unit_drawn,
+        "ω's arrow from its face, {short} off"
+    );
+    let under = drawn.marks.iter().position(|m| {
+        matches!(m, Mark::Path { points, stroke, .. }
+            if *stroke == Stroke::MOTION
+                && points[0].minus(o).length() <= farthest_beside() + 1e-6
+                && near(points[1], tail))
+    });
+    let outline = drawn
+        .marks
+        .iter()
+        .position(|m| matches!(m, Mark::Path { stroke, .. } if *stroke == Stroke::OUTLINE));
+    match (under, outline) {
+        (Some(u), Some(f)) => assert!(u < f && f < index, "under the faces, ω's arrow over them"),
+        _ => panic!("ω's line from G under the box: {under:?}, outline {outline:?}"),
+    }
+    let plate = example("sp18_1_plate_impact");
+    let drawn = figure(&plate).unwrap();
+    let g = drawn_at(&drawn, &plate, &plate.parts[0].position);
+    for m in &drawn.marks {
+        if let Mark::Arrow {
+            role: Role::AngularVelocity,
+            from,
+            to,
+            ..
+        } = m
+        {
+            assert!(at_or_beside(*from, *to, g), "the plate's ω from G");
+        }
     }
 }
 
@@ -933,7 +1115,7 @@ fn pushes_come_into_their_points_and_hidden_loads_are_dashed() {
     let (from, to, stroke) = blow.expect("the blow drawn");
     // Into the corner, or beside it where its line is drawn along an axis.
     let off = to.minus(corner).length();
-    assert!(off < BESIDE + 1e-6, "into the corner, {off} off");
+    assert!(off < farthest_beside() + 1e-6, "into the corner, {off} off");
     assert_eq!(
         stroke.dashes,
         Dashes::Hidden,
@@ -1089,21 +1271,34 @@ fn axes_in_front_of_the_body_are_drawn_over_it() {
     assert!(again, "x drawn again in front from where it leaves the box");
 }
 
-/// A dimension's extension line is drawn on a side where no arrow runs along it: in SP 18.2
-/// and 18.5, ω₂ is drawn down from O, and the span OG = L below the disk would run its line
-/// from O over that arrow; in the horizontal wheel gyroscope the weight at G would lie on
-/// G's. Checked on the drawing itself: no dimension stroke is parallel to an arrow (within
-/// a degree) with both of the arrow's ends within a unit of its line and beside it.
+/// A dimension's extension line is drawn on a side where no arrow runs along it: a rod
+/// pivoted at its end O turning about x and precessing at ω₂ about −y has ω₂ drawn down from
+/// O, and the span OG = L/2 below the rod would run its line from O over that arrow. Checked
+/// on the drawing itself, there and in every example: no dimension stroke is parallel to an
+/// arrow (within a degree) with both of the arrow's ends within a unit of its line and
+/// beside it.
 #[test]
 fn extension_lines_run_over_no_arrow() {
-    for name in [
-        "sp18_2_rolling_disk",
-        "sp18_5_disk_reactions",
-        "wheel_gyroscope_horizontal",
-    ] {
-        let drawn = figure(&example(name)).unwrap();
+    let rod = kinetics::parse_scene(
+        "rod",
+        "given m : kg\ngiven L : m\ngiven w1 : rad/s\nunknown w2 : rad/s\nbody rod(L) mass m at (L/2, 0, 0) along x
+fixed point\nomega = w1*i - w2*j\nframe rate = -w2*j\nfind H_O",
+    )
+    .unwrap();
+    let shaft = "sp18_4_shaft_reactions";
+    let mut scenes = vec![
+        ("rod".to_string(), rod, true),
+        (shaft.to_string(), example(shaft), true),
+    ];
+    scenes.extend(
+        examples()
+            .into_iter()
+            .map(|(name, scene)| (name, scene, false)),
+    );
+    for (name, scene, must) in &scenes {
+        let drawn = figure(scene).unwrap();
         let dimensions = two_point_paths(&drawn, Stroke::DIMENSION);
-        assert!(!dimensions.is_empty(), "{name}: dimensioned");
+        assert!(!*must || !dimensions.is_empty(), "{name}: dimensioned");
         for (a, b) in &dimensions {
             let d = b.minus(*a);
             let across = |p: P2| ((p.x - a.x) * d.y - (p.y - a.y) * d.x).abs() / d.length();

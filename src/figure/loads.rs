@@ -27,7 +27,7 @@ use crate::scene::units::Dimension;
 
 /// Lengths in proportion to the body's reach.
 const FORCE_LENGTH: f64 = 0.45;
-const COUPLE_LENGTH: f64 = 0.4;
+const COUPLE_LENGTH: f64 = 0.55;
 /// The gap before a vector drawn past the body along a ray from O.
 const RAY_GAP: f64 = 0.1;
 const OMEGA_LENGTH: f64 = 0.55;

@@ -28,6 +28,8 @@ const CROSSING: f64 = 25.0;
 const NEARER_ANOTHER: f64 = 80.0;
 const PER_DEGREE: f64 = 0.08;
 const PER_UNIT: f64 = 1.5;
+/// How many times more crossing a bar (a rod, the shaft) costs than crossing a line as wide.
+const BAR_CUT: f64 = 4.0;
 /// How near its anchor a line passes that does not part a label from it (a line through
 /// the anchor).
 const THROUGH_ANCHOR: f64 = 1.5;
@@ -438,8 +440,8 @@ fn faults(c: P2, (hw, hh): (f64, f64), around: &Surroundings, (own, w): (usize, 
 }
 
 /// The segments a mark draws (its path, its arrow's line and heads, a dot's box diagonal),
-/// each weighted by its stroke's width against an outline's, a vector's arrow (not an
-/// axis) as a rod.
+/// each weighted by its stroke's width against an outline's (a bar's [`BAR_CUT`] times
+/// more), a vector's arrow (not an axis) as a rod.
 fn segments(mark: &Mark) -> Vec<(P2, P2, f64)> {
     let chain = |points: &[P2], closed: bool, weight: f64| {
         let mut s: Vec<(P2, P2, f64)> = points.windows(2).map(|w| (w[0], w[1], weight)).collect();
@@ -448,10 +450,14 @@ fn segments(mark: &Mark) -> Vec<(P2, P2, f64)> {
         }
         s
     };
-    let weight = |stroke: &Stroke| (stroke.width / Stroke::OUTLINE.width).max(1.0);
-    // A vector's arrow (a load, ω, v̄; not an axis) under a label reads as labelled by it:
-    // as costly as a rod.
-    let vector = Stroke::ROD.width / Stroke::OUTLINE.width;
+    // A bar (a rod, the shaft) under a label is cut by its white box: the rod reads as two.
+    let weight = |stroke: &Stroke| match stroke.width >= Stroke::SHAFT.width {
+        true => BAR_CUT * stroke.width / Stroke::OUTLINE.width,
+        false => (stroke.width / Stroke::OUTLINE.width).max(1.0),
+    };
+    // A vector's arrow (a load, ω, v̄; not an axis) under a label reads as labelled by it,
+    // and is cut by its box: as costly as a rod.
+    let vector = weight(&Stroke::ROD);
     match mark {
         Mark::Path {
             points,

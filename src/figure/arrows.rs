@@ -57,11 +57,13 @@ pub(super) struct Drew {
     pub(super) arrows: Vec<Arrow>,
 }
 
-/// An arrow drawn: its unit direction, the length it was drawn at, its tail and its head.
+/// An arrow drawn: its unit direction, the length it was drawn at, its tail and its head,
+/// and whether it was drawn beside its line (else on it).
 pub(super) struct Arrow {
     pub(super) direction: P3,
     pub(super) length: f64,
     pub(super) ends: [P3; 2],
+    pub(super) beside: bool,
 }
 
 /// How a vector is drawn: from a point (or into it), at a length, single or double.
@@ -153,7 +155,7 @@ impl Drawn<'_> {
         // Nothing is drawn along an axis, a rod or the shaft, but beside it; a load along
         // such a line toward the body (a bearing's thrust along the shaft, by more than
         // [`TOWARD_BODY`]) comes into its point from outside too.
-        let mut side = canvas.beside(from, to, self.body.centre);
+        let mut side = canvas.beside(from, to, self.body.centre, load);
         let toward = view::dot(u, sub(self.body.centre, self.from));
         let toward_body = toward > TOWARD_BODY * self.body.reach;
         // At O a component lies along an axis, beside which it is drawn from its point.
@@ -162,7 +164,7 @@ impl Drawn<'_> {
         if load && !into_point && toward_body && along_body_line {
             into_point = true;
             (from, to, free) = self.ends(canvas, u, length, into_point);
-            side = canvas.beside(from, to, self.body.centre);
+            side = canvas.beside(from, to, self.body.centre, load);
         }
         // A free head landing on another arrow's head (a weight's on a reaction's) is drawn
         // shorter, else longer, so the two are told apart.
@@ -175,7 +177,7 @@ impl Drawn<'_> {
             if let Some(l) = other {
                 length = l;
                 (from, to, free) = self.ends(canvas, u, length, false);
-                side = canvas.beside(from, to, self.body.centre);
+                side = canvas.beside(from, to, self.body.centre, load);
             }
         }
         let outward = match into_point {
@@ -220,6 +222,7 @@ impl Drawn<'_> {
             direction: u,
             length: stretched(canvas, u, length),
             ends: [from, to],
+            beside: side.length() > 0.0,
         })
     }
 

@@ -53,12 +53,13 @@ pub struct Canvas<'s> {
 }
 
 /// A line an arrow is not drawn along: as drawn (before scaling), the shift it was drawn at
-/// (in figure units), whether it is an arrow's (else an axis's, a rod's, the shaft's) and
-/// its stroke's width.
+/// (in figure units), whether it is an arrow's (else an axis's, a rod's, the shaft's),
+/// whether it is one of the axes Oxyz, and its stroke's width.
 struct Kept {
     line: (P2, P2),
     shift: P2,
     arrow: bool,
+    axis: bool,
     width: f64,
 }
 
@@ -264,7 +265,21 @@ impl<'s> Canvas<'s> {
             line: (self.project(a), self.project(b)),
             shift: P2::new(0.0, 0.0),
             arrow: false,
+            axis: false,
             width: stroke.width,
+        });
+    }
+
+    /// The axis from O to `tip` is one a motion's arrow is drawn [`BESIDE`], not along (a
+    /// black arrow on the black axis would read as a piece of it); a load's arrow, in the
+    /// accent colour, is drawn on it from its point.
+    pub fn keep_axis_clear(&mut self, tip: P3) {
+        self.clear.push(Kept {
+            line: (self.project([0.0; 3]), self.project(tip)),
+            shift: P2::new(0.0, 0.0),
+            arrow: false,
+            axis: true,
+            width: Stroke::AXIS.width,
         });
     }
 
@@ -276,6 +291,7 @@ impl<'s> Canvas<'s> {
             line: (self.project(from), self.project(to)),
             shift,
             arrow: true,
+            axis: false,
             width: Stroke::MOTION.width,
         });
     }
@@ -284,11 +300,16 @@ impl<'s> Canvas<'s> {
     /// kept clear it would lie along (parallel to each, on it, and over a fifth of its
     /// length; or, an arrow's, running on from its end): across them, as little as leaves
     /// each line its room ([`BESIDE`] a line, [`ARROWS_APART`] from an arrow), on the side
-    /// away from `away` where both are as near; zero where it lies along none.
-    pub fn beside(&self, from: P3, to: P3, away: P3) -> P2 {
+    /// away from `away` where both are as near; zero where it lies along none. A load's
+    /// arrow (`over_axes`) lies on the axes Oxyz, drawn over them.
+    pub fn beside(&self, from: P3, to: P3, away: P3, over_axes: bool) -> P2 {
         let (p0, p1) = (self.project(from), self.project(to));
         let dot = |a: P2, b: P2| a.x * b.x + a.y * b.y;
-        let under: Vec<&Kept> = self.clear.iter().filter(|k| k.under((p0, p1))).collect();
+        let under: Vec<&Kept> = self
+            .clear
+            .iter()
+            .filter(|k| !(over_axes && k.axis) && k.under((p0, p1)))
+            .collect();
         let Some(n) = under
             .iter()
             .find_map(|k| k.line.1.minus(k.line.0).unit())
@@ -549,9 +570,15 @@ fn along(segment: (P2, P2), line: (P2, P2)) -> bool {
 
 /// Whether the drawn segment from `p0` to `p1` lies along the one from `a` to `b` or runs on
 /// from its end (a gap of less than [`MEETING`] of its length): one arrow after another on a
-/// line reads as one long arrow.
+/// line reads as one long arrow. Two arrows from one tail the opposite ways (a reaction up
+/// from O, ω₂ down from it) read as two.
 fn along_or_meeting(segment: (P2, P2), line: (P2, P2)) -> bool {
-    shared(segment, line).is_some_and(|share| share > -MEETING)
+    let (p0, p1) = segment;
+    let (a, b) = line;
+    let dot = |u: P2, v: P2| u.x * v.x + u.y * v.y;
+    let from_its_tail = p0.minus(a).length() < MEETING * p1.minus(p0).length();
+    let apart = from_its_tail && dot(p1.minus(p0), b.minus(a)) < 0.0;
+    !apart && shared(segment, line).is_some_and(|share| share > -MEETING)
 }
 
 /// How much of its length the segment from `p0` to `p1` runs beside the one from `a` to `b`

@@ -61,11 +61,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
     };
     // The axes run from O past everything drawn along them.
     for e in UNIT {
-        canvas.keep_clear(
-            [0.0; 3],
-            scaled(e, AXES_KEPT_CLEAR * body.reach),
-            Stroke::AXIS,
-        );
+        canvas.keep_axis_clear(scaled(e, AXES_KEPT_CLEAR * body.reach));
     }
     let omega_arc = omega(canvas, scene, body, &unknowns, &mut rays)?;
     motion_of_g(canvas, scene, body, &unknowns, &mut rays)?;
@@ -77,7 +73,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         canvas.label_on_body(named(&p.name), at, sub(at, body.centre));
     }
     let loaded = loads(canvas, scene, body, &unknowns, &mut rays)?;
-    lettered.extend(loaded.lettered);
+    lettered.extend(&loaded.lettered);
     // A point named at O (the pin A of SP 18.3, the bearing C of SP 18.4) is lettered by its
     // name, not O.
     let origin_named = lettered.iter().any(|p| view::norm(*p) < 1e-9 * body.reach);
@@ -96,12 +92,12 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
     // first.
     match shaft_line(&rays.ends) {
         Some(along) => {
-            super::dimensions::along_shaft(canvas, scene, body, along, &loaded.ends)?;
+            super::dimensions::along_shaft(canvas, scene, body, along, &loaded.ends())?;
             super::dimensions::radii(canvas, scene, body, along)?;
         }
-        None => super::dimensions::to_mass_centre(canvas, scene, body, &loaded.ends, link)?,
+        None => super::dimensions::to_mass_centre(canvas, scene, body, &loaded.ends(), link)?,
     }
-    axes(canvas, scene, body, &rays, origin_named);
+    axes(canvas, scene, body, (&rays, &loaded.arrows), origin_named);
     Ok(())
 }
 
@@ -113,8 +109,9 @@ struct Rays<'b> {
     ends: Vec<P3>,
     claimed: Vec<(P3, f64)>,
     /// Arrows drawn from O or G themselves (ω about a fixed point, a reaction at O, ω and v̄
-    /// of a free body), each its point, direction and length.
-    arrows: Vec<(P3, P3, f64)>,
+    /// of a free body), each its point, direction, length and whether it lies on its line
+    /// (not beside it).
+    arrows: Vec<(P3, P3, f64, bool)>,
 }
 
 impl Rays<'_> {
@@ -137,17 +134,28 @@ impl Rays<'_> {
     /// How far everything drawn along the unit vector `d` goes: the claims and the arrows
     /// from O.
     fn end(&self, canvas: &Canvas, d: P3) -> f64 {
+        self.claimed(canvas, d).max(self.arrows_end(d, false))
+    }
+
+    /// How far the arrows drawn from O along the unit vector `d` go (only those on the line
+    /// itself, a reaction on its axis, where `on_line`).
+    fn arrows_end(&self, d: P3, on_line: bool) -> f64 {
         self.arrows
             .iter()
-            .filter(|(at, c, _)| *at == [0.0; 3] && view::dot(*c, d) > 0.99)
-            .map(|(_, _, end)| *end)
-            .fold(self.claimed(canvas, d), f64::max)
+            .filter(|(at, c, _, on)| {
+                *at == [0.0; 3] && view::dot(*c, d) > 0.99 && (*on || !on_line)
+            })
+            .map(|(_, _, end, _)| *end)
+            .fold(0.0, f64::max)
     }
 
     /// Notes the arrows drawn from the point `at` along their lines.
     fn drawn_from(&mut self, at: P3, drew: &Drew) {
-        self.arrows
-            .extend(drew.arrows.iter().map(|a| (at, a.direction, a.length)));
+        self.arrows.extend(
+            drew.arrows
+                .iter()
+                .map(|a| (at, a.direction, a.length, !a.beside)),
+        );
     }
 
     /// The start, from O along `d`, of a vector `length` long drawn past the body, the shaft
@@ -159,11 +167,27 @@ impl Rays<'_> {
     }
 }
 
-/// The axes x, y, z from O past the body and whatever is drawn along them, O (unless
-/// `origin_named`: a point named by the scene or a load stands there) and G.
-fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays, origin_named: bool) {
+/// The axes x, y, z from O past the body and whatever is drawn along them (the `loads`'
+/// arrows on them too), O (unless `origin_named`: a point named by the scene or a
+/// load stands there) and G.
+fn axes(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    body: &Extent,
+    (rays, loads): (&Rays, &[[P3; 2]]),
+    origin_named: bool,
+) {
     for (e, name) in UNIT.iter().zip(["x", "y", "z"]) {
-        let tip = scaled(*e, rays.end(canvas, *e) + AXIS_BEYOND * body.reach);
+        // Past the loads' arrows drawn on it too (an impulse's component at a rod's end).
+        let on_line = |p: &P3| view::norm(view::square_to(*p, *e)) < 1e-9 * body.reach;
+        let loads_on_it = loads
+            .iter()
+            .filter(|arrow| arrow.iter().all(on_line))
+            .flatten()
+            .map(|p| view::dot(*p, *e))
+            .fold(0.0, f64::max);
+        let end = rays.end(canvas, *e).max(loads_on_it);
+        let tip = scaled(*e, end + AXIS_BEYOND * body.reach);
         canvas.arrow(
             Layer::Behind,
             [0.0; 3],
@@ -174,8 +198,12 @@ fn axes(canvas: &mut Canvas, scene: &Scene, body: &Extent, rays: &Rays, origin_n
         );
         // Where it comes out of the body toward the eye, the rest of it is in front of every
         // face (past the body along an axis turned to the eye nothing of the body is nearer):
-        // drawn again there, so a face does not grey it.
-        let out = body.along(*e);
+        // drawn again there, so a face does not grey it; past the arrows drawn on it (a
+        // reaction at O), not over them.
+        let out = body
+            .along(*e)
+            .max(rays.arrows_end(*e, true))
+            .max(loads_on_it);
         let toward_eye = view::dot(*e, canvas.view().toward_eye()) > 0.0;
         if toward_eye && out > 0.0 && out < view::norm(tip) {
             let from = scaled(*e, out);
@@ -362,11 +390,18 @@ fn motion_of_g(
     Ok(())
 }
 
-/// What the loads' drawing came to: the ends of the forces' and impulses' arrows, and the
+/// What the loads' drawing came to: the forces' and impulses' arrows (tail, head), and the
 /// points lettered with a load's name (the bearing C).
 struct Loaded {
-    ends: Vec<P3>,
+    arrows: Vec<[P3; 2]>,
     lettered: Vec<P3>,
+}
+
+impl Loaded {
+    /// The arrows' ends.
+    fn ends(&self) -> Vec<P3> {
+        self.arrows.iter().flatten().copied().collect()
+    }
 }
 
 /// The forces, couples and impulses.
@@ -378,7 +413,7 @@ fn loads(
     rays: &mut Rays,
 ) -> Result<Loaded, FigureError> {
     let reach = body.reach;
-    let (mut ends, mut named_at) = (Vec::new(), Vec::new());
+    let (mut arrows, mut named_at) = (Vec::new(), Vec::new());
     for f in &scene.forces {
         let at = canvas.vector(&f.point, &f.name)?;
         let drawn = Drawn {
@@ -392,7 +427,7 @@ fn loads(
             body,
         };
         let drew = drawn.vector(canvas, &f.value, Some(&f.name), unknowns, &f.name)?;
-        ends.extend(drew.arrows.iter().flat_map(|a| a.ends));
+        arrows.extend(drew.arrows.iter().map(|a| a.ends));
         // Drawn from O, a force's arrows push what is drawn along their rays past them.
         if at == [0.0; 3] {
             rays.drawn_from(at, &drew);
@@ -467,7 +502,7 @@ fn loads(
         };
         let name = i.name.map(|s| s.name().to_string());
         let drew = drawn.vector(canvas, &i.value, name.as_deref(), unknowns, &what)?;
-        ends.extend(drew.arrows.iter().flat_map(|a| a.ends));
+        arrows.extend(drew.arrows.iter().map(|a| a.ends));
         // Drawn by its components, a named impulse is named at its point (as a force is).
         if let (false, Some(name), false) = (drew.whole, &name, lettered(at, body)) {
             canvas.label(named(name), at, sub(at, body.centre));
@@ -475,7 +510,7 @@ fn loads(
         }
     }
     Ok(Loaded {
-        ends,
+        arrows,
         lettered: named_at,
     })
 }

@@ -128,26 +128,20 @@ fn at_or_beside(end: P2, other: P2, at: P2) -> bool {
     near(end, at) || (beside && square)
 }
 
-/// No load's arrow lies along an axis, a rod or the shaft, where the reader could not see it:
-/// every force's and impulse's line is off every such line it runs parallel to.
+/// No load's arrow lies along a rod or the shaft, where the reader could not see it: every
+/// force's and impulse's line is off every such line it runs parallel to. (Along an axis a
+/// load is drawn on it, in its colour over the black line: see the next test.)
 #[test]
-fn loads_are_drawn_beside_the_axes_and_rods_they_run_along() {
+fn loads_are_drawn_beside_the_rods_and_shafts_they_run_along() {
     let mut failures = Vec::new();
     for (name, scene) in examples() {
         let drawn = figure(&scene).unwrap();
         let mut lines: Vec<(P2, P2)> = Vec::new();
         for m in &drawn.marks {
-            match m {
-                Mark::Arrow {
-                    role: Role::Axis,
-                    from,
-                    to,
-                    ..
-                } => lines.push((*from, *to)),
-                Mark::Path { points, stroke, .. } if stroke.width >= Stroke::SHAFT.width => {
+            if let Mark::Path { points, stroke, .. } = m {
+                if stroke.width >= Stroke::SHAFT.width {
                     lines.extend(points.windows(2).map(|w| (w[0], w[1])));
                 }
-                _ => {}
             }
         }
         for m in &drawn.marks {
@@ -177,6 +171,74 @@ fn loads_are_drawn_beside_the_axes_and_rods_they_run_along() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// A reaction's component along an axis at O starts at O, on the axis, as a free-body
+/// diagram draws it (beside the axis it read as detached from its point): SP 18.5's R_y up
+/// the y axis and R_z along z, the balanced shaft's A_y and A_z at its bearing A = O; each
+/// drawn over the axis (after its marks), so its colour shows, and no stretch of an axis
+/// redrawn in front runs over it.
+#[test]
+fn a_reaction_at_o_lies_on_its_axis_from_o() {
+    for (name, force) in [
+        ("sp18_5_disk_reactions", "R"),
+        ("balanced_shaft", "A"),
+        ("gyroscope_required_moment", "R"),
+    ] {
+        let drawn = figure(&example(name)).unwrap();
+        let o = drawn.at([0.0; 3]);
+        let axes: Vec<(usize, P2, P2)> = drawn
+            .marks
+            .iter()
+            .enumerate()
+            .filter_map(|(k, m)| match m {
+                Mark::Arrow {
+                    role: Role::Axis,
+                    from,
+                    to,
+                    ..
+                } => Some((k, *from, *to)),
+                _ => None,
+            })
+            .collect();
+        let on_axes = drawn.marks.iter().enumerate().filter_map(|(k, m)| match m {
+            Mark::Arrow {
+                role: Role::Force(n),
+                from,
+                to,
+                ..
+            } if n == force && near(*from, o) => {
+                let along = |(_, a, b): &&(usize, P2, P2)| {
+                    let (u, v) = (to.minus(*from), b.minus(*a));
+                    (u.x * v.y - u.y * v.x).abs() < 1e-6 * u.length() * v.length()
+                        && u.x * v.x + u.y * v.y > 0.0
+                        && near(*a, o)
+                };
+                axes.iter().find(along).map(|axis| (k, *to, *axis))
+            }
+            _ => None,
+        });
+        let mut count = 0;
+        for (k, head, (axis, _, _)) in on_axes {
+            count += 1;
+            assert!(axis < k, "{name}: {force}'s component drawn over its axis");
+            // A stretch of the axis drawn in front starts past the component's head.
+            let over = axes.iter().any(|(j, a, b)| {
+                *j > k && !near(*a, o) && {
+                    let (u, v) = (head.minus(o), a.minus(o));
+                    (u.x * v.y - u.y * v.x).abs() < 1e-6 * u.length() * v.length()
+                        && u.x * v.x + u.y * v.y > 0.0
+                        && v.length() < u.length() - 1e-6
+                        && b.minus(o).length() > v.length()
+                }
+            });
+            assert!(!over, "{name}: the axis redrawn over {force}'s component");
+        }
+        assert!(
+            count >= 2,
+            "{name}: {force}'s components on the axes from O, {count}"
+        );
+    }
 }
 
 /// A force's arrows start (or end) at its point, an impulse's end at its point (the blow) or,
@@ -1328,7 +1390,9 @@ fixed point\nomega = w1*i - w2*j\nframe rate = -w2*j\nfind H_O",
 /// No two vectors' arrows are drawn on one line over each other or one running on from the
 /// other's end (ω and v̄ the same way from G, a reaction's head at ω's tail): a reader would
 /// take them for one arrow. Each pair of straight arrows that are not axes is checked: if
-/// they are parallel and on one line, the gap between them along it is a real gap.
+/// they are parallel and on one line, the gap between them along it is a real gap, or they
+/// leave one tail the opposite ways (a reaction up from O, ω₂ down from it), which reads as
+/// two arrows.
 #[test]
 fn no_two_arrows_read_as_one() {
     let mut failures = Vec::new();
@@ -1357,6 +1421,10 @@ fn no_two_arrows_read_as_one() {
                 let t = |p: P2| (p.x - a0.x) * u.x + (p.y - a0.y) * u.y;
                 // On one line: both ends of the other within a hairline of this one's line.
                 if cross(*b0).abs() > 1.0 || cross(*b1).abs() > 1.0 {
+                    continue;
+                }
+                let from_one_tail = near(*a0, *b0) && t(*b1) < 0.0;
+                if from_one_tail {
                     continue;
                 }
                 let (lo, hi) = (t(*b0).min(t(*b1)), t(*b0).max(t(*b1)));

@@ -8,7 +8,7 @@ use super::body::Extent;
 use super::canvas::{Canvas, Layer};
 use super::view::{self, add, scaled, P3};
 use super::{FigureError, Role, Stroke};
-use crate::algebra::{Expr, Vector};
+use crate::algebra::{Expr, Symbol, Vector};
 use crate::mechanics::eulerian_angles::EulerianAngles;
 use crate::scene::kinematic_constraints::OMEGA_COMPONENTS;
 use crate::scene::model::{ConstraintKind, Scene};
@@ -59,14 +59,24 @@ pub fn angles(
     let middle = arc[arc.len() / 2];
     canvas.label(r"$\theta$".into(), middle, middle);
     let r = RATE_RADIUS * reach;
-    rate(canvas, scaled(k, precession), k, r, r"$\dot\phi$");
-    rate(canvas, scaled(z, spin), z, r, r"$\dot\psi$");
+    let angles = EulerianAngles::chapter();
+    let (phi, psi) = (angles.precession.dot(), angles.spin.dot());
+    rate(canvas, scaled(k, precession), (k, phi), r, r"$\dot\phi$");
+    rate(canvas, scaled(z, spin), (z, psi), r, r"$\dot\psi$");
     Ok(())
 }
 
-/// A curved arrow round `axis` (right-handed) about `centre`, labelled.
-fn rate(canvas: &mut Canvas, centre: P3, axis: P3, r: f64, label: &str) {
-    let start = canvas.turning_arrow(centre, axis, r, Stroke::MOTION, Role::Rate);
+/// A curved arrow round `axis` about `centre` the way the rate `dot` turns it (right-handed
+/// where it is positive or has no value, else the other way: a wheel rolling forward spins
+/// at ψ̇ = −v/r about its axle), labelled.
+fn rate(canvas: &mut Canvas, centre: P3, (axis, dot): (P3, Symbol), r: f64, label: &str) {
+    // A rate the figure has no number for (a scene that names no φ̇) turns the positive way.
+    let sense = canvas.value(&Expr::sym(dot), dot.name()).unwrap_or(1.0);
+    let about = match sense < 0.0 {
+        true => scaled(axis, -1.0),
+        false => axis,
+    };
+    let start = canvas.turning_arrow(centre, about, r, Stroke::MOTION, Role::Rate);
     canvas.label(label.into(), start, view::sub(start, centre));
 }
 

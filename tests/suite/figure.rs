@@ -1333,6 +1333,70 @@ fn axes_in_front_of_the_body_are_drawn_over_it() {
     assert!(again, "x drawn again in front from where it leaves the box");
 }
 
+/// A rate's curved arrow turns the way the rate does: the car wheel rolling forward spins at
+/// ψ̇ = −v/r_w < 0, so its ψ̇ arrow about z turns opposite to a right-handed turn about z (the
+/// signed area of its drawn curve against that of a circle turned right-handedly about z,
+/// both as drawn); the gyroscope's ψ̇ = 3000 rpm > 0 turns right-handedly.
+#[test]
+fn a_negative_spin_is_drawn_turning_the_other_way() {
+    // The signed area the curve sweeps about its points' mean (its circle's centre, near
+    // enough for most of a turn).
+    let area = |points: &[P2]| {
+        let n = points.len() as f64;
+        let c = points
+            .iter()
+            .fold(P2::new(0.0, 0.0), |a, p| a.plus(p.times(1.0 / n)));
+        points
+            .windows(2)
+            .map(|w| {
+                let (p, q) = (w[0].minus(c), w[1].minus(c));
+                p.x * q.y - q.x * p.y
+            })
+            .sum::<f64>()
+    };
+    for (name, positive) in [
+        ("car_wheel_on_a_curve", false),
+        ("gyroscope_required_moment", true),
+    ] {
+        let drawn = figure(&example(name)).unwrap();
+        let o = drawn.at([0.0; 3]);
+        let z = drawn.at([0.0, 0.0, 1.0]).minus(o);
+        let circle: Vec<P2> = (0..=12)
+            .map(|k| {
+                let t = std::f64::consts::TAU * 0.8 * f64::from(k) / 12.0;
+                drawn.at([t.cos(), t.sin(), 0.0])
+            })
+            .collect();
+        let right_handed = area(&circle);
+        // The rate arrow whose middle lies on z's line as drawn: ψ̇'s.
+        let spin = drawn.marks.iter().find_map(|m| match m {
+            Mark::Arrow {
+                role: Role::Rate,
+                from,
+                via,
+                to,
+                ..
+            } => {
+                let points: Vec<P2> = std::iter::once(*from)
+                    .chain(via.iter().copied())
+                    .chain([*to])
+                    .collect();
+                let n = points.len() as f64;
+                let middle = points
+                    .iter()
+                    .fold(P2::new(0.0, 0.0), |a, p| a.plus(p.times(1.0 / n)));
+                let off = middle.minus(o);
+                let across = (off.x * z.y - off.y * z.x).abs() / z.length();
+                (across < 0.2 * off.length()).then_some(points)
+            }
+            _ => None,
+        });
+        let spin = spin.unwrap_or_else(|| panic!("{name}: ψ̇ drawn about z"));
+        let same = area(&spin) * right_handed > 0.0;
+        assert_eq!(same, positive, "{name}: ψ̇ turns the way its sign says");
+    }
+}
+
 /// A dimension's extension line is drawn on a side where no arrow runs along it: a rod
 /// pivoted at its end O turning about x and precessing at ω₂ about −y has ω₂ drawn down from
 /// O, and the span OG = L/2 below the rod would run its line from O over that arrow. Checked

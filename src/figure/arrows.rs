@@ -11,8 +11,8 @@ use super::{Dashes, FigureError, Role, Stroke};
 use crate::algebra::{Expr, Symbol, Vector};
 use crate::print::{self, markup};
 
-/// How far a vector at a point inside the body reaches past its outline, and how deep
-/// inside a point is for that.
+/// How far a vector at a point inside the body reaches past its outline on the page, and
+/// how deep inside a point is for that.
 const PAST_BODY: f64 = 0.2;
 const INSIDE: f64 = 0.05;
 /// The most steps of a quarter of [`PAST_BODY`] a load at a hidden point is lengthened by.
@@ -237,8 +237,14 @@ impl Drawn<'_> {
         };
         let (reach, depth) = (self.body.reach, INSIDE * self.body.reach);
         if self.body.surrounds(self.from, outward, depth) {
-            let past = self.body.beyond(canvas, self.from, outward) + PAST_BODY * reach;
-            self.length.max(past)
+            // PAST_BODY of the reach past the outline on the page, however foreshortened.
+            let on_page = canvas
+                .project(outward)
+                .minus(canvas.project([0.0; 3]))
+                .length();
+            let past = PAST_BODY * reach / on_page.clamp(SHORTEST_DRAWN, 1.0);
+            self.length
+                .max(self.body.beyond(canvas, self.from, outward) + past)
         } else if load && self.body.hides(canvas, self.from, depth) {
             // Out from behind the body: as long as it takes its free end to clear it.
             let step = PAST_BODY * reach / 4.0;

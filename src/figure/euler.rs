@@ -21,6 +21,10 @@ pub const PRECESSION_AT: f64 = 1.2;
 const PAST_RATE: f64 = 0.15;
 const ARC_RADIUS: f64 = 0.3;
 pub const RATE_RADIUS: f64 = 0.12;
+/// How far below φ̇'s curve, in its radii, H_G's head stands (under no force), and the
+/// least length, in the body's reach, it shows past the body.
+const MOMENTUM_BELOW_RATE: f64 = 1.5;
+pub const MOMENTUM_LENGTH: f64 = 0.3;
 /// The radius of the arc of ω's angle from z, outside θ's (Z may stand between z and ω).
 const OMEGA_ARC_RADIUS: f64 = 0.45;
 
@@ -35,8 +39,8 @@ pub fn vertical(canvas: &Canvas) -> Result<P3, FigureError> {
 pub fn angles(
     canvas: &mut Canvas,
     body: &Extent,
-    precession: f64,
-    spin: f64,
+    (precession, spin): (f64, f64),
+    momentum: Option<f64>,
 ) -> Result<(), FigureError> {
     let k = vertical(canvas)?;
     let z = [0.0, 0.0, 1.0];
@@ -59,11 +63,37 @@ pub fn angles(
     let middle = arc[arc.len() / 2];
     canvas.label(r"$\theta$".into(), middle, middle);
     let r = RATE_RADIUS * reach;
+    if let Some(head) = momentum {
+        let below_rate = precession - MOMENTUM_BELOW_RATE * r;
+        angular_momentum(canvas, body, k, head.max(below_rate));
+    }
     let angles = EulerianAngles::chapter();
     let (phi, psi) = (angles.precession.dot(), angles.spin.dot());
     rate(canvas, scaled(k, precession), (k, phi), r, r"$\dot\phi$");
     rate(canvas, scaled(z, spin), (z, psi), r, r"$\dot\psi$");
     Ok(())
+}
+
+/// Under no force H_G is constant, and the vertical Z is taken along it (§18.11): H_G an
+/// arrow up Z from G (at O), under the body's faces until it comes out of them, its head
+/// `head` up Z (under φ̇'s curve). Not drawn where the body reaches that high.
+fn angular_momentum(canvas: &mut Canvas, body: &Extent, k: P3, head: f64) {
+    let out = body.drawn_along(canvas, k);
+    if view::norm(body.centre) > 1e-9 * body.reach || head <= out {
+        return;
+    }
+    let (from, to) = (scaled(k, out), scaled(k, head));
+    canvas.path(Layer::Behind, &[[0.0; 3], from], false, Stroke::MOTION);
+    canvas.arrow(
+        Layer::Front,
+        from,
+        to,
+        false,
+        Stroke::MOTION,
+        Role::AngularMomentum,
+    );
+    let across = view::unit(view::square_to([1.0, 0.0, 0.0], k));
+    canvas.label(super::arrows::named("H_G"), to, across);
 }
 
 /// A curved arrow round `axis` about `centre` the way the rate `dot` turns it (right-handed

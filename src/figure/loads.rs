@@ -82,11 +82,18 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         let r = super::euler::RATE_RADIUS * body.reach;
         let k = super::euler::vertical(canvas)?;
         let high = super::euler::PRECESSION_AT * body.reach;
+        // Under no force, H_G up Z below φ̇'s curve.
+        let torque_free =
+            scene.forces.is_empty() && scene.couples.is_empty() && scene.impulses.is_empty();
+        let momentum = torque_free.then(|| {
+            let length = super::euler::MOMENTUM_LENGTH * body.reach;
+            rays.claim(canvas, k, 0.0, length) + length
+        });
         let precession = rays.claim(canvas, k, high, 2.0 * r) + r;
         // ψ̇ past the arc of ω's angle from z too.
         let past_arc = omega_arc.map_or(0.0, |radius| radius + r);
         let spin = rays.claim(canvas, [0.0, 0.0, 1.0], past_arc, 2.0 * r) + r;
-        super::euler::angles(canvas, body, precession, spin)?;
+        super::euler::angles(canvas, body, (precession, spin), momentum)?;
     }
     // The dimensions after the loads, clear of their arrows, so the loads' labels are placed
     // first.

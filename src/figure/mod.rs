@@ -125,6 +125,8 @@ pub enum Role {
     FrameRate,
     /// A rate of an Eulerian angle, drawn as a curved arrow.
     Rate,
+    /// The angular momentum H_G of a body under no force, along the vertical Z.
+    AngularMomentum,
 }
 
 /// A mark of the figure, in figure units, y up.

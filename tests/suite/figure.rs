@@ -1397,6 +1397,63 @@ fn a_negative_spin_is_drawn_turning_the_other_way() {
     }
 }
 
+/// Under no force the vertical Z is taken along the constant H_G (§18.11): each torque-free
+/// figure draws H_G as an arrow up Z's centre line (from the body to below φ̇), labelled
+/// H_G; a gyroscope under its weight and a couple has none.
+#[test]
+fn a_body_under_no_force_shows_h_g_along_z() {
+    let written = |s: &str| format!("${}$", kinetics::print::latex(&Expr::sym(Symbol::new(s))));
+    for (name, torque_free) in [
+        ("torque_free_disk", true),
+        ("torque_free_cylinder", true),
+        ("torque_free_disk_from_omega", true),
+        ("gyroscope_required_moment", false),
+    ] {
+        let scene = example(name);
+        let drawn = figure(&scene).unwrap();
+        let o = drawn.at([0.0; 3]);
+        // Z, the fixed vertical: its centre line from O.
+        let z_line = two_point_paths(&drawn, Stroke::CENTRE_LINE)
+            .into_iter()
+            .find(|(a, _)| near(*a, o));
+        let up = match z_line {
+            Some((_, b)) => b.minus(o),
+            None => panic!("{name}: Z drawn"),
+        };
+        let momentum: Vec<(P2, P2)> = drawn
+            .marks
+            .iter()
+            .filter_map(|m| match m {
+                Mark::Arrow {
+                    role: Role::AngularMomentum,
+                    from,
+                    to,
+                    ..
+                } => Some((*from, *to)),
+                _ => None,
+            })
+            .collect();
+        if !torque_free {
+            assert!(momentum.is_empty(), "{name}: no H_G drawn");
+            continue;
+        }
+        let [(from, to)] = momentum[..] else {
+            panic!("{name}: one H_G arrow, {}", momentum.len())
+        };
+        for p in [from, to] {
+            let off = p.minus(o);
+            let across = (off.x * up.y - off.y * up.x).abs() / up.length();
+            assert!(across < 1e-6, "{name}: H_G on the line of Z");
+        }
+        let d = to.minus(from);
+        assert!(d.x * up.x + d.y * up.y > 0.0, "{name}: H_G up Z");
+        assert!(
+            drawn.labels.iter().any(|l| l.markup == written("H_G")),
+            "{name}: H_G labelled"
+        );
+    }
+}
+
 /// A dimension's extension line is drawn on a side where no arrow runs along it: a rod
 /// pivoted at its end O turning about x and precessing at ω₂ about −y has ω₂ drawn down from
 /// O, and the span OG = L/2 below the rod would run its line from O over that arrow. Checked

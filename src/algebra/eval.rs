@@ -39,16 +39,30 @@ impl Expr {
     }
 }
 
-/// Converts an exact rational to the scalar type, as exactly as the type allows.
+/// Converts an exact rational to the scalar type, as exactly as the type allows: a ratio
+/// of integers each exact in f64 as their quotient; in a type finer than f64 (double-double)
+/// any ratio of 64-bit integers so, each integer taken whole (`10¹⁸/7¹⁸`, whose numerator
+/// f64 cannot hold in one piece, to 32 digits, not 16); else the rational rounded once.
 pub fn rational_to<T: Float>(q: &Q) -> T {
+    let finer = T::epsilon() < T::from(f64::EPSILON).unwrap_or_else(T::nan);
     match q {
         Q::Small(n, d) if n.unsigned_abs() < (1 << 53) && *d < (1 << 53) => {
             let n = T::from(*n).unwrap_or_else(T::nan);
             let d = T::from(*d).unwrap_or_else(T::nan);
             n / d
         }
+        Q::Small(n, d) if finer => integer_to::<T>(*n) / integer_to::<T>(*d),
         _ => T::from(q.to_f64()).unwrap_or_else(T::nan),
     }
+}
+
+/// A 64-bit integer in the scalar type as `high · 2³² + low`, each half exact in f64: the
+/// whole integer where the type holds 64 bits.
+fn integer_to<T: Float>(n: i64) -> T {
+    let (high, low) = (n >> 32, n & 0xffff_ffff);
+    let half = T::from(4_294_967_296.0).unwrap_or_else(T::nan);
+    let part = |k: i64| T::from(k).unwrap_or_else(T::nan);
+    part(high) * half + part(low)
 }
 
 /// Whether some negative power in `e` has a base whose value is zero (only asked once
@@ -109,4 +123,29 @@ fn eval_unchecked<T: Float>(
         }
         View::Func(f, a) => f.eval(eval_unchecked(a, value)?),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::rational_to;
+    use crate::algebra::rational::Q;
+    use crate::numeric::scalar::double_double::DoubleDouble as Dd;
+
+    /// In double-double a ratio of 64-bit integers is taken whole: 10¹⁸/7¹⁸ (10¹⁸ past 2⁵³)
+    /// is the double-double quotient of its exact integers, not the f64 quotient; and
+    /// (2⁶⁰ + 1)/3, three times over, comes back to 2⁶⁰ + 1, whose 1 an f64 loses.
+    #[test]
+    fn a_rational_of_large_integers_is_exact_in_double_double() {
+        let seven_18 = 1_628_413_597_910_449_i64;
+        let got: Dd = rational_to(&Q::Small(1_000_000_000_000_000_000, seven_18));
+        let want = Dd::from_f64(1e18) / Dd::from_f64(seven_18 as f64);
+        assert!(
+            ((got - want) / want).abs().to_f64() < 1e-30,
+            "{got:?} against {want:?}"
+        );
+        let n = (1_i64 << 60) + 1;
+        let third: Dd = rational_to(&Q::Small(n, 3));
+        let back = third * Dd::from_f64(3.0) - Dd::from_f64((1_u64 << 60) as f64);
+        assert!((back - Dd::from_f64(1.0)).abs().to_f64() < 1e-6, "{back:?}");
+    }
 }

@@ -149,11 +149,10 @@ impl Extent {
     /// the part's own axes), or on a rod, or at a point mass.
     pub fn reaches(&self, p: P3, margin: f64) -> bool {
         self.solids.iter().any(|s| s.within(p, margin))
-            || self.lines.iter().any(|[a, b]| {
-                let along = sub(*b, *a);
-                let t = view::dot(sub(p, *a), along) / view::dot(along, along).max(1e-300);
-                view::norm(sub(p, add(*a, scaled(along, t.clamp(0.0, 1.0))))) <= margin
-            })
+            || self
+                .lines
+                .iter()
+                .any(|[a, b]| view::to_segment(p, *a, *b) <= margin)
     }
 
     /// Whether the body, as drawn, covers the point `p` (it projects inside the hull of the

@@ -131,7 +131,7 @@ impl<'s> Canvas<'s> {
                 (None, None) => [0.0, 0.0, 1.0],
             }
         };
-        let mut directions = vec![[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let mut directions = view::UNIT.to_vec();
         // ω and v̄, each drawn as one arrow where it is given: seen end-on, one is a dot.
         let unknowns = super::loads::magnitudes(scene);
         let omega = scene

@@ -42,7 +42,7 @@ pub fn along_shaft(
         false => -&v[k],
     };
     let reach = body.reach;
-    let on_axis = |p: P3| view::norm(view::square_to(p, a)) < 1e-9 * reach;
+    let on_axis = |p: P3| view::on_line(p, a, 1e-9 * reach);
     let mut stations: Vec<(f64, Expr)> = vec![(0.0, Expr::zero())];
     let mut station = |p: P3, at: &Vector| stations.push((view::dot(p, a), coordinate(at)));
     for f in &scene.forces {

@@ -38,7 +38,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Option<[P3; 2]
 /// square to it.
 pub fn middle(canvas: &Canvas, [o, end]: [P3; 2]) -> (P3, P3) {
     let d = view::unit(view::sub(end, o));
-    let side = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+    let side = view::UNIT
         .into_iter()
         .flat_map(|e| [e, scaled(e, -1.0)])
         .filter(|e| view::dot(*e, d).abs() < 0.5)

@@ -41,8 +41,6 @@ const BEARING_LENGTH: f64 = 0.1;
 /// The radius of a couple's curved arrow round the shaft.
 const TURNING_RADIUS: f64 = 0.12;
 
-const UNIT: [P3; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-
 /// Everything drawn besides the body: the fixed axis with its shaft and bearings (else the
 /// link to a pivot the body does not reach), ω, the named points, the forces, couples and
 /// impulses, then the axes past all of it.
@@ -60,7 +58,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         arrows: Vec::new(),
     };
     // The axes run from O past everything drawn along them.
-    for e in UNIT {
+    for e in view::UNIT {
         canvas.keep_axis_clear(scaled(e, AXES_KEPT_CLEAR * body.reach));
     }
     let omega_arc = omega(canvas, scene, body, &unknowns, &mut rays)?;
@@ -184,9 +182,9 @@ fn axes(
     (rays, loads): (&Rays, &[[P3; 2]]),
     origin_named: bool,
 ) {
-    for (e, name) in UNIT.iter().zip(["x", "y", "z"]) {
+    for (e, name) in view::UNIT.iter().zip(["x", "y", "z"]) {
         // Past the loads' arrows drawn on it too (an impulse's component at a rod's end).
-        let on_line = |p: &P3| view::norm(view::square_to(*p, *e)) < 1e-9 * body.reach;
+        let on_line = |p: &P3| view::on_line(*p, *e, 1e-9 * body.reach);
         let loads_on_it = loads
             .iter()
             .filter(|arrow| arrow.iter().all(on_line))
@@ -229,7 +227,7 @@ fn axes(
     // A page that works about G away from O: the axes Gx'y'z' too, dashed.
     let about_g = !scene.fixed_point || scene.about_mass_centre;
     if apart && about_g {
-        for (e, name) in UNIT.iter().zip(["x", "y", "z"]) {
+        for (e, name) in view::UNIT.iter().zip(["x", "y", "z"]) {
             let tip = add(body.centre, scaled(*e, G_AXIS * body.reach));
             canvas.path(
                 Layer::Behind,
@@ -248,9 +246,9 @@ fn axes(
 
 /// ω (with Eulerian angles, only where the scene states its components, §18.11's disk
 /// given ω at the angle γ from its axis, then with that angle; after an impact, only where
-/// it is known), and the frame's Ω where it
-/// differs: along a fixed axis past the shaft and the body, so it is not lost on the shaft;
-/// else from the fixed point, or from G. The radius of the angle's arc, if drawn.
+/// it is known), and the frame's Ω where it differs: along a fixed axis past the shaft and
+/// the body, so it is not lost on the shaft; else from the fixed point, or from G. The
+/// radius of the angle's arc, if drawn.
 fn omega(
     canvas: &mut Canvas,
     scene: &Scene,
@@ -540,7 +538,7 @@ fn fixed_axis(
     };
     if let Some(a) = axis.filter(|a| view::norm(*a) > 0.0) {
         let reach = body.reach;
-        let on_axis = |p: P3| view::norm(view::square_to(p, a)) < 1e-9 * reach;
+        let on_axis = |p: P3| view::on_line(p, a, 1e-9 * reach);
         let mut bearings = Vec::new();
         for f in &scene.forces {
             let at = canvas.vector(&f.point, &f.name)?;
@@ -614,10 +612,7 @@ fn on_shaft(p: P3, ends: &[P3], reach: f64) -> bool {
     let [a, b] = ends else {
         return false;
     };
-    let along = sub(*b, *a);
-    let t = view::dot(sub(p, *a), along) / view::dot(along, along).max(1e-300);
-    let foot = add(*a, scaled(along, t));
-    (-1e-9..=1.0 + 1e-9).contains(&t) && view::norm(sub(p, foot)) < 1e-9 * reach
+    view::to_segment(p, *a, *b) < 1e-9 * reach
 }
 
 /// Whether the point `p` has a letter in the figure already: O, or G.

@@ -214,9 +214,24 @@ fn turn_to_z(u: P3) -> [[f64; 3]; 3] {
     r
 }
 
+/// The frame's unit vectors i, j, k.
+pub const UNIT: [P3; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+
 /// The part of `v` square to the unit `a` (its distance from the line along `a` through O).
 pub fn square_to(v: P3, a: P3) -> P3 {
     sub(v, scaled(a, dot(v, a)))
+}
+
+/// Whether `p` is within `within` of the line along the unit `a` through O.
+pub fn on_line(p: P3, a: P3, within: f64) -> bool {
+    norm(square_to(p, a)) < within
+}
+
+/// How far `p` is from the segment from `a` to `b`.
+pub fn to_segment(p: P3, a: P3, b: P3) -> f64 {
+    let along = sub(b, a);
+    let t = dot(sub(p, a), along) / dot(along, along).max(1e-300);
+    norm(sub(p, add(a, scaled(along, t.clamp(0.0, 1.0)))))
 }
 
 pub fn dot(a: P3, b: P3) -> f64 {

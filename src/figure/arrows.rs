@@ -26,6 +26,8 @@ const TOWARD_BODY: f64 = 0.15;
 const HEADS_APART: f64 = 0.1;
 const SHORTER: f64 = 0.7;
 const LONGER: f64 = 1.3;
+/// A component smaller than this share of its vector's largest vanishes at the figure's values.
+const VANISHES: f64 = 1e-9;
 /// The least share of its length a vector is drawn at, however the view foreshortens it.
 const SHORTEST_DRAWN: f64 = 0.6;
 
@@ -108,20 +110,30 @@ impl Drawn<'_> {
             });
         }
         let mut arrows = Vec::new();
-        let components = nonzero(v);
-        let alone = components.len() == 1;
+        let components = drawn_components(v, value);
+        // The constraints left one component (a rolling cone's ω along its line of contact):
+        // it is the whole vector, labelled as that.
+        if let [k] = components[..] {
+            let mut d = [0.0; 3];
+            d[k] = value[k].signum();
+            let label = also(None, whole_label(v, value, name));
+            return Ok(Drew {
+                whole: true,
+                arrows: self.arrow(canvas, d, label, true).into_iter().collect(),
+            });
+        }
         for k in components {
             let mut d = [0.0; 3];
             d[k] = value[k].signum();
             if d[k] == 0.0 {
                 d[k] = 1.0;
             }
-            let first = match (v[k].as_symbol().or_else(|| (-&v[k]).as_symbol()), name) {
-                (Some(_), _) | (None, None) => magnitude(&v[k], value[k]),
+            let first = match (one_symbol(&v[k]), name) {
+                (true, _) | (false, None) => magnitude(&v[k], value[k]),
                 // A component that is not one symbol is named by the vector's name.
-                (None, Some(n)) => symbol(&format!("{n}_{}", ["x", "y", "z"][k])),
+                (false, Some(n)) => symbol(&format!("{n}_{}", ["x", "y", "z"][k])),
             };
-            arrows.extend(self.arrow(canvas, d, also(Some(k), first), alone));
+            arrows.extend(self.arrow(canvas, d, also(Some(k), first), false));
         }
         Ok(Drew {
             whole: false,
@@ -296,9 +308,25 @@ pub(super) fn magnitude(c: &Expr, value: f64) -> Expr {
     }
 }
 
+/// Whether a component is one symbol, or its negative (`C_y`, `-w_2`).
+pub(super) fn one_symbol(c: &Expr) -> bool {
+    c.as_symbol().or_else(|| (-c).as_symbol()).is_some()
+}
+
 /// The axes of a vector's components that are not zero.
 pub(super) fn nonzero(v: &Vector) -> Vec<usize> {
     (0..3).filter(|k| !v[*k].is_zero()).collect()
+}
+
+/// The components a vector is drawn by: those that are not zero, nor vanish at the figure's
+/// values (a cone's `ω_y = p r/l + ω₁` once rolling fixes `p`); all of them where every one
+/// vanishes there.
+fn drawn_components(v: &Vector, value: P3) -> Vec<usize> {
+    let largest = value.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
+    nonzero(v)
+        .into_iter()
+        .filter(|k| largest == 0.0 || value[*k].abs() > VANISHES * largest)
+        .collect()
 }
 
 /// Whether a vector is drawn as one arrow: no unknown in it, or one component (its line is

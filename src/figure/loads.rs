@@ -14,8 +14,8 @@
 //! - named points as dots.
 
 use super::arrows::{
-    drawn_whole, holds_any, is_word, label, named, nonzero, stretched, whole_label, Also, Drawn,
-    Drew,
+    drawn_whole, holds_any, is_word, label, named, nonzero, one_symbol, stretched, whole_label,
+    Also, Drawn, Drew,
 };
 use super::body::{circle, Extent};
 use super::canvas::{Canvas, Layer};
@@ -310,6 +310,12 @@ fn omega(
     let length = OMEGA_LENGTH * body.reach;
     for (vector, name, role, also) in rates.into_iter().flatten() {
         let d = view::unit(canvas.vector(vector, name)?);
+        // Ω given as one rate about one axis (`frame rate = w1*j`) is labelled by that rate,
+        // as the statement names it (ω₁); the page's Ω = ω₁ j links the two.
+        let label_name = match (&role, nonzero(vector).as_slice()) {
+            (Role::FrameRate, &[k]) if one_symbol(&vector[k]) => None,
+            _ => Some(name),
+        };
         // From O (else G), beside an arrow already drawn from it along the same line; drawn
         // whole along a fixed axis, past the shaft.
         let origin = match scene.fixed_point {
@@ -332,7 +338,7 @@ fn omega(
             also,
             body,
         };
-        let drew = drawn.vector(canvas, vector, Some(name), unknowns, name)?;
+        let drew = drawn.vector(canvas, vector, label_name, unknowns, name)?;
         if !past_shaft {
             rays.drawn_from(origin, &drew);
         }

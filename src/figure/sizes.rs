@@ -6,13 +6,17 @@
 //! by their components point different ways, as a textbook draws them; any other symbol (a
 //! mass, a force's magnitude, an unknown, the time t) 1, and an angle without a value 30°,
 //! or another where an angle is given at about 30° (so θ and the γ given are told apart).
+//! An unknown the scene's kinematic constraints fix alone (a cone's spin rate from rolling)
+//! takes the value they give it, so ω is drawn the way it turns out, not the way its stated
+//! form would point with the unknown at 1.
 //! Only directions and sizes matter to a drawing: a force is drawn at one length whatever its
 //! magnitude.
 
 use super::view::P3;
 use crate::algebra::{AlgebraError, Expr, Symbol, Vector};
 use crate::mechanics::eulerian_angles::EulerianAngles;
-use crate::scene::model::Scene;
+use crate::scene::kinematic_constraints::solve_constraints;
+use crate::scene::model::{Scene, Span};
 use crate::scene::units::Dimension;
 use std::collections::HashMap;
 
@@ -103,6 +107,14 @@ impl Sizes {
                 }
             });
             values.insert(symbol, value);
+        }
+        // The unknowns the constraints fix, at the values the constraints give them.
+        if let Ok((kinematics, _)) = solve_constraints(scene, None, Span::default()) {
+            for (symbol, solution) in &kinematics.solved {
+                if let Ok(value) = solution.eval::<f64>(&|s| values.get(&s).copied()) {
+                    values.insert(*symbol, value);
+                }
+            }
         }
         // A load that varies with the time t is drawn as it is at t = 1 (at t = 0 a sine
         // would leave nothing to draw).

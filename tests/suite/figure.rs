@@ -726,7 +726,8 @@ fn the_figure_command_writes_svg_and_tikz() {
 }
 
 /// The frame's Ω where it differs from ω: the cone's Ω = ω₁ j (ω's component along y holds
-/// p too) a double arrow of its own on the ray from the fixed point O along y; SP 18.2's
+/// p too) a double arrow of its own on the ray from the fixed point O along y, labelled ω₁
+/// as the statement names that rate; SP 18.2's
 /// Ω = −ω₂ j, which is ω's component along −y, on that component's arrow, labelled with both;
 /// where the frame turns with the body (SP 18.4), no Ω.
 #[test]
@@ -763,7 +764,7 @@ fn the_frame_rate_is_drawn_where_it_differs_from_omega() {
     assert!(cone
         .labels
         .iter()
-        .any(|l| l.markup == format!("${}$", written("Omega"))));
+        .any(|l| l.markup == format!("${}$", written("w1"))));
     let disk = figure(&example("sp18_2_rolling_disk")).unwrap();
     assert!(
         !frame_rate_along(&disk, [0.0, -1.0, 0.0]),
@@ -1055,6 +1056,43 @@ fn omega_inside_a_box_goes_under_its_faces() {
             assert!(at_or_beside(*from, *to, g), "the plate's ω from G");
         }
     }
+}
+
+/// A rate the constraints fix is drawn as it turns out. The cone rolls on the x axis (a
+/// generator) with O fixed, so every point of that line is still: ω × (h, 0, 0) = 0 puts ω
+/// along x, and its y component p r/l + ω₁ vanishes. Taking ω_y = 0 gives p = −l ω₁/r,
+/// and then ω_x = p h/l = −h ω₁/r < 0. So ω is one double arrow along −x, labelled ω. With
+/// p left at 1 it was drawn as ω_x along +x plus an ω_y that is zero.
+#[test]
+fn a_rate_the_constraints_fix_points_the_way_it_turns_out() {
+    let cone = figure(&example("cone_rolling_about_apex")).unwrap();
+    let o = cone.at([0.0; 3]);
+    let minus_x = o.minus(cone.at([1.0, 0.0, 0.0]));
+    let omegas: Vec<P2> = cone
+        .marks
+        .iter()
+        .filter_map(|m| match m {
+            Mark::Arrow {
+                role: Role::AngularVelocity,
+                from,
+                to,
+                ..
+            } => Some(to.minus(*from)),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(omegas.len(), 1, "ω one arrow, no zero component drawn");
+    let d = omegas[0];
+    assert!(
+        (d.x * minus_x.y - d.y * minus_x.x).abs() < 1e-6 * d.length() * minus_x.length()
+            && d.x * minus_x.x + d.y * minus_x.y > 0.0,
+        "ω along −x: {d:?}"
+    );
+    let written = kinetics::print::latex(&Expr::sym(Symbol::new("omega")));
+    assert!(cone
+        .labels
+        .iter()
+        .any(|l| l.markup == format!("${written}$")));
 }
 
 /// The motion the statement gives is drawn: SP 18.4's α (omegadot = alpha*i, the way ω

@@ -2,7 +2,8 @@
 //! fractions inside fractions that pivots over pivots leave.
 //!
 //! A free solid cylinder (radius r, length h, axis along x before it is turned by θ about z),
-//! at rest, struck by the impulse P k at (h/2, r, 0) from G: by hand, m v̄ = P k and
+//! at rest, struck by the impulse P k at its end face's rim, R (h/2, r, 0) from G: by hand,
+//! m v̄ = P k and
 //! [I]{ω} = r × P k with [I] = R diag(m r²/2, m(3r² + h²)/12, m(3r² + h²)/12) Rᵀ, R the turn
 //! by θ about z (examples/scenes/free_cylinder_struck_off_centre.scene). Solved here
 //! numerically (Cramer's rule) and compared with kinetics' forms.
@@ -58,8 +59,9 @@ fn a_free_cylinder_struck_off_centre_is_solved_in_lowest_terms() {
         ],
         [0.0, 0.0, across],
     ];
-    // r × P k with r = (h/2, r, 0): (r P, -h/2 P, 0).
-    let omega = solve(inertia, [r * p, -h / 2.0 * p, 0.0]);
+    // r × P k with r = R (h/2, r, 0), the end face's rim point turned with the body.
+    let (p_x, p_y) = (h / 2.0 * c - r * s, h / 2.0 * s + r * c);
+    let omega = solve(inertia, [p_y * p, -p_x * p, 0.0]);
     for (name, expected) in ["w_x", "w_y", "w_z"].into_iter().zip(omega) {
         let Value::Scalar(form) = result(&analysis, name) else {
             panic!("{name} is a scalar")

@@ -13,8 +13,9 @@ use crate::scene::model::{ConstraintKind, Scene};
 /// Half the patch's side, in proportion to the body's reach.
 const HALF_SIDE: f64 = 0.45;
 
-/// The floor under each point held still at the body's lowest level.
-pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
+/// The floor under each point held still at the body's lowest level; the level of each floor
+/// drawn (its height along the scene's up).
+pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<Vec<f64>, FigureError> {
     let up = canvas.view().up();
     let (u, v) = view::across(up);
     let struck = scene
@@ -27,6 +28,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         .iter()
         .map(|s| view::dot(*s, up))
         .fold(f64::INFINITY, f64::min);
+    let mut levels = Vec::new();
     for c in &scene.constraints {
         let ConstraintKind::VelocityZero(at) = &c.kind else {
             continue;
@@ -43,6 +45,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
         let corners = [(1.0, 1.0), (1.0, -1.0), (-1.0, -1.0), (-1.0, 1.0)]
             .map(|(a, b)| add(p, add(scaled(u, a * h), scaled(v, b * h))));
         canvas.path(Layer::Behind, &corners, true, Stroke::GROUND);
+        levels.push(view::dot(p, up));
     }
-    Ok(())
+    Ok(levels)
 }

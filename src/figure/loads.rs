@@ -43,8 +43,14 @@ const TURNING_RADIUS: f64 = 0.12;
 
 /// Everything drawn besides the body: the fixed axis with its shaft and bearings (else the
 /// link to a pivot the body does not reach), ω, the named points, the forces, couples and
-/// impulses, then the axes past all of it.
-pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
+/// impulses, the pivot at a fixed point clear of them (`floors`: the levels of the floors
+/// drawn), then the axes past all of it.
+pub fn draw(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    body: &Extent,
+    floors: &[f64],
+) -> Result<(), FigureError> {
     let unknowns = magnitudes(scene);
     let shaft = fixed_axis(canvas, scene, body, &unknowns)?;
     let link = match shaft.is_empty() {
@@ -72,6 +78,25 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), Fig
     }
     let loaded = loads(canvas, scene, body, &unknowns, &mut rays)?;
     lettered.extend(&loaded.lettered);
+    // The pivot at O, clear of the arrows drawn from O.
+    let at_o = |p: &P3| view::norm(*p) < 1e-9 * body.reach;
+    let from_o: Vec<P3> = rays
+        .arrows
+        .iter()
+        .filter(|(at, ..)| at_o(at))
+        .map(|(_, d, ..)| *d)
+        .chain(
+            loaded
+                .arrows
+                .iter()
+                .filter_map(|[a, b]| match (at_o(a), at_o(b)) {
+                    (true, _) => Some(view::unit(*b)),
+                    (_, true) => Some(view::unit(*a)),
+                    _ => None,
+                }),
+        )
+        .collect();
+    super::pivot::draw(canvas, scene, body, floors, &from_o)?;
     // A point named at O (the pin A of SP 18.3, the bearing C of SP 18.4) is lettered by its
     // name, not O.
     let origin_named = lettered.iter().any(|p| view::norm(*p) < 1e-9 * body.reach);
@@ -536,13 +561,7 @@ fn fixed_axis(
     unknowns: &[Symbol],
 ) -> Result<Vec<P3>, FigureError> {
     let mut ends: Vec<P3> = Vec::new();
-    let axis = match (&scene.omega, scene.fixed_point, &scene.euler_angles) {
-        (Some(omega), true, None) if !holds_any(omega, unknowns) => {
-            Some(view::unit(canvas.vector(omega, "omega")?))
-        }
-        _ => None,
-    };
-    if let Some(a) = axis.filter(|a| view::norm(*a) > 0.0) {
+    if let Some(a) = fixed_direction(canvas, scene, unknowns)? {
         let reach = body.reach;
         let on_axis = |p: P3| view::on_line(p, a, 1e-9 * reach);
         let mut bearings = Vec::new();
@@ -592,6 +611,22 @@ fn fixed_axis(
         }
     }
     Ok(ends)
+}
+
+/// The fixed axis's direction: ω's where it is known about a fixed point.
+pub(super) fn fixed_direction(
+    canvas: &Canvas,
+    scene: &Scene,
+    unknowns: &[Symbol],
+) -> Result<Option<P3>, FigureError> {
+    Ok(
+        match (&scene.omega, scene.fixed_point, &scene.euler_angles) {
+            (Some(omega), true, None) if !holds_any(omega, unknowns) => {
+                Some(view::unit(canvas.vector(omega, "omega")?)).filter(|a| view::norm(*a) > 0.0)
+            }
+            _ => None,
+        },
+    )
 }
 
 /// The unknowns that are magnitudes (an unknown angle only turns a vector, which is drawn

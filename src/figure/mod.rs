@@ -18,6 +18,7 @@ mod ground;
 mod labels;
 mod link;
 mod loads;
+mod pivot;
 pub mod sizes;
 pub mod svg;
 pub mod tikz;
@@ -214,9 +215,9 @@ pub fn figure(scene: &Scene) -> Result<Figure, FigureError> {
     let sizes = sizes::Sizes::of(scene);
     let mut canvas = Canvas::new(scene, &sizes)?;
     let body = body::draw(&mut canvas, scene)?;
-    ground::draw(&mut canvas, scene, &body)?;
+    let floors = ground::draw(&mut canvas, scene, &body)?;
     turns::draw(&mut canvas, scene, &body)?;
-    loads::draw(&mut canvas, scene, &body)?;
+    loads::draw(&mut canvas, scene, &body, &floors)?;
     Ok(canvas.finish())
 }
 

@@ -1654,3 +1654,63 @@ fn a_scene_saying_up_y_is_drawn_with_y_up() {
         "without it z is up: {z_up:?}"
     );
 }
+
+/// A fixed point that no shaft or floor holds stands on a pivot: the top's O on a pedestal, a
+/// triangle with its apex at O and its base on the side the weight points to (under O); a
+/// shaft's bearings hold SP 18.4 and the floor holds the cone's apex, so neither has one; nor
+/// does SP 18.5, whose ω₂ is drawn down from O where the pedestal would stand.
+#[test]
+fn a_fixed_point_nothing_else_holds_stands_on_a_pivot() {
+    let pedestals = |drawn: &Figure| -> Vec<Vec<P2>> {
+        let o = drawn.at([0.0; 3]);
+        drawn
+            .marks
+            .iter()
+            .filter_map(|m| match m {
+                Mark::Path {
+                    points,
+                    closed: true,
+                    ..
+                } if points.len() == 3 && points.iter().any(|p| p.minus(o).length() < 1e-6) => {
+                    Some(points.clone())
+                }
+                _ => None,
+            })
+            .collect()
+    };
+    let top = figure(&example("top_steady_tilt")).unwrap();
+    let o = top.at([0.0; 3]);
+    let down = top
+        .marks
+        .iter()
+        .find_map(|m| match m {
+            Mark::Arrow {
+                role: Role::Force(name),
+                from,
+                to,
+                ..
+            } if name == "W" => Some(to.minus(*from)),
+            _ => None,
+        })
+        .expect("the weight drawn");
+    let found = pedestals(&top);
+    assert_eq!(found.len(), 1, "one pedestal at O");
+    let below = found[0]
+        .iter()
+        .filter(|p| {
+            let d = p.minus(o);
+            d.x * down.x + d.y * down.y > 0.5 * d.length() * down.length()
+        })
+        .count();
+    assert_eq!(below, 2, "its base under O: {:?}", found[0]);
+    for name in [
+        "sp18_4_shaft_reactions",
+        "cone_rolling_about_apex",
+        "sp18_5_disk_reactions",
+    ] {
+        assert!(
+            pedestals(&figure(&example(name)).unwrap()).is_empty(),
+            "{name}"
+        );
+    }
+}

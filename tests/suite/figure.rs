@@ -1257,41 +1257,88 @@ fn the_unbalance_radii_are_dimensioned() {
     }
 }
 
-/// The floor a body rolls on is drawn where the scene holds its lowest point still: SP 18.2's
-/// disk at (L, −r, 0) stands on a patch of the plane y = −r centred there; a falling plate
-/// held at the corner it strikes (a blow there) gets none, the scene shaping no ledge.
+/// The floor a body rests or rolls on, a patch of its lowest level centred among the points
+/// it holds: SP 18.2's disk at the contact (L, −r, 0); the cone between its contact point and
+/// its apex O, which lies on the floor too (the line of contact is on it); the sliding box
+/// between the points where the floor pushes straight up on it (N_A, N_B). A falling plate
+/// held at the corner it strikes (a blow there) gets none, the scene shaping no ledge; nor
+/// does a shaft whose bearing below the body takes an upward reaction (C of the bent rod).
 #[test]
-fn the_floor_under_a_rolling_contact() {
-    let floor = |name: &str| {
+fn the_floor_under_a_body_resting_or_rolling_on_it() {
+    let held = |scene: &Scene| -> Vec<kinetics::Vector> {
+        scene
+            .constraints
+            .iter()
+            .filter_map(|c| match &c.kind {
+                kinetics::scene::model::ConstraintKind::VelocityZero(at) => Some(at.clone()),
+                _ => None,
+            })
+            .collect()
+    };
+    let floors = |name: &str, points: &dyn Fn(&Scene) -> Vec<kinetics::Vector>| {
         let scene = example(name);
         let drawn = figure(&scene).unwrap();
-        let held = scene.constraints.iter().find_map(|c| match &c.kind {
-            kinetics::scene::model::ConstraintKind::VelocityZero(at) => Some(at.clone()),
-            _ => None,
-        });
-        let at = drawn_at(&drawn, &scene, &held.expect("a point held still"));
-        drawn.marks.iter().any(|m| match m {
-            Mark::Path {
-                points,
-                closed: true,
-                stroke,
-                ..
-            } if *stroke == Stroke::GROUND && points.len() == 4 => {
-                let centre = points
-                    .iter()
-                    .fold(P2::new(0.0, 0.0), |s, q| s.plus(*q))
-                    .times(0.25);
-                near(centre, at)
-            }
-            _ => false,
-        })
+        let points = points(&scene);
+        let middle = points
+            .iter()
+            .map(|p| drawn_at(&drawn, &scene, p))
+            .fold(P2::new(0.0, 0.0), |s, q| s.plus(q))
+            .times(1.0 / points.len() as f64);
+        let patches: Vec<P2> = drawn
+            .marks
+            .iter()
+            .filter_map(|m| match m {
+                Mark::Path {
+                    points,
+                    closed: true,
+                    stroke,
+                    ..
+                } if *stroke == Stroke::GROUND && points.len() == 4 => Some(
+                    points
+                        .iter()
+                        .fold(P2::new(0.0, 0.0), |s, q| s.plus(*q))
+                        .times(0.25),
+                ),
+                _ => None,
+            })
+            .collect();
+        (patches.len(), patches.iter().any(|c| near(*c, middle)))
     };
-    assert!(floor("sp18_2_rolling_disk"), "the disk's floor");
-    assert!(floor("cone_rolling_about_apex"), "the cone's floor");
-    assert!(
-        !floor("plate_falls_on_corner"),
-        "no floor where a blow holds the point"
+    assert_eq!(
+        floors("sp18_2_rolling_disk", &held),
+        (1, true),
+        "the disk's floor"
     );
+    let contact_and_apex = |scene: &Scene| {
+        let mut points = held(scene);
+        points.push(kinetics::Vector::zeros());
+        points
+    };
+    assert_eq!(
+        floors("cone_rolling_about_apex", &contact_and_apex),
+        (1, true),
+        "the cone's floor"
+    );
+    let pushed_up = |scene: &Scene| -> Vec<kinetics::Vector> {
+        scene
+            .forces
+            .iter()
+            .filter(|f| f.name == "front" || f.name == "back")
+            .map(|f| f.point.clone())
+            .collect()
+    };
+    assert_eq!(
+        floors("sliding_box", &pushed_up),
+        (1, true),
+        "the box's floor"
+    );
+    for name in ["plate_falls_on_corner", "bent_rod_vertical_shaft"] {
+        assert_eq!(
+            floors(name, &|_| vec![kinetics::Vector::zeros()]).0,
+            0,
+            "{name}"
+        );
+    }
 }
 
 /// A dimension's label stands on its own line, which its halo breaks, as a textbook sets it:

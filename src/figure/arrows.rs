@@ -209,23 +209,53 @@ impl Drawn<'_> {
         // until it comes out of sight's way, as the axes do.
         let mut shown_from = from;
         let depth = INSIDE * self.body.reach;
+        let drawn = view::norm(sub(to, from));
         if !load && !into_point && self.body.surrounds(self.from, u, depth) {
-            let drawn = view::norm(sub(to, from));
             let hidden = self.body.hidden_along(canvas, from, u, drawn);
             if hidden > 0.0 && hidden < drawn {
                 shown_from = add(from, scaled(u, hidden));
                 canvas.path_beside(Layer::Behind, &[from, shown_from], false, stroke, side);
             }
         }
-        canvas.arrow_beside(
-            Layer::Front,
-            shown_from,
-            to,
-            self.double,
-            stroke,
-            self.role.clone(),
-            side,
-        );
+        // A load at a hidden point, drawn away from the body, is behind it as far as it runs
+        // inside the body's outline, and dashed only that far; past the outline it is drawn
+        // solid (a push on a far face comes from out of the body's way, in sight).
+        let out_of_sight = match hidden {
+            true => self.body.covered_along(canvas, self.from, outward, drawn),
+            false => 0.0,
+        };
+        if hidden && out_of_sight > 0.0 && out_of_sight < drawn {
+            let edge = add(self.from, scaled(outward, out_of_sight));
+            let (dashed, solid) = match into_point {
+                true => ([edge, to], [from, edge]),
+                false => ([from, edge], [edge, to]),
+            };
+            let (line, arrow) = match into_point {
+                true => ((solid, self.stroke), (dashed, stroke)),
+                false => ((dashed, stroke), (solid, self.stroke)),
+            };
+            canvas.path_beside(Layer::Front, &line.0, false, line.1, side);
+            let [a, b] = arrow.0;
+            canvas.arrow_beside(
+                Layer::Front,
+                a,
+                b,
+                self.double,
+                arrow.1,
+                self.role.clone(),
+                side,
+            );
+        } else {
+            canvas.arrow_beside(
+                Layer::Front,
+                shown_from,
+                to,
+                self.double,
+                stroke,
+                self.role.clone(),
+                side,
+            );
+        }
         canvas.label_beside(label, free, outward, side);
         // A later vector along this one's line is drawn beside it (a normal force under a
         // weight, v̄ the way ω points from G), not over it.

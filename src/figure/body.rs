@@ -132,15 +132,27 @@ impl Extent {
         let step = OUT_STEP * self.reach;
         let eye = canvas.view().toward_eye();
         let in_a_solid = |q: P3| self.solids.iter().any(|s| s.thick() && s.within(q, 0.0));
-        let hidden = |t: f64| {
-            let q = add(p, scaled(d, t));
+        self.along_while(p, d, length, |q| {
             self.covers(canvas, q)
                 && (0..=2 * OUT_STEPS).any(|k| in_a_solid(add(q, scaled(eye, step * f64::from(k)))))
-        };
+        })
+    }
+
+    /// How far along the unit vector `d` a line from the point `p` runs inside the body's
+    /// outline as drawn, up to `length`: a load at a point behind the body, drawn away from
+    /// it, is out of sight that far.
+    pub fn covered_along(&self, canvas: &Canvas, p: P3, d: P3, length: f64) -> f64 {
+        self.along_while(p, d, length, |q| self.covers(canvas, q))
+    }
+
+    /// The farthest step of [`OUT_STEP`] of the reach, up to `length`, along the unit vector
+    /// `d` from `p` to which every point passes `test`.
+    fn along_while(&self, p: P3, d: P3, length: f64, test: impl Fn(P3) -> bool) -> f64 {
+        let step = OUT_STEP * self.reach;
         let steps = (length / step).floor() as u32;
         (0..=steps)
             .map(|k| step * f64::from(k))
-            .take_while(|t| hidden(*t))
+            .take_while(|t| test(add(p, scaled(d, *t))))
             .last()
             .unwrap_or(0.0)
     }

@@ -1177,8 +1177,9 @@ fn outside_hull(p: P2, outline: &[P2]) -> bool {
 
 /// A load pushing on a face comes into its point from outside, as a textbook draws a floor's
 /// normal force (the sliding box's N_A: its head at its point, its tail below); one at a point
-/// out of sight behind the body is dashed, as the hidden edges there are, and starts clear of
-/// the body as drawn (the free box's blow at its far corner, not from G).
+/// out of sight behind the body starts clear of the body as drawn (the free box's blow at its
+/// far corner, not from G), solid until it passes behind the body's outline and dashed from
+/// there into its point, as the hidden edges there are.
 #[test]
 fn pushes_come_into_their_points_and_hidden_loads_are_dashed() {
     let scene = example("sliding_box");
@@ -1222,9 +1223,17 @@ fn pushes_come_into_their_points_and_hidden_loads_are_dashed() {
         "dashed: the corner is out of sight"
     );
     assert!(
-        outside_hull(from, &outline),
-        "from outside the box as drawn"
+        !outside_hull(from, &outline),
+        "dashed only behind the box as drawn"
     );
+    // Its line in sight, solid, from outside the box to where the dashes start.
+    let in_sight = drawn.marks.iter().any(|m| match m {
+        Mark::Path { points, stroke, .. } if stroke.dashes == Dashes::Solid => {
+            points.len() == 2 && near(points[1], from) && outside_hull(points[0], &outline)
+        }
+        _ => false,
+    });
+    assert!(in_sight, "solid from outside the box as drawn");
 }
 
 /// An unbalance's radius is dimensioned: the rotor's m₁ at (e₁, 0, z₁) and m₂ at

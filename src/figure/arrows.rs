@@ -2,7 +2,7 @@
 //! magnitude; from its point or (a push, an impulse) into it; beside a line it would lie
 //! along; lengthened out of the body where its point is inside or hidden behind it, dashed
 //! where hidden; labelled by its name, its magnitude or its components, and with a second
-//! vector it stands for too (`ω, α`).
+//! vector a component stands for too (`ω₂, Ω`).
 
 use super::body::Extent;
 use super::canvas::{Canvas, Layer};
@@ -44,11 +44,10 @@ pub(super) fn holds_any(v: &Vector, unknowns: &[Symbol]) -> bool {
         .any(|c| c.symbols().iter().any(|s| unknowns.contains(s)))
 }
 
-/// A second vector drawn on a vector's arrow, along the same line: α on ω (labelled ω, α),
-/// or Ω on ω's component equal to it (labelled ω₂, Ω). `component`: the axis of that
-/// component, or none for the whole arrow.
+/// A second vector drawn on one of a vector's components, equal to it: Ω on ω's component
+/// (labelled ω₂, Ω). `component`: the axis of that component.
 pub(super) struct Also {
-    pub(super) component: Option<usize>,
+    pub(super) component: usize,
     pub(super) name: &'static str,
 }
 
@@ -77,7 +76,7 @@ pub(super) struct Drawn<'b> {
     pub(super) role: Role,
     /// The head at the point (an impulse striking it), else the tail.
     pub(super) into_point: bool,
-    /// A second vector the arrow (or one component's arrow) stands for.
+    /// A second vector one component's arrow stands for.
     pub(super) also: Option<Also>,
     /// The body: a load at a point inside it reaches out past it, and one drawn beside a
     /// line is drawn on the side away from its mass centre.
@@ -98,12 +97,12 @@ impl Drawn<'_> {
         what: &str,
     ) -> Result<Drew, FigureError> {
         let value = canvas.vector(v, what)?;
-        let also = |component: Option<usize>, first: Expr| match &self.also {
+        let also = |component: usize, first: Expr| match &self.also {
             Some(a) if a.component == component => label_all(&[first, symbol(a.name)]),
             _ => label(&first),
         };
         if drawn_whole(v, unknowns) {
-            let label = also(None, whole_label(v, value, name));
+            let label = label(&whole_label(v, value, name));
             return Ok(Drew {
                 whole: true,
                 arrows: self.arrow(canvas, value, label, true).into_iter().collect(),
@@ -116,7 +115,7 @@ impl Drawn<'_> {
         if let [k] = components[..] {
             let mut d = [0.0; 3];
             d[k] = value[k].signum();
-            let label = also(None, whole_label(v, value, name));
+            let label = label(&whole_label(v, value, name));
             return Ok(Drew {
                 whole: true,
                 arrows: self.arrow(canvas, d, label, true).into_iter().collect(),
@@ -133,7 +132,7 @@ impl Drawn<'_> {
                 // A component that is not one symbol is named by the vector's name.
                 (false, Some(n)) => symbol(&format!("{n}_{}", ["x", "y", "z"][k])),
             };
-            arrows.extend(self.arrow(canvas, d, also(Some(k), first), false));
+            arrows.extend(self.arrow(canvas, d, also(k, first), false));
         }
         Ok(Drew {
             whole: false,
@@ -389,7 +388,7 @@ pub(super) fn label(e: &Expr) -> String {
     label_all(std::slice::from_ref(e))
 }
 
-/// A label for the vectors one arrow stands for, in a list (`ω, α`), as [`label`] writes one.
+/// A label for the vectors one arrow stands for, in a list (`ω₂, Ω`), as [`label`] writes one.
 pub(super) fn label_all(es: &[Expr]) -> String {
     let list = |write: fn(&Expr) -> String, comma: &str| {
         es.iter().map(write).collect::<Vec<_>>().join(comma)

@@ -299,38 +299,23 @@ fn omega(
         [k] if !omega_whole && omega[k] == rate[k] => Some(k),
         _ => None,
     });
-    // α where the frame turns with the body (ω̇ in it is α), unless zero; drawn on ω's arrow
-    // where it points the same way (a shaft speeding up), labelled with both (ω, α).
+    // α where the frame turns with the body (ω̇ in it is α), unless zero: its own double
+    // arrow, past ω's where it points the same way (a shaft speeding up), as a textbook draws
+    // the two.
     let alpha = scene
         .omega_dot
         .as_ref()
         .filter(|a| scene.frame_rate.is_none() && !nonzero(a).is_empty());
-    let alpha_on_omega = match alpha {
-        Some(a) if omega_whole => {
-            let (a, w) = (canvas.vector(a, "alpha")?, canvas.vector(omega, "omega")?);
-            view::dot(view::unit(a), view::unit(w)) > 1.0 - 1e-9
-        }
-        _ => false,
-    };
-    let also = match (frame_in_omega, alpha_on_omega) {
-        (Some(k), _) => Some(Also {
-            component: Some(k),
-            name: "Omega",
-        }),
-        (None, true) => Some(Also {
-            component: None,
-            name: "alpha",
-        }),
-        (None, false) => None,
-    };
+    let also = frame_in_omega.map(|k| Also {
+        component: k,
+        name: "Omega",
+    });
     let rates = [
         Some((omega, "omega", Role::AngularVelocity, also)),
         frame_rate
             .filter(|_| frame_in_omega.is_none())
             .map(|rate| (rate, "Omega", Role::FrameRate, None)),
-        alpha
-            .filter(|_| !alpha_on_omega)
-            .map(|a| (a, "alpha", Role::AngularAcceleration, None)),
+        alpha.map(|a| (a, "alpha", Role::AngularAcceleration, None)),
     ];
     let length = OMEGA_LENGTH * body.reach;
     for (vector, name, role, also) in rates.into_iter().flatten() {
@@ -499,7 +484,10 @@ fn loads(
             // textbook draws the torque that drives a shaft.
             if shaft_line(&rays.ends).is_some_and(|a| view::dot(a, d).abs() > 1.0 - 1e-9) {
                 let r = TURNING_RADIUS * reach;
-                let centre = scaled(d, rays.claim(canvas, d, 0.0, 2.0 * r) + r);
+                // The curve is a circle square to the shaft: on the page it reaches along the
+                // shaft's line as far as its ellipse does, which the claim must cover.
+                let half = r.max(along_page(canvas, d, r));
+                let centre = scaled(d, rays.claim(canvas, d, 0.0, 2.0 * half) + half);
                 let start = canvas.turning_arrow(centre, d, r, Stroke::LOAD, Role::Couple);
                 let name = whole_label(&part, value, None);
                 canvas.label(label(&name), start, sub(start, centre));
@@ -611,6 +599,23 @@ fn fixed_axis(
         }
     }
     Ok(ends)
+}
+
+/// How far along the unit `d`, as the page shows its line, a circle of radius `r` square to
+/// `d` reaches from its centre: the half extent of its ellipse along the drawn line, in
+/// lengths along `d`.
+fn along_page(canvas: &Canvas, d: P3, r: f64) -> f64 {
+    let o = canvas.project([0.0; 3]);
+    let line = canvas.project(d).minus(o);
+    let Some(e) = line.unit() else {
+        return r;
+    };
+    let (u, v) = view::across(d);
+    let reach = |w: P3| {
+        let p = canvas.project(w).minus(o);
+        p.x * e.x + p.y * e.y
+    };
+    r * reach(u).hypot(reach(v)) / line.length()
 }
 
 /// The fixed axis's direction: ω's where it is known about a fixed point.

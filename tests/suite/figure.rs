@@ -1096,8 +1096,9 @@ fn a_rate_the_constraints_fix_points_the_way_it_turns_out() {
 }
 
 /// The motion the statement gives is drawn: SP 18.4's α (omegadot = alpha*i, the way ω
-/// turns) on ω's double arrow along the shaft x, labelled with both; slowing down (α = −α i)
-/// a double arrow of its own along −x; and the frame of three rods' v̄ labelled at G.
+/// turns) a double arrow of its own along the shaft x, past ω's, each labelled alone (a
+/// label "ω, α" on one arrow named two quantities at once); slowing down (α = −α i) along
+/// −x; and the frame of three rods' v̄ labelled at G.
 #[test]
 fn the_stated_alpha_and_vbar_are_drawn() {
     let find = |name: &str| figure(&example(name)).unwrap();
@@ -1117,11 +1118,19 @@ fn the_stated_alpha_and_vbar_are_drawn() {
     let o = shaft.at([0.0; 3]);
     let x = shaft.at([1.0, 0.0, 0.0]).minus(o);
     assert!(double_along(&shaft, Role::AngularVelocity, x), "ω along x");
-    let both = shaft
-        .labels
-        .iter()
-        .any(|l| l.markup.contains(&written("omega")) && l.markup.contains(&written("alpha")));
-    assert!(both, "ω's arrow labelled with α");
+    assert!(
+        double_along(&shaft, Role::AngularAcceleration, x),
+        "α along x"
+    );
+    for name in ["omega", "alpha"] {
+        assert!(
+            shaft
+                .labels
+                .iter()
+                .any(|l| l.markup == format!("${}$", written(name))),
+            "{name} labelled alone"
+        );
+    }
     let mut slowing = scene.clone();
     slowing.omega_dot = scene.omega_dot.as_ref().map(|a| a.map(|c| -c));
     let slowing = figure(&slowing).unwrap();

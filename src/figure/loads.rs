@@ -96,7 +96,7 @@ pub fn draw(
                 }),
         )
         .collect();
-    super::pivot::draw(canvas, scene, body, floors, &from_o)?;
+    super::supports::pivot(canvas, scene, body, floors, &from_o)?;
     // A point named at O (the pin A of SP 18.3, the bearing C of SP 18.4) is lettered by its
     // name, not O.
     let origin_named = lettered.iter().any(|p| view::norm(*p) < 1e-9 * body.reach);

@@ -18,8 +18,8 @@ mod ground;
 mod labels;
 mod link;
 mod loads;
-mod pivot;
 pub mod sizes;
+mod supports;
 pub mod svg;
 pub mod tikz;
 mod turns;
@@ -88,6 +88,8 @@ impl Stroke {
     pub const DIMENSION: Stroke = Stroke::black(0.6);
     /// The outline of the floor a body rolls on.
     pub const GROUND: Stroke = Stroke::black(0.7);
+    /// A wire the body hangs from.
+    pub const WIRE: Stroke = Stroke::black(1.0);
     /// A hidden edge.
     pub const HIDDEN: Stroke = Stroke {
         width: 1.0,
@@ -216,6 +218,7 @@ pub fn figure(scene: &Scene) -> Result<Figure, FigureError> {
     let mut canvas = Canvas::new(scene, &sizes)?;
     let body = body::draw(&mut canvas, scene)?;
     let floors = ground::draw(&mut canvas, scene, &body)?;
+    supports::wires(&mut canvas, scene, &body)?;
     turns::draw(&mut canvas, scene, &body)?;
     loads::draw(&mut canvas, scene, &body, &floors)?;
     Ok(canvas.finish())

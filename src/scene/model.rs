@@ -194,6 +194,15 @@ pub struct Force {
     pub point: Vector,
 }
 
+/// A taut wire the body hangs from (`wire from (x, y, z) to (x, y, z)`): from its point on
+/// the body to its fixed anchor. The figure draws it; the equations take what it does from
+/// the constraints and loads the scene states (SP 18.1's wires keep v̄_y and ω_z zero).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Wire {
+    pub from: Vector,
+    pub to: Vector,
+}
+
 /// A body point named by the scene (`point A at (x, y, z)`), whose velocity `v_A` and
 /// acceleration `a_A` a scene can ask for.
 #[derive(Debug, Clone, PartialEq)]
@@ -429,6 +438,8 @@ pub struct Scene {
     pub impulses: Vec<Impulse>,
     /// The named body points (`point A at (x, y, z)`).
     pub points: Vec<NamedPoint>,
+    /// The wires the body hangs from (`wire from (...) to (...)`), for the figure.
+    pub wires: Vec<Wire>,
     pub constraints: Vec<Constraint>,
     pub unknowns: Vec<(Symbol, Dimension)>,
     /// The unit each unknown was declared in, where one was written (`unknown C_x : lb`):

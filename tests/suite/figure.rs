@@ -1779,3 +1779,49 @@ fn a_fixed_point_nothing_else_holds_stands_on_a_pivot() {
         );
     }
 }
+
+/// The wires a scene hangs its body from are drawn: SP 18.1's plate from its two top corners
+/// up to their anchors, each a line in the wire's stroke from the corner's place on the page
+/// to the anchor's, with a hatched base across it at the anchor (a line of the ground's
+/// stroke through the anchor). A wire from a point to itself, or half written, is refused
+/// at its line.
+#[test]
+fn the_wires_a_body_hangs_from_are_drawn_to_their_anchors() {
+    let scene = example("sp18_1_plate_impact");
+    assert_eq!(scene.wires.len(), 2);
+    let drawn = figure(&scene).unwrap();
+    for wire in &scene.wires {
+        let (from, to) = (
+            drawn_at(&drawn, &scene, &wire.from),
+            drawn_at(&drawn, &scene, &wire.to),
+        );
+        let line = two_point_paths(&drawn, Stroke::WIRE)
+            .into_iter()
+            .any(|(a, b)| near(a, from) && near(b, to));
+        assert!(line, "the wire from {from:?} to {to:?}");
+        let base = two_point_paths(&drawn, Stroke::GROUND)
+            .into_iter()
+            .any(|(a, b)| {
+                let middle = a.plus(b).times(0.5);
+                near(middle, to)
+            });
+        assert!(base, "a base across the anchor {to:?}");
+    }
+    let refused = |wire: &str| {
+        let source = format!("given a = 1 m\nbody plate(a, a) mass 1 kg\n{wire}\nfind T\n");
+        kinetics::parse_scene("w.scene", &source)
+            .err()
+            .map(|e| e.to_string())
+            .unwrap_or_default()
+    };
+    let itself = refused("wire from (a, 0, 0) to (a, 0, 0)");
+    assert!(
+        itself.contains("a wire from a point to itself") && itself.contains("w.scene:3:1"),
+        "{itself}"
+    );
+    let half = refused("wire from (a, 0, 0)");
+    assert!(
+        half.contains("expected 'to'") && half.contains("w.scene:3:20"),
+        "{half}"
+    );
+}

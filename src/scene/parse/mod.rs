@@ -3,7 +3,9 @@
 //! expression parser; its diagnostics are moved to their place in the file.
 
 use super::kinematic_constraints::{H_COMPONENTS, OMEGA_COMPONENTS};
-use super::model::{Constraint, ConstraintKind, Force, Places, Quantity, Request, Scene, Span};
+use super::model::{
+    Constraint, ConstraintKind, Force, Places, Quantity, Request, Scene, Span, Wire,
+};
 use super::named_unit::NamedUnit;
 use super::unit_system::UnitSystem;
 use super::units::{dimension_with, Dimension, DimensionError, Dimensions};
@@ -150,6 +152,7 @@ fn read_scene(
             couples: vec![],
             impulses: vec![],
             points: vec![],
+            wires: vec![],
             constraints: vec![],
             unknowns: vec![],
             unknown_units: vec![],
@@ -274,6 +277,19 @@ impl Reader<'_> {
             Rule::impulse => self.impulse(&inner)?,
             Rule::before => self.before(&inner[0], at)?,
             Rule::named_point => self.named_point(&inner)?,
+            Rule::wire => {
+                let wire = Wire {
+                    from: self.point(&inner[0])?,
+                    to: self.point(&inner[1])?,
+                };
+                if wire.from == wire.to {
+                    return Err(self.error(
+                        at,
+                        "a wire from a point to itself: its anchor must stand apart from the body's point",
+                    ));
+                }
+                self.scene.wires.push(wire);
+            }
             Rule::constraint => {
                 let c = inner.remove(0);
                 let constraint = match c.as_rule() {

@@ -5,7 +5,7 @@
 use crate::parse::Diagnostic;
 
 /// Each statement with the form it is written in, for the hint of a syntax error.
-const STATEMENT_FORMS: [(&str, &str); 20] = [
+const STATEMENT_FORMS: [(&str, &str); 21] = [
     ("title", "title Sample Problem 18.4"),
     (
         "statement",
@@ -36,6 +36,7 @@ const STATEMENT_FORMS: [(&str, &str); 20] = [
     ),
     ("before", "before vbar = -v_0*j"),
     ("point", "point A at (a/2, b/2, 0)"),
+    ("wire", "wire from (a/2, b/2, 0) to (a/2, b, 0)"),
     (
         "constraint",
         "constraint velocity at (L, -r, 0) = 0  or  constraint vbar_y = 0",

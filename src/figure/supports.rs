@@ -1,0 +1,118 @@
+//! The supports a textbook draws round a body, each ending on a hatched base (a line with
+//! short slanted hatches, facing the reader, as a fixed surface is drawn):
+//!
+//! - the pivot at a fixed point O that nothing else drawn holds (a top's tip, a gyroscope's
+//!   stand, SP 18.2's axle): a pedestal under O standing on a base, over O where the body
+//!   hangs from it (its mass centre below O). Where ω turns about a fixed axis the shaft and
+//!   its bearings hold the body, and where O lies on a floor a body rolls on (a cone's apex)
+//!   the floor does; none where an arrow drawn from O runs the pedestal's way (SP 18.5's
+//!   −ω₂ j), which it would hide;
+//! - the wires the scene hangs the body from (`wire from P to Q`, SP 18.1's plate): a line
+//!   from the body's point to its anchor, the base across it there.
+//!
+//! ```text
+//!        O
+//!       / \        height PEDESTAL, half-width PEDESTAL_HALF_WIDTH
+//!      /___\
+//!    ///////// base, BASE_HALF_WIDTH each side, hatched
+//! ```
+
+use super::body::Extent;
+use super::canvas::{Canvas, Layer};
+use super::view::{self, add, scaled, P3};
+use super::{FigureError, Stroke};
+use crate::scene::model::Scene;
+
+/// The pedestal's height, its half-width and a base's half-width, in shares of the reach.
+const PEDESTAL: f64 = 0.12;
+const PEDESTAL_HALF_WIDTH: f64 = 0.06;
+const BASE_HALF_WIDTH: f64 = 0.1;
+/// The hatches under a base: how many, and their depth in shares of the pedestal's height.
+const HATCHES: u32 = 5;
+const HATCH: f64 = 0.35;
+/// How near, in shares of the reach, O must lie to a floor's level to stand on it.
+const ON_FLOOR: f64 = 1e-6;
+/// An arrow from O within this angle of the pedestal's direction takes that side.
+const TAKEN_DEG: f64 = 25.0;
+
+/// The pivot at O where the scene fixes O and no shaft (ω about a fixed direction) or floor
+/// at O's level (`floors`, the levels of the floors drawn) holds it, on a side no arrow drawn
+/// from O (`from_o`, their unit directions) takes.
+pub fn pivot(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    body: &Extent,
+    floors: &[f64],
+    from_o: &[P3],
+) -> Result<(), FigureError> {
+    let unknowns = super::loads::magnitudes(scene);
+    if !scene.fixed_point || super::loads::fixed_direction(canvas, scene, &unknowns)?.is_some() {
+        return Ok(());
+    }
+    let up = canvas.view().up();
+    if floors
+        .iter()
+        .any(|level| level.abs() < ON_FLOOR * body.reach)
+    {
+        return Ok(());
+    }
+    // Away from the body: under O, over it where the body hangs from O.
+    let away = match view::dot(body.centre, up) < 0.0 {
+        true => up,
+        false => scaled(up, -1.0),
+    };
+    let taken = TAKEN_DEG.to_radians().cos();
+    if from_o.iter().any(|d| view::dot(*d, away) >= taken) {
+        return Ok(());
+    }
+    let across = facing(canvas, away);
+    let reach = body.reach;
+    let foot = scaled(away, PEDESTAL * reach);
+    let corner = |side: f64| add(foot, scaled(across, side * PEDESTAL_HALF_WIDTH * reach));
+    let pedestal = [[0.0; 3], corner(1.0), corner(-1.0)];
+    canvas.path(Layer::Behind, &pedestal, true, Stroke::GROUND);
+    base(canvas, foot, away, reach);
+    Ok(())
+}
+
+/// Each wire the scene states: its line from the body to its anchor, kept clear of the
+/// arrows drawn after it, and the base at the anchor.
+pub fn wires(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
+    for (k, wire) in scene.wires.iter().enumerate() {
+        let what = format!("wire {}", k + 1);
+        let from = canvas.vector(&wire.from, &what)?;
+        let to = canvas.vector(&wire.to, &what)?;
+        if view::norm(view::sub(to, from)) == 0.0 {
+            continue;
+        }
+        canvas.path(Layer::Behind, &[from, to], false, Stroke::WIRE);
+        canvas.keep_clear(from, to, Stroke::WIRE);
+        base(canvas, to, view::unit(view::sub(to, from)), body.reach);
+    }
+    Ok(())
+}
+
+/// Across the unit `away`, square to the eye too: a base across it faces the reader.
+fn facing(canvas: &Canvas, away: P3) -> P3 {
+    view::unit(view::cross(canvas.view().toward_eye(), away))
+}
+
+/// A fixed surface's base at `at`, across the unit `away` (the side it holds from), its
+/// hatches slanting away.
+fn base(canvas: &mut Canvas, at: P3, away: P3, reach: f64) {
+    let across = facing(canvas, away);
+    let point = |out: f64, side: f64| add(at, add(scaled(away, out), scaled(across, side)));
+    let half = BASE_HALF_WIDTH * reach;
+    canvas.path(
+        Layer::Behind,
+        &[point(0.0, -half), point(0.0, half)],
+        false,
+        Stroke::GROUND,
+    );
+    let depth = HATCH * PEDESTAL * reach;
+    for k in 0..HATCHES {
+        let side = -half + 2.0 * half * f64::from(k + 1) / f64::from(HATCHES + 1);
+        let hatch = [point(0.0, side), point(depth, side - depth)];
+        canvas.path(Layer::Behind, &hatch, false, Stroke::GROUND);
+    }
+}

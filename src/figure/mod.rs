@@ -218,7 +218,7 @@ pub fn figure(scene: &Scene) -> Result<Figure, FigureError> {
     let mut canvas = Canvas::new(scene, &sizes)?;
     let body = body::draw(&mut canvas, scene)?;
     let floors = ground::draw(&mut canvas, scene, &body)?;
-    supports::wires(&mut canvas, scene, &body)?;
+    supports::stated(&mut canvas, scene, &body)?;
     turns::draw(&mut canvas, scene, &body)?;
     loads::draw(&mut canvas, scene, &body, &floors)?;
     Ok(canvas.finish())

@@ -8,7 +8,9 @@
 //!   the floor does; none where an arrow drawn from O runs the pedestal's way (SP 18.5's
 //!   −ω₂ j), which it would hide;
 //! - the wires the scene hangs the body from (`wire from P to Q`, SP 18.1's plate): a line
-//!   from the body's point to its anchor, the base across it there.
+//!   from the body's point to its anchor, the base across it there;
+//! - the posts the scene stands round it (`post from P to Q`, the post a spinning rod strikes):
+//!   a bar from its base, hatched, to its top.
 //!
 //! ```text
 //!        O
@@ -21,7 +23,7 @@ use super::body::Extent;
 use super::canvas::{Canvas, Layer};
 use super::view::{self, add, scaled, P3};
 use super::{FigureError, Stroke};
-use crate::scene::model::Scene;
+use crate::scene::model::{Scene, SupportKind};
 
 /// The pedestal's height, its half-width and a base's half-width, in shares of the reach.
 const PEDESTAL: f64 = 0.12;
@@ -75,19 +77,29 @@ pub fn pivot(
     Ok(())
 }
 
-/// Each wire the scene states: its line from the body to its anchor, kept clear of the
-/// arrows drawn after it, and the base at the anchor.
-pub fn wires(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
-    for (k, wire) in scene.wires.iter().enumerate() {
-        let what = format!("wire {}", k + 1);
-        let from = canvas.vector(&wire.from, &what)?;
-        let to = canvas.vector(&wire.to, &what)?;
+/// Each wire and post the scene states: a wire's line from the body to its anchor, the base
+/// across it there; a post's bar, drawn among the parts at its depth, from the base it stands
+/// on to its top. Each kept clear of the arrows drawn after it.
+pub fn stated(canvas: &mut Canvas, scene: &Scene, body: &Extent) -> Result<(), FigureError> {
+    for (k, support) in scene.supports.iter().enumerate() {
+        let what = format!("support {}", k + 1);
+        let from = canvas.vector(&support.from, &what)?;
+        let to = canvas.vector(&support.to, &what)?;
         if view::norm(view::sub(to, from)) == 0.0 {
             continue;
         }
-        canvas.path(Layer::Behind, &[from, to], false, Stroke::WIRE);
-        canvas.keep_clear(from, to, Stroke::WIRE);
-        base(canvas, to, view::unit(view::sub(to, from)), body.reach);
+        match support.kind {
+            SupportKind::Wire => {
+                canvas.path(Layer::Behind, &[from, to], false, Stroke::WIRE);
+                canvas.keep_clear(from, to, Stroke::WIRE);
+                base(canvas, to, view::unit(view::sub(to, from)), body.reach);
+            }
+            SupportKind::Post => {
+                canvas.bar(from, to, Stroke::SHAFT);
+                canvas.keep_clear(from, to, Stroke::SHAFT);
+                base(canvas, from, view::unit(view::sub(from, to)), body.reach);
+            }
+        }
     }
     Ok(())
 }

@@ -194,13 +194,23 @@ pub struct Force {
     pub point: Vector,
 }
 
-/// A taut wire the body hangs from (`wire from (x, y, z) to (x, y, z)`): from its point on
-/// the body to its fixed anchor. The figure draws it; the equations take what it does from
-/// the constraints and loads the scene states (SP 18.1's wires keep v̄_y and ω_z zero).
+/// A fixed support the scene draws round the body: a taut wire it hangs from (`wire from P
+/// to Q`, from its point on the body to its anchor), or a post it strikes or rests on (`post
+/// from P to Q`, from its base to its top). The figure draws it; the equations take what it
+/// does from the constraints, loads and impulses the scene states (SP 18.1's wires keep v̄_y
+/// and ω_z zero; a post's blow is the impulse at its top).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Wire {
+pub struct Support {
+    pub kind: SupportKind,
     pub from: Vector,
     pub to: Vector,
+}
+
+/// What a [`Support`] is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SupportKind {
+    Wire,
+    Post,
 }
 
 /// A body point named by the scene (`point A at (x, y, z)`), whose velocity `v_A` and
@@ -438,8 +448,9 @@ pub struct Scene {
     pub impulses: Vec<Impulse>,
     /// The named body points (`point A at (x, y, z)`).
     pub points: Vec<NamedPoint>,
-    /// The wires the body hangs from (`wire from (...) to (...)`), for the figure.
-    pub wires: Vec<Wire>,
+    /// The wires and posts round the body (`wire from ... to ...`, `post from ... to ...`),
+    /// for the figure.
+    pub supports: Vec<Support>,
     pub constraints: Vec<Constraint>,
     pub unknowns: Vec<(Symbol, Dimension)>,
     /// The unit each unknown was declared in, where one was written (`unknown C_x : lb`):

@@ -1783,14 +1783,15 @@ fn a_fixed_point_nothing_else_holds_stands_on_a_pivot() {
 /// The wires a scene hangs its body from are drawn: SP 18.1's plate from its two top corners
 /// up to their anchors, each a line in the wire's stroke from the corner's place on the page
 /// to the anchor's, with a hatched base across it at the anchor (a line of the ground's
-/// stroke through the anchor). A wire from a point to itself, or half written, is refused
-/// at its line.
+/// stroke through the anchor). So are the posts it stands round: the post the spinning rod
+/// strikes, a bar from its base at A (hatched) up to its top. A wire or a post from a point
+/// to itself, or half written, is refused at its line.
 #[test]
-fn the_wires_a_body_hangs_from_are_drawn_to_their_anchors() {
+fn the_wires_and_posts_round_a_body_are_drawn() {
     let scene = example("sp18_1_plate_impact");
-    assert_eq!(scene.wires.len(), 2);
+    assert_eq!(scene.supports.len(), 2);
     let drawn = figure(&scene).unwrap();
-    for wire in &scene.wires {
+    for wire in &scene.supports {
         let (from, to) = (
             drawn_at(&drawn, &scene, &wire.from),
             drawn_at(&drawn, &scene, &wire.to),
@@ -1807,6 +1808,22 @@ fn the_wires_a_body_hangs_from_are_drawn_to_their_anchors() {
             });
         assert!(base, "a base across the anchor {to:?}");
     }
+    let scene = example("spinning_rod_strikes_a_post");
+    let drawn = figure(&scene).unwrap();
+    let post = &scene.supports[0];
+    let (base, top) = (
+        drawn_at(&drawn, &scene, &post.from),
+        drawn_at(&drawn, &scene, &post.to),
+    );
+    let bar = two_point_paths(&drawn, Stroke::SHAFT);
+    assert!(
+        bar.iter().any(|(a, _)| near(*a, base)) && bar.iter().any(|(_, b)| near(*b, top)),
+        "the post from {base:?} to {top:?}"
+    );
+    let hatched = two_point_paths(&drawn, Stroke::GROUND)
+        .into_iter()
+        .any(|(a, b)| near(a.plus(b).times(0.5), base));
+    assert!(hatched, "its base hatched");
     let refused = |wire: &str| {
         let source = format!("given a = 1 m\nbody plate(a, a) mass 1 kg\n{wire}\nfind T\n");
         kinetics::parse_scene("w.scene", &source)
@@ -1818,6 +1835,11 @@ fn the_wires_a_body_hangs_from_are_drawn_to_their_anchors() {
     assert!(
         itself.contains("a wire from a point to itself") && itself.contains("w.scene:3:1"),
         "{itself}"
+    );
+    let post = refused("post from (a, 0, 0) to (a, 0, 0)");
+    assert!(
+        post.contains("a post from a point to itself") && post.contains("w.scene:3:1"),
+        "{post}"
     );
     let half = refused("wire from (a, 0, 0)");
     assert!(

@@ -4,7 +4,7 @@
 
 use super::kinematic_constraints::{H_COMPONENTS, OMEGA_COMPONENTS};
 use super::model::{
-    Constraint, ConstraintKind, Force, Places, Quantity, Request, Scene, Span, Wire,
+    Constraint, ConstraintKind, Force, Places, Quantity, Request, Scene, Span, Support, SupportKind,
 };
 use super::named_unit::NamedUnit;
 use super::unit_system::UnitSystem;
@@ -152,7 +152,7 @@ fn read_scene(
             couples: vec![],
             impulses: vec![],
             points: vec![],
-            wires: vec![],
+            supports: vec![],
             constraints: vec![],
             unknowns: vec![],
             unknown_units: vec![],
@@ -277,18 +277,28 @@ impl Reader<'_> {
             Rule::impulse => self.impulse(&inner)?,
             Rule::before => self.before(&inner[0], at)?,
             Rule::named_point => self.named_point(&inner)?,
-            Rule::wire => {
-                let wire = Wire {
+            Rule::wire | Rule::post => {
+                let (kind, what, ends) = match rule {
+                    Rule::wire => (
+                        SupportKind::Wire,
+                        "wire",
+                        "its anchor must stand apart from the body's point",
+                    ),
+                    _ => (
+                        SupportKind::Post,
+                        "post",
+                        "its top must stand apart from its base",
+                    ),
+                };
+                let support = Support {
+                    kind,
                     from: self.point(&inner[0])?,
                     to: self.point(&inner[1])?,
                 };
-                if wire.from == wire.to {
-                    return Err(self.error(
-                        at,
-                        "a wire from a point to itself: its anchor must stand apart from the body's point",
-                    ));
+                if support.from == support.to {
+                    return Err(self.error(at, format!("a {what} from a point to itself: {ends}")));
                 }
-                self.scene.wires.push(wire);
+                self.scene.supports.push(support);
             }
             Rule::constraint => {
                 let c = inner.remove(0);

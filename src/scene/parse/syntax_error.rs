@@ -5,7 +5,7 @@
 use crate::parse::Diagnostic;
 
 /// Each statement with the form it is written in, for the hint of a syntax error.
-const STATEMENT_FORMS: [(&str, &str); 21] = [
+const STATEMENT_FORMS: [(&str, &str); 22] = [
     ("title", "title Sample Problem 18.4"),
     (
         "statement",
@@ -37,6 +37,7 @@ const STATEMENT_FORMS: [(&str, &str); 21] = [
     ("before", "before vbar = -v_0*j"),
     ("point", "point A at (a/2, b/2, 0)"),
     ("wire", "wire from (a/2, b/2, 0) to (a/2, b, 0)"),
+    ("post", "post from (0, L/2, 0) to (0, L/2, L/3)"),
     (
         "constraint",
         "constraint velocity at (L, -r, 0) = 0  or  constraint vbar_y = 0",

@@ -49,6 +49,23 @@ fn two_point_paths(drawn: &Figure, stroke: Stroke) -> Vec<(P2, P2)> {
         .collect()
 }
 
+/// The closed paths of `corners` points (a floor's patch, a pedestal), with their strokes.
+fn closed_paths(drawn: &Figure, corners: usize) -> Vec<(Stroke, Vec<P2>)> {
+    drawn
+        .marks
+        .iter()
+        .filter_map(|m| match m {
+            Mark::Path {
+                points,
+                closed: true,
+                stroke,
+                ..
+            } if points.len() == corners => Some((*stroke, points.clone())),
+            _ => None,
+        })
+        .collect()
+}
+
 fn near(a: P2, b: P2) -> bool {
     (a.x - b.x).hypot(a.y - b.y) < 1e-6
 }
@@ -1302,22 +1319,14 @@ fn the_floor_under_a_body_resting_or_rolling_on_it() {
             .map(|p| drawn_at(&drawn, &scene, p))
             .fold(P2::new(0.0, 0.0), |s, q| s.plus(q))
             .times(1.0 / points.len() as f64);
-        let patches: Vec<P2> = drawn
-            .marks
-            .iter()
-            .filter_map(|m| match m {
-                Mark::Path {
-                    points,
-                    closed: true,
-                    stroke,
-                    ..
-                } if *stroke == Stroke::GROUND && points.len() == 4 => Some(
-                    points
-                        .iter()
-                        .fold(P2::new(0.0, 0.0), |s, q| s.plus(*q))
-                        .times(0.25),
-                ),
-                _ => None,
+        let patches: Vec<P2> = closed_paths(&drawn, 4)
+            .into_iter()
+            .filter(|(stroke, _)| *stroke == Stroke::GROUND)
+            .map(|(_, points)| {
+                points
+                    .iter()
+                    .fold(P2::new(0.0, 0.0), |s, q| s.plus(*q))
+                    .times(0.25)
             })
             .collect();
         (patches.len(), patches.iter().any(|c| near(*c, middle)))
@@ -1728,19 +1737,10 @@ fn a_scene_saying_up_y_is_drawn_with_y_up() {
 fn a_fixed_point_nothing_else_holds_stands_on_a_pivot() {
     let pedestals = |drawn: &Figure| -> Vec<Vec<P2>> {
         let o = drawn.at([0.0; 3]);
-        drawn
-            .marks
-            .iter()
-            .filter_map(|m| match m {
-                Mark::Path {
-                    points,
-                    closed: true,
-                    ..
-                } if points.len() == 3 && points.iter().any(|p| p.minus(o).length() < 1e-6) => {
-                    Some(points.clone())
-                }
-                _ => None,
-            })
+        closed_paths(drawn, 3)
+            .into_iter()
+            .map(|(_, points)| points)
+            .filter(|points| points.iter().any(|p| p.minus(o).length() < 1e-6))
             .collect()
     };
     let top = figure(&example("top_steady_tilt")).unwrap();

@@ -4,14 +4,16 @@
 //! - the axes x, y, z from O, past the body; O and G marked (G alone where they coincide
 //!   without a fixed point), and the axes Gx'y'z' dashed when the page works about G away
 //!   from O;
-//! - ω (and Ω where the frame does not turn with the body) a double arrow from the fixed
-//!   point (else G); a vector holding an unknown is drawn
+//! - ω (and Ω where the frame does not turn with the body, α where it does) a double arrow
+//!   from the fixed point (else G); a vector holding an unknown is drawn
 //!   by its components (`C_y`, `C_z`), each labelled, as a textbook draws reactions;
 //! - a force an arrow from its point, labelled with its name; a couple a double arrow past
 //!   the body along it; an impulse an arrow into its point, its head open;
 //! - with a fixed point and ω along a fixed direction: the fixed axis, and where forces
 //!   holding unknowns act on it, the bearings (short tubes) and the shaft between them;
-//! - named points as dots.
+//! - named points as dots;
+//! - the pivot at a fixed point nothing else holds ([`supports`](super::supports)), clear of
+//!   the arrows from O.
 
 use super::arrows::{
     drawn_whole, holds_any, is_word, label, named, nonzero, one_symbol, stretched, whole_label,

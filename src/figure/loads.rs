@@ -487,9 +487,10 @@ fn loads(
             if shaft_line(&rays.ends).is_some_and(|a| view::dot(a, d).abs() > 1.0 - 1e-9) {
                 let r = TURNING_RADIUS * reach;
                 // The curve is a circle square to the shaft: on the page it reaches along the
-                // shaft's line as far as its ellipse does, which the claim must cover.
+                // shaft's line as far as its ellipse does, which the claim must cover, with a
+                // radius's room before it for the label of what is drawn there (α past ω).
                 let half = r.max(along_page(canvas, d, r));
-                let centre = scaled(d, rays.claim(canvas, d, 0.0, 2.0 * half) + half);
+                let centre = scaled(d, rays.claim(canvas, d, 0.0, 2.0 * half + r) + r + half);
                 let start = canvas.turning_arrow(centre, d, r, Stroke::LOAD, Role::Couple);
                 let name = whole_label(&part, value, None);
                 canvas.label(label(&name), start, sub(start, centre));

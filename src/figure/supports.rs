@@ -6,7 +6,8 @@
 //!   hangs from it (its mass centre below O). Where ω turns about a fixed axis the shaft and
 //!   its bearings hold the body, and where O lies on a floor a body rolls on (a cone's apex)
 //!   the floor does; none where an arrow drawn from O runs the pedestal's way (SP 18.5's
-//!   −ω₂ j), which it would hide;
+//!   −ω₂ j), which it would hide, nor where it would stand on or against the body as drawn
+//!   (a wheel round its pivot), where it would read as part of the body;
 //! - the wires the scene hangs the body from (`wire from P to Q`, SP 18.1's plate): a line
 //!   from the body's point to its anchor, the base across it there;
 //! - the posts the scene stands round it (`post from P to Q`, the post a spinning rod strikes):
@@ -67,9 +68,25 @@ pub fn pivot(
     if from_o.iter().any(|d| view::dot(*d, away) >= taken) {
         return Ok(());
     }
-    let across = facing(canvas, away);
     let reach = body.reach;
     let foot = scaled(away, PEDESTAL * reach);
+    let across = facing(canvas, away);
+    // A pedestal drawn on or against the body (a wheel round its pivot) would read as part
+    // of it: none where O, the foot or the base's ends come within a pedestal's height of
+    // the body's outline on the page.
+    let base_end = |side: f64| add(foot, scaled(across, side * BASE_HALF_WIDTH * reach));
+    let marks = [[0.0; 3], foot, base_end(1.0), base_end(-1.0)];
+    let page = |p: P3| canvas.project(p);
+    let near_body = |p: P3| {
+        body.covers(canvas, p)
+            || body
+                .samples
+                .iter()
+                .any(|s| page(*s).minus(page(p)).length() < PEDESTAL * reach)
+    };
+    if marks.into_iter().any(near_body) {
+        return Ok(());
+    }
     let corner = |side: f64| add(foot, scaled(across, side * PEDESTAL_HALF_WIDTH * reach));
     let pedestal = [[0.0; 3], corner(1.0), corner(-1.0)];
     canvas.path(Layer::Behind, &pedestal, true, Stroke::GROUND);

@@ -101,7 +101,10 @@ impl Drawn<'_> {
             Some(a) if a.component == component => label_all(&[first, symbol(a.name)]),
             _ => label(&first),
         };
-        if drawn_whole(v, unknowns) {
+        let components = drawn_components(v, value);
+        // Drawn whole too where the constraints left one component (a rolling cone's ω along
+        // its line of contact): it is the whole vector, labelled as that.
+        if drawn_whole(v, unknowns) || components.len() == 1 {
             let label = label(&whole_label(v, value, name));
             return Ok(Drew {
                 whole: true,
@@ -109,18 +112,6 @@ impl Drawn<'_> {
             });
         }
         let mut arrows = Vec::new();
-        let components = drawn_components(v, value);
-        // The constraints left one component (a rolling cone's ω along its line of contact):
-        // it is the whole vector, labelled as that.
-        if let [k] = components[..] {
-            let mut d = [0.0; 3];
-            d[k] = value[k].signum();
-            let label = label(&whole_label(v, value, name));
-            return Ok(Drew {
-                whole: true,
-                arrows: self.arrow(canvas, d, label, true).into_iter().collect(),
-            });
-        }
         for k in components {
             let mut d = [0.0; 3];
             d[k] = value[k].signum();
@@ -218,43 +209,36 @@ impl Drawn<'_> {
         }
         // A load at a hidden point, drawn away from the body, is behind it as far as it runs
         // inside the body's outline, and dashed only that far; past the outline it is drawn
-        // solid (a push on a far face comes from out of the body's way, in sight).
+        // solid (a push on a far face comes from out of the body's way, in sight). The line
+        // from the tail to that edge is drawn first, the arrow from there to the head.
         let out_of_sight = match hidden {
             true => self.body.covered_along(canvas, self.from, outward, drawn),
             false => 0.0,
         };
+        let mut head_stroke = stroke;
         if hidden && out_of_sight > 0.0 && out_of_sight < drawn {
             let edge = add(self.from, scaled(outward, out_of_sight));
-            let (dashed, solid) = match into_point {
-                true => ([edge, to], [from, edge]),
-                false => ([from, edge], [edge, to]),
+            // Into its point the head is behind, the tail in sight; else the other way.
+            let tail_stroke = match into_point {
+                true => self.stroke,
+                false => stroke,
             };
-            let (line, arrow) = match into_point {
-                true => ((solid, self.stroke), (dashed, stroke)),
-                false => ((dashed, stroke), (solid, self.stroke)),
+            head_stroke = match into_point {
+                true => stroke,
+                false => self.stroke,
             };
-            canvas.path_beside(Layer::Front, &line.0, false, line.1, side);
-            let [a, b] = arrow.0;
-            canvas.arrow_beside(
-                Layer::Front,
-                a,
-                b,
-                self.double,
-                arrow.1,
-                self.role.clone(),
-                side,
-            );
-        } else {
-            canvas.arrow_beside(
-                Layer::Front,
-                shown_from,
-                to,
-                self.double,
-                stroke,
-                self.role.clone(),
-                side,
-            );
+            canvas.path_beside(Layer::Front, &[from, edge], false, tail_stroke, side);
+            shown_from = edge;
         }
+        canvas.arrow_beside(
+            Layer::Front,
+            shown_from,
+            to,
+            self.double,
+            head_stroke,
+            self.role.clone(),
+            side,
+        );
         canvas.label_beside(label, free, outward, side);
         // A later vector along this one's line is drawn beside it (a normal force under a
         // weight, v̄ the way ω points from G), not over it.

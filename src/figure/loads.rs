@@ -80,7 +80,7 @@ pub fn draw(
     }
     let loaded = loads(canvas, scene, body, &unknowns, &mut rays)?;
     lettered.extend(&loaded.lettered);
-    // The pivot at O, clear of the arrows drawn from O.
+    // The pivot at O where no fixed axis holds the body, clear of the arrows drawn from O.
     let at_o = |p: &P3| view::norm(*p) < 1e-9 * body.reach;
     let from_o: Vec<P3> = rays
         .arrows
@@ -98,7 +98,9 @@ pub fn draw(
                 }),
         )
         .collect();
-    super::supports::pivot(canvas, scene, body, floors, &from_o)?;
+    if fixed_direction(canvas, scene, &unknowns)?.is_none() {
+        super::supports::pivot(canvas, scene, body, floors, &from_o);
+    }
     // A point named at O (the pin A of SP 18.3, the bearing C of SP 18.4) is lettered by its
     // name, not O.
     let origin_named = lettered.iter().any(|p| view::norm(*p) < 1e-9 * body.reach);
@@ -622,7 +624,7 @@ fn along_page(canvas: &Canvas, d: P3, r: f64) -> f64 {
 }
 
 /// The fixed axis's direction: ω's where it is known about a fixed point.
-pub(super) fn fixed_direction(
+fn fixed_direction(
     canvas: &Canvas,
     scene: &Scene,
     unknowns: &[Symbol],

@@ -38,26 +38,19 @@ const ON_FLOOR: f64 = 1e-6;
 /// An arrow from O within this angle of the pedestal's direction takes that side.
 const TAKEN_DEG: f64 = 25.0;
 
-/// The pivot at O where the scene fixes O and no shaft (ω about a fixed direction) or floor
-/// at O's level (`floors`, the levels of the floors drawn) holds it, on a side no arrow drawn
-/// from O (`from_o`, their unit directions) takes.
-pub fn pivot(
-    canvas: &mut Canvas,
-    scene: &Scene,
-    body: &Extent,
-    floors: &[f64],
-    from_o: &[P3],
-) -> Result<(), FigureError> {
-    let unknowns = super::loads::magnitudes(scene);
-    if !scene.fixed_point || super::loads::fixed_direction(canvas, scene, &unknowns)?.is_some() {
-        return Ok(());
+/// The pivot at O where the scene fixes O and no floor at O's level (`floors`, the levels of
+/// the floors drawn) holds it, on a side no arrow drawn from O (`from_o`, their unit
+/// directions) takes. The caller leaves it out where a fixed axis holds the body.
+pub fn pivot(canvas: &mut Canvas, scene: &Scene, body: &Extent, floors: &[f64], from_o: &[P3]) {
+    if !scene.fixed_point {
+        return;
     }
     let up = canvas.view().up();
     if floors
         .iter()
         .any(|level| level.abs() < ON_FLOOR * body.reach)
     {
-        return Ok(());
+        return;
     }
     // Away from the body: under O, over it where the body hangs from O.
     let away = match view::dot(body.centre, up) < 0.0 {
@@ -66,7 +59,7 @@ pub fn pivot(
     };
     let taken = TAKEN_DEG.to_radians().cos();
     if from_o.iter().any(|d| view::dot(*d, away) >= taken) {
-        return Ok(());
+        return;
     }
     let reach = body.reach;
     let foot = scaled(away, PEDESTAL * reach);
@@ -85,13 +78,12 @@ pub fn pivot(
                 .any(|s| page(*s).minus(page(p)).length() < PEDESTAL * reach)
     };
     if marks.into_iter().any(near_body) {
-        return Ok(());
+        return;
     }
     let corner = |side: f64| add(foot, scaled(across, side * PEDESTAL_HALF_WIDTH * reach));
     let pedestal = [[0.0; 3], corner(1.0), corner(-1.0)];
     canvas.path(Layer::Behind, &pedestal, true, Stroke::GROUND);
     base(canvas, foot, away, reach);
-    Ok(())
 }
 
 /// Each wire and post the scene states: a wire's line from the body to its anchor, the base

@@ -363,10 +363,11 @@ fn omega(
     }
 }
 
-/// The mass centre's velocity where the scene gives it (v̄, labelled so), and the motion
-/// just before an impact (`before vbar = v0*i`, `before omega = w0*k`, labelled by its
-/// magnitude, v₀ and ω₀): a velocity an arrow from G, an angular velocity a double arrow from
-/// G, each beside the arrows already drawn along its line from G.
+/// The mass centre's velocity and acceleration where the scene gives them (v̄ and ā,
+/// labelled so), and the motion just before an impact (`before vbar = v0*i`, `before omega =
+/// w0*k`, labelled by its magnitude, v₀ and ω₀): a velocity or an acceleration an arrow from
+/// G, an angular velocity a double arrow from G, each beside the arrows already drawn along
+/// its line from G.
 fn motion_of_g(
     canvas: &mut Canvas,
     scene: &Scene,
@@ -378,6 +379,14 @@ fn motion_of_g(
     let vbar = scene.vbar.as_ref().filter(|v| !holds_any(v, unknowns));
     let motions = [
         (vbar, Some("vbar"), false, Role::Velocity, "vbar"),
+        // The acceleration ā, known or not: its direction is the statement's.
+        (
+            scene.abar.as_ref(),
+            Some("abar"),
+            false,
+            Role::Acceleration,
+            "abar",
+        ),
         (
             scene.vbar_before.as_ref(),
             None,

@@ -124,6 +124,8 @@ pub enum Role {
     AngularAcceleration,
     /// A velocity: the mass centre's, or its just before an impact.
     Velocity,
+    /// The mass centre's acceleration ā.
+    Acceleration,
     /// The frame's angular velocity Ω, where it differs from ω.
     FrameRate,
     /// A rate of an Eulerian angle, drawn as a curved arrow.

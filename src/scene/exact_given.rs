@@ -24,15 +24,26 @@ impl Scene {
         Some(Expr::num(&number * &factor) * Expr::pi().powi(pi_power))
     }
 
-    /// Whether `e` is zero: as an expression, or with every given's exact value in place, so
-    /// that a tie the values make (`I_x = I_y` for a box with `a = b`) is decided exactly,
-    /// however small the difference between values that are not equal.
+    /// Whether `e` is zero: as an expression, with each defined given put in as its
+    /// definition (`v + r_w ψ̇` with `ψ̇ = −v/r_w`), or with every given's exact value in
+    /// place, so that a tie the values make (`I_x = I_y` for a box with `a = b`) is decided
+    /// exactly, however small the difference between values that are not equal.
     pub fn is_exactly_zero(&self, e: &Expr) -> bool {
         let exact = |s: Symbol| self.exact_given(s);
-        e.expand().is_ok_and(|x| x.is_zero())
-            || e.subs(&exact)
-                .and_then(|x| x.expand())
-                .is_ok_and(|x| x.is_zero())
+        let zero = |x: Result<Expr, _>| x.and_then(|x: Expr| x.expand()).is_ok_and(|x| x.is_zero());
+        zero(Ok(e.clone())) || zero(e.subs(&|s| self.defined_given(s))) || zero(e.subs(&exact))
+    }
+
+    /// A defined given as its definition in the givens that are not defined (definitions
+    /// name only earlier givens, so the chain ends).
+    fn defined_given(&self, s: Symbol) -> Option<Expr> {
+        let definition = self
+            .givens
+            .iter()
+            .find(|g| g.symbol == s)?
+            .definition
+            .as_ref()?;
+        definition.expr.subs(&|t| self.defined_given(t)).ok()
     }
 }
 

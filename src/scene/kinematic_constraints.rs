@@ -139,6 +139,10 @@ pub fn solve_constraints(
     // The constraint each equation came from, to locate errors.
     let mut sources: Vec<Span> = Vec::new();
     let mut shown: Vec<Relation> = Vec::new();
+    // An equation in no unknown that the givens satisfy (rolling, stated where the spin is
+    // a given defined by it) is shown, and has nothing to solve.
+    let satisfied =
+        |e: &Expr| !scene.unknowns.iter().any(|u| e.contains(u.0)) && scene.is_exactly_zero(e);
     for c in &scene.constraints {
         match &c.kind {
             ConstraintKind::VelocityZero(point) => {
@@ -158,8 +162,10 @@ pub fn solve_constraints(
                 .map_err(located(c.span))?;
                 for (k, axis) in [Axis::X, Axis::Y, Axis::Z].into_iter().enumerate() {
                     if !v[k].is_zero() {
-                        equations.push(v[k].clone());
-                        sources.push(c.span);
+                        if !satisfied(&v[k]) {
+                            equations.push(v[k].clone());
+                            sources.push(c.span);
+                        }
                         shown.push(Relation::new(v[k].clone(), Expr::zero(), axis));
                     }
                 }
@@ -170,8 +176,11 @@ pub fn solve_constraints(
                     in_rates(lhs).map_err(located(c.span))?,
                     in_rates(rhs).map_err(located(c.span))?,
                 );
-                equations.push(&rates_lhs - &rates_rhs);
-                sources.push(c.span);
+                let equation = &rates_lhs - &rates_rhs;
+                if !satisfied(&equation) {
+                    equations.push(equation);
+                    sources.push(c.span);
+                }
                 shown.push(Relation::new(lhs.clone(), rhs.clone(), Axis::X));
                 if (&rates_lhs, &rates_rhs) != (lhs, rhs) {
                     shown.push(Relation::new(rates_lhs, rates_rhs, Axis::X));
@@ -208,6 +217,12 @@ pub fn solve_constraints(
                 _ => false,
             });
     let solved = if equations.is_empty() {
+        if !shown.is_empty() {
+            steps.push(Step::new(
+                "kinematic constraints, which the givens satisfy",
+                shown,
+            ));
+        }
         vec![]
     } else if impact || with_the_loads {
         let title = match impact {

@@ -81,6 +81,45 @@ fn the_car_wheel_couple_against_a_hand_computation() {
     assert!((v + psidot * r_w).abs() < 1e-12);
 }
 
+/// The car wheel's rolling, `v + r_w ψ̇ = 0` at C, holds once ψ̇ is put in as its
+/// definition −v/r_w (with the values, and symbolically without them): a constraint the
+/// givens satisfy is shown, not refused as a contradiction; one they do not satisfy (a
+/// contact point twice as low: v + 2 r_w ψ̇ = −v) still is.
+#[test]
+fn a_constraint_the_defined_givens_satisfy_is_shown_not_refused() {
+    let (_, analysis) = analysed_example("car_wheel_on_a_curve", "");
+    let titles: Vec<&str> = analysis.plan.iter().map(|s| s.title.as_str()).collect();
+    assert!(
+        titles.contains(&"kinematic constraints, which the givens satisfy"),
+        "{titles:?}"
+    );
+    let symbolic = |contact: &str| {
+        let text = format!(
+            "given m : kg\ngiven r_w : m\ngiven v : m/s\ngiven R : m\ngiven g : m/s^2\ngiven theta = 90 deg\ngiven psidot = -v/r_w\ngiven phidot = v/R\nunknown M_x, M_y, M_z : N*m\nunknown F_x, F_y, F_z : N\neuler angles steady\nbody disk(r_w) mass m along z\nvbar = v*i\nabar = -v^2/R*k\nconstraint velocity at {contact} = 0\nforce F = F_x*i + F_y*j + F_z*k at (0, 0, 0)\ncouple M_x*i + M_y*j + M_z*k\nfind M_x"
+        );
+        let scene = parse_scene("t.scene", &text).map_err(|e| e.render())?;
+        kinetics::analyse(&scene).map_err(|e| e.render())
+    };
+    let rolling = symbolic("(0, -r_w, 0)").unwrap();
+    let Value::Scalar(m_x) = result(&rolling, "M_x") else {
+        panic!("M_x is a scalar")
+    };
+    // M_x = I ψ̇ φ̇ = (m r_w²/2)(−v/r_w)(v/R), worked by hand, at m = 2, r_w = 3, v = 5, R = 7.
+    let at = |s: Symbol| match s.name() {
+        "m" => Some(2.0),
+        "r_w" => Some(3.0),
+        "v" => Some(5.0),
+        "R" => Some(7.0),
+        "psidot" => Some(-5.0 / 3.0),
+        "phidot" => Some(5.0 / 7.0),
+        _ => None,
+    };
+    let by_hand: f64 = 2.0 * 9.0 / 2.0 * (-5.0 / 3.0) * (5.0 / 7.0);
+    assert!((m_x.eval(&at).unwrap() - by_hand).abs() < 1e-12);
+    let message = symbolic("(0, -2*r_w, 0)").unwrap_err();
+    assert!(message.contains("contradicts"), "{message}");
+}
+
 #[test]
 fn a_definition_by_a_given_declared_later_says_which_line_to_move_below() {
     let text = "given m = 2 kg\ngiven w = v/r\ngiven r = 0.5 m\ngiven v = 3 m/s\nbody sphere(r) mass m\nvbar = 0\nomega = w*k\nfind T";

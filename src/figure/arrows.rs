@@ -186,15 +186,8 @@ impl Drawn<'_> {
             true => scaled(u, -1.0),
             false => u,
         };
-        // A load at a point out of sight behind the body, dashed, as its hidden edges are.
+        // A load at a point out of sight behind the body (a box's far corner).
         let hidden = load && self.body.hides(canvas, self.from, INSIDE * self.body.reach);
-        let stroke = match hidden {
-            true => Stroke {
-                dashes: Dashes::Hidden,
-                ..self.stroke
-            },
-            false => self.stroke,
-        };
         // A motion vector from a point inside the body (ω at a box's G) goes under its faces
         // until it comes out of sight's way, as the axes do.
         let mut shown_from = from;
@@ -204,41 +197,45 @@ impl Drawn<'_> {
             let hidden = self.body.hidden_along(canvas, from, u, drawn);
             if hidden > 0.0 && hidden < drawn {
                 shown_from = add(from, scaled(u, hidden));
-                canvas.path_beside(Layer::Behind, &[from, shown_from], false, stroke, side);
+                canvas.path_beside(Layer::Behind, &[from, shown_from], false, self.stroke, side);
             }
         }
-        // A load at a hidden point, drawn away from the body, is behind it as far as it runs
-        // inside the body's outline, and dashed only that far; past the outline it is drawn
-        // solid (a push on a far face comes from out of the body's way, in sight). The line
-        // from the tail to that edge is drawn first, the arrow from there to the head.
-        let out_of_sight = match hidden {
-            true => self.body.covered_along(canvas, self.from, outward, drawn),
-            false => 0.0,
+        // A load is dashed where it is out of sight: from a hidden point, as far as it runs
+        // inside the body's outline (past it, a push on a far face comes from out of the
+        // body's way, in sight); from a point outside the body, where it passes behind a
+        // face (R_z from O behind a wheel) or a part. From a point inside the body it is
+        // drawn over it, as a textbook draws the weight at a box's G. Such a load is one
+        // dashed arrow from its point, with its runs in sight drawn solid over it.
+        let inside = self.body.surrounds(self.from, u, depth);
+        let runs = match (load, hidden) {
+            (true, true) => self
+                .body
+                .runs_along(from, u, drawn, |q| self.body.covers(canvas, q)),
+            (true, false) if !inside => self
+                .body
+                .runs_along(from, u, drawn, |q| self.body.out_of_sight(canvas, q)),
+            _ => Vec::new(),
         };
-        let mut head_stroke = stroke;
-        if hidden && out_of_sight > 0.0 && out_of_sight < drawn {
-            let edge = add(self.from, scaled(outward, out_of_sight));
-            // Into its point the head is behind, the tail in sight; else the other way.
-            let tail_stroke = match into_point {
-                true => self.stroke,
-                false => stroke,
-            };
-            head_stroke = match into_point {
-                true => stroke,
-                false => self.stroke,
-            };
-            canvas.path_beside(Layer::Front, &[from, edge], false, tail_stroke, side);
-            shown_from = edge;
-        }
+        let stroke = match runs.iter().any(|run| run.2) {
+            true => Stroke {
+                dashes: Dashes::Hidden,
+                ..self.stroke
+            },
+            false => self.stroke,
+        };
         canvas.arrow_beside(
             Layer::Front,
             shown_from,
             to,
             self.double,
-            head_stroke,
+            stroke,
             self.role.clone(),
             side,
         );
+        let at = |t: f64| add(from, scaled(u, t));
+        for &(a, b, _) in runs.iter().filter(|run| !run.2 && stroke != self.stroke) {
+            canvas.path_beside(Layer::Front, &[at(a), at(b)], false, self.stroke, side);
+        }
         canvas.label_beside(label, free, outward, side);
         // A later vector along this one's line is drawn beside it (a normal force under a
         // weight, v̄ the way ω points from G), not over it.

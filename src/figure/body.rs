@@ -20,6 +20,12 @@ const POINT_MASS_RADIUS: f64 = 3.5;
 /// the body's outline on the page, and the most of them.
 const OUT_STEP: f64 = 0.05;
 const OUT_STEPS: u32 = 40;
+/// How far behind a disk's or a plate's plane, in shares of the reach, a point is behind its
+/// face (nearer, it lies on the face).
+const FACE_DEPTH: f64 = 1e-6;
+/// A part's span across its plane, in shares of its size, below which it is flat (the
+/// rounding of a disk's outline points).
+const FLAT: f64 = 1e-9;
 
 /// Where the body is: points on its outline, its mass centre G and its reach (the farthest
 /// outline point from O or G, the length every arrow is drawn in proportion to).
@@ -32,12 +38,14 @@ pub struct Extent {
     lines: Vec<[P3; 2]>,
 }
 
-/// A part with room inside (not a rod or a point mass): its outline's points, its centre and
-/// its own axes.
+/// A part with room inside (not a rod or a point mass): its outline's points, its centre,
+/// its own axes, and whether it is a face that hides what is behind it (a plate, a disk; not
+/// a ring, which is drawn as its rim).
 struct Solid {
     samples: Vec<P3>,
     centre: P3,
     axes: [P3; 3],
+    opaque: bool,
 }
 
 impl Solid {
@@ -62,13 +70,36 @@ impl Solid {
         })
     }
 
-    /// Whether the part has room across each of its axes (a box, a disk; not a plate, on
-    /// whose face a line in its plane is drawn).
+    /// Whether the part has room across each of its axes (a box, a cylinder; not a plate or
+    /// a disk, on whose face a line in its plane is drawn).
     fn thick(&self) -> bool {
-        self.axes.iter().all(|a| {
+        self.flat_normal().is_none()
+    }
+
+    /// The axis a flat part (a plate, a disk, a ring) has no room along, the normal to its
+    /// plane: its outline's span along it is rounding next to its size.
+    fn flat_normal(&self) -> Option<P3> {
+        let size = self
+            .samples
+            .iter()
+            .map(|s| view::norm(sub(*s, self.centre)))
+            .fold(0.0, f64::max);
+        self.axes.iter().copied().find(|a| {
             let (lo, hi) = self.span(*a, self.centre);
-            hi - lo > 0.0
+            hi - lo <= FLAT * size
         })
+    }
+
+    /// Whether the point `q` is behind the part's face as drawn: the part is flat and
+    /// opaque, `q` is on the page inside its outline, and a line from `q` toward the eye
+    /// crosses its plane by more than `depth` (a line in its plane lies on its face).
+    fn faces_over(&self, canvas: &Canvas, q: P3, depth: f64) -> bool {
+        let eye = canvas.view().toward_eye();
+        let Some(normal) = self.flat_normal().filter(|_| self.opaque) else {
+            return false;
+        };
+        let before = view::dot(sub(self.centre, q), normal) * view::dot(eye, normal).signum();
+        before > depth && on_page_inside(canvas, &self.samples, q)
     }
 
     /// How far the part's outline goes back and on along `axis` from `at`.
@@ -125,24 +156,51 @@ impl Extent {
     }
 
     /// How far along the unit vector `d` a line from the point `p` (G inside a box) runs out
-    /// of sight: inside a part with room across each axis, or behind one as drawn (a step
-    /// toward the eye from it goes into the part), in steps of [`OUT_STEP`] of the reach up
-    /// to `length`. A plate hides nothing: a line in its plane is drawn on its face.
+    /// of sight ([`Extent::out_of_sight`]), in steps of [`OUT_STEP`] of the reach up to
+    /// `length`.
     pub fn hidden_along(&self, canvas: &Canvas, p: P3, d: P3, length: f64) -> f64 {
+        self.along_while(p, d, length, |q| self.out_of_sight(canvas, q))
+    }
+
+    /// Whether the point `q` is out of sight as drawn: inside a part with room across each
+    /// axis, or behind one (a step toward the eye from it goes into the part), or behind a
+    /// disk's or a plate's face. A line in a plate's plane is drawn on its face.
+    pub fn out_of_sight(&self, canvas: &Canvas, q: P3) -> bool {
         let step = OUT_STEP * self.reach;
         let eye = canvas.view().toward_eye();
         let in_a_solid = |q: P3| self.solids.iter().any(|s| s.thick() && s.within(q, 0.0));
-        self.along_while(p, d, length, |q| {
-            self.covers(canvas, q)
-                && (0..=2 * OUT_STEPS).any(|k| in_a_solid(add(q, scaled(eye, step * f64::from(k)))))
-        })
+        let depth = FACE_DEPTH * self.reach;
+        self.covers(canvas, q)
+            && ((0..=2 * OUT_STEPS).any(|k| in_a_solid(add(q, scaled(eye, step * f64::from(k)))))
+                || self.solids.iter().any(|s| s.faces_over(canvas, q, depth)))
     }
 
-    /// How far along the unit vector `d` a line from the point `p` runs inside the body's
-    /// outline as drawn, up to `length`: a load at a point behind the body, drawn away from
-    /// it, is out of sight that far.
-    pub fn covered_along(&self, canvas: &Canvas, p: P3, d: P3, length: f64) -> f64 {
-        self.along_while(p, d, length, |q| self.covers(canvas, q))
+    /// The line from `p` along the unit vector `d`, `length` long, in runs where `test`
+    /// holds and where it does not, from its start to its end: `(from, to, holds)`, decided
+    /// in steps of [`OUT_STEP`] of the reach (a run changes at the first step that differs).
+    pub fn runs_along(
+        &self,
+        p: P3,
+        d: P3,
+        length: f64,
+        test: impl Fn(P3) -> bool,
+    ) -> Vec<(f64, f64, bool)> {
+        let step = OUT_STEP * self.reach;
+        let steps = (length / step).ceil() as u32;
+        let mut runs: Vec<(f64, f64, bool)> = Vec::new();
+        for k in 0..steps.max(1) {
+            let t = (step * f64::from(k)).min(length);
+            let holds = test(add(p, scaled(d, t)));
+            match runs.last_mut() {
+                Some(run) if run.2 == holds => {}
+                Some(run) => {
+                    run.1 = t;
+                    runs.push((t, length, holds));
+                }
+                None => runs.push((0.0, length, holds)),
+            }
+        }
+        runs
     }
 
     /// The farthest step of [`OUT_STEP`] of the reach, up to `length`, along the unit vector
@@ -170,13 +228,7 @@ impl Extent {
     /// Whether the body, as drawn, covers the point `p` (it projects inside the hull of the
     /// body's outline).
     pub fn covers(&self, canvas: &Canvas, p: P3) -> bool {
-        let at = canvas.project(p);
-        let hull = convex_hull(self.samples.iter().map(|s| canvas.project(*s)).collect());
-        hull.len() >= 3
-            && hull
-                .iter()
-                .zip(hull.iter().cycle().skip(1))
-                .all(|(a, b)| (b.x - a.x) * (at.y - a.y) - (b.y - a.y) * (at.x - a.x) >= 0.0)
+        on_page_inside(canvas, &self.samples, p)
     }
 
     /// How far, as drawn, the body goes past the point `p` along the unit vector `d` (0 if
@@ -236,6 +288,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
                 samples: outline.clone(),
                 centre: placed.centre,
                 axes: placed.axes,
+                opaque: !matches!(part.shape, Shape::ThinRing { .. }),
             }),
         }
         samples.extend(outline);
@@ -657,6 +710,17 @@ pub(super) fn hull(canvas: &Canvas, points: &[P3]) -> Mark {
 }
 
 /// Andrew's monotone chain: the hull counter-clockwise.
+/// Whether the point `p` projects inside the hull of the projected `outline`.
+fn on_page_inside(canvas: &Canvas, outline: &[P3], p: P3) -> bool {
+    let at = canvas.project(p);
+    let hull = convex_hull(outline.iter().map(|s| canvas.project(*s)).collect());
+    hull.len() >= 3
+        && hull
+            .iter()
+            .zip(hull.iter().cycle().skip(1))
+            .all(|(a, b)| (b.x - a.x) * (at.y - a.y) - (b.y - a.y) * (at.x - a.x) >= 0.0)
+}
+
 fn convex_hull(mut p: Vec<P2>) -> Vec<P2> {
     p.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
     p.dedup_by(|a, b| (a.x - b.x).abs() < 1e-12 && (a.y - b.y).abs() < 1e-12);

@@ -1204,8 +1204,8 @@ fn outside_hull(p: P2, outline: &[P2]) -> bool {
 /// A load pushing on a face comes into its point from outside, as a textbook draws a floor's
 /// normal force (the sliding box's N_A: its head at its point, its tail below); one at a point
 /// out of sight behind the body starts clear of the body as drawn (the free box's blow at its
-/// far corner, not from G), solid until it passes behind the body's outline and dashed from
-/// there into its point, as the hidden edges there are.
+/// far corner, not from G), dashed into its point, as the hidden edges there are, and solid
+/// over the dashes until it passes behind the body's outline.
 #[test]
 fn pushes_come_into_their_points_and_hidden_loads_are_dashed() {
     let scene = example("sliding_box");
@@ -1249,17 +1249,78 @@ fn pushes_come_into_their_points_and_hidden_loads_are_dashed() {
         "dashed: the corner is out of sight"
     );
     assert!(
-        !outside_hull(from, &outline),
-        "dashed only behind the box as drawn"
+        outside_hull(from, &outline),
+        "from clear of the box as drawn"
     );
-    // Its line in sight, solid, from outside the box to where the dashes start.
+    // Its line in sight drawn solid over it, from its tail to where the box's outline
+    // covers it: dashed only behind the box as drawn.
     let in_sight = drawn.marks.iter().any(|m| match m {
         Mark::Path { points, stroke, .. } if stroke.dashes == Dashes::Solid => {
-            points.len() == 2 && near(points[1], from) && outside_hull(points[0], &outline)
+            points.len() == 2
+                && near(points[0], from)
+                && !outside_hull(points[1], &outline)
+                && points[1].minus(from).length() < to.minus(from).length()
         }
         _ => false,
     });
     assert!(in_sight, "solid from outside the box as drawn");
+}
+
+/// A load from a point beside the body that passes behind a disk's face is dashed there: the
+/// horizontal wheel gyroscope's R_z, from O toward the wheel in front of it, is one dashed
+/// arrow from O with its stretch in sight drawn solid over it, from O to where the wheel's
+/// outline covers it; R_x and R_y, clear of the wheel, are solid.
+#[test]
+fn a_load_behind_a_disk_is_dashed_where_the_disk_covers_it() {
+    let scene = example("wheel_gyroscope_horizontal");
+    let drawn = figure(&scene).unwrap();
+    let o = drawn.at([0.0; 3]);
+    let outline: Vec<P2> = drawn
+        .marks
+        .iter()
+        .filter_map(|m| match m {
+            Mark::Path { points, stroke, .. } if *stroke == Stroke::OUTLINE => Some(points.clone()),
+            _ => None,
+        })
+        .flatten()
+        .collect();
+    let reactions: Vec<(P2, P2, Stroke)> = drawn
+        .marks
+        .iter()
+        .filter_map(|m| match m {
+            Mark::Arrow {
+                role: Role::Force(n),
+                from,
+                to,
+                stroke,
+                ..
+            } if n == "R" => Some((*from, *to, *stroke)),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(reactions.len(), 3, "R_x, R_y, R_z");
+    let dashed: Vec<_> = reactions
+        .iter()
+        .filter(|(_, _, s)| s.dashes == Dashes::Hidden)
+        .collect();
+    assert_eq!(dashed.len(), 1, "only R_z passes behind the wheel");
+    let (from, to, _) = *dashed[0];
+    assert!(at_or_beside(from, to, o), "R_z from O");
+    // Along z as drawn, toward G.
+    let z = drawn.at([0.0, 0.0, 1.0]).minus(o);
+    let along = to.minus(from);
+    assert!((along.x * z.y - along.y * z.x).abs() < 1e-6 * along.length() * z.length());
+    assert!(!outside_hull(to, &outline), "its head behind the wheel");
+    let in_sight = drawn.marks.iter().any(|m| match m {
+        Mark::Path { points, stroke, .. } if stroke.dashes == Dashes::Solid => {
+            points.len() == 2
+                && near(points[0], from)
+                && !outside_hull(points[1], &outline)
+                && points[1].minus(from).length() < along.length()
+        }
+        _ => false,
+    });
+    assert!(in_sight, "solid from O to the wheel's outline");
 }
 
 /// An unbalance's radius is dimensioned: the rotor's m₁ at (e₁, 0, z₁) and m₂ at

@@ -2,7 +2,7 @@
 //! magnitude; from its point or (a push, an impulse) into it; beside a line it would lie
 //! along; lengthened out of the body where its point is inside or hidden behind it, dashed
 //! where hidden; labelled by its name, its magnitude or its components, and with a second
-//! vector a component stands for too (`ω₂, Ω`).
+//! vector a component stands for too (`ω₂ = Ω`).
 
 use super::body::Extent;
 use super::canvas::{Canvas, Layer};
@@ -45,7 +45,7 @@ pub(super) fn holds_any(v: &Vector, unknowns: &[Symbol]) -> bool {
 }
 
 /// A second vector drawn on one of a vector's components, equal to it: Ω on ω's component
-/// (labelled ω₂, Ω). `component`: the axis of that component.
+/// (labelled ω₂ = Ω). `component`: the axis of that component.
 pub(super) struct Also {
     pub(super) component: usize,
     pub(super) name: &'static str,
@@ -98,7 +98,7 @@ impl Drawn<'_> {
     ) -> Result<Drew, FigureError> {
         let value = canvas.vector(v, what)?;
         let also = |component: usize, first: Expr| match &self.also {
-            Some(a) if a.component == component => label_all(&[first, symbol(a.name)]),
+            Some(a) if a.component == component => label_equal(&[first, symbol(a.name)]),
             _ => label(&first),
         };
         let components = drawn_components(v, value);
@@ -366,17 +366,17 @@ pub(super) fn symbol(name: &str) -> Expr {
 /// A label for `e`: its LaTeX as the mathematics of a label where the markup of titles
 /// reads it, else its text as words (`weight`, `m g sin(θ)`).
 pub(super) fn label(e: &Expr) -> String {
-    label_all(std::slice::from_ref(e))
+    label_equal(std::slice::from_ref(e))
 }
 
-/// A label for the vectors one arrow stands for, in a list (`ω₂, Ω`), as [`label`] writes one.
-pub(super) fn label_all(es: &[Expr]) -> String {
-    let list = |write: fn(&Expr) -> String, comma: &str| {
-        es.iter().map(write).collect::<Vec<_>>().join(comma)
+/// A label for the equal vectors one arrow stands for (`ω₂ = Ω`), as [`label`] writes one.
+pub(super) fn label_equal(es: &[Expr]) -> String {
+    let list = |write: fn(&Expr) -> String, equals: &str| {
+        es.iter().map(write).collect::<Vec<_>>().join(equals)
     };
-    let maths = format!("${}$", list(print::latex, r",\, "));
+    let maths = format!("${}$", list(print::latex, " = "));
     match markup::validate(&maths) {
         Ok(()) => maths,
-        Err(_) => list(print::text, ", ").replace('$', ""),
+        Err(_) => list(print::text, " = ").replace('$', ""),
     }
 }

@@ -20,6 +20,10 @@ const POINT_MASS_RADIUS: f64 = 3.5;
 /// the body's outline on the page, and the most of them.
 const OUT_STEP: f64 = 0.05;
 const OUT_STEPS: u32 = 40;
+/// The white left each side of a rod where a farther line crosses behind it, in figure
+/// units, and the share of its length at each end left without (its joints).
+const ROD_GAP: f64 = 2.5;
+const JOINT: f64 = 0.15;
 /// How far behind a disk's or a plate's plane, in shares of the reach, a point is behind its
 /// face (nearer, it lies on the face).
 const FACE_DEPTH: f64 = 1e-6;
@@ -276,7 +280,7 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
             if let Some([a, b]) = size.line {
                 marks.push(open_path(canvas, &[a, b], Stroke::AXIS));
             }
-            canvas.label_on_body(size.label, size.at, size.outward);
+            canvas.label_along(size.label, size.along, size.outward);
         }
         if let (Shape::SlenderRod { .. }, [a, b]) = (&part.shape, &outline[..]) {
             canvas.keep_clear(*a, *b, Stroke::ROD);
@@ -312,11 +316,12 @@ pub fn draw(canvas: &mut Canvas, scene: &Scene) -> Result<Extent, FigureError> {
 }
 
 /// A length of a shape written as one symbol, labelled with it where it shows: a rod's or a
-/// side's by its middle, a radius by a thin line from the centre to the rim, a cone's height
-/// by one along its axis.
+/// side's by the middle half of it, a radius by a thin line from the centre to the rim, a
+/// cone's height by one along its axis; the label stands by a point of `along`, by its
+/// middle where that is free.
 struct NamedSize {
     label: String,
-    at: P3,
+    along: [P3; 2],
     outward: P3,
     line: Option<[P3; 2]>,
 }
@@ -358,8 +363,16 @@ impl Placed {
             Shape::SlenderRod { length } => {
                 let l = len(length)? / 2.0;
                 let ends = vec![self.at(-l, 0.0, 0.0), self.at(l, 0.0, 0.0)];
+                // Paper under its middle: a farther rod crossing behind it shows broken there;
+                // one joined to its end (a frame's corner) is left whole.
+                let middle = l * (1.0 - 2.0 * JOINT);
+                let gap = open_path(
+                    canvas,
+                    &[self.at(-middle, 0.0, 0.0), self.at(middle, 0.0, 0.0)],
+                    Stroke::gap(Stroke::ROD.width + 2.0 * ROD_GAP),
+                );
                 let mark = open_path(canvas, &ends, Stroke::ROD);
-                (ends, vec![mark])
+                (ends, vec![gap, mark])
             }
             Shape::ThinPlate { a, b } => {
                 let (a, b) = (len(a)? / 2.0, len(b)? / 2.0);
@@ -468,35 +481,42 @@ impl Placed {
             })
             .unwrap_or(a);
         let mut out = Vec::new();
-        let mut name = |e: &crate::algebra::Expr, at: P3, outward: P3, line: Option<[P3; 2]>| {
-            if e.as_symbol().is_some() {
-                out.push(NamedSize {
-                    label: super::arrows::label(e),
-                    at,
-                    outward,
-                    line,
-                });
-            }
-        };
+        // Named by the middle half of the stretch from `at − half` to `at + half`.
+        let mut name =
+            |e: &crate::algebra::Expr, (at, half): (P3, P3), outward: P3, line: Option<[P3; 2]>| {
+                if e.as_symbol().is_some() {
+                    let quarter = scaled(half, 0.5);
+                    out.push(NamedSize {
+                        label: super::arrows::label(e),
+                        along: [sub(at, quarter), add(at, quarter)],
+                        outward,
+                        line,
+                    });
+                }
+            };
         let len = |e| canvas.value(e, what);
         match shape {
             Shape::SlenderRod { length } => {
-                let off_centre = match alone {
-                    true => len(length)? / 4.0,
-                    false => 0.0,
+                // A lone rod's from G to its end, off G's letter.
+                let l = len(length)? / 2.0;
+                let (at, half) = match alone {
+                    true => (add(self.centre, scaled(x, l / 2.0)), scaled(x, l / 2.0)),
+                    false => (self.centre, scaled(x, l)),
                 };
-                name(length, add(self.centre, scaled(x, off_centre)), u, None);
+                name(length, (at, half), u, None);
             }
             Shape::ThinPlate { a, b } => {
                 let (ha, hb) = (len(a)? / 2.0, len(b)? / 2.0);
-                name(a, self.at(0.0, -hb, 0.0), scaled(y, -1.0), None);
-                name(b, self.at(ha, 0.0, 0.0), x, None);
+                let a_side = (self.at(0.0, -hb, 0.0), scaled(x, ha));
+                name(a, a_side, scaled(y, -1.0), None);
+                name(b, (self.at(ha, 0.0, 0.0), scaled(y, hb)), x, None);
             }
             Shape::RectangularPrism { a, b, c } => {
                 let half = [len(a)? / 2.0, len(b)? / 2.0, len(c)? / 2.0];
                 for (k, side) in [a, b, c].into_iter().enumerate() {
                     let middle = self.outline_edge(canvas, half, k);
-                    name(side, middle, sub(middle, self.centre), None);
+                    let edge = (middle, scaled(self.axes[k], half[k]));
+                    name(side, edge, sub(middle, self.centre), None);
                 }
             }
             Shape::ThinDisk { radius }
@@ -504,8 +524,13 @@ impl Placed {
             | Shape::SolidSphere { radius }
             | Shape::SphericalShell { radius } => {
                 let rim = add(self.centre, scaled(u, len(radius)?));
-                let middle = add(self.centre, scaled(u, len(radius)? / 2.0));
-                name(radius, middle, u, Some([self.centre, rim]));
+                let half = scaled(u, len(radius)? / 2.0);
+                name(
+                    radius,
+                    (add(self.centre, half), half),
+                    u,
+                    Some([self.centre, rim]),
+                );
             }
             Shape::SolidCylinder { radius, length }
             | Shape::Tube {
@@ -516,21 +541,33 @@ impl Placed {
                 let (r, h) = (len(radius)?, len(length)? / 2.0);
                 let near = add(self.centre, scaled(x, near_end(canvas, x, h)));
                 let rim = add(near, scaled(u, r));
-                name(radius, add(near, scaled(u, r / 2.0)), u, Some([near, rim]));
-                name(length, add(self.centre, scaled(u, r)), u, None);
+                let half_radius = scaled(u, r / 2.0);
+                name(
+                    radius,
+                    (add(near, half_radius), half_radius),
+                    u,
+                    Some([near, rim]),
+                );
+                name(
+                    length,
+                    (add(self.centre, scaled(u, r)), scaled(x, h)),
+                    u,
+                    None,
+                );
             }
             Shape::SolidCone { radius, height } => {
                 let (r, h) = (len(radius)?, len(height)?);
                 let base = add(self.centre, scaled(x, 0.25 * h));
                 let apex = add(self.centre, scaled(x, -0.75 * h));
+                let half_radius = scaled(u, r / 2.0);
                 name(
                     radius,
-                    add(base, scaled(u, r / 2.0)),
+                    (add(base, half_radius), half_radius),
                     u,
                     Some([base, add(base, scaled(u, r))]),
                 );
                 // The height along the axis, from the apex to the base's centre.
-                let middle = add(self.centre, scaled(x, -0.25 * h));
+                let middle = (add(self.centre, scaled(x, -0.25 * h)), scaled(x, h / 2.0));
                 name(height, middle, scaled(u, -1.0), Some([apex, base]));
             }
             Shape::Gyration { .. } | Shape::Explicit(_) | Shape::PointMass => {}

@@ -475,6 +475,17 @@ impl<'s> Canvas<'s> {
         self.want(markup, anchor, direction, Names::OnBody, P2::new(0.0, 0.0));
     }
 
+    /// A part's size's label, wanted by the middle of the stretch `[a, b]` of its side on the
+    /// side `direction` points to, and free to stand by any point of it.
+    pub fn label_along(&mut self, markup: String, [a, b]: [P3; 2], direction: P3) {
+        let middle = view::scaled(view::add(a, b), 0.5);
+        let wanted = Wanted {
+            slide: self.project(b).minus(self.project(a)).times(0.5),
+            ..self.wanted(markup, middle, direction, Names::OnBody)
+        };
+        self.wanted.push((wanted, P2::new(0.0, 0.0)));
+    }
+
     /// A dimension's label, at the middle of its line `anchor` if that is free, else beside
     /// it on the side `direction` points to.
     pub fn label_dimension(&mut self, markup: String, anchor: P3, direction: P3) {
@@ -488,15 +499,21 @@ impl<'s> Canvas<'s> {
     }
 
     fn want(&mut self, markup: String, anchor: P3, direction: P3, names: Names, shift: P2) {
+        let wanted = self.wanted(markup, anchor, direction, names);
+        self.wanted.push((wanted, shift));
+    }
+
+    /// A label for the point `anchor` alone, wanted on the side `direction` points to.
+    fn wanted(&self, markup: String, anchor: P3, direction: P3, names: Names) -> Wanted {
         let at = self.project(anchor);
         let toward = self.project(view::add(anchor, direction)).minus(at);
-        let wanted = Wanted {
+        Wanted {
             markup,
             anchor: at,
+            slide: P2::new(0.0, 0.0),
             direction: toward.unit().unwrap_or(P2::new(1.0, 0.0)),
             names,
-        };
-        self.wanted.push((wanted, shift));
+        }
     }
 
     /// The figure: every mark scaled so the drawing is [`MARKS_WIDTH`] wide or [`MARKS_HEIGHT`]
@@ -538,6 +555,7 @@ impl<'s> Canvas<'s> {
             .into_iter()
             .map(|(w, shift)| Wanted {
                 anchor: w.anchor.times(scale).plus(shift),
+                slide: w.slide.times(scale),
                 ..w
             })
             .collect();

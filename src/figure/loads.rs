@@ -297,7 +297,7 @@ fn omega(
     }
     let omega_whole = drawn_whole(omega, unknowns);
     // Ω where the frame does not turn with the body; drawn on ω's arrow where it is one of
-    // ω's components (Ω = −ω₂ j), labelled with both (ω₂, Ω).
+    // ω's components (Ω = −ω₂ j), labelled with both (ω₂ = Ω).
     let frame_rate = scene.frame_rate.as_ref().filter(|rate| *rate != omega);
     let frame_in_omega = frame_rate.and_then(|rate| match nonzero(rate)[..] {
         [k] if !omega_whole && omega[k] == rate[k] => Some(k),

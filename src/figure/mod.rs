@@ -58,9 +58,19 @@ pub const HEAD_HALF_WIDTH: f64 = 3.0;
 pub struct Stroke {
     /// In figure units: 1.4 for an outline, 3.5 for a rod, 0.9 for an axis.
     pub width: f64,
-    /// The accent colour (the loads), else black.
-    pub accent: bool,
+    pub ink: Ink,
     pub dashes: Dashes,
+}
+
+/// A line's colour: black and one accent colour, and the paper's white for a gap.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ink {
+    Black,
+    /// The loads'.
+    Accent,
+    /// A band of white under a nearer rod, so that a farther line crossing behind it shows
+    /// broken, as a textbook draws it.
+    Paper,
 }
 
 /// A line's dashes, as a drawing tells them apart.
@@ -81,7 +91,7 @@ impl Stroke {
     pub const MOTION: Stroke = Stroke::black(1.2);
     pub const LOAD: Stroke = Stroke {
         width: 1.4,
-        accent: true,
+        ink: Ink::Accent,
         dashes: Dashes::Solid,
     };
     /// A dimension line and its extension lines.
@@ -93,19 +103,28 @@ impl Stroke {
     /// A hidden edge.
     pub const HIDDEN: Stroke = Stroke {
         width: 1.0,
-        accent: false,
+        ink: Ink::Black,
         dashes: Dashes::Hidden,
     };
     pub const CENTRE_LINE: Stroke = Stroke {
         width: 0.7,
-        accent: false,
+        ink: Ink::Black,
         dashes: Dashes::CentreLine,
     };
+
+    /// The white band under a rod `width` wide ([`Ink::Paper`]).
+    pub const fn gap(width: f64) -> Stroke {
+        Stroke {
+            width,
+            ink: Ink::Paper,
+            dashes: Dashes::Solid,
+        }
+    }
 
     const fn black(width: f64) -> Stroke {
         Stroke {
             width,
-            accent: false,
+            ink: Ink::Black,
             dashes: Dashes::Solid,
         }
     }

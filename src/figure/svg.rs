@@ -4,7 +4,7 @@
 //! and with a white halo (a white stroke painted under its glyphs) so a line passing under it
 //! breaks there, as a textbook knocks the lines out behind its lettering.
 
-use super::{Dashes, Figure, Mark, Stroke, FACE_OPACITY, FONT_SIZE};
+use super::{Dashes, Figure, Ink, Mark, Stroke, FACE_OPACITY, FONT_SIZE};
 use crate::print::markup;
 use std::fmt::Write;
 
@@ -77,9 +77,10 @@ fn element(figure: &Figure, namespace: &str) -> String {
 }
 
 fn colour(stroke: &Stroke) -> &'static str {
-    match stroke.accent {
-        true => ACCENT,
-        false => "black",
+    match stroke.ink {
+        Ink::Black => "black",
+        Ink::Accent => ACCENT,
+        Ink::Paper => "white",
     }
 }
 

@@ -3,7 +3,7 @@
 //! stand where they were placed; each label a node centred on its box, on white, so a line
 //! passing under it breaks there.
 
-use super::{Dashes, Figure, Mark, Stroke, FACE_OPACITY, P2};
+use super::{Dashes, Figure, Ink, Mark, Stroke, FACE_OPACITY, P2};
 use crate::print::markup;
 use std::fmt::Write;
 
@@ -41,9 +41,10 @@ fn point(p: P2) -> String {
 }
 
 fn colour(stroke: &Stroke) -> &'static str {
-    match stroke.accent {
-        true => ACCENT,
-        false => "black",
+    match stroke.ink {
+        Ink::Black => "black",
+        Ink::Accent => ACCENT,
+        Ink::Paper => "white",
     }
 }
 

@@ -28,6 +28,7 @@ const OTHER_LETTER_EM: f64 = 0.82;
 const DIGIT_EM: f64 = 0.6;
 const OPERATOR_EM: f64 = 0.7;
 const SPACE_EM: f64 = 0.25;
+const THIN_SPACE_EM: f64 = 1.0 / 6.0;
 const SCRIPT_SIZE: f64 = 0.7;
 /// How far a subscript's baseline is lowered and a superscript's raised, in ems of the
 /// script: near TeX's (a subscript's top at the letter's middle, not below its foot, which
@@ -176,6 +177,22 @@ fn one(out: &mut String, node: &Node) -> Ink {
                 below: DESCENDER,
             }
         }
+        // `\,` the thin space itself (U+2009), which SVG text does not collapse.
+        Node::ThinSpace => {
+            out.push('\u{2009}');
+            Ink {
+                width: THIN_SPACE_EM,
+                ..Ink::default()
+            }
+        }
+        // A relation stands apart by thin spaces, as TeX sets it (`ω₂ = Ω`).
+        Node::Operator('=') => {
+            out.push_str("\u{2009}=\u{2009}");
+            Ink::of_words("=").then(Ink {
+                width: 2.0 * THIN_SPACE_EM,
+                ..Ink::default()
+            })
+        }
         // The minus sign, not the hyphen typed (`L − z₂`), as the HTML writer draws it.
         Node::Operator('-') => {
             out.push('−');
@@ -209,6 +226,16 @@ mod tests {
         assert!(text.ends_with("sin</tspan>(pt)"), "{text}");
         let (text, _) = crate::print::markup::svg(r"$\sin \theta$");
         assert!(text.ends_with("sin</tspan> θ"), "{text}");
+    }
+
+    #[test]
+    fn a_thin_space_is_kept_and_a_relation_stands_apart_by_thin_spaces() {
+        let (text, spaced) = crate::print::markup::svg(r"$F\,\Delta t$");
+        assert_eq!(text, "F\u{2009}Δt");
+        let (_, tight) = crate::print::markup::svg(r"$F\Delta t$");
+        assert!((spaced.width - tight.width - 1.0 / 6.0).abs() < 1e-12);
+        let (text, _) = crate::print::markup::svg(r"$a=b$");
+        assert_eq!(text, "a\u{2009}=\u{2009}b");
     }
 
     #[test]

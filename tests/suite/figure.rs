@@ -9,7 +9,7 @@ use crate::common::chromium::chromium;
 use crate::common::examples::example_scenes;
 use kinetics::figure::sizes::Sizes;
 use kinetics::figure::{
-    figure, Dashes, Figure, Label, Mark, Role, Stroke, ARROWS_APART, BESIDE, P2,
+    figure, Dashes, Figure, Ink, Label, Mark, Role, Stroke, ARROWS_APART, BESIDE, P2,
 };
 use kinetics::{Expr, Scene, Symbol};
 
@@ -1175,6 +1175,123 @@ fn the_stated_alpha_and_vbar_are_drawn() {
         .labels
         .iter()
         .any(|l| l.markup == format!("${}$", written("vbar"))));
+    // The car wheel's ā = −v²/R k, from G toward the curve's centre, along −z as drawn.
+    let scene = example("car_wheel_on_a_curve");
+    let wheel = figure(&scene).unwrap();
+    let g = wheel.at([0.0; 3]);
+    let minus_z = wheel.at([0.0, 0.0, -1.0]).minus(g);
+    let toward_centre = wheel.marks.iter().any(|m| match m {
+        Mark::Arrow {
+            role: Role::Acceleration,
+            from,
+            to,
+            double: false,
+            ..
+        } => {
+            let d = to.minus(*from);
+            near(*from, g)
+                && (d.x * minus_z.y - d.y * minus_z.x).abs() < 1e-6 * d.length() * minus_z.length()
+                && d.x * minus_z.x + d.y * minus_z.y > 0.0
+        }
+        _ => false,
+    });
+    assert!(toward_centre, "ā from G along −z");
+    assert!(wheel
+        .labels
+        .iter()
+        .any(|l| l.markup == format!("${}$", written("abar"))));
+}
+
+/// Where one rod crosses another as drawn, the nearer has paper under it that breaks the
+/// farther: in the three-rod frame the third rod (along z at x = L₁, y = L₂, nearer the eye)
+/// crosses the first (along x from O); a white band under the third rod's middle is drawn
+/// after the first rod and covers the crossing. Each rod's length is written nearer its own
+/// rod than the others, and off the other labels' arrows' heads.
+#[test]
+fn a_nearer_rod_breaks_a_farther_one_it_crosses_and_sizes_stand_by_their_rods() {
+    let scene = example("long_relations");
+    let drawn = figure(&scene).unwrap();
+    let at = |p: [f64; 3]| drawn.at(p);
+    // The rods' ends at the sizes the figure gives L₁ = L₂ = L₃ (equal symbols, equal
+    // lengths): read off the first rod's drawn end A = (L, 0, 0).
+    let rods = two_point_paths(&drawn, Stroke::ROD);
+    assert_eq!(rods.len(), 3, "three rods");
+    let o = at([0.0; 3]);
+    let (first, rest): (Vec<_>, Vec<_>) =
+        rods.iter().partition(|(a, b)| near(*a, o) || near(*b, o));
+    assert_eq!(first.len(), 1, "the first rod from O");
+    // The crossing of the first rod with the one it crosses on the page.
+    let cross = |(p, q): (P2, P2), (a, b): (P2, P2)| {
+        let (r, s) = (q.minus(p), b.minus(a));
+        let den = r.x * s.y - r.y * s.x;
+        if den.abs() < 1e-12 {
+            return None;
+        }
+        let t = ((a.x - p.x) * s.y - (a.y - p.y) * s.x) / den;
+        let u = ((a.x - p.x) * r.y - (a.y - p.y) * r.x) / den;
+        // Not at a joint, where two rods meet end to end.
+        let inside = |x: f64| (0.01..=0.99).contains(&x);
+        (inside(t) && inside(u)).then(|| p.plus(r.times(t)))
+    };
+    let crossing = rest
+        .iter()
+        .find_map(|rod: &(P2, P2)| cross(first[0], *rod).map(|c| (c, *rod)));
+    let (point, third) = crossing.expect("a rod crosses the first as drawn");
+    let index = |target: &dyn Fn(&Mark) -> bool| drawn.marks.iter().position(target);
+    let first_at = index(&|m| {
+        matches!(m, Mark::Path { points, stroke, .. }
+        if *stroke == Stroke::ROD && near(points[0], first[0].0) && near(points[1], first[0].1))
+    });
+    let gap_at = index(&|m| match m {
+        Mark::Path { points, stroke, .. } if stroke.ink == Ink::Paper => {
+            let (a, b) = (points[0], points[1]);
+            // Along the third rod, over the crossing.
+            let along = |p: P2| {
+                let (d, e) = (third.1.minus(third.0), p.minus(third.0));
+                (d.x * e.y - d.y * e.x).abs() < 1e-6 * d.length() * d.length()
+            };
+            let t = |p: P2| {
+                let d = b.minus(a);
+                ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / (d.x * d.x + d.y * d.y)
+            };
+            along(a)
+                && along(b)
+                && (0.0..=1.0).contains(&t(point))
+                && stroke.width > Stroke::ROD.width
+        }
+        _ => false,
+    });
+    let (first_at, gap_at) = (
+        first_at.expect("the first rod"),
+        gap_at.expect("paper under the third rod at the crossing"),
+    );
+    assert!(gap_at > first_at, "the band drawn over the farther rod");
+    // Each length by its own rod: nearer it than either other rod.
+    let to_segment = |p: P2, (a, b): (P2, P2)| {
+        let d = b.minus(a);
+        let t = (((p.x - a.x) * d.x + (p.y - a.y) * d.y) / (d.x * d.x + d.y * d.y)).clamp(0.0, 1.0);
+        a.plus(d.times(t)).minus(p).length()
+    };
+    let written = |s: &str| format!("${}$", kinetics::print::latex(&Expr::sym(Symbol::new(s))));
+    for (part, name) in scene.parts.iter().zip(["L_1", "L_2", "L_3"]) {
+        let label = drawn
+            .labels
+            .iter()
+            .find(|l| l.markup == written(name))
+            .unwrap_or_else(|| panic!("{name} written"));
+        let centre = drawn_at(&drawn, &scene, &part.position);
+        let own = rods
+            .iter()
+            .find(|(a, b)| near(a.plus(*b).times(0.5), centre))
+            .expect("the part's rod");
+        let mine = to_segment(label.centre, *own);
+        for other in rods.iter().filter(|r| *r != own) {
+            assert!(
+                mine < to_segment(label.centre, *other),
+                "{name} nearer its own rod"
+            );
+        }
+    }
 }
 
 /// A box's three sides are each written by one of its edges: `prism(b, c, d)` of the pushed
@@ -1419,6 +1536,12 @@ fn the_floor_under_a_body_resting_or_rolling_on_it() {
         floors("sliding_box", &pushed_up),
         (1, true),
         "the box's floor"
+    );
+    // The car wheel's road, under its contact point C, which its rolling holds still.
+    assert_eq!(
+        floors("car_wheel_on_a_curve", &held),
+        (1, true),
+        "the wheel's road"
     );
     for name in ["plate_falls_on_corner", "bent_rod_vertical_shaft"] {
         assert_eq!(

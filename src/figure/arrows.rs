@@ -104,7 +104,8 @@ impl Drawn<'_> {
         let components = drawn_components(v, value);
         // Drawn whole too where the constraints left one component (a rolling cone's ω along
         // its line of contact): it is the whole vector, labelled as that.
-        if drawn_whole(v, unknowns) || components.len() == 1 {
+        // A vector another is drawn on a component of (ω with Ω on ω₂) is drawn by them.
+        if (drawn_whole(v, unknowns) && self.also.is_none()) || components.len() == 1 {
             let label = label(&whole_label(v, value, name));
             return Ok(Drew {
                 whole: true,

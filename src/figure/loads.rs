@@ -295,21 +295,29 @@ fn omega(
     if scene.omega_before.is_some() && holds_any(omega, unknowns) {
         return Ok(None);
     }
-    let omega_whole = drawn_whole(omega, unknowns);
     // Ω where the frame does not turn with the body; drawn on ω's arrow where it is one of
-    // ω's components (Ω = −ω₂ j), labelled with both (ω₂ = Ω).
+    // ω's components (Ω = −ω₂ j), labelled with both (ω₂ = Ω). A known ω is drawn whole,
+    // but by its components where the frame turns with one of them: the spin ω₁ about an
+    // axle that turns at ω₂, as a textbook draws the two rotations it adds.
     let frame_rate = scene.frame_rate.as_ref().filter(|rate| *rate != omega);
-    let frame_in_omega = frame_rate.and_then(|rate| match nonzero(rate)[..] {
-        [k] if !omega_whole && omega[k] == rate[k] => Some(k),
+    let component_of_omega = |rate: &Vector| match nonzero(rate)[..] {
+        [k] if omega[k] == rate[k] => Some(k),
         _ => None,
-    });
+    };
+    let omega_whole =
+        drawn_whole(omega, unknowns) && frame_rate.and_then(component_of_omega).is_none();
+    let frame_in_omega = frame_rate
+        .and_then(component_of_omega)
+        .filter(|_| !omega_whole);
     // α where the frame turns with the body (ω̇ in it is α), unless zero: its own double
     // arrow, past ω's where it points the same way (a shaft speeding up), as a textbook draws
-    // the two.
-    let alpha = scene
-        .omega_dot
-        .as_ref()
-        .filter(|a| scene.frame_rate.is_none() && !nonzero(a).is_empty());
+    // the two. Where the frame turns otherwise, ω̇ in it given as rates of ω's components
+    // (`omegadot = alpha1*i`, the spin speeding up) is drawn too, labelled by those rates.
+    let alpha = scene.omega_dot.as_ref().filter(|a| {
+        let rates = nonzero(a);
+        !rates.is_empty()
+            && (scene.frame_rate.is_none() || rates.iter().all(|k| one_symbol(&a[*k])))
+    });
     let also = frame_in_omega.map(|k| Also {
         component: k,
         name: "Omega",
@@ -328,6 +336,7 @@ fn omega(
         // as the statement names it (ω₁); the page's Ω = ω₁ j links the two.
         let label_name = match (&role, nonzero(vector).as_slice()) {
             (Role::FrameRate, &[k]) if one_symbol(&vector[k]) => None,
+            (Role::AngularAcceleration, _) if scene.frame_rate.is_some() => None,
             _ => Some(name),
         };
         // From O (else G), beside an arrow already drawn from it along the same line; drawn
@@ -632,7 +641,8 @@ fn along_page(canvas: &Canvas, d: P3, r: f64) -> f64 {
     r * reach(u).hypot(reach(v)) / line.length()
 }
 
-/// The fixed axis's direction: ω's where it is known about a fixed point.
+/// The fixed axis's direction: ω's where it is known about a fixed point and the frame turns
+/// with the body.
 fn fixed_direction(
     canvas: &Canvas,
     scene: &Scene,
@@ -640,7 +650,12 @@ fn fixed_direction(
 ) -> Result<Option<P3>, FigureError> {
     Ok(
         match (&scene.omega, scene.fixed_point, &scene.euler_angles) {
-            (Some(omega), true, None) if !holds_any(omega, unknowns) => {
+            // The frame turning otherwise than with the body (an axle turning at Ω about
+            // another axis) turns ω with it: no fixed axis.
+            (Some(omega), true, None)
+                if !holds_any(omega, unknowns)
+                    && scene.frame_rate.as_ref().is_none_or(|rate| rate == omega) =>
+            {
                 Some(view::unit(canvas.vector(omega, "omega")?)).filter(|a| view::norm(*a) > 0.0)
             }
             _ => None,

@@ -746,7 +746,8 @@ fn the_figure_command_writes_svg_and_tikz() {
 /// p too) a double arrow of its own on the ray from the fixed point O along y, labelled ω₁
 /// as the statement names that rate; SP 18.2's
 /// Ω = −ω₂ j, which is ω's component along −y, on that component's arrow, labelled with both;
-/// where the frame turns with the body (SP 18.4), no Ω.
+/// where the frame turns with the body (SP 18.4), no Ω; a known ω whose component the frame
+/// turns with is drawn by its components (the disk on a turning axle).
 #[test]
 fn the_frame_rate_is_drawn_where_it_differs_from_omega() {
     let frame_rate_along = |drawn: &Figure, axis: [f64; 3]| {
@@ -800,6 +801,53 @@ fn the_frame_rate_is_drawn_where_it_differs_from_omega() {
             ..
         }
     )));
+    // The disk on a turning axle, ω = ω₁ i + ω₂ j with Ω = ω₂ j: the two rotations drawn
+    // apart (ω₁ along the axle, ω₂ = Ω about y), the spin's rate α₁ along the axle, and no
+    // fixed axis (ω turns with the axle).
+    let axle = figure(&example("disk_on_turning_axle")).unwrap();
+    let o = axle.at([0.0; 3]);
+    let double_along = |role: Role, axis: [f64; 3]| {
+        let e = axle.at(axis).minus(o);
+        axle.marks.iter().any(|m| match m {
+            Mark::Arrow {
+                role: r,
+                from,
+                to,
+                double: true,
+                ..
+            } if *r == role => {
+                let d = to.minus(*from);
+                at_or_beside(*from, *to, o)
+                    && (d.x * e.y - d.y * e.x).abs() < 1e-6 * d.length() * e.length()
+                    && d.x * e.x + d.y * e.y > 0.0
+            }
+            _ => false,
+        })
+    };
+    assert!(
+        double_along(Role::AngularVelocity, [1.0, 0.0, 0.0]),
+        "ω₁ along x"
+    );
+    assert!(
+        double_along(Role::AngularVelocity, [0.0, 1.0, 0.0]),
+        "ω₂ along y"
+    );
+    assert!(
+        double_along(Role::AngularAcceleration, [1.0, 0.0, 0.0]),
+        "α₁ along x"
+    );
+    for label in [
+        format!("${}$", written("w1")),
+        format!("${} = {}$", written("w2"), written("Omega")),
+        format!("${}$", written("alpha1")),
+    ] {
+        assert!(axle.labels.iter().any(|l| l.markup == label), "{label}");
+    }
+    let centre_line = axle
+        .marks
+        .iter()
+        .any(|m| matches!(m, Mark::Path { stroke, .. } if stroke.dashes == Dashes::CentreLine));
+    assert!(!centre_line, "no fixed axis");
 }
 
 /// The engineer's page (`--numbers`) starts from the figure too: before Given in LaTeX (and

@@ -586,13 +586,14 @@ fn fixed_axis(
             -body.along(scaled(a, -1.0)) - 0.3 * reach,
             body.along(a) + 0.3 * reach,
         );
+        // A reference line: ω along it is drawn on it, as a textbook draws the axis of
+        // rotation and ω.
         canvas.path(
             Layer::Behind,
             &[scaled(a, lo), scaled(a, hi)],
             false,
             Stroke::CENTRE_LINE,
         );
-        canvas.keep_clear(scaled(a, lo), scaled(a, hi), Stroke::CENTRE_LINE);
         if bearings.len() >= 2 {
             let along: Vec<f64> = bearings
                 .iter()

@@ -1488,6 +1488,33 @@ fn a_load_behind_a_disk_is_dashed_where_the_disk_covers_it() {
     assert!(in_sight, "solid from O to the wheel's outline");
 }
 
+/// ω about a fixed axis is drawn on the axis's centre line, as a textbook draws the axis of
+/// rotation and ω: the box about its body diagonal and the plate about its diagonal each
+/// have ω's double arrow on the line from O along ω as drawn, not beside it.
+#[test]
+fn omega_about_a_fixed_axis_lies_on_it() {
+    for name in ["box_about_body_diagonal", "plate_spinning_about_diagonal"] {
+        let scene = example(name);
+        let drawn = figure(&scene).unwrap();
+        let o = drawn.at([0.0; 3]);
+        let omega = scene.omega.as_ref().expect("ω given");
+        let value: Vec<f64> = omega
+            .iter()
+            .map(|c| c.eval(&|s| scene.value(s)).unwrap())
+            .collect();
+        let e = drawn.at([value[0], value[1], value[2]]).minus(o);
+        let on_line = |p: P2| {
+            let q = p.minus(o);
+            (q.x * e.y - q.y * e.x).abs() < 1e-6 * e.length() * e.length().max(q.length())
+        };
+        let on_it = drawn.marks.iter().any(|m| {
+            matches!(m, Mark::Arrow { role: Role::AngularVelocity, from, to, double: true, .. }
+                if on_line(*from) && on_line(*to))
+        });
+        assert!(on_it, "{name}: ω on its axis");
+    }
+}
+
 /// An unbalance's radius is dimensioned: the rotor's m₁ at (e₁, 0, z₁) and m₂ at
 /// (−3/5 e₂, 4/5 e₂, z₂) each have a dimension line from the shaft's axis out to the mass,
 /// labelled e₁ and e₂.

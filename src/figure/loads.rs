@@ -78,7 +78,7 @@ pub fn draw(
         canvas.dot(at, 2.5);
         canvas.label_on_body(named(&p.name), at, sub(at, body.centre));
     }
-    let loaded = loads(canvas, scene, body, &unknowns, &mut rays)?;
+    let loaded = loads(canvas, scene, body, &unknowns, (&mut rays, &lettered))?;
     lettered.extend(&loaded.lettered);
     // The pivot at O where no fixed axis holds the body, clear of the arrows drawn from O.
     let at_o = |p: &P3| view::norm(*p) < 1e-9 * body.reach;
@@ -453,7 +453,7 @@ fn loads(
     scene: &Scene,
     body: &Extent,
     unknowns: &[Symbol],
-    rays: &mut Rays,
+    (rays, points): (&mut Rays, &[P3]),
 ) -> Result<Loaded, FigureError> {
     let reach = body.reach;
     let (mut arrows, mut named_at) = (Vec::new(), Vec::new());
@@ -479,7 +479,7 @@ fn loads(
         // unless the name is a word (`pin`) or the point has its letter already (O, G) and
         // is not a bearing of the shaft.
         let bearing = on_shaft(at, &rays.ends, reach);
-        if !drew.whole && !is_word(&f.name) && (bearing || !lettered(at, body)) {
+        if !drew.whole && !is_word(&f.name) && (bearing || !lettered(at, body, points)) {
             canvas.label(named(&f.name), at, sub(at, body.centre));
             named_at.push(at);
         }
@@ -551,7 +551,7 @@ fn loads(
         let drew = drawn.vector(canvas, &i.value, name.as_deref(), unknowns, &what)?;
         arrows.extend(drew.arrows.iter().map(|a| a.ends));
         // Drawn by its components, a named impulse is named at its point (as a force is).
-        if let (false, Some(name), false) = (drew.whole, &name, lettered(at, body)) {
+        if let (false, Some(name), false) = (drew.whole, &name, lettered(at, body, points)) {
             canvas.label(named(name), at, sub(at, body.centre));
             named_at.push(at);
         }
@@ -691,8 +691,9 @@ fn on_shaft(p: P3, ends: &[P3], reach: f64) -> bool {
     view::to_segment(p, *a, *b) < 1e-9 * reach
 }
 
-/// Whether the point `p` has a letter in the figure already: O, or G.
-fn lettered(p: P3, body: &Extent) -> bool {
-    let close = |q: P3| view::norm(sub(p, q)) < 1e-9 * body.reach;
-    close([0.0; 3]) || close(body.centre)
+/// Whether the point `p` has a letter in the figure already: O, G, or one of the scene's
+/// named `points` (the post's A, where the blow R is drawn by its components R_x, R_y).
+fn lettered(p: P3, body: &Extent, points: &[P3]) -> bool {
+    let close = |q: &P3| view::norm(sub(p, *q)) < 1e-9 * body.reach;
+    close(&[0.0; 3]) || close(&body.centre) || points.iter().any(close)
 }

@@ -565,8 +565,10 @@ fn each_html_page_holds_one_svg_with_the_loads_and_axes_labelled() {
             assert!(symbols_shown(c), "{name}: a couple's symbols in {texts:?}");
         }
         for i in &scene.impulses {
+            // Named, by its name, or, drawn by its components at a point that has its letter
+            // (the post's A), by those (R_x, R_y), as a force is.
             let shown = match i.name {
-                Some(s) => has(&written(s)),
+                Some(s) => has(&written(s)) || symbols_shown(&i.value),
                 None => symbols_shown(&i.value),
             };
             assert!(shown, "{name}: an impulse in {texts:?}");
@@ -1486,6 +1488,28 @@ fn a_load_behind_a_disk_is_dashed_where_the_disk_covers_it() {
         _ => false,
     });
     assert!(in_sight, "solid from O to the wheel's outline");
+}
+
+/// A load drawn by its components at a point the scene names is not named again there: the
+/// blow R at the post's A (spinning rod) and at the plate's corner C shows R_x, R_y (R_z) and
+/// the point's letter, no stray R beside them.
+#[test]
+fn a_load_at_a_named_point_is_named_by_its_components() {
+    for name in ["spinning_rod_strikes_a_post", "plate_falls_on_corner"] {
+        let drawn = figure(&example(name)).unwrap();
+        let written = |s: &str| format!("${}$", kinetics::print::latex(&Expr::sym(Symbol::new(s))));
+        let labels: Vec<&str> = drawn.labels.iter().map(|l| l.markup.as_str()).collect();
+        assert!(
+            !labels.contains(&written("R").as_str()),
+            "{name}: {labels:?}"
+        );
+        for component in ["R_x", "R_y"] {
+            assert!(
+                labels.contains(&written(component).as_str()),
+                "{name}: {component}"
+            );
+        }
+    }
 }
 
 /// ω about a fixed axis is drawn on the axis's centre line, as a textbook draws the axis of

@@ -1359,6 +1359,19 @@ fn a_box_has_its_three_sides_labelled() {
     }
 }
 
+/// The points of the body's outline as drawn.
+fn outline_points(drawn: &Figure) -> Vec<P2> {
+    drawn
+        .marks
+        .iter()
+        .filter_map(|m| match m {
+            Mark::Path { points, stroke, .. } if *stroke == Stroke::OUTLINE => Some(points.clone()),
+            _ => None,
+        })
+        .flatten()
+        .collect()
+}
+
 /// Whether `p` lies outside the hull of `outline`: some direction takes it past them all.
 fn outside_hull(p: P2, outline: &[P2]) -> bool {
     (0..360).any(|deg| {
@@ -1387,15 +1400,7 @@ fn pushes_come_into_their_points_and_hidden_loads_are_dashed() {
     let scene = example("free_box_struck_at_corner");
     let drawn = figure(&scene).unwrap();
     let corner = drawn_at(&drawn, &scene, &scene.impulses[0].point);
-    let outline: Vec<P2> = drawn
-        .marks
-        .iter()
-        .filter_map(|m| match m {
-            Mark::Path { points, stroke, .. } if *stroke == Stroke::OUTLINE => Some(points.clone()),
-            _ => None,
-        })
-        .flatten()
-        .collect();
+    let outline = outline_points(&drawn);
     let blow = drawn.marks.iter().find_map(|m| match m {
         Mark::Arrow {
             role: Role::Impulse,
@@ -1442,15 +1447,7 @@ fn a_load_behind_a_disk_is_dashed_where_the_disk_covers_it() {
     let scene = example("wheel_gyroscope_horizontal");
     let drawn = figure(&scene).unwrap();
     let o = drawn.at([0.0; 3]);
-    let outline: Vec<P2> = drawn
-        .marks
-        .iter()
-        .filter_map(|m| match m {
-            Mark::Path { points, stroke, .. } if *stroke == Stroke::OUTLINE => Some(points.clone()),
-            _ => None,
-        })
-        .flatten()
-        .collect();
+    let outline = outline_points(&drawn);
     let reactions: Vec<(P2, P2, Stroke)> = drawn
         .marks
         .iter()

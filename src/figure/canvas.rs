@@ -149,6 +149,7 @@ impl<'s> Canvas<'s> {
         }
         // O, G and the points the scene names: drawn apart where they are apart.
         let mut points = vec![[0.0; 3]];
+        let mut rods = Vec::new();
         let (mut mass, mut moment) = (0.0, [0.0; 3]);
         for (k, part) in scene.parts.iter().enumerate() {
             let what = format!("body {}", k + 1);
@@ -160,14 +161,16 @@ impl<'s> Canvas<'s> {
             points.push(centre);
             if let Shape::SlenderRod { length } = &part.shape {
                 let half = view::scaled(axes[0], canvas.value(length, &what)? / 2.0);
-                points.extend([view::add(centre, half), view::sub(centre, half)]);
+                let ends = [view::add(centre, half), view::sub(centre, half)];
+                points.extend(ends);
+                rods.push(ends);
             }
         }
         if mass > 0.0 {
             points.push(view::scaled(moment, 1.0 / mass));
         }
         points.extend(canvas.loaded_points(scene)?);
-        canvas.view = View::choose(up, &directions, &points);
+        canvas.view = View::choose(up, &directions, &points, &rods);
         Ok(canvas)
     }
 

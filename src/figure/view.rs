@@ -60,6 +60,8 @@ const COLLINEAR_DEG: f64 = 10.0;
 /// [`COINCIDING`] of their distance apart.
 const APART: f64 = 0.2;
 const COINCIDING: f64 = 0.3;
+/// A point drawn within this share of the points' spread of a rod reads as on it.
+const ON_ROD: f64 = 0.05;
 
 /// The view: the turn that brings the scene's up to z, then the projection onto the screen.
 #[derive(Debug, Clone, Copy)]
@@ -78,15 +80,18 @@ impl View {
 
     /// Of the textbook-like views with `up` drawn up, the first in which none of the
     /// `directions` that matter (the axes, ω, each part's axes) is seen end-on, no two of
-    /// them are drawn along one line and no two of the `points` that matter (O, G, a rod's
-    /// ends, a load's point) far apart are drawn on one another; else the one with the
-    /// fewest such faults.
-    pub fn choose(up: P3, directions: &[P3], points: &[P3]) -> View {
+    /// them are drawn along one line, no two of the `points` that matter (O, G, a rod's
+    /// ends, a load's point) far apart are drawn on one another, and none of them is drawn
+    /// on a rod it is far from (a frame's G where one rod crosses another as drawn); else
+    /// the one with the fewest such faults.
+    pub fn choose(up: P3, directions: &[P3], points: &[P3], rods: &[[P3; 2]]) -> View {
         let mut best: Option<(usize, View)> = None;
         for e in ELEVATIONS_DEG {
             for a in AZIMUTHS_DEG {
                 let view = View::from(up, a, e);
-                let faults = view.faults(directions) + view.coinciding(points);
+                let faults = view.faults(directions)
+                    + view.coinciding(points)
+                    + view.on_other_rods(points, rods);
                 if best.as_ref().is_none_or(|(f, _)| faults < *f) {
                     best = Some((faults, view));
                 }
@@ -140,6 +145,29 @@ impl View {
             }
         }
         count
+    }
+
+    /// The `points` drawn within [`ON_ROD`] of the points' spread of a rod they are over
+    /// [`APART`] of it from in the scene.
+    fn on_other_rods(&self, points: &[P3], rods: &[[P3; 2]]) -> usize {
+        let spread = points
+            .iter()
+            .flat_map(|p| points.iter().map(move |q| norm(sub(*p, *q))))
+            .fold(0.0, f64::max);
+        let page_distance = |p: P2, a: P2, b: P2| {
+            let d = b.minus(a);
+            let t = ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / (d.x * d.x + d.y * d.y).max(1e-300);
+            a.plus(d.times(t.clamp(0.0, 1.0))).minus(p).length()
+        };
+        points
+            .iter()
+            .flat_map(|p| rods.iter().map(move |r| (p, r)))
+            .filter(|(p, [a, b])| {
+                to_segment(**p, *a, *b) > APART * spread
+                    && page_distance(self.project(**p), self.project(*a), self.project(*b))
+                        < ON_ROD * spread
+            })
+            .count()
     }
 
     fn from(up: P3, azimuth_deg: f64, elevation_deg: f64) -> View {
@@ -315,7 +343,7 @@ mod tests {
             first.project(toward_eye).length() < 1e-9,
             "end-on in the first view"
         );
-        let chosen = View::choose([0.0, 0.0, 1.0], &[toward_eye, [0.0, 0.0, 1.0]], &[]);
+        let chosen = View::choose([0.0, 0.0, 1.0], &[toward_eye, [0.0, 0.0, 1.0]], &[], &[]);
         assert!(
             chosen.project(toward_eye).length() >= END_ON,
             "seen side-on"

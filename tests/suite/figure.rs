@@ -1253,75 +1253,95 @@ fn the_stated_alpha_and_vbar_are_drawn() {
 }
 
 /// Where one rod crosses another as drawn, the nearer has paper under it that breaks the
-/// farther: in the three-rod frame the third rod (along z at x = L₁, y = L₂, nearer the eye)
-/// crosses the first (along x from O); a white band under the third rod's middle is drawn
-/// after the first rod and covers the crossing. Each rod's length is written nearer its own
-/// rod than the others, and off the other labels' arrows' heads.
+/// farther: two rods square to each other, one over the other (along x at O, along y a
+/// twentieth of their length above), drawn as an X; a white band under the upper rod's middle (nearer
+/// the eye, seen from above) is drawn after the lower rod and covers the crossing.
 #[test]
-fn a_nearer_rod_breaks_a_farther_one_it_crosses_and_sizes_stand_by_their_rods() {
-    let scene = example("long_relations");
+fn a_nearer_rod_breaks_a_farther_one_it_crosses() {
+    let text = "given m = 1 kg\ngiven L = 1 m\nbody rod(L) mass m at (0, 0, 0) along x\nbody rod(L) mass m at (0, 0, L/20) along y\nvbar = 0\nomega = 0\nfind T";
+    let scene = kinetics::parse_scene("cross.scene", text).unwrap();
     let drawn = figure(&scene).unwrap();
-    let at = |p: [f64; 3]| drawn.at(p);
-    // The rods' ends at the sizes the figure gives L₁ = L₂ = L₃ (equal symbols, equal
-    // lengths): read off the first rod's drawn end A = (L, 0, 0).
     let rods = two_point_paths(&drawn, Stroke::ROD);
-    assert_eq!(rods.len(), 3, "three rods");
-    let o = at([0.0; 3]);
-    let (first, rest): (Vec<_>, Vec<_>) =
-        rods.iter().partition(|(a, b)| near(*a, o) || near(*b, o));
-    assert_eq!(first.len(), 1, "the first rod from O");
-    // The crossing of the first rod with the one it crosses on the page.
-    let cross = |(p, q): (P2, P2), (a, b): (P2, P2)| {
-        let (r, s) = (q.minus(p), b.minus(a));
-        let den = r.x * s.y - r.y * s.x;
-        if den.abs() < 1e-12 {
-            return None;
-        }
-        let t = ((a.x - p.x) * s.y - (a.y - p.y) * s.x) / den;
-        let u = ((a.x - p.x) * r.y - (a.y - p.y) * r.x) / den;
-        // Not at a joint, where two rods meet end to end.
-        let inside = |x: f64| (0.01..=0.99).contains(&x);
-        (inside(t) && inside(u)).then(|| p.plus(r.times(t)))
-    };
-    let crossing = rest
-        .iter()
-        .find_map(|rod: &(P2, P2)| cross(first[0], *rod).map(|c| (c, *rod)));
-    let (point, third) = crossing.expect("a rod crosses the first as drawn");
+    assert_eq!(rods.len(), 2, "two rods");
+    let (lower, upper) = (rods[0], rods[1]);
+    let (p, q) = lower;
+    let (a, b) = upper;
+    let (r, t) = (q.minus(p), b.minus(a));
+    let den = r.x * t.y - r.y * t.x;
+    let along_lower = ((a.x - p.x) * t.y - (a.y - p.y) * t.x) / den;
+    let along_upper = ((a.x - p.x) * r.y - (a.y - p.y) * r.x) / den;
+    assert!(
+        (0.2..0.8).contains(&along_lower) && (0.2..0.8).contains(&along_upper),
+        "the rods cross as drawn"
+    );
+    let crossing = p.plus(r.times(along_lower));
     let index = |target: &dyn Fn(&Mark) -> bool| drawn.marks.iter().position(target);
-    let first_at = index(&|m| {
+    let lower_at = index(&|m| {
         matches!(m, Mark::Path { points, stroke, .. }
-        if *stroke == Stroke::ROD && near(points[0], first[0].0) && near(points[1], first[0].1))
-    });
+            if *stroke == Stroke::ROD && near(points[0], p) && near(points[1], q))
+    })
+    .expect("the lower rod");
     let gap_at = index(&|m| match m {
         Mark::Path { points, stroke, .. } if stroke.ink == Ink::Paper => {
-            let (a, b) = (points[0], points[1]);
-            // Along the third rod, over the crossing.
-            let along = |p: P2| {
-                let (d, e) = (third.1.minus(third.0), p.minus(third.0));
-                (d.x * e.y - d.y * e.x).abs() < 1e-6 * d.length() * d.length()
+            let (c, d) = (points[0], points[1]);
+            let on_upper = |x: P2| {
+                (t.x * (x.y - a.y) - t.y * (x.x - a.x)).abs() < 1e-6 * t.length() * t.length()
             };
-            let t = |p: P2| {
-                let d = b.minus(a);
-                ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / (d.x * d.x + d.y * d.y)
+            let share = |x: P2| {
+                let e = d.minus(c);
+                ((x.x - c.x) * e.x + (x.y - c.y) * e.y) / (e.x * e.x + e.y * e.y)
             };
-            along(a)
-                && along(b)
-                && (0.0..=1.0).contains(&t(point))
+            on_upper(c)
+                && on_upper(d)
+                && (0.0..=1.0).contains(&share(crossing))
                 && stroke.width > Stroke::ROD.width
         }
         _ => false,
-    });
-    let (first_at, gap_at) = (
-        first_at.expect("the first rod"),
-        gap_at.expect("paper under the third rod at the crossing"),
-    );
-    assert!(gap_at > first_at, "the band drawn over the farther rod");
-    // Each length by its own rod: nearer it than either other rod.
+    })
+    .expect("paper under the upper rod at the crossing");
+    assert!(gap_at > lower_at, "the band drawn over the farther rod");
+}
+
+/// The three-rod frame is seen from where no point that matters (O, G, a rod's end) is drawn
+/// on a rod it is far from: its third rod crossed the first at G, and the frame read as a
+/// closed triangle. Each rod's length is written nearer its own rod than the others.
+#[test]
+fn the_frame_is_seen_with_its_points_off_its_rods_and_sizes_by_their_rods() {
+    let scene = example("long_relations");
+    let drawn = figure(&scene).unwrap();
+    let rods = two_point_paths(&drawn, Stroke::ROD);
+    assert_eq!(rods.len(), 3, "three rods");
     let to_segment = |p: P2, (a, b): (P2, P2)| {
         let d = b.minus(a);
         let t = (((p.x - a.x) * d.x + (p.y - a.y) * d.y) / (d.x * d.x + d.y * d.y)).clamp(0.0, 1.0);
         a.plus(d.times(t)).minus(p).length()
     };
+    // G, worked by hand: the rods' centres (L₁/2, 0, 0), (L₁, L₂/2, 0), (L₁, L₂, L₃/2)
+    // weighted by their masses, at the figure's sizes.
+    let sizes = Sizes::of(&scene);
+    let masses: Vec<f64> = scene
+        .parts
+        .iter()
+        .map(|p| sizes.of_expr(&p.mass).unwrap())
+        .collect();
+    let total: f64 = masses.iter().sum();
+    let g = scene
+        .parts
+        .iter()
+        .zip(&masses)
+        .map(|(p, m)| sizes.of_vector(&p.position).unwrap().map(|c| c * m / total))
+        .fold([0.0; 3], |s, c| [s[0] + c[0], s[1] + c[1], s[2] + c[2]]);
+    let g = drawn.at(g);
+    let shortest = rods
+        .iter()
+        .map(|(a, b)| b.minus(*a).length())
+        .fold(f64::INFINITY, f64::min);
+    for rod in &rods {
+        assert!(
+            to_segment(g, *rod) > 0.1 * shortest,
+            "G drawn off every rod"
+        );
+    }
     let written = |s: &str| format!("${}$", kinetics::print::latex(&Expr::sym(Symbol::new(s))));
     for (part, name) in scene.parts.iter().zip(["L_1", "L_2", "L_3"]) {
         let label = drawn
@@ -1344,8 +1364,6 @@ fn a_nearer_rod_breaks_a_farther_one_it_crosses_and_sizes_stand_by_their_rods() 
     }
 }
 
-/// A box's three sides are each written by one of its edges: `prism(b, c, d)` of the pushed
-/// box shows b, c and d.
 #[test]
 fn a_box_has_its_three_sides_labelled() {
     let scene = example("sliding_box");

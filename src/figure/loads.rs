@@ -33,6 +33,9 @@ const COUPLE_LENGTH: f64 = 0.55;
 /// The gap before a vector drawn past the body along a ray from O.
 const RAY_GAP: f64 = 0.1;
 const OMEGA_LENGTH: f64 = 0.55;
+/// How far, in shares of the reach, the body must go along a fixed axis from O for ω to be
+/// drawn past it.
+const INTO_BODY: f64 = 0.1;
 const AXIS_BEYOND: f64 = 0.55;
 /// How far along each axis from O nothing is drawn on it (past anything drawn along it).
 const AXES_KEPT_CLEAR: f64 = 10.0;
@@ -330,6 +333,7 @@ fn omega(
         alpha.map(|a| (a, "alpha", Role::AngularAcceleration, None)),
     ];
     let length = OMEGA_LENGTH * body.reach;
+    let about_fixed_axis = fixed_direction(canvas, scene, unknowns)?.is_some();
     for (vector, name, role, also) in rates.into_iter().flatten() {
         let d = view::unit(canvas.vector(vector, name)?);
         // Ω given as one rate about one axis (`frame rate = w1*j`) is labelled by that rate,
@@ -345,8 +349,12 @@ fn omega(
             true => [0.0; 3],
             false => body.centre,
         };
-        let past_shaft =
-            scene.fixed_point && drawn_whole(vector, unknowns) && !rays.ends.is_empty();
+        // Past the shaft, or past the body where it lies along a fixed axis from O (a box
+        // about its diagonal from a corner): on the axis, clear of the body.
+        let into_body = about_fixed_axis && body.along(d) > INTO_BODY * body.reach;
+        let past_shaft = scene.fixed_point
+            && drawn_whole(vector, unknowns)
+            && (!rays.ends.is_empty() || into_body);
         let from = match past_shaft {
             true => scaled(d, rays.claim(canvas, d, 0.0, stretched(canvas, d, length))),
             false => origin,

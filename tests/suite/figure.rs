@@ -1529,7 +1529,8 @@ fn a_load_at_a_named_point_is_named_by_its_components() {
 
 /// ω about a fixed axis is drawn on the axis's centre line, as a textbook draws the axis of
 /// rotation and ω: the box about its body diagonal and the plate about its diagonal each
-/// have ω's double arrow on the line from O along ω as drawn, not beside it.
+/// have ω's double arrow on the line from O along ω as drawn, not beside it, and past the
+/// body (from the box's corner O it ran over the top face).
 #[test]
 fn omega_about_a_fixed_axis_lies_on_it() {
     for name in ["box_about_body_diagonal", "plate_spinning_about_diagonal"] {
@@ -1546,11 +1547,30 @@ fn omega_about_a_fixed_axis_lies_on_it() {
             let q = p.minus(o);
             (q.x * e.y - q.y * e.x).abs() < 1e-6 * e.length() * e.length().max(q.length())
         };
-        let on_it = drawn.marks.iter().any(|m| {
-            matches!(m, Mark::Arrow { role: Role::AngularVelocity, from, to, double: true, .. }
-                if on_line(*from) && on_line(*to))
+        let arrow = drawn.marks.iter().find_map(|m| match m {
+            Mark::Arrow {
+                role: Role::AngularVelocity,
+                from,
+                to,
+                double: true,
+                ..
+            } if on_line(*from) && on_line(*to) => Some(*from),
+            _ => None,
         });
-        assert!(on_it, "{name}: ω on its axis");
+        let tail = arrow.unwrap_or_else(|| panic!("{name}: ω on its axis"));
+        // Past the body along the axis: the box's far corner (a, b, c) from O at its corner,
+        // the plate's corner (a/2, b/2, 0) from O at its centre.
+        let sizes = Sizes::of(&scene);
+        let size = |s: &str| sizes.of_expr(&Expr::sym(Symbol::new(s))).unwrap();
+        let corner = match name {
+            "box_about_body_diagonal" => [size("a"), size("b"), size("c")],
+            _ => [size("a") / 2.0, size("b") / 2.0, 0.0],
+        };
+        let far = drawn.at(corner).minus(o);
+        assert!(
+            tail.minus(o).length() >= far.length() - 1e-6,
+            "{name}: ω drawn past the body on its axis"
+        );
     }
 }
 

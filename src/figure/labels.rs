@@ -1,10 +1,11 @@
-//! Where each label stands: near its anchor (an arrow's head, a point, an edge's middle), on
-//! the side it wants if that is free. Each label's spots round its anchor, ring by ring, are
-//! scored — standing too close to another label weighs most, then standing on the body, then
-//! crossing a stroke (a load's arrow or a rod more than a hairline), then standing nearer
-//! another label's anchor than its own (a reader would give it to the wrong arrow), then its
-//! distance and its turn from the wanted side — and the placing of all of them together is
-//! made cheap: each placed in turn, then annealed, then polished by single and paired moves,
+//! Where each label stands: near its anchor (an arrow's head, a point, an edge's middle, or
+//! any point of a part's side it names), on the side it wants if that is free. Each label's
+//! spots round its anchor, ring by ring, are scored — standing too close to another label
+//! weighs most, then standing on the body, then crossing a stroke (a load's arrow or a rod
+//! more than a hairline), then standing nearer another label's anchor than its own (a reader
+//! would give it to the wrong arrow), then its distance and its turn from the wanted side —
+//! and the placing of all of them together is made cheap: each placed in turn, then annealed
+//! from each of a few fixed seeds and polished by single and paired moves, the cheapest kept,
 //! so a point's letter does not take the spot an arrow's label needs and push it far away.
 
 use super::canvas::points_of;

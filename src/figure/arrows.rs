@@ -25,6 +25,8 @@ const TOWARD_BODY: f64 = 0.15;
 /// lengths tried (in shares of its own) when it comes nearer.
 const HEADS_APART: f64 = 0.1;
 const SHORTER: f64 = 0.7;
+/// The share of the way to another load's head coming the other way that a load runs.
+const SHORT_OF: f64 = 0.7;
 const LONGER: f64 = 1.3;
 /// A component smaller than this share of its vector's largest vanishes at the figure's values.
 const VANISHES: f64 = 1e-9;
@@ -154,6 +156,15 @@ impl Drawn<'_> {
         let pushes = load && self.body.goes_into(self.from, u, INSIDE * self.body.reach);
         let mut into_point = alone && (self.into_point || pushes);
         let mut length = self.length_from(canvas, u, into_point, load);
+        // A load that would run through another's head coming the other way along its line
+        // (a weight from G down through the floor's push at C) stops short of it: two loads
+        // on one line, head to head, as a textbook draws them, not one beside the other.
+        if load && !into_point {
+            let drawn = stretched(canvas, u, length);
+            if let Some(t) = canvas.head_coming(self.from, u, drawn) {
+                length *= SHORT_OF * t / drawn;
+            }
+        }
         let (mut from, mut to, mut free) = self.ends(canvas, u, length, into_point);
         // Nothing is drawn along an axis, a rod or the shaft, but beside it; a load along
         // such a line toward the body (a bearing's thrust along the shaft, by more than

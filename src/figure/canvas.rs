@@ -350,6 +350,35 @@ impl<'s> Canvas<'s> {
         })
     }
 
+    /// How far along the unit `d` from the scene's point `p`, within `length`, the head of a
+    /// load drawn in front lies on the line, pointing back along it (the floor's push at C
+    /// below a weight at G): the nearest such head, if any.
+    pub fn head_coming(&self, p: P3, d: P3, length: f64) -> Option<f64> {
+        let at = self.project(p);
+        let per_length = self.project(view::add(p, d)).minus(at);
+        let along = per_length.unit()?;
+        self.front
+            .iter()
+            .filter_map(|(mark, _)| match mark {
+                Mark::Arrow {
+                    from,
+                    via,
+                    to,
+                    role: Role::Force(_) | Role::Impulse,
+                    ..
+                } => {
+                    let last = via.last().unwrap_or(from);
+                    let (head, pointing) = (to.minus(at), to.minus(*last));
+                    let off = (head.x * along.y - head.y * along.x).abs();
+                    let t = (head.x * along.x + head.y * along.y) / per_length.length();
+                    let back = pointing.x * along.x + pointing.y * along.y < 0.0;
+                    (off < 1e-9 * length.max(1.0) && back && t > 0.0 && t <= length).then_some(t)
+                }
+                _ => None,
+            })
+            .min_by(f64::total_cmp)
+    }
+
     /// Whether an arrow drawn in front (a load, a rate) lies along the line from `from` to
     /// `to` as drawn: a dimension's extension line there would run over it.
     pub fn arrow_along(&self, from: P3, to: P3) -> bool {

@@ -1505,6 +1505,42 @@ fn a_load_behind_a_disk_is_dashed_where_the_disk_covers_it() {
     assert!(in_sight, "solid from O to the wheel's outline");
 }
 
+/// Two loads on one line come head to head, as a textbook draws them: in SP 18.5 the floor's
+/// push N comes up into C and the weight W, at G straight above C, runs from G down toward C
+/// and stops short of it, on the line GC, not beside it (where it read as a couple with N).
+#[test]
+fn a_weight_over_the_floors_push_stops_short_of_it_on_their_line() {
+    let scene = example("sp18_5_disk_reactions");
+    let drawn = figure(&scene).unwrap();
+    let point_of = |name: &str| {
+        let f = scene.forces.iter().find(|f| f.name == name).unwrap();
+        drawn_at(&drawn, &scene, &f.point)
+    };
+    let (g, c) = (point_of("weight"), point_of("floor"));
+    let arrow = |name: &str| {
+        drawn.marks.iter().find_map(|m| match m {
+            Mark::Arrow {
+                role: Role::Force(n),
+                from,
+                to,
+                ..
+            } if n == name => Some((*from, *to)),
+            _ => None,
+        })
+    };
+    let (w_from, w_to) = arrow("weight").expect("W drawn");
+    let (_, n_to) = arrow("floor").expect("N drawn");
+    assert!(near(n_to, c), "N into C");
+    assert!(near(w_from, g), "W from G itself, not beside");
+    let (down, along) = (c.minus(g), w_to.minus(g));
+    assert!(
+        (down.x * along.y - down.y * along.x).abs() < 1e-6 * down.length() * along.length(),
+        "W on the line GC"
+    );
+    let share = (along.x * down.x + along.y * down.y) / (down.x * down.x + down.y * down.y);
+    assert!(share > 0.3 && share < 0.9, "W stops short of C: {share}");
+}
+
 /// A load drawn by its components at a point the scene names is not named again there: the
 /// blow R at the post's A (spinning rod) and at the plate's corner C shows R_x, R_y (R_z) and
 /// the point's letter, no stray R beside them.

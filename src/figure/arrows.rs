@@ -4,8 +4,8 @@
 //! where hidden; labelled by its name, its magnitude or its components, and with a second
 //! vector a component stands for too (`ω₂ = Ω`).
 
-use super::body::Extent;
 use super::canvas::{Canvas, Layer};
+use super::extent::Extent;
 use super::view::{self, add, scaled, sub, P3};
 use super::{Dashes, FigureError, Role, Stroke};
 use crate::algebra::{Expr, Symbol, Vector};
@@ -228,7 +228,8 @@ impl Drawn<'_> {
                 .runs_along(from, u, drawn, |q| self.body.out_of_sight(canvas, q)),
             _ => Vec::new(),
         };
-        let stroke = match runs.iter().any(|run| run.2) {
+        let partly_hidden = runs.iter().any(|run| run.2);
+        let stroke = match partly_hidden {
             true => Stroke {
                 dashes: Dashes::Hidden,
                 ..self.stroke
@@ -245,7 +246,7 @@ impl Drawn<'_> {
             side,
         );
         let at = |t: f64| add(from, scaled(u, t));
-        for &(a, b, _) in runs.iter().filter(|run| !run.2 && stroke != self.stroke) {
+        for &(a, b, _) in runs.iter().filter(|run| partly_hidden && !run.2) {
             canvas.path_beside(Layer::Front, &[at(a), at(b)], false, self.stroke, side);
         }
         canvas.label_beside(label, free, outward, side);

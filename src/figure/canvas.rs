@@ -372,7 +372,8 @@ impl<'s> Canvas<'s> {
                     let off = (head.x * along.y - head.y * along.x).abs();
                     let t = (head.x * along.x + head.y * along.y) / per_length.length();
                     let back = pointing.x * along.x + pointing.y * along.y < 0.0;
-                    (off < 1e-9 * length.max(1.0) && back && t > 0.0 && t <= length).then_some(t)
+                    let on_line = off < 1e-9 * per_length.length() * length;
+                    (on_line && back && t > 0.0 && t <= length).then_some(t)
                 }
                 _ => None,
             })

@@ -8,8 +8,8 @@
 //! shaft, the distance from O to G along an axis (an axle's length L), by the axle where one
 //! is drawn. Each label stands on its dimension line, which its halo breaks.
 
-use super::body::Extent;
 use super::canvas::{Canvas, Layer};
+use super::extent::Extent;
 use super::view::{self, add, scaled, sub, P3};
 use super::{FigureError, Stroke};
 use crate::algebra::{Expr, Vector};

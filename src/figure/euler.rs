@@ -4,8 +4,8 @@
 //! spin ψ̇ one about z past the body and whatever is drawn along z; and ω where the scene
 //! states it by its components, with the angle it makes with z (§18.11's γ).
 
-use super::body::Extent;
 use super::canvas::{Canvas, Layer};
+use super::extent::Extent;
 use super::view::{self, add, scaled, P3};
 use super::{FigureError, Role, Stroke};
 use crate::algebra::{Expr, Symbol, Vector};

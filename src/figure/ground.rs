@@ -11,8 +11,8 @@
 //! from O lies on the floor. One patch covers every such point at a level: its centre their
 //! middle, its half side [`HALF_SIDE`] of the reach, or [`MARGIN`] past the farthest of them.
 
-use super::body::Extent;
 use super::canvas::{Canvas, Layer};
+use super::extent::Extent;
 use super::view::{self, add, scaled, P3};
 use super::{FigureError, Stroke};
 use crate::scene::model::{ConstraintKind, Scene};

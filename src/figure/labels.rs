@@ -565,10 +565,7 @@ fn through(p: P2, a: P2, b: P2) -> bool {
 
 /// Whether the segment from `a` to `b` passes within `within` of the point `p`.
 fn near_segment(p: P2, a: P2, b: P2, within: f64) -> bool {
-    let d = b.minus(a);
-    let t = ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / (d.x * d.x + d.y * d.y).max(1e-300);
-    let foot = a.plus(d.times(t.clamp(0.0, 1.0)));
-    foot.minus(p).length() < within
+    p.to_segment(a, b) < within
 }
 
 /// Whether the segments `p q` and `a b` cross (each one's ends on either side of the other).

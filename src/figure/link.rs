@@ -3,8 +3,8 @@
 //! no mass), yet without it the body floats apart from its pivot O; drawn as the shaft is, a
 //! bar from O along OG to where it meets the body.
 
-use super::body::Extent;
 use super::canvas::Canvas;
+use super::extent::Extent;
 use super::view::{self, add, scaled, P3};
 use super::Stroke;
 use crate::scene::model::Scene;

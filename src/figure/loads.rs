@@ -19,8 +19,9 @@ use super::arrows::{
     drawn_whole, holds_any, is_word, label, named, nonzero, one_symbol, stretched, whole_label,
     Also, Drawn, Drew,
 };
-use super::body::{circle, Extent};
+use super::body::circle;
 use super::canvas::{Canvas, Layer};
+use super::extent::Extent;
 use super::view::{self, add, scaled, sub, P3};
 use super::{FigureError, Role, Stroke};
 use crate::algebra::{Expr, Symbol, Vector};
@@ -303,15 +304,10 @@ fn omega(
     // but by its components where the frame turns with one of them: the spin ω₁ about an
     // axle that turns at ω₂, as a textbook draws the two rotations it adds.
     let frame_rate = scene.frame_rate.as_ref().filter(|rate| *rate != omega);
-    let component_of_omega = |rate: &Vector| match nonzero(rate)[..] {
+    let frame_in_omega = frame_rate.and_then(|rate| match nonzero(rate)[..] {
         [k] if omega[k] == rate[k] => Some(k),
         _ => None,
-    };
-    let omega_whole =
-        drawn_whole(omega, unknowns) && frame_rate.and_then(component_of_omega).is_none();
-    let frame_in_omega = frame_rate
-        .and_then(component_of_omega)
-        .filter(|_| !omega_whole);
+    });
     // α where the frame turns with the body (ω̇ in it is α), unless zero: its own double
     // arrow, past ω's where it points the same way (a shaft speeding up), as a textbook draws
     // the two. Where the frame turns otherwise, ω̇ in it given as rates of ω's components

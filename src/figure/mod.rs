@@ -14,6 +14,7 @@ mod body;
 mod canvas;
 mod dimensions;
 mod euler;
+mod extent;
 mod ground;
 mod labels;
 mod link;

@@ -20,8 +20,8 @@
 //!    ///////// base, BASE_HALF_WIDTH each side, hatched
 //! ```
 
-use super::body::Extent;
 use super::canvas::{Canvas, Layer};
+use super::extent::Extent;
 use super::view::{self, add, scaled, P3};
 use super::{FigureError, Stroke};
 use crate::scene::model::{Scene, SupportKind};

@@ -8,8 +8,8 @@
 //! Rodrigues' `v cos θ + (a × v) sin θ + a (a · v)(1 − cos θ)`; both lines are drawn square to
 //! `a`, so the arc between them is the angle θ itself.
 
-use super::body::Extent;
 use super::canvas::{Canvas, Layer};
+use super::extent::Extent;
 use super::view::{self, add, cross, dot, scaled, square_to, P3};
 use super::{FigureError, Stroke};
 use crate::mechanics::shapes::Shape;

@@ -25,6 +25,12 @@ impl P2 {
     pub fn new(x: f64, y: f64) -> P2 {
         P2 { x, y }
     }
+    /// How far the point is from the segment from `a` to `b`.
+    pub fn to_segment(self, a: P2, b: P2) -> f64 {
+        let d = b.minus(a);
+        let t = ((self.x - a.x) * d.x + (self.y - a.y) * d.y) / (d.x * d.x + d.y * d.y).max(1e-300);
+        a.plus(d.times(t.clamp(0.0, 1.0))).minus(self).length()
+    }
     pub fn plus(self, o: P2) -> P2 {
         P2::new(self.x + o.x, self.y + o.y)
     }
@@ -130,10 +136,7 @@ impl View {
     /// The pairs of `points` apart in the scene (by over [`APART`] of their spread) seen
     /// nearly one behind the other: drawn under [`COINCIDING`] of their distance apart.
     fn coinciding(&self, points: &[P3]) -> usize {
-        let spread = points
-            .iter()
-            .flat_map(|p| points.iter().map(move |q| norm(sub(*p, *q))))
-            .fold(0.0, f64::max);
+        let spread = spread(points);
         let mut count = 0;
         for (k, p) in points.iter().enumerate() {
             for q in &points[k + 1..] {
@@ -150,21 +153,15 @@ impl View {
     /// The `points` drawn within [`ON_ROD`] of the points' spread of a rod they are over
     /// [`APART`] of it from in the scene.
     fn on_other_rods(&self, points: &[P3], rods: &[[P3; 2]]) -> usize {
-        let spread = points
-            .iter()
-            .flat_map(|p| points.iter().map(move |q| norm(sub(*p, *q))))
-            .fold(0.0, f64::max);
-        let page_distance = |p: P2, a: P2, b: P2| {
-            let d = b.minus(a);
-            let t = ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / (d.x * d.x + d.y * d.y).max(1e-300);
-            a.plus(d.times(t.clamp(0.0, 1.0))).minus(p).length()
-        };
+        let spread = spread(points);
         points
             .iter()
             .flat_map(|p| rods.iter().map(move |r| (p, r)))
             .filter(|(p, [a, b])| {
                 to_segment(**p, *a, *b) > APART * spread
-                    && page_distance(self.project(**p), self.project(*a), self.project(*b))
+                    && self
+                        .project(**p)
+                        .to_segment(self.project(*a), self.project(*b))
                         < ON_ROD * spread
             })
             .count()
@@ -253,6 +250,14 @@ pub fn square_to(v: P3, a: P3) -> P3 {
 /// Whether `p` is within `within` of the line along the unit `a` through O.
 pub fn on_line(p: P3, a: P3, within: f64) -> bool {
     norm(square_to(p, a)) < within
+}
+
+/// The largest distance between two of the `points`.
+fn spread(points: &[P3]) -> f64 {
+    points
+        .iter()
+        .flat_map(|p| points.iter().map(move |q| norm(sub(*p, *q))))
+        .fold(0.0, f64::max)
 }
 
 /// How far `p` is from the segment from `a` to `b`.
